@@ -1,0 +1,2 @@
+pub mod solution;
+pub mod stress;

@@ -1,0 +1,47 @@
+//! Stress solutions: pure functions from a point (in units of the contact half-width) to a
+//! stress tensor (in units of the peak pressure). No I/O, no threads.
+
+pub mod line_hertz;
+
+use crate::stress::Stress;
+
+/// A stress solution that can be evaluated anywhere in the body `z >= 0`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Solution {
+    /// Sliding Hertzian line contact, plane strain, closed form (McEwen 1949).
+    LineHertz { friction: f64, poisson: f64 },
+}
+
+impl Solution {
+    /// Stress in units of `p0` at a point in units of `a` (`y` is ignored by line contacts).
+    #[inline]
+    pub fn stress_over_p0(&self, x_over_a: f64, y_over_a: f64, z_over_a: f64) -> Stress {
+        let _ = y_over_a;
+        match *self {
+            Solution::LineHertz { friction, poisson } => {
+                line_hertz::stress_over_p0(x_over_a, z_over_a, friction, poisson)
+            }
+        }
+    }
+
+    /// Surface pressure and tangential traction `(p/p0, q/p0)` along the x axis.
+    pub fn surface_traction_over_p0(&self, x_over_a: f64) -> (f64, f64) {
+        match *self {
+            Solution::LineHertz { friction, .. } => {
+                line_hertz::surface_traction_over_p0(x_over_a, friction)
+            }
+        }
+    }
+
+    pub fn friction(&self) -> f64 {
+        match *self {
+            Solution::LineHertz { friction, .. } => friction,
+        }
+    }
+
+    pub fn poisson(&self) -> f64 {
+        match *self {
+            Solution::LineHertz { poisson, .. } => poisson,
+        }
+    }
+}

@@ -1,0 +1,4 @@
+//! One integration-test binary, one module per topic (see STYLE.md: each test binary links the
+//! whole crate, so keep them few).
+
+mod line_contact;

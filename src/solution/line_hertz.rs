@@ -70,7 +70,7 @@ pub fn stress_over_p0(x: f64, z: f64, mu: f64, nu: f64) -> Stress {
 }
 
 /// Real and imaginary parts of `sqrt(1 - (x + i z)^2) = m - i n`, with `m >= 0` and `n` of the
-/// sign of `x`, computed without cancellation (Johnson 1985, §2.7 defines `m`, `n`).
+/// sign of `x`, computed without cancellation (the `m`, `n` of Johnson 1985, §7.2).
 #[inline]
 fn m_and_n(x: f64, z: f64) -> (f64, f64) {
     let s = 1.0 - x * x + z * z;
@@ -133,7 +133,7 @@ mod tests {
 
     #[test]
     fn axis_stresses_match_johnson_closed_form() {
-        // On x = 0 with mu = 0 (Johnson 1985, eq. 4.49 text): sxx = -(p0/a)[(a²+2z²)/sqrt(a²+z²) - 2z],
+        // On x = 0 with mu = 0 (Johnson 1985, §4.2(b)): sxx = -(p0/a)[(a²+2z²)/sqrt(a²+z²) - 2z],
         // szz = -p0 a / sqrt(a² + z²), sxz = 0.
         for i in 0..=50 {
             let z = f64::from(i) * 0.1;

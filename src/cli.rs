@@ -1,0 +1,80 @@
+//! Command-line arguments (clap), then validation into typed values.
+
+use std::path::PathBuf;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+/// Elastic stress fields under Hertzian contacts: exact closed forms, parallel grids, figures.
+#[derive(Debug, Parser)]
+#[command(name = "stressfield", version, about, long_about = None)]
+pub struct Args {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Render scenes to PNG (and SVG): every scene in scenes/ when none is named.
+    Render {
+        /// Scene files (TOML). Default: every *.toml in --scenes-dir.
+        scenes: Vec<PathBuf>,
+        /// Directory for the images.
+        #[arg(long, default_value = "out")]
+        out_dir: PathBuf,
+        /// Directory searched when no scene is named.
+        #[arg(long, default_value = "scenes")]
+        scenes_dir: PathBuf,
+        /// Also write SVG (in addition to scenes that ask for it).
+        #[arg(long)]
+        svg: bool,
+        /// Compare each PNG with DIR/<scene>.png; write <scene>.diff.png for mismatches and exit
+        /// non-zero if any differs.
+        #[arg(long, value_name = "DIR")]
+        compare: Option<PathBuf>,
+        /// Largest per-channel difference (0-255) that still counts as equal, with --compare.
+        #[arg(long, default_value_t = 16)]
+        tolerance: u8,
+        /// Pixels allowed to differ beyond --tolerance, with --compare.
+        #[arg(long, default_value_t = 0)]
+        max_differing_pixels: usize,
+    },
+    /// Print the Hertz contact parameters and the yield assessment of a scene.
+    Hertz {
+        scene: PathBuf,
+    },
+    /// Validate scenes without computing anything.
+    Check {
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+    },
+    /// Print stresses at points read as CSV rows x,y,z (units of a) as CSV (units of p0).
+    Probe {
+        /// Scene whose contact (friction, Poisson ratio) is used; default: a normalised contact.
+        scene: Option<PathBuf>,
+        #[arg(long, value_enum, default_value_t = ContactArg::Line)]
+        contact: ContactArg,
+        /// Coefficient of sliding friction (overrides the scene's).
+        #[arg(long)]
+        friction: Option<f64>,
+        /// Poisson's ratio of the body (overrides the scene's).
+        #[arg(long)]
+        poisson: Option<f64>,
+        #[arg(long, value_enum, default_value_t = MethodArg::ClosedForm)]
+        method: MethodArg,
+        /// CSV file of points, or - for standard input.
+        #[arg(long, value_name = "FILE|-")]
+        points: PathBuf,
+    },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ContactArg {
+    Line,
+    Point,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    ClosedForm,
+    Numerical,
+}

@@ -1,0 +1,211 @@
+//! The subcommands. Library errors get their context here and are reported once, by main.
+
+use std::io::{BufRead, IsTerminal, Write};
+use std::path::{Path, PathBuf};
+
+use anyhow::{bail, Context, Result};
+use indicatif::{ProgressBar, ProgressStyle};
+
+use crate::cli::{Command, ContactArg, MethodArg};
+use stressfield::compare::{self, Tolerance};
+use stressfield::output::write_atomic;
+use stressfield::probe;
+use stressfield::scene::Scene;
+use stressfield::{figure, render, report};
+
+pub fn run(command: Command) -> Result<()> {
+    match command {
+        Command::Render { scenes, out_dir, scenes_dir, svg, compare, tolerance, max_differing_pixels } => {
+            let scenes = scene_paths(scenes, &scenes_dir)?;
+            let tolerance = Tolerance { per_channel: tolerance, max_differing_pixels };
+            render_all(&scenes, &out_dir, svg, compare.as_deref(), tolerance)
+        }
+        Command::Hertz { scene } => {
+            let scene = Scene::load(&scene)?;
+            print!("{}", report::hertz(&scene));
+            Ok(())
+        }
+        Command::Check { scenes } => check(&scenes),
+        Command::Probe { scene, contact, friction, poisson, method, points } => {
+            probe_command(scene.as_deref(), contact, friction, poisson, method, &points)
+        }
+    }
+}
+
+/// The scenes named, or every `*.toml` in `scenes_dir` in name order.
+fn scene_paths(named: Vec<PathBuf>, scenes_dir: &Path) -> Result<Vec<PathBuf>> {
+    if !named.is_empty() {
+        return Ok(named);
+    }
+    let entries = std::fs::read_dir(scenes_dir).with_context(|| {
+        format!("cannot list scenes in {}\nhint: run from the repository root, or pass scene files or --scenes-dir", scenes_dir.display())
+    })?;
+    let mut paths: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    paths.sort();
+    if paths.is_empty() {
+        bail!("no *.toml scenes in {}", scenes_dir.display());
+    }
+    Ok(paths)
+}
+
+fn progress_bar(total: u64) -> ProgressBar {
+    let quiet = !std::io::stderr().is_terminal() || std::env::var_os("CI").is_some();
+    if quiet {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(total);
+    if let Ok(style) = ProgressStyle::with_template("{spinner} {msg:24} [{bar:40}] {percent:>3}% {elapsed}") {
+        bar.set_style(style.progress_chars("=> "));
+    }
+    bar
+}
+
+fn render_all(paths: &[PathBuf], out_dir: &Path, svg: bool, compare_dir: Option<&Path>, tolerance: Tolerance) -> Result<()> {
+    let mut failures = Vec::new();
+    let mut scenes = Vec::new();
+    for path in paths {
+        match Scene::load(path) {
+            Ok(scene) => scenes.push(scene),
+            Err(e) => {
+                eprintln!("error: {e}");
+                failures.push(path.display().to_string());
+            }
+        }
+    }
+    if !scenes.is_empty() {
+        std::fs::create_dir_all(out_dir).with_context(|| {
+            format!("cannot create the output directory {}\nhint: choose a writable one with --out-dir", out_dir.display())
+        })?;
+    }
+    let total_rows: usize = scenes.iter().map(|s| s.plane().z.count * s.panels.len()).sum();
+    let bar = progress_bar(total_rows as u64);
+    let mut mismatches = Vec::new();
+    for scene in &scenes {
+        bar.set_message(scene.name.clone());
+        match render_scene(scene, out_dir, svg, &bar) {
+            Ok(png) => {
+                bar.println(format!("rendered {}", out_dir.join(format!("{}.png", scene.name)).display()));
+                if let Some(dir) = compare_dir {
+                    match compare_with_reference(scene, &png, dir, out_dir, tolerance) {
+                        Ok(None) => {}
+                        Ok(Some(message)) => {
+                            bar.println(message);
+                            mismatches.push(scene.name.clone());
+                        }
+                        Err(e) => {
+                            bar.println(format!("error: {e:#}"));
+                            mismatches.push(scene.name.clone());
+                        }
+                    }
+                }
+            }
+            Err(e) => {
+                bar.println(format!("error: scene {}: {e:#}", scene.name));
+                failures.push(scene.name.clone());
+            }
+        }
+    }
+    bar.finish_and_clear();
+    if !failures.is_empty() {
+        bail!("{} of {} scenes failed: {}", failures.len(), paths.len(), failures.join(", "));
+    }
+    if !mismatches.is_empty() {
+        bail!("{} of {} images differ from the references in {}: {}", mismatches.len(), scenes.len(), compare_dir.map_or_else(String::new, |d| d.display().to_string()), mismatches.join(", "));
+    }
+    Ok(())
+}
+
+/// Renders one scene, writes its PNG (and SVG) atomically, and returns the PNG image.
+fn render_scene(scene: &Scene, out_dir: &Path, svg: bool, bar: &ProgressBar) -> Result<image::RgbImage> {
+    let on_row = || bar.inc(1);
+    let figure = figure::build(scene, &on_row)?;
+    let image = render::render_png(&figure)?;
+    let png = render::encode_png(&image)?;
+    write_atomic(&out_dir.join(format!("{}.png", scene.name)), &png)?;
+    if svg || scene.figure.svg {
+        let text = render::render_svg(&figure)?;
+        write_atomic(&out_dir.join(format!("{}.svg", scene.name)), text.as_bytes())?;
+    }
+    Ok(image)
+}
+
+/// `Ok(None)` when the image matches `reference_dir/<name>.png`, `Ok(Some(report))` otherwise
+/// (a diff image is written next to the output).
+fn compare_with_reference(scene: &Scene, actual: &image::RgbImage, reference_dir: &Path, out_dir: &Path, tolerance: Tolerance) -> Result<Option<String>> {
+    let reference_path = reference_dir.join(format!("{}.png", scene.name));
+    let bytes = std::fs::read(&reference_path).with_context(|| {
+        format!("no reference image {}\nhint: copy the rendered image there to accept it", reference_path.display())
+    })?;
+    let expected = image::load_from_memory(&bytes)
+        .with_context(|| format!("cannot decode {}", reference_path.display()))?
+        .to_rgb8();
+    let comparison = compare::compare(actual, &expected, tolerance);
+    if comparison.passed() {
+        return Ok(None);
+    }
+    let diff_path = out_dir.join(format!("{}.diff.png", scene.name));
+    if actual.dimensions() == expected.dimensions() {
+        let diff = compare::diff_image(actual, &expected, tolerance.per_channel);
+        write_atomic(&diff_path, &render::encode_png(&diff)?)?;
+    }
+    Ok(Some(format!("mismatch: {}: {comparison}; diff image {}", scene.name, diff_path.display())))
+}
+
+fn check(paths: &[PathBuf]) -> Result<()> {
+    let mut failed = 0;
+    for path in paths {
+        match Scene::load(path) {
+            Ok(scene) => println!("ok {} ({} panel(s), {} x {} points each)", path.display(), scene.panels.len(), scene.plane().x.count, scene.plane().z.count),
+            Err(e) => {
+                eprintln!("error: {e}");
+                failed += 1;
+            }
+        }
+    }
+    if failed > 0 {
+        bail!("{failed} of {} scenes are invalid", paths.len());
+    }
+    Ok(())
+}
+
+fn probe_command(scene: Option<&Path>, contact: ContactArg, friction: Option<f64>, poisson: Option<f64>, method: MethodArg, points: &Path) -> Result<()> {
+    if contact == ContactArg::Point {
+        bail!("point contact is not yet supported by probe\nhint: use --contact line");
+    }
+    if method == MethodArg::Numerical {
+        bail!("the numerical method is not yet supported by probe\nhint: use --method closed-form (exact)");
+    }
+    let (mut mu, mut nu) = (0.0, 0.3);
+    if let Some(path) = scene {
+        let scene = Scene::load(path)?;
+        (mu, nu) = (scene.contact.friction, scene.contact.poisson);
+    }
+    if let Some(f) = friction {
+        if !(f.is_finite() && f >= 0.0) {
+            bail!("--friction must be >= 0 and finite, got {f}");
+        }
+        mu = f;
+    }
+    if let Some(p) = poisson {
+        if !(p > -1.0 && p <= 0.5) {
+            bail!("--poisson must lie in (-1, 0.5], got {p}");
+        }
+        nu = p;
+    }
+    let input: Box<dyn BufRead> = if points.as_os_str() == "-" {
+        Box::new(std::io::stdin().lock())
+    } else {
+        let file = std::fs::File::open(points).with_context(|| format!("cannot open the points file {}", points.display()))?;
+        Box::new(std::io::BufReader::new(file))
+    };
+    let rows = probe::read_points(input).with_context(|| format!("in the points {}", if points.as_os_str() == "-" { "from standard input".into() } else { format!("file {}", points.display()) }))?;
+    let solution = stressfield::solution::Solution::LineHertz { friction: mu, poisson: nu };
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    probe::write_csv(&mut out, &solution, &rows)?;
+    out.flush()?;
+    Ok(())
+}

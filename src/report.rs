@@ -1,0 +1,102 @@
+//! The `hertz` report: contact parameters, stress maxima and the yield assessment, as text.
+
+use std::fmt::Write;
+
+use crate::assess::{Extreme, StressMaxima};
+use crate::scene::Scene;
+
+/// Formats the report of a scene (first panel's friction and Poisson ratio are the scene's).
+pub fn hertz(scene: &Scene) -> String {
+    let mut out = String::new();
+    // Writing into a String cannot fail.
+    let _ = write_report(&mut out, scene);
+    out
+}
+
+fn mm(m: f64) -> String {
+    format!("{:.4} mm", m * 1e3)
+}
+
+fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
+    let contact = &scene.contact;
+    writeln!(out, "scene {}", scene.name)?;
+    writeln!(out, "contact: line (two cylinders, plane strain); friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)", contact.friction)?;
+    let a_m = contact.half_width_m();
+    let p0_pa = contact.p0_pa();
+    match contact.dimensional {
+        None => {
+            writeln!(out, "normalised contact: lengths in units of a, stresses in units of p0; body 1 ν = {}", contact.poisson)?;
+        }
+        Some(d) => {
+            if let Some(g) = d.gears {
+                writeln!(out, "spur gears: module {}, teeth {} and {}, pressure angle {:.2} deg", mm(g.module_m), g.teeth[0], g.teeth[1], g.pressure_angle_rad.to_degrees())?;
+                writeln!(out, "  pitch radii                 r1 = {}, r2 = {}", mm(g.pitch_radius_m(0)), mm(g.pitch_radius_m(1)))?;
+                writeln!(out, "  base radii                  rb1 = {}, rb2 = {}", mm(g.base_radius_m(0)), mm(g.base_radius_m(1)))?;
+                writeln!(out, "  flank radii at pitch point  R1 = r1 sin φ = {}, R2 = r2 sin φ = {}", mm(g.curvature_radius_at_pitch_point_m(0)), mm(g.curvature_radius_at_pitch_point_m(1)))?;
+            }
+            for (name, body) in [("body 1", d.body1), ("body 2", d.body2)] {
+                let radius = if body.radius_m.is_infinite() { "flat".to_string() } else { mm(body.radius_m) };
+                writeln!(out, "{name}: radius {radius}, E = {:.1} GPa, ν = {}", body.material.modulus_pa * 1e-9, body.material.poisson)?;
+            }
+            let line = d.line;
+            writeln!(out, "load per unit length         P  = {:.4} kN/m", line.load_n_per_m * 1e-3)?;
+            writeln!(out, "effective modulus            E* = {:.3} GPa", line.effective_modulus_pa * 1e-9)?;
+            writeln!(out, "effective radius             R  = {}", mm(line.effective_radius_m))?;
+            writeln!(out, "contact half-width           a  = {:.3} µm", line.half_width_m * 1e6)?;
+            writeln!(out, "peak pressure                p0 = {:.2} MPa", line.p0_pa * 1e-6)?;
+            writeln!(out, "mean pressure                pm = {:.2} MPa (= π p0 / 4)", line.mean_pressure_pa * 1e-6)?;
+            writeln!(out, "approach                     not defined by a 2-D line contact alone (it depends on the bodies' size)")?;
+        }
+    }
+    let solution = contact.solution(contact.friction, contact.poisson);
+    let maxima = StressMaxima::of(&solution);
+    let tau1 = crate::assess::maximum(&solution, crate::stress::Quantity::Tau1, false);
+    let dimensional = contact.dimensional.is_some();
+    let describe = |e: &Extreme| {
+        let mut text = format!("{:.4} p0", e.value_over_p0);
+        if dimensional {
+            let _ = write!(text, " = {:.1} MPa", e.value_over_p0 * p0_pa * 1e-6);
+        }
+        let _ = write!(text, " at x = {:.3} a, z = {:.3} a", e.x_over_a, e.z_over_a);
+        if dimensional {
+            let _ = write!(text, " (x = {}, z = {})", mm(e.x_over_a * a_m), mm(e.z_over_a * a_m));
+        }
+        text
+    };
+    writeln!(out, "stress maxima in body 1 (ν = {}):", contact.poisson)?;
+    writeln!(out, "  von Mises σvM                {}", describe(&maxima.von_mises))?;
+    writeln!(out, "  maximum shear (σ1 − σ3)/2    {}", describe(&maxima.max_shear))?;
+    writeln!(out, "  principal shear τ1 (xz)      {}", describe(&tau1))?;
+    writeln!(out, "  von Mises on the surface     {}", describe(&maxima.von_mises_surface))?;
+    let starts = if maxima.yield_starts_at_surface() { "at the surface" } else { "below the surface" };
+    let vm = maxima.von_mises.value_over_p0;
+    let tresca = maxima.max_shear.value_over_p0;
+    writeln!(out, "first yield (von Mises) starts {starts}, at z = {:.3} a, when p0 = {:.3} Y (Tresca: p0 = {:.3} Y)", maxima.von_mises.z_over_a, 1.0 / vm, 0.5 / tresca)?;
+    let (Some(y), Some(d)) = (contact.yield_strength, contact.dimensional) else {
+        if dimensional {
+            writeln!(out, "yield strength not given: add contact.yield_strength or contact.hardness for a yield check")?;
+        }
+        return Ok(());
+    };
+    match y.from_hardness {
+        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {h} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, h * 9.80665)?,
+        None => writeln!(out, "yield strength               Y  = {:.0} MPa", y.pa * 1e-6)?,
+    }
+    let ratio_vm = vm * p0_pa / y.pa;
+    let ratio_tresca = tresca * p0_pa / (0.5 * y.pa);
+    let surface_ratio = maxima.von_mises_surface.value_over_p0 * p0_pa / y.pa;
+    writeln!(out, "  σvM,max / Y                  {ratio_vm:.3}")?;
+    writeln!(out, "  τmax / (Y/2) (Tresca)        {ratio_tresca:.3}")?;
+    writeln!(out, "  surface σvM,max / Y          {surface_ratio:.3}")?;
+    let verdict = if ratio_vm < 1.0 {
+        "no yield: the contact is fully elastic".to_string()
+    } else if surface_ratio < 1.0 {
+        "yield in the subsurface only: the plastic zone is contained below an elastic surface layer".to_string()
+    } else {
+        "yield reaches the surface: surface plastic flow has been initiated".to_string()
+    };
+    writeln!(out, "  verdict                      {verdict}")?;
+    let p_yield = d.line.load_for_peak_pressure(y.pa / vm);
+    writeln!(out, "  load at first yield          P_Y = {:.3} kN/m (p0 = {:.1} MPa; load factor {:.2})", p_yield * 1e-3, y.pa / vm * 1e-6, p_yield / d.line.load_n_per_m)?;
+    Ok(())
+}

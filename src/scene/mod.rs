@@ -1,0 +1,605 @@
+//! Scenes: `scenes/*.toml`, one figure each. Parsing (serde, unknown keys rejected with their
+//! dotted path) and validation into typed values with SI units.
+//!
+//! See the README for the format reference.
+
+mod raw;
+pub mod units;
+
+use std::path::Path;
+
+use crate::contact::gear::SpurGearPair;
+use crate::contact::material::{self, yield_strength_from_hardness_pa, Material};
+use crate::contact::{Body, LineContact};
+use crate::field::{Axis, Plane};
+use crate::render::{ColorMap, Levels, Mark};
+use crate::solution::Solution;
+use crate::stress::{Quantity, QuantityKind};
+use raw::{RawBody, RawContact, RawFigure, RawScene};
+use units::Dimension;
+
+/// The scene format this build reads.
+pub const FORMAT: i64 = 1;
+
+/// A scene that cannot be used, with the key at fault and how to fix it.
+#[derive(Debug, thiserror::Error, PartialEq)]
+#[error("{file}{}: {message}{}", location_text(.key, .line_column), hint_text(.hint))]
+pub struct SceneError {
+    pub file: String,
+    /// Dotted key path, e.g. `contact.body1.poisson`.
+    pub key: Option<String>,
+    pub line_column: Option<(usize, usize)>,
+    pub message: String,
+    pub hint: Option<String>,
+}
+
+fn location_text(key: &Option<String>, line_column: &Option<(usize, usize)>) -> String {
+    let mut text = String::new();
+    if let Some((line, column)) = line_column {
+        text.push_str(&format!(":{line}:{column}"));
+    }
+    if let Some(key) = key {
+        text.push_str(&format!(": key `{key}`"));
+    }
+    text
+}
+
+fn hint_text(hint: &Option<String>) -> String {
+    hint.as_ref().map(|h| format!("\nhint: {h}")).unwrap_or_default()
+}
+
+/// Contact geometry kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContactKind {
+    Line,
+}
+
+/// Yield strength of the body whose field is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct YieldStrength {
+    pub pa: f64,
+    /// The hardness number it was derived from (Tabor, `Y = H/3`), if any.
+    pub from_hardness: Option<f64>,
+}
+
+/// A dimensional contact: bodies, materials, load and the Hertz solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dimensional {
+    pub body1: Body,
+    pub body2: Body,
+    pub gears: Option<SpurGearPair>,
+    pub line: LineContact,
+}
+
+/// The validated contact of a scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact {
+    pub kind: ContactKind,
+    /// Coefficient of sliding friction: `q = mu p` acts on body 1 in +x.
+    pub friction: f64,
+    /// Poisson ratio of body 1, the body whose stresses are computed.
+    pub poisson: f64,
+    /// `None` for a normalised scene (a = 1, p0 = 1).
+    pub dimensional: Option<Dimensional>,
+    pub yield_strength: Option<YieldStrength>,
+}
+
+impl Contact {
+    /// Contact half-width in m (1 for a normalised scene, where lengths are in units of a).
+    pub fn half_width_m(&self) -> f64 {
+        self.dimensional.map_or(1.0, |d| d.line.half_width_m)
+    }
+
+    /// Peak pressure in Pa (1 for a normalised scene).
+    pub fn p0_pa(&self) -> f64 {
+        self.dimensional.map_or(1.0, |d| d.line.p0_pa)
+    }
+
+    pub fn solution(&self, friction: f64, poisson: f64) -> Solution {
+        match self.kind {
+            ContactKind::Line => Solution::LineHertz { friction, poisson },
+        }
+    }
+}
+
+/// Unit of lengths on a figure (and of `figure.x` and `figure.z`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LengthUnit {
+    HalfWidth,
+    Metre,
+    Millimetre,
+    Micrometre,
+}
+
+impl LengthUnit {
+    fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "a" => Some(Self::HalfWidth),
+            "m" => Some(Self::Metre),
+            "mm" => Some(Self::Millimetre),
+            "um" | "µm" => Some(Self::Micrometre),
+            _ => None,
+        }
+    }
+
+    /// Size of one unit in m, given the half-width.
+    pub fn metres(self, half_width_m: f64) -> f64 {
+        match self {
+            Self::HalfWidth => half_width_m,
+            Self::Metre => 1.0,
+            Self::Millimetre => 1e-3,
+            Self::Micrometre => 1e-6,
+        }
+    }
+
+    /// Axis label for a coordinate, e.g. `x/a` or `x (mm)`.
+    pub fn axis_label(self, coordinate: &str) -> String {
+        match self {
+            Self::HalfWidth => format!("{coordinate}/a"),
+            Self::Metre => format!("{coordinate} (m)"),
+            Self::Millimetre => format!("{coordinate} (mm)"),
+            Self::Micrometre => format!("{coordinate} (µm)"),
+        }
+    }
+}
+
+/// Unit of stresses on a figure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StressUnit {
+    PeakPressure,
+    Pascal,
+    MegaPascal,
+    GigaPascal,
+}
+
+impl StressUnit {
+    fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "p0" => Some(Self::PeakPressure),
+            "Pa" => Some(Self::Pascal),
+            "MPa" => Some(Self::MegaPascal),
+            "GPa" => Some(Self::GigaPascal),
+            _ => None,
+        }
+    }
+
+    /// Size of one unit in Pa, given the peak pressure.
+    pub fn pascals(self, p0_pa: f64) -> f64 {
+        match self {
+            Self::PeakPressure => p0_pa,
+            Self::Pascal => 1.0,
+            Self::MegaPascal => 1e6,
+            Self::GigaPascal => 1e9,
+        }
+    }
+
+    /// Label of a value with this unit, e.g. `τ1 / p0` or `τ1 (MPa)`.
+    pub fn label(self, symbol: &str) -> String {
+        match self {
+            Self::PeakPressure => format!("{symbol} / p0"),
+            Self::Pascal => format!("{symbol} (Pa)"),
+            Self::MegaPascal => format!("{symbol} (MPa)"),
+            Self::GigaPascal => format!("{symbol} (GPa)"),
+        }
+    }
+}
+
+/// What the figure shows and how.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FigureSpec {
+    pub quantity: Quantity,
+    /// Range along the surface, in `length_unit`.
+    pub x: (f64, f64),
+    /// Depth range, in `length_unit`.
+    pub z: (f64, f64),
+    pub length_unit: LengthUnit,
+    pub stress_unit: StressUnit,
+    /// Samples along x; z follows with the same spacing.
+    pub resolution: usize,
+    pub levels: Levels,
+    pub colormap: ColorMap,
+    pub mark: Mark,
+    pub width_px: u32,
+    pub svg: bool,
+}
+
+/// One panel: the contact with its own friction and Poisson ratio.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PanelSpec {
+    pub friction: f64,
+    pub poisson: f64,
+    pub subtitle: Option<String>,
+}
+
+/// A validated scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// The file stem; outputs are `out/<name>.png`.
+    pub name: String,
+    pub title: Option<String>,
+    pub contact: Contact,
+    pub figure: FigureSpec,
+    pub panels: Vec<PanelSpec>,
+}
+
+impl Scene {
+    /// Reads and validates a scene file.
+    pub fn load(path: &Path) -> Result<Self, SceneError> {
+        let file = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
+            file: file.clone(),
+            key: None,
+            line_column: None,
+            message: format!("cannot read the scene: {e}"),
+            hint: Some("check the path; scenes are TOML files such as scenes/line_tau1.toml".into()),
+        })?;
+        let name = path.file_stem().map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
+        Self::parse(&text, &name, &file)
+    }
+
+    /// Parses and validates scene text; `name` names the outputs, `file` the error messages.
+    pub fn parse(text: &str, name: &str, file: &str) -> Result<Self, SceneError> {
+        let deserializer = toml::Deserializer::parse(text).map_err(|e| toml_error(text, file, None, &e))?;
+        let raw: RawScene = serde_path_to_error::deserialize(deserializer).map_err(|e| {
+            let path = e.path().to_string();
+            let key = (path != "." && !path.is_empty()).then_some(path);
+            toml_error(text, file, key, e.inner())
+        })?;
+        Validator { file }.scene(raw, name)
+    }
+
+    /// The grid of the panels, in units of a.
+    pub fn plane(&self) -> Plane {
+        let unit_over_a = self.figure.length_unit.metres(self.contact.half_width_m()) / self.contact.half_width_m();
+        let (x0, x1) = self.figure.x;
+        let (z0, z1) = self.figure.z;
+        let nx = self.figure.resolution;
+        let nz = grid_rows(nx, x1 - x0, z1 - z0);
+        Plane {
+            x: Axis::new(x0 * unit_over_a, x1 * unit_over_a, nx),
+            z: Axis::new(z0 * unit_over_a, z1 * unit_over_a, nz),
+        }
+    }
+
+    /// The stress solution of panel `i`.
+    pub fn solution(&self, panel: &PanelSpec) -> Solution {
+        self.contact.solution(panel.friction, panel.poisson)
+    }
+}
+
+/// Rows of a grid with square cells: `nx` samples over `width`, as many as fit over `height`.
+fn grid_rows(nx: usize, width: f64, height: f64) -> usize {
+    let rows = (height / width * (nx - 1) as f64).round() as usize + 1;
+    rows.max(2)
+}
+
+fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Error) -> SceneError {
+    let line_column = error.span().map(|span| line_column(text, span.start));
+    let message = error.message().trim().to_string();
+    let hint = if message.starts_with("unknown field") {
+        Some("remove or correct the key; the README lists every scene key".into())
+    } else {
+        None
+    };
+    SceneError { file: file.into(), key, line_column, message, hint }
+}
+
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+struct Validator<'a> {
+    file: &'a str,
+}
+
+impl Validator<'_> {
+    fn error(&self, key: &str, message: impl Into<String>, hint: Option<&str>) -> SceneError {
+        SceneError {
+            file: self.file.into(),
+            key: Some(key.into()),
+            line_column: None,
+            message: message.into(),
+            hint: hint.map(Into::into),
+        }
+    }
+
+    fn scene(&self, raw: RawScene, name: &str) -> Result<Scene, SceneError> {
+        if raw.format != FORMAT {
+            return Err(self.error(
+                "format",
+                format!("this build reads scene format {FORMAT}, the scene says {}", raw.format),
+                Some("set `format = 1`"),
+            ));
+        }
+        let contact = self.contact(&raw.contact)?;
+        let figure = self.figure(&raw.figure, &contact)?;
+        let mut panels = Vec::new();
+        for (i, panel) in raw.panels.iter().enumerate() {
+            let key = format!("panel[{i}]");
+            let friction = match panel.friction {
+                Some(mu) => self.friction(&format!("{key}.friction"), mu)?,
+                None => contact.friction,
+            };
+            let poisson = match panel.poisson {
+                Some(nu) => self.poisson(&format!("{key}.poisson"), nu)?,
+                None => contact.poisson,
+            };
+            panels.push(PanelSpec { friction, poisson, subtitle: panel.subtitle.clone() });
+        }
+        if panels.is_empty() {
+            panels.push(PanelSpec { friction: contact.friction, poisson: contact.poisson, subtitle: None });
+        }
+        if panels.len() > 6 {
+            return Err(self.error("panel", format!("{} panels is too many for one figure", panels.len()), Some("use at most 6 [[panel]] tables; split the rest into another scene")));
+        }
+        let plane_points = figure.resolution * grid_rows(figure.resolution, figure.x.1 - figure.x.0, figure.z.1 - figure.z.0);
+        let bytes = plane_points.saturating_mul(panels.len()).saturating_mul(8);
+        if bytes > crate::field::MAX_FIELD_BYTES {
+            return Err(self.error(
+                "figure.resolution",
+                format!(
+                    "{} points per panel x {} panels need about {} MiB, more than the {} MiB allowed",
+                    plane_points,
+                    panels.len(),
+                    bytes >> 20,
+                    crate::field::MAX_FIELD_BYTES >> 20
+                ),
+                Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),
+            ));
+        }
+        Ok(Scene { name: name.into(), title: raw.title, contact, figure, panels })
+    }
+
+    fn friction(&self, key: &str, mu: f64) -> Result<f64, SceneError> {
+        if !(mu.is_finite() && mu >= 0.0) {
+            return Err(self.error(key, format!("friction coefficient must be >= 0 and finite, got {mu}"), Some("typical values are 0 to 0.5")));
+        }
+        Ok(mu)
+    }
+
+    fn poisson(&self, key: &str, nu: f64) -> Result<f64, SceneError> {
+        if !(nu > -1.0 && nu <= 0.5) {
+            return Err(self.error(key, format!("Poisson's ratio must lie in (-1, 0.5], got {nu}"), Some("steel is about 0.3")));
+        }
+        Ok(nu)
+    }
+
+    fn positive(&self, key: &str, text: &str, dimension: Dimension) -> Result<f64, SceneError> {
+        let value = units::parse(text, dimension).map_err(|m| self.error(key, m, None))?;
+        if !(value.is_finite() && value > 0.0) {
+            return Err(self.error(key, format!("must be positive and finite, got `{text}`"), None));
+        }
+        Ok(value)
+    }
+
+    fn contact(&self, raw: &RawContact) -> Result<Contact, SceneError> {
+        let kind = match raw.kind.as_str() {
+            "line" => ContactKind::Line,
+            "point" => {
+                return Err(self.error(
+                    "contact.kind",
+                    "point contact is not yet supported in this version",
+                    Some("use kind = \"line\"; spheres come with the point-contact issue"),
+                ))
+            }
+            other => {
+                return Err(self.error("contact.kind", format!("unknown contact kind `{other}`"), Some("use \"line\"")))
+            }
+        };
+        let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
+        let dimensional_keys = raw.load.is_some() || raw.body1.is_some() || raw.body2.is_some() || raw.gears.is_some();
+        let yield_strength = self.yield_strength(raw)?;
+        if !dimensional_keys {
+            let poisson = self.poisson("contact.poisson", raw.poisson.unwrap_or(0.3))?;
+            return Ok(Contact { kind, friction, poisson, dimensional: None, yield_strength });
+        }
+        if raw.poisson.is_some() {
+            return Err(self.error(
+                "contact.poisson",
+                "a dimensional scene takes Poisson's ratio from each body",
+                Some("move it to [contact.body1] and [contact.body2] (or use a material preset)"),
+            ));
+        }
+        let load_text = raw.load.as_deref().ok_or_else(|| {
+            self.error("contact.load", "a dimensional scene needs the load", Some("add e.g. load = \"40 kN/m\" (force per unit length for line contact)"))
+        })?;
+        let load = self.positive("contact.load", load_text, Dimension::ForcePerLength)?;
+        let gears = raw.gears.as_ref().map(|g| self.gears(g)).transpose()?;
+        let empty = RawBody::default();
+        let mut body1 = self.body("contact.body1", raw.body1.as_ref().unwrap_or(&empty), gears.is_some())?;
+        let mut body2 = self.body("contact.body2", raw.body2.as_ref().unwrap_or(&empty), gears.is_some())?;
+        if let Some(pair) = gears {
+            body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
+            body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
+        }
+        let line = LineContact::new(&body1, &body2, load).map_err(|e| {
+            self.error("contact.body2.radius", e.to_string(), Some("a flat is radius = \"flat\"; a concave body has a negative radius larger in size than the convex one's"))
+        })?;
+        Ok(Contact {
+            kind,
+            friction,
+            poisson: body1.material.poisson,
+            dimensional: Some(Dimensional { body1, body2, gears, line }),
+            yield_strength,
+        })
+    }
+
+    fn yield_strength(&self, raw: &RawContact) -> Result<Option<YieldStrength>, SceneError> {
+        match (&raw.yield_strength, &raw.hardness) {
+            (Some(_), Some(_)) => Err(self.error("contact.hardness", "give either yield_strength or hardness, not both", None)),
+            (Some(text), None) => {
+                Ok(Some(YieldStrength { pa: self.positive("contact.yield_strength", text, Dimension::Pressure)?, from_hardness: None }))
+            }
+            (None, Some(text)) => {
+                let number = self.positive("contact.hardness", text, Dimension::Hardness)?;
+                Ok(Some(YieldStrength { pa: yield_strength_from_hardness_pa(number), from_hardness: Some(number) }))
+            }
+            (None, None) => Ok(None),
+        }
+    }
+
+    fn gears(&self, raw: &raw::RawGears) -> Result<SpurGearPair, SceneError> {
+        let module_m = self.positive("contact.gears.module", &raw.module, Dimension::Length)?;
+        let angle = units::parse(&raw.pressure_angle, Dimension::Angle).map_err(|m| self.error("contact.gears.pressure_angle", m, None))?;
+        if !(angle > 0.0 && angle < std::f64::consts::FRAC_PI_2) {
+            return Err(self.error("contact.gears.pressure_angle", format!("must lie between 0 and 90 deg, got `{}`", raw.pressure_angle), Some("20 deg is standard")));
+        }
+        let teeth: [u32; 2] = match raw.teeth.as_slice() {
+            [a, b] if *a >= 6 && *b >= 6 && *a <= 100_000 && *b <= 100_000 => [*a as u32, *b as u32],
+            _ => return Err(self.error("contact.gears.teeth", format!("needs two tooth counts of at least 6, got {:?}", raw.teeth), Some("e.g. teeth = [20, 40] (pinion = body1, gear = body2)"))),
+        };
+        Ok(SpurGearPair { module_m, teeth, pressure_angle_rad: angle })
+    }
+
+    fn body(&self, key: &str, raw: &RawBody, radius_from_gears: bool) -> Result<Body, SceneError> {
+        let radius_m = match (&raw.radius, radius_from_gears) {
+            (Some(_), true) => {
+                return Err(self.error(&format!("{key}.radius"), "the radius follows from [contact.gears]", Some("remove it, or remove [contact.gears]")))
+            }
+            (None, true) => f64::NAN,
+            (None, false) => {
+                return Err(self.error(&format!("{key}.radius"), "missing radius", Some("e.g. radius = \"20 mm\", radius = \"flat\", or a negative radius for a concave body")))
+            }
+            (Some(text), false) => match text.trim() {
+                "flat" | "inf" | "infinite" => f64::INFINITY,
+                _ => {
+                    let r = units::parse(text, Dimension::Length).map_err(|m| self.error(&format!("{key}.radius"), m, None))?;
+                    if !r.is_finite() || r == 0.0 {
+                        return Err(self.error(&format!("{key}.radius"), format!("must be non-zero and finite, got `{text}`"), Some("use \"flat\" for a plane")));
+                    }
+                    r
+                }
+            },
+        };
+        let preset = match &raw.material {
+            Some(name) => Some(material::preset(name).ok_or_else(|| {
+                let names: Vec<_> = material::PRESETS.iter().map(|p| p.name).collect();
+                self.error(&format!("{key}.material"), format!("unknown material `{name}`"), Some(&format!("use one of: {}; or give modulus and poisson", names.join(", "))))
+            })?),
+            None => None,
+        };
+        let modulus_pa = match (&raw.modulus, preset) {
+            (Some(text), _) => self.positive(&format!("{key}.modulus"), text, Dimension::Pressure)?,
+            (None, Some(p)) => p.material.modulus_pa,
+            (None, None) => return Err(self.error(&format!("{key}.modulus"), "missing elastic modulus", Some("add modulus = \"210 GPa\" or material = \"steel\""))),
+        };
+        let poisson = match (raw.poisson, preset) {
+            (Some(nu), _) => self.poisson(&format!("{key}.poisson"), nu)?,
+            (None, Some(p)) => p.material.poisson,
+            (None, None) => return Err(self.error(&format!("{key}.poisson"), "missing Poisson's ratio", Some("add poisson = 0.3 or material = \"steel\""))),
+        };
+        Ok(Body { radius_m, material: Material { modulus_pa, poisson } })
+    }
+
+    fn range(&self, key: &str, values: Option<&Vec<f64>>, default: (f64, f64)) -> Result<(f64, f64), SceneError> {
+        let Some(values) = values else { return Ok(default) };
+        match values.as_slice() {
+            [lo, hi] if lo.is_finite() && hi.is_finite() && lo < hi => Ok((*lo, *hi)),
+            [lo, hi] if lo >= hi => Err(self.error(key, format!("range [{lo}, {hi}] is empty or inverted"), Some("write [min, max] with min < max"))),
+            _ => Err(self.error(key, format!("needs [min, max], got {values:?}"), None)),
+        }
+    }
+
+    fn figure(&self, raw: &RawFigure, contact: &Contact) -> Result<FigureSpec, SceneError> {
+        let quantity = match &raw.quantity {
+            Some(key) => Quantity::from_key(key).ok_or_else(|| {
+                let keys: Vec<_> = Quantity::ALL.iter().map(|q| q.key()).collect();
+                self.error("figure.quantity", format!("unknown quantity `{key}`"), Some(&format!("use one of: {}", keys.join(", "))))
+            })?,
+            None => Quantity::VonMises,
+        };
+        let dimensional = contact.dimensional.is_some();
+        let length_unit = match &raw.length_unit {
+            Some(key) => LengthUnit::from_key(key).ok_or_else(|| self.error("figure.length_unit", format!("unknown length unit `{key}`"), Some("use \"a\", \"mm\", \"um\" or \"m\"")))?,
+            None if dimensional => LengthUnit::Millimetre,
+            None => LengthUnit::HalfWidth,
+        };
+        let stress_unit = match &raw.stress_unit {
+            Some(key) => StressUnit::from_key(key).ok_or_else(|| self.error("figure.stress_unit", format!("unknown stress unit `{key}`"), Some("use \"p0\", \"MPa\", \"GPa\" or \"Pa\"")))?,
+            None if dimensional => StressUnit::MegaPascal,
+            None => StressUnit::PeakPressure,
+        };
+        if !dimensional && length_unit != LengthUnit::HalfWidth {
+            return Err(self.error("figure.length_unit", "a normalised scene (no load or bodies) is drawn in units of a", Some("use length_unit = \"a\", or give contact.load and the bodies")));
+        }
+        if !dimensional && stress_unit != StressUnit::PeakPressure {
+            return Err(self.error("figure.stress_unit", "a normalised scene (no load or bodies) is drawn in units of p0", Some("use stress_unit = \"p0\", or give contact.load and the bodies")));
+        }
+        let a_in_unit = contact.half_width_m() / length_unit.metres(contact.half_width_m());
+        let x = self.range("figure.x", raw.x.as_ref(), (-2.5 * a_in_unit, 2.5 * a_in_unit))?;
+        let z = self.range("figure.z", raw.z.as_ref(), (0.0, 2.0 * a_in_unit))?;
+        if z.0 < 0.0 {
+            return Err(self.error("figure.z", format!("depth must be >= 0 (z points into the body), got {}", z.0), Some("start the range at 0 for the surface")));
+        }
+        let resolution = match raw.resolution {
+            None => 801,
+            Some(n) if (16..=20_000).contains(&n) => n as usize,
+            Some(n) => return Err(self.error("figure.resolution", format!("must lie in 16..=20000 samples along x, got {n}"), Some("600 to 1200 is plenty for a figure"))),
+        };
+        let levels = match (raw.contours, &raw.levels) {
+            (Some(_), Some(_)) => return Err(self.error("figure.levels", "give either contours (a count) or levels (values), not both", None)),
+            (Some(n), None) if (0..=100).contains(&n) => Levels::Count(n as usize),
+            (Some(n), None) => return Err(self.error("figure.contours", format!("must lie in 0..=100, got {n}"), None)),
+            (None, Some(values)) if values.iter().all(|v| v.is_finite()) => Levels::Values(values.clone()),
+            (None, Some(_)) => return Err(self.error("figure.levels", "levels must be finite numbers", None)),
+            (None, None) => Levels::Count(10),
+        };
+        let colormap = match &raw.colormap {
+            Some(key) => ColorMap::from_key(key).ok_or_else(|| {
+                let keys: Vec<_> = ColorMap::ALL.iter().map(|c| c.key()).collect();
+                self.error("figure.colormap", format!("unknown colour map `{key}`"), Some(&format!("use one of: {}", keys.join(", "))))
+            })?,
+            None => match quantity.kind() {
+                QuantityKind::NonNegative => ColorMap::Viridis,
+                QuantityKind::Signed => ColorMap::Diverging,
+            },
+        };
+        let mark = match raw.mark.as_deref() {
+            None | Some("max") => Mark::Max,
+            Some("min") => Mark::Min,
+            Some("both") => Mark::Both,
+            Some("none") => Mark::None,
+            Some(other) => return Err(self.error("figure.mark", format!("unknown mark `{other}`"), Some("use \"max\", \"min\", \"both\" or \"none\""))),
+        };
+        let width_px = match raw.width {
+            None => 560,
+            Some(w) if (200..=4000).contains(&w) => w as u32,
+            Some(w) => return Err(self.error("figure.width", format!("panel width must lie in 200..=4000 px, got {w}"), None)),
+        };
+        Ok(FigureSpec { quantity, x, z, length_unit, stress_unit, resolution, levels, colormap, mark, width_px, svg: raw.svg.unwrap_or(false) })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(text: &str) -> Result<Scene, SceneError> {
+        Scene::parse(text, "test", "test.toml")
+    }
+
+    #[test]
+    fn minimal_normalised_scene() {
+        let scene = parse("format = 1\n[contact]\nkind = \"line\"\n").expect("valid");
+        assert_eq!(scene.contact.poisson, 0.3);
+        assert_eq!(scene.panels.len(), 1);
+        assert_eq!(scene.figure.quantity, Quantity::VonMises);
+    }
+
+    #[test]
+    fn unknown_key_reports_dotted_path_and_line() {
+        let err = parse("format = 1\n[contact]\nkind = \"line\"\npoison = 0.3\n").expect_err("typo");
+        assert_eq!(err.key.as_deref(), Some("contact.poison"), "{err}");
+        assert_eq!(err.line_column.map(|(l, _)| l), Some(4), "{err}");
+    }
+
+    #[test]
+    fn poisson_out_of_range_names_the_key() {
+        let err = parse("format = 1\n[contact]\nkind = \"line\"\npoisson = 0.7\n").expect_err("nu");
+        assert_eq!(err.key.as_deref(), Some("contact.poisson"));
+        assert!(err.to_string().contains("(-1, 0.5]"), "{err}");
+    }
+}

@@ -1,0 +1,72 @@
+//! Serde structures mirroring `scenes/*.toml` one to one. Unknown keys are errors.
+
+use serde::Deserialize;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawScene {
+    pub format: i64,
+    pub title: Option<String>,
+    pub contact: RawContact,
+    #[serde(default)]
+    pub figure: RawFigure,
+    #[serde(default, rename = "panel")]
+    pub panels: Vec<RawPanel>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawContact {
+    pub kind: String,
+    pub friction: Option<f64>,
+    /// Poisson ratio of the body whose field is drawn, for normalised scenes.
+    pub poisson: Option<f64>,
+    pub load: Option<String>,
+    pub body1: Option<RawBody>,
+    pub body2: Option<RawBody>,
+    pub gears: Option<RawGears>,
+    pub yield_strength: Option<String>,
+    pub hardness: Option<String>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawBody {
+    pub radius: Option<String>,
+    pub material: Option<String>,
+    pub modulus: Option<String>,
+    pub poisson: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawGears {
+    pub module: String,
+    pub teeth: Vec<i64>,
+    pub pressure_angle: String,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawFigure {
+    pub quantity: Option<String>,
+    pub x: Option<Vec<f64>>,
+    pub z: Option<Vec<f64>>,
+    pub length_unit: Option<String>,
+    pub stress_unit: Option<String>,
+    pub resolution: Option<i64>,
+    pub contours: Option<i64>,
+    pub levels: Option<Vec<f64>>,
+    pub colormap: Option<String>,
+    pub mark: Option<String>,
+    pub width: Option<i64>,
+    pub svg: Option<bool>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawPanel {
+    pub friction: Option<f64>,
+    pub poisson: Option<f64>,
+    pub subtitle: Option<String>,
+}

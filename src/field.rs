@@ -7,7 +7,7 @@ use ndarray::{Array3, ArrayView2, Axis as NdAxis};
 use rayon::prelude::*;
 
 use crate::solution::Solution;
-use crate::stress::Quantity;
+use crate::stress::{Quantity, Stress};
 
 /// Evenly spaced samples `min..=max` (`count >= 2`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,7 +66,13 @@ pub enum FieldError {
         "the grid of {nx} x {nz} points with {quantities} quantities needs {needed_mib} MiB, more \
          than the {limit_mib} MiB allowed\nhint: lower figure.resolution or draw fewer panels"
     )]
-    TooLarge { nx: usize, nz: usize, quantities: usize, needed_mib: usize, limit_mib: usize },
+    TooLarge {
+        nx: usize,
+        nz: usize,
+        quantities: usize,
+        needed_mib: usize,
+        limit_mib: usize,
+    },
 }
 
 /// Values of several quantities on a plane: `values[[iz, k, ix]]` is quantity `k` at
@@ -123,7 +129,11 @@ pub fn evaluate(
             fill_row(solution, plane, quantities, iz, &mut row);
             on_row();
         });
-    Ok(Field { plane: *plane, quantities: quantities.to_vec(), values })
+    Ok(Field {
+        plane: *plane,
+        quantities: quantities.to_vec(),
+        values,
+    })
 }
 
 /// The same as [`evaluate`] on the calling thread only (for benchmarks and comparisons).
@@ -137,10 +147,13 @@ pub fn evaluate_sequential(
     for (iz, mut row) in values.axis_iter_mut(NdAxis(0)).enumerate() {
         fill_row(solution, plane, quantities, iz, &mut row);
     }
-    Ok(Field { plane: *plane, quantities: quantities.to_vec(), values })
+    Ok(Field {
+        plane: *plane,
+        quantities: quantities.to_vec(),
+        values,
+    })
 }
 
-#[inline]
 fn fill_row(
     solution: &Solution,
     plane: &Plane,
@@ -149,11 +162,33 @@ fn fill_row(
     row: &mut ndarray::ArrayViewMut2<'_, f64>,
 ) {
     let z = plane.z.value(iz);
-    for ix in 0..plane.x.count {
-        let stress = solution.stress_over_p0(plane.x.value(ix), 0.0, z);
-        for (k, quantity) in quantities.iter().enumerate() {
-            row[[k, ix]] = quantity.of(&stress);
+    let xs: Vec<f64> = plane.x.values().collect();
+    let mut stresses = vec![Stress::default(); xs.len()];
+    solution.stress_row_over_p0(&xs, 0.0, z, &mut stresses);
+    for (k, &quantity) in quantities.iter().enumerate() {
+        let mut out = row.index_axis_mut(NdAxis(0), k);
+        match out.as_slice_mut() {
+            Some(out) => fill_quantity(quantity, &stresses, out),
+            None => out
+                .iter_mut()
+                .zip(&stresses)
+                .for_each(|(o, s)| *o = quantity.of(s)),
         }
+    }
+}
+
+/// `out[i] = quantity(stresses[i])`, with the match outside the loops.
+fn fill_quantity(quantity: Quantity, stresses: &[Stress], out: &mut [f64]) {
+    fn each(stresses: &[Stress], out: &mut [f64], f: impl Fn(&Stress) -> f64) {
+        out.iter_mut().zip(stresses).for_each(|(o, s)| *o = f(s));
+    }
+    match quantity {
+        Quantity::VonMises => each(stresses, out, Stress::von_mises),
+        Quantity::Tau1 => each(stresses, out, Stress::principal_shear_xz),
+        Quantity::Sxx => each(stresses, out, |s| s.xx),
+        Quantity::Szz => each(stresses, out, |s| s.zz),
+        Quantity::Sxz | Quantity::OrthogonalShear => each(stresses, out, |s| s.xz),
+        other => each(stresses, out, |s| other.of(s)),
     }
 }
 
@@ -163,8 +198,14 @@ mod tests {
 
     #[test]
     fn parallel_and_sequential_agree_bitwise() {
-        let solution = Solution::LineHertz { friction: 0.3, poisson: 0.3 };
-        let plane = Plane { x: Axis::new(-2.0, 2.0, 41), z: Axis::new(0.0, 2.0, 21) };
+        let solution = Solution::LineHertz {
+            friction: 0.3,
+            poisson: 0.3,
+        };
+        let plane = Plane {
+            x: Axis::new(-2.0, 2.0, 41),
+            z: Axis::new(0.0, 2.0, 21),
+        };
         let quantities = [Quantity::VonMises, Quantity::Sxx];
         let parallel = evaluate(&solution, &plane, &quantities, &|| {}).expect("small grid");
         let sequential = evaluate_sequential(&solution, &plane, &quantities).expect("small grid");
@@ -176,7 +217,10 @@ mod tests {
 
     #[test]
     fn oversized_grid_is_refused_before_allocation() {
-        let plane = Plane { x: Axis::new(-1.0, 1.0, 100_000), z: Axis::new(0.0, 1.0, 100_000) };
+        let plane = Plane {
+            x: Axis::new(-1.0, 1.0, 100_000),
+            z: Axis::new(0.0, 1.0, 100_000),
+        };
         let err = check_size(&plane, 2).expect_err("80 GB grid");
         assert!(err.to_string().contains("MiB"), "{err}");
     }

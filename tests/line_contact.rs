@@ -49,7 +49,14 @@ pub fn flamant_quadrature(x: f64, z: f64, mu: f64, nu: f64) -> Stress {
     let xx = component(0);
     let zz = component(1);
     let xz = component(2);
-    Stress { xx, yy: nu * (xx + zz), zz, yz: 0.0, xz, xy: 0.0 }
+    Stress {
+        xx,
+        yy: nu * (xx + zz),
+        zz,
+        yz: 0.0,
+        xz,
+        xy: 0.0,
+    }
 }
 
 fn assert_stress_close(a: &Stress, b: &Stress, tol: f64, context: &str) {
@@ -59,7 +66,10 @@ fn assert_stress_close(a: &Stress, b: &Stress, tol: f64, context: &str) {
         ("szz", a.zz, b.zz),
         ("sxz", a.xz, b.xz),
     ] {
-        assert!((u - v).abs() <= tol, "{context}: {name} closed form {u} vs quadrature {v}");
+        assert!(
+            (u - v).abs() <= tol,
+            "{context}: {name} closed form {u} vs quadrature {v}"
+        );
     }
 }
 
@@ -82,7 +92,10 @@ fn closed_form_matches_flamant_quadrature_to_1e8_p0() {
 
 #[test]
 fn literature_maxima_frictionless() {
-    let solution = Solution::LineHertz { friction: 0.0, poisson: 0.3 };
+    let solution = Solution::LineHertz {
+        friction: 0.0,
+        poisson: 0.3,
+    };
     // Johnson (1985) §4.2(b): tau_1 = 0.300 p0 at x = 0, z = 0.786a (printed to 3 digits).
     let tau1 = maximum(&solution, Quantity::Tau1, false);
     assert!((tau1.value_over_p0 - 0.300).abs() < 5e-4, "{tau1:?}");
@@ -91,7 +104,10 @@ fn literature_maxima_frictionless() {
     // x = ±(√3/2)a, z = a/2 (Johnson §4.2(b) quotes 0.25 p0 at x = ±0.87a, z = 0.5a).
     let ortho = maximum(&solution, Quantity::OrthogonalShear, false);
     assert!((ortho.value_over_p0 - 0.25).abs() < 1e-12, "{ortho:?}");
-    assert!((ortho.x_over_a.abs() - 3f64.sqrt() / 2.0).abs() < 1e-6, "{ortho:?}");
+    assert!(
+        (ortho.x_over_a.abs() - 3f64.sqrt() / 2.0).abs() < 1e-6,
+        "{ortho:?}"
+    );
     assert!((ortho.z_over_a - 0.5).abs() < 1e-6, "{ortho:?}");
     // Von Mises, nu = 0.3: first yield at p0 = 1.79 Y, at z = 0.70a (Johnson §6.2).
     let vm = maximum(&solution, Quantity::VonMises, false);
@@ -100,7 +116,10 @@ fn literature_maxima_frictionless() {
     assert!(vm.x_over_a.abs() < 1e-6);
     // Tresca: first yield at p0 = 3.3 k = 1.67 Y (Johnson §6.2); k = Y/2 = tau_max.
     let tresca = maximum(&solution, Quantity::MaxShear, false);
-    assert!((0.5 / tresca.value_over_p0 - 1.67).abs() < 5e-3, "{tresca:?}");
+    assert!(
+        (0.5 / tresca.value_over_p0 - 1.67).abs() < 5e-3,
+        "{tresca:?}"
+    );
 }
 
 #[test]
@@ -109,10 +128,16 @@ fn friction_moves_the_von_mises_maximum_to_the_surface() {
     let mut reached_surface_at = None;
     for step in 0..=10 {
         let mu = 0.05 * f64::from(step);
-        let solution = Solution::LineHertz { friction: mu, poisson: 0.3 };
+        let solution = Solution::LineHertz {
+            friction: mu,
+            poisson: 0.3,
+        };
         let maxima = StressMaxima::of(&solution);
         let depth = maxima.von_mises.z_over_a;
-        assert!(depth <= previous_depth + 1e-9, "mu = {mu}: depth {depth} > {previous_depth}");
+        assert!(
+            depth <= previous_depth + 1e-9,
+            "mu = {mu}: depth {depth} > {previous_depth}"
+        );
         previous_depth = depth;
         if maxima.yield_starts_at_surface() && reached_surface_at.is_none() {
             reached_surface_at = Some(mu);
@@ -120,7 +145,10 @@ fn friction_moves_the_von_mises_maximum_to_the_surface() {
     }
     // Johnson (1985) §7.2: the maximum reaches the surface for mu of about 0.3.
     let mu = reached_surface_at.expect("surface reached by mu = 0.5");
-    assert!((0.25..=0.35).contains(&mu), "reached the surface at mu = {mu}");
+    assert!(
+        (0.25..=0.35).contains(&mu),
+        "reached the surface at mu = {mu}"
+    );
 }
 
 /// Divergence of the stress by central differences: d sxx/dx + d sxz/dz and
@@ -187,10 +215,21 @@ proptest! {
 fn contact_edges_and_neighbourhood_are_finite_and_continuous() {
     for edge in [-1.0f64, 1.0] {
         let at = line_hertz::stress_over_p0(edge, 0.0, 0.3, 0.3);
-        for (dx, dz) in [(1e-9, 0.0), (-1e-9, 0.0), (0.0, 1e-9), (1e-9, 1e-9), (-1e-9, 1e-9)] {
+        for (dx, dz) in [
+            (1e-9, 0.0),
+            (-1e-9, 0.0),
+            (0.0, 1e-9),
+            (1e-9, 1e-9),
+            (-1e-9, 1e-9),
+        ] {
             let near = line_hertz::stress_over_p0(edge + dx, dz, 0.3, 0.3);
             // Stresses are continuous at the edge (their gradient is not): |ds| ~ sqrt(distance).
-            assert!((near.xx - at.xx).abs() < 1e-3 && (near.zz - at.zz).abs() < 1e-3 && (near.xz - at.xz).abs() < 1e-3, "edge {edge} + ({dx}, {dz})");
+            assert!(
+                (near.xx - at.xx).abs() < 1e-3
+                    && (near.zz - at.zz).abs() < 1e-3
+                    && (near.xz - at.xz).abs() < 1e-3,
+                "edge {edge} + ({dx}, {dz})"
+            );
         }
     }
 }

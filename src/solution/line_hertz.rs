@@ -66,29 +66,42 @@ pub fn stress_over_p0(x: f64, z: f64, mu: f64, nu: f64) -> Stress {
     let xx = -bracket_m + mu * (n * m2_minus_z2 + 2.0 * dn);
     let zz = -m * m2_minus_z2 - mu * n * m2_minus_z2;
     let xz = -n * m2_minus_z2 - mu * bracket_m;
-    Stress { xx, yy: nu * (xx + zz), zz, yz: 0.0, xz, xy: 0.0 }
+    Stress {
+        xx,
+        yy: nu * (xx + zz),
+        zz,
+        yz: 0.0,
+        xz,
+        xy: 0.0,
+    }
 }
 
 /// Real and imaginary parts of `sqrt(1 - (x + i z)^2) = m - i n`, with `m >= 0` and `n` of the
 /// sign of `x`, computed without cancellation (the `m`, `n` of Johnson 1985, §7.2).
-#[inline]
+#[inline(always)]
 fn m_and_n(x: f64, z: f64) -> (f64, f64) {
     let s = 1.0 - x * x + z * z;
-    let two_xz = 2.0 * x * z;
-    let r = (s * s + two_xz * two_xz).sqrt();
-    if s >= 0.0 {
-        let m = (0.5 * (r + s)).sqrt();
-        let n = if m > 0.0 { x * z / m } else { 0.0 };
-        (m, n)
+    let xz = x * z;
+    let r = (s * s + 4.0 * xz * xz).sqrt();
+    // The larger of m, |n| from the sum (no cancellation), the smaller from m |n| = |x z|.
+    // Written with selects instead of branches so that rows vectorise.
+    let large = (0.5 * (r + s.abs())).sqrt();
+    let small = xz.abs() / large.max(f64::MIN_POSITIVE);
+    let (m, n_abs) = if s >= 0.0 {
+        (large, small)
     } else {
-        let n = (0.5 * (r - s)).sqrt().copysign(x);
-        (x * z / n, n)
-    }
+        (small, large)
+    };
+    (m, n_abs.copysign(x))
 }
 
 /// Surface tractions of the Hertz line contact: `(p/p0, q/p0)` at `x/a`.
 pub fn surface_traction_over_p0(x: f64, mu: f64) -> (f64, f64) {
-    let p = if x.abs() < 1.0 { (1.0 - x * x).sqrt() } else { 0.0 };
+    let p = if x.abs() < 1.0 {
+        (1.0 - x * x).sqrt()
+    } else {
+        0.0
+    };
     (p, mu * p)
 }
 
@@ -140,7 +153,11 @@ mod tests {
             let s = stress_over_p0(0.0, z, 0.0, 0.3);
             let root = (1.0 + z * z).sqrt();
             assert_relative_eq!(s.zz, -1.0 / root, epsilon = 1e-14);
-            assert_relative_eq!(s.xx, -((1.0 + 2.0 * z * z) / root - 2.0 * z), epsilon = 1e-14);
+            assert_relative_eq!(
+                s.xx,
+                -((1.0 + 2.0 * z * z) / root - 2.0 * z),
+                epsilon = 1e-14
+            );
             assert_eq!(s.xz, 0.0);
         }
     }

@@ -24,6 +24,20 @@ impl Solution {
         }
     }
 
+    /// Stresses along a row of points `(xs[i], y, z)`, written into `out` (same length).
+    ///
+    /// The match on the solution is hoisted out of the loop so the loop body can vectorise.
+    pub fn stress_row_over_p0(&self, xs: &[f64], y_over_a: f64, z_over_a: f64, out: &mut [Stress]) {
+        let _ = y_over_a;
+        match *self {
+            Solution::LineHertz { friction, poisson } => {
+                for (stress, &x) in out.iter_mut().zip(xs) {
+                    *stress = line_hertz::stress_over_p0(x, z_over_a, friction, poisson);
+                }
+            }
+        }
+    }
+
     /// Surface pressure and tangential traction `(p/p0, q/p0)` along the x axis.
     pub fn surface_traction_over_p0(&self, x_over_a: f64) -> (f64, f64) {
         match *self {

@@ -9,16 +9,28 @@ use stressfield::stress::Quantity;
 fn line_contact(c: &mut Criterion) {
     let mut group = c.benchmark_group("line_hertz_von_mises");
     group.sample_size(20);
-    let solution = Solution::LineHertz { friction: 0.2, poisson: 0.3 };
+    let solution = Solution::LineHertz {
+        friction: 0.2,
+        poisson: 0.3,
+    };
     for n in [256usize, 1024] {
-        let plane = Plane { x: Axis::new(-3.0, 3.0, n), z: Axis::new(0.0, 3.0, n) };
+        let plane = Plane {
+            x: Axis::new(-3.0, 3.0, n),
+            z: Axis::new(0.0, 3.0, n),
+        };
         group.throughput(Throughput::Elements((n * n) as u64));
-        group.bench_with_input(BenchmarkId::new("sequential", format!("{n}x{n}")), &plane, |b, plane| {
-            b.iter(|| field::evaluate_sequential(&solution, plane, &[Quantity::VonMises]))
-        });
-        group.bench_with_input(BenchmarkId::new("parallel", format!("{n}x{n}")), &plane, |b, plane| {
-            b.iter(|| field::evaluate(&solution, plane, &[Quantity::VonMises], &|| {}))
-        });
+        group.bench_with_input(
+            BenchmarkId::new("sequential", format!("{n}x{n}")),
+            &plane,
+            |b, plane| {
+                b.iter(|| field::evaluate_sequential(&solution, plane, &[Quantity::VonMises]))
+            },
+        );
+        group.bench_with_input(
+            BenchmarkId::new("parallel", format!("{n}x{n}")),
+            &plane,
+            |b, plane| b.iter(|| field::evaluate(&solution, plane, &[Quantity::VonMises], &|| {})),
+        );
     }
     group.finish();
 }

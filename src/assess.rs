@@ -51,7 +51,11 @@ pub fn maximum(solution: &Solution, quantity: Quantity, surface_only: bool) -> E
             h *= 0.5;
         }
     }
-    Extreme { value_over_p0: best, x_over_a: best_x, z_over_a: best_z }
+    Extreme {
+        value_over_p0: best,
+        x_over_a: best_x,
+        z_over_a: best_z,
+    }
 }
 
 /// The maxima that decide first yield under a contact.
@@ -85,7 +89,10 @@ mod tests {
 
     #[test]
     fn frictionless_line_contact_maxima() {
-        let solution = Solution::LineHertz { friction: 0.0, poisson: 0.3 };
+        let solution = Solution::LineHertz {
+            friction: 0.0,
+            poisson: 0.3,
+        };
         // Johnson (1985) §4.2(b): tau_1 max 0.300 p0 at z = 0.786a on the axis.
         let tau1 = maximum(&solution, Quantity::Tau1, false);
         assert_relative_eq!(tau1.value_over_p0, 0.300, epsilon = 5e-4);
@@ -98,9 +105,15 @@ mod tests {
     #[test]
     fn large_friction_moves_yield_to_the_surface() {
         // Johnson (1985) §7.2: for mu > ~0.3 first yield is at the surface.
-        let solution = Solution::LineHertz { friction: 0.4, poisson: 0.3 };
+        let solution = Solution::LineHertz {
+            friction: 0.4,
+            poisson: 0.3,
+        };
         assert!(StressMaxima::of(&solution).yield_starts_at_surface());
-        let solution = Solution::LineHertz { friction: 0.1, poisson: 0.3 };
+        let solution = Solution::LineHertz {
+            friction: 0.1,
+            poisson: 0.3,
+        };
         assert!(!StressMaxima::of(&solution).yield_starts_at_surface());
     }
 }

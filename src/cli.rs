@@ -39,9 +39,7 @@ pub enum Command {
         max_differing_pixels: usize,
     },
     /// Print the Hertz contact parameters and the yield assessment of a scene.
-    Hertz {
-        scene: PathBuf,
-    },
+    Hertz { scene: PathBuf },
     /// Validate scenes without computing anything.
     Check {
         #[arg(required = true)]

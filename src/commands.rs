@@ -15,9 +15,20 @@ use stressfield::{figure, render, report};
 
 pub fn run(command: Command) -> Result<()> {
     match command {
-        Command::Render { scenes, out_dir, scenes_dir, svg, compare, tolerance, max_differing_pixels } => {
+        Command::Render {
+            scenes,
+            out_dir,
+            scenes_dir,
+            svg,
+            compare,
+            tolerance,
+            max_differing_pixels,
+        } => {
             let scenes = scene_paths(scenes, &scenes_dir)?;
-            let tolerance = Tolerance { per_channel: tolerance, max_differing_pixels };
+            let tolerance = Tolerance {
+                per_channel: tolerance,
+                max_differing_pixels,
+            };
             render_all(&scenes, &out_dir, svg, compare.as_deref(), tolerance)
         }
         Command::Hertz { scene } => {
@@ -26,9 +37,21 @@ pub fn run(command: Command) -> Result<()> {
             Ok(())
         }
         Command::Check { scenes } => check(&scenes),
-        Command::Probe { scene, contact, friction, poisson, method, points } => {
-            probe_command(scene.as_deref(), contact, friction, poisson, method, &points)
-        }
+        Command::Probe {
+            scene,
+            contact,
+            friction,
+            poisson,
+            method,
+            points,
+        } => probe_command(
+            scene.as_deref(),
+            contact,
+            friction,
+            poisson,
+            method,
+            &points,
+        ),
     }
 }
 
@@ -57,13 +80,21 @@ fn progress_bar(total: u64) -> ProgressBar {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::new(total);
-    if let Ok(style) = ProgressStyle::with_template("{spinner} {msg:24} [{bar:40}] {percent:>3}% {elapsed}") {
+    if let Ok(style) =
+        ProgressStyle::with_template("{spinner} {msg:24} [{bar:40}] {percent:>3}% {elapsed}")
+    {
         bar.set_style(style.progress_chars("=> "));
     }
     bar
 }
 
-fn render_all(paths: &[PathBuf], out_dir: &Path, svg: bool, compare_dir: Option<&Path>, tolerance: Tolerance) -> Result<()> {
+fn render_all(
+    paths: &[PathBuf],
+    out_dir: &Path,
+    svg: bool,
+    compare_dir: Option<&Path>,
+    tolerance: Tolerance,
+) -> Result<()> {
     let mut failures = Vec::new();
     let mut scenes = Vec::new();
     for path in paths {
@@ -77,17 +108,26 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, svg: bool, compare_dir: Option<
     }
     if !scenes.is_empty() {
         std::fs::create_dir_all(out_dir).with_context(|| {
-            format!("cannot create the output directory {}\nhint: choose a writable one with --out-dir", out_dir.display())
+            format!(
+                "cannot create the output directory {}\nhint: choose a writable one with --out-dir",
+                out_dir.display()
+            )
         })?;
     }
-    let total_rows: usize = scenes.iter().map(|s| s.plane().z.count * s.panels.len()).sum();
+    let total_rows: usize = scenes
+        .iter()
+        .map(|s| s.plane().z.count * s.panels.len())
+        .sum();
     let bar = progress_bar(total_rows as u64);
     let mut mismatches = Vec::new();
     for scene in &scenes {
         bar.set_message(scene.name.clone());
         match render_scene(scene, out_dir, svg, &bar) {
             Ok(png) => {
-                bar.println(format!("rendered {}", out_dir.join(format!("{}.png", scene.name)).display()));
+                bar.println(format!(
+                    "rendered {}",
+                    out_dir.join(format!("{}.png", scene.name)).display()
+                ));
                 if let Some(dir) = compare_dir {
                     match compare_with_reference(scene, &png, dir, out_dir, tolerance) {
                         Ok(None) => {}
@@ -110,16 +150,32 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, svg: bool, compare_dir: Option<
     }
     bar.finish_and_clear();
     if !failures.is_empty() {
-        bail!("{} of {} scenes failed: {}", failures.len(), paths.len(), failures.join(", "));
+        bail!(
+            "{} of {} scenes failed: {}",
+            failures.len(),
+            paths.len(),
+            failures.join(", ")
+        );
     }
     if !mismatches.is_empty() {
-        bail!("{} of {} images differ from the references in {}: {}", mismatches.len(), scenes.len(), compare_dir.map_or_else(String::new, |d| d.display().to_string()), mismatches.join(", "));
+        bail!(
+            "{} of {} images differ from the references in {}: {}",
+            mismatches.len(),
+            scenes.len(),
+            compare_dir.map_or_else(String::new, |d| d.display().to_string()),
+            mismatches.join(", ")
+        );
     }
     Ok(())
 }
 
 /// Renders one scene, writes its PNG (and SVG) atomically, and returns the PNG image.
-fn render_scene(scene: &Scene, out_dir: &Path, svg: bool, bar: &ProgressBar) -> Result<image::RgbImage> {
+fn render_scene(
+    scene: &Scene,
+    out_dir: &Path,
+    svg: bool,
+    bar: &ProgressBar,
+) -> Result<image::RgbImage> {
     let on_row = || bar.inc(1);
     let figure = figure::build(scene, &on_row)?;
     let image = render::render_png(&figure)?;
@@ -127,17 +183,29 @@ fn render_scene(scene: &Scene, out_dir: &Path, svg: bool, bar: &ProgressBar) -> 
     write_atomic(&out_dir.join(format!("{}.png", scene.name)), &png)?;
     if svg || scene.figure.svg {
         let text = render::render_svg(&figure)?;
-        write_atomic(&out_dir.join(format!("{}.svg", scene.name)), text.as_bytes())?;
+        write_atomic(
+            &out_dir.join(format!("{}.svg", scene.name)),
+            text.as_bytes(),
+        )?;
     }
     Ok(image)
 }
 
 /// `Ok(None)` when the image matches `reference_dir/<name>.png`, `Ok(Some(report))` otherwise
 /// (a diff image is written next to the output).
-fn compare_with_reference(scene: &Scene, actual: &image::RgbImage, reference_dir: &Path, out_dir: &Path, tolerance: Tolerance) -> Result<Option<String>> {
+fn compare_with_reference(
+    scene: &Scene,
+    actual: &image::RgbImage,
+    reference_dir: &Path,
+    out_dir: &Path,
+    tolerance: Tolerance,
+) -> Result<Option<String>> {
     let reference_path = reference_dir.join(format!("{}.png", scene.name));
     let bytes = std::fs::read(&reference_path).with_context(|| {
-        format!("no reference image {}\nhint: copy the rendered image there to accept it", reference_path.display())
+        format!(
+            "no reference image {}\nhint: copy the rendered image there to accept it",
+            reference_path.display()
+        )
     })?;
     let expected = image::load_from_memory(&bytes)
         .with_context(|| format!("cannot decode {}", reference_path.display()))?
@@ -151,14 +219,24 @@ fn compare_with_reference(scene: &Scene, actual: &image::RgbImage, reference_dir
         let diff = compare::diff_image(actual, &expected, tolerance.per_channel);
         write_atomic(&diff_path, &render::encode_png(&diff)?)?;
     }
-    Ok(Some(format!("mismatch: {}: {comparison}; diff image {}", scene.name, diff_path.display())))
+    Ok(Some(format!(
+        "mismatch: {}: {comparison}; diff image {}",
+        scene.name,
+        diff_path.display()
+    )))
 }
 
 fn check(paths: &[PathBuf]) -> Result<()> {
     let mut failed = 0;
     for path in paths {
         match Scene::load(path) {
-            Ok(scene) => println!("ok {} ({} panel(s), {} x {} points each)", path.display(), scene.panels.len(), scene.plane().x.count, scene.plane().z.count),
+            Ok(scene) => println!(
+                "ok {} ({} panel(s), {} x {} points each)",
+                path.display(),
+                scene.panels.len(),
+                scene.plane().x.count,
+                scene.plane().z.count
+            ),
             Err(e) => {
                 eprintln!("error: {e}");
                 failed += 1;
@@ -171,7 +249,14 @@ fn check(paths: &[PathBuf]) -> Result<()> {
     Ok(())
 }
 
-fn probe_command(scene: Option<&Path>, contact: ContactArg, friction: Option<f64>, poisson: Option<f64>, method: MethodArg, points: &Path) -> Result<()> {
+fn probe_command(
+    scene: Option<&Path>,
+    contact: ContactArg,
+    friction: Option<f64>,
+    poisson: Option<f64>,
+    method: MethodArg,
+    points: &Path,
+) -> Result<()> {
     if contact == ContactArg::Point {
         bail!("point contact is not yet supported by probe\nhint: use --contact line");
     }
@@ -198,11 +283,24 @@ fn probe_command(scene: Option<&Path>, contact: ContactArg, friction: Option<f64
     let input: Box<dyn BufRead> = if points.as_os_str() == "-" {
         Box::new(std::io::stdin().lock())
     } else {
-        let file = std::fs::File::open(points).with_context(|| format!("cannot open the points file {}", points.display()))?;
+        let file = std::fs::File::open(points)
+            .with_context(|| format!("cannot open the points file {}", points.display()))?;
         Box::new(std::io::BufReader::new(file))
     };
-    let rows = probe::read_points(input).with_context(|| format!("in the points {}", if points.as_os_str() == "-" { "from standard input".into() } else { format!("file {}", points.display()) }))?;
-    let solution = stressfield::solution::Solution::LineHertz { friction: mu, poisson: nu };
+    let rows = probe::read_points(input).with_context(|| {
+        format!(
+            "in the points {}",
+            if points.as_os_str() == "-" {
+                "from standard input".into()
+            } else {
+                format!("file {}", points.display())
+            }
+        )
+    })?;
+    let solution = stressfield::solution::Solution::LineHertz {
+        friction: mu,
+        poisson: nu,
+    };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     probe::write_csv(&mut out, &solution, &rows)?;

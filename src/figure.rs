@@ -17,15 +17,23 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
     let p0_pa = scene.contact.p0_pa();
     let length_per_a = a_m / spec.length_unit.metres(a_m);
     let stress_per_p0 = p0_pa / spec.stress_unit.pascals(p0_pa);
-    let to_display = |axis: Axis| Axis::new(axis.min * length_per_a, axis.max * length_per_a, axis.count);
+    let to_display =
+        |axis: Axis| Axis::new(axis.min * length_per_a, axis.max * length_per_a, axis.count);
 
     let mut panels = Vec::with_capacity(scene.panels.len());
     for panel in &scene.panels {
         let solution = scene.solution(panel);
         let field = field::evaluate(&solution, &plane, &[spec.quantity], on_row)?;
-        let values = field.values.index_axis(ndarray::Axis(1), 0).mapv(|v| v * stress_per_p0);
+        let values = field
+            .values
+            .index_axis(ndarray::Axis(1), 0)
+            .mapv(|v| v * stress_per_p0);
         let traction = traction_samples(&plane.x, |x| solution.surface_traction_over_p0(x))
-            .map(|(x, p, q)| TractionSample { x: x * length_per_a, p: p * stress_per_p0, q: q * stress_per_p0 })
+            .map(|(x, p, q)| TractionSample {
+                x: x * length_per_a,
+                p: p * stress_per_p0,
+                q: q * stress_per_p0,
+            })
             .collect();
         panels.push(Panel {
             subtitle: subtitle(scene, panel),
@@ -82,7 +90,10 @@ fn subtitle(scene: &Scene, panel: &PanelSpec) -> String {
     if let Some(subtitle) = &panel.subtitle {
         return subtitle.clone();
     }
-    let mut parts = vec![format!("μ = {}", panel.friction), format!("ν = {}", panel.poisson)];
+    let mut parts = vec![
+        format!("μ = {}", panel.friction),
+        format!("ν = {}", panel.poisson),
+    ];
     if let Some(d) = scene.contact.dimensional {
         let a = d.line.half_width_m;
         let a_text = match scene.figure.length_unit {

@@ -1,11 +1,11 @@
 pub mod assess;
 pub mod contact;
 pub mod field;
-pub mod solution;
-pub mod stress;
-pub mod render;
-pub mod scene;
 pub mod figure;
 pub mod output;
-pub mod report;
 pub mod probe;
+pub mod render;
+pub mod report;
+pub mod scene;
+pub mod solution;
+pub mod stress;

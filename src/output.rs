@@ -15,12 +15,19 @@ pub struct OutputError {
 
 /// Writes `bytes` to `path` atomically (temporary file in the same directory, then rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
-    let wrap = |source| OutputError { path: path.to_path_buf(), source };
+    let wrap = |source| OutputError {
+        path: path.to_path_buf(),
+        source,
+    };
     let dir = match path.parent() {
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
     };
-    let mut temp = tempfile::Builder::new().prefix(".stressfield-").suffix(".part").tempfile_in(dir).map_err(wrap)?;
+    let mut temp = tempfile::Builder::new()
+        .prefix(".stressfield-")
+        .suffix(".part")
+        .tempfile_in(dir)
+        .map_err(wrap)?;
     temp.write_all(bytes).map_err(wrap)?;
     temp.as_file().sync_all().map_err(wrap)?;
     temp.persist(path).map_err(|e| wrap(e.error))?;
@@ -38,7 +45,11 @@ mod tests {
         write_atomic(&path, b"one").expect("write");
         write_atomic(&path, b"two").expect("rewrite");
         assert_eq!(std::fs::read(&path).expect("read"), b"two");
-        assert_eq!(std::fs::read_dir(dir.path()).expect("list").count(), 1, "no temporary left");
+        assert_eq!(
+            std::fs::read_dir(dir.path()).expect("list").count(),
+            1,
+            "no temporary left"
+        );
     }
 
     #[test]

@@ -11,7 +11,11 @@ pub const HEADER: &str = "x,y,z,sxx,syy,szz,syz,sxz,sxy,s1,s2,s3,von_mises,max_s
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum ProbeError {
     #[error("line {line}: `{text}`: {reason}\nhint: each row is x,y,z in units of a (a header row `x,y,z` and # comments are allowed)")]
-    BadRow { line: usize, text: String, reason: String },
+    BadRow {
+        line: usize,
+        text: String,
+        reason: String,
+    },
     #[error("line {line}: z = {z} lies outside the body; z >= 0 points into the body")]
     OutsideBody { line: usize, z: f64 },
     #[error("cannot read the points: {0}")]
@@ -33,24 +37,38 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
             continue;
         }
         let fields: Vec<&str> = text.split(',').map(str::trim).collect();
-        if !seen_row && fields.iter().map(|f| f.to_ascii_lowercase()).eq(["x", "y", "z"]) {
+        if !seen_row
+            && fields
+                .iter()
+                .map(|f| f.to_ascii_lowercase())
+                .eq(["x", "y", "z"])
+        {
             seen_row = true;
             continue;
         }
         seen_row = true;
-        let bad = |reason: &str| ProbeError::BadRow { line: line_number, text: text.to_string(), reason: reason.into() };
+        let bad = |reason: &str| ProbeError::BadRow {
+            line: line_number,
+            text: text.to_string(),
+            reason: reason.into(),
+        };
         if fields.len() != 3 {
             return Err(bad(&format!("expected 3 fields, found {}", fields.len())));
         }
         let mut point = [0.0_f64; 3];
         for (value, field) in point.iter_mut().zip(&fields) {
-            *value = field.parse().map_err(|_| bad(&format!("`{field}` is not a number")))?;
+            *value = field
+                .parse()
+                .map_err(|_| bad(&format!("`{field}` is not a number")))?;
             if !value.is_finite() {
                 return Err(bad(&format!("`{field}` is not finite")));
             }
         }
         if point[2] < 0.0 {
-            return Err(ProbeError::OutsideBody { line: line_number, z: point[2] });
+            return Err(ProbeError::OutsideBody {
+                line: line_number,
+                z: point[2],
+            });
         }
         points.push(point);
     }
@@ -62,7 +80,11 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
 
 /// Writes the header and one row per point, every value in shortest round-trip form (17
 /// significant digits at most, exact to the last bit).
-pub fn write_csv(out: &mut impl Write, solution: &Solution, points: &[[f64; 3]]) -> std::io::Result<()> {
+pub fn write_csv(
+    out: &mut impl Write,
+    solution: &Solution,
+    points: &[[f64; 3]],
+) -> std::io::Result<()> {
     writeln!(out, "{HEADER}")?;
     for &[x, y, z] in points {
         let s = solution.stress_over_p0(x, y, z);
@@ -90,15 +112,33 @@ mod tests {
     #[test]
     fn reads_header_comments_and_rows() {
         let text = "# points\nx, y, z\n0,0,0.786\n\n1.5,0,0\n";
-        assert_eq!(read_points(text.as_bytes()).expect("valid"), vec![[0.0, 0.0, 0.786], [1.5, 0.0, 0.0]]);
+        assert_eq!(
+            read_points(text.as_bytes()).expect("valid"),
+            vec![[0.0, 0.0, 0.786], [1.5, 0.0, 0.0]]
+        );
     }
 
     #[test]
     fn rejects_bad_rows_with_line_numbers() {
-        assert!(matches!(read_points("0,0\n".as_bytes()), Err(ProbeError::BadRow { line: 1, .. })));
-        assert!(matches!(read_points("0,0,0\n0,abc,1\n".as_bytes()), Err(ProbeError::BadRow { line: 2, .. })));
-        assert_eq!(read_points("0,0,-0.1\n".as_bytes()), Err(ProbeError::OutsideBody { line: 1, z: -0.1 }));
-        assert_eq!(read_points("# nothing\n".as_bytes()), Err(ProbeError::Empty));
-        assert!(matches!(read_points("0,0,NaN\n".as_bytes()), Err(ProbeError::BadRow { .. })));
+        assert!(matches!(
+            read_points("0,0\n".as_bytes()),
+            Err(ProbeError::BadRow { line: 1, .. })
+        ));
+        assert!(matches!(
+            read_points("0,0,0\n0,abc,1\n".as_bytes()),
+            Err(ProbeError::BadRow { line: 2, .. })
+        ));
+        assert_eq!(
+            read_points("0,0,-0.1\n".as_bytes()),
+            Err(ProbeError::OutsideBody { line: 1, z: -0.1 })
+        );
+        assert_eq!(
+            read_points("# nothing\n".as_bytes()),
+            Err(ProbeError::Empty)
+        );
+        assert!(matches!(
+            read_points("0,0,NaN\n".as_bytes()),
+            Err(ProbeError::BadRow { .. })
+        ));
     }
 }

@@ -25,26 +25,85 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let p0_pa = contact.p0_pa();
     match contact.dimensional {
         None => {
-            writeln!(out, "normalised contact: lengths in units of a, stresses in units of p0; body 1 ν = {}", contact.poisson)?;
+            writeln!(
+                out,
+                "normalised contact: lengths in units of a, stresses in units of p0; body 1 ν = {}",
+                contact.poisson
+            )?;
         }
         Some(d) => {
             if let Some(g) = d.gears {
-                writeln!(out, "spur gears: module {}, teeth {} and {}, pressure angle {:.2} deg", mm(g.module_m), g.teeth[0], g.teeth[1], g.pressure_angle_rad.to_degrees())?;
-                writeln!(out, "  pitch radii                 r1 = {}, r2 = {}", mm(g.pitch_radius_m(0)), mm(g.pitch_radius_m(1)))?;
-                writeln!(out, "  base radii                  rb1 = {}, rb2 = {}", mm(g.base_radius_m(0)), mm(g.base_radius_m(1)))?;
-                writeln!(out, "  flank radii at pitch point  R1 = r1 sin φ = {}, R2 = r2 sin φ = {}", mm(g.curvature_radius_at_pitch_point_m(0)), mm(g.curvature_radius_at_pitch_point_m(1)))?;
+                writeln!(
+                    out,
+                    "spur gears: module {}, teeth {} and {}, pressure angle {:.2} deg",
+                    mm(g.module_m),
+                    g.teeth[0],
+                    g.teeth[1],
+                    g.pressure_angle_rad.to_degrees()
+                )?;
+                writeln!(
+                    out,
+                    "  pitch radii                 r1 = {}, r2 = {}",
+                    mm(g.pitch_radius_m(0)),
+                    mm(g.pitch_radius_m(1))
+                )?;
+                writeln!(
+                    out,
+                    "  base radii                  rb1 = {}, rb2 = {}",
+                    mm(g.base_radius_m(0)),
+                    mm(g.base_radius_m(1))
+                )?;
+                writeln!(
+                    out,
+                    "  flank radii at pitch point  R1 = r1 sin φ = {}, R2 = r2 sin φ = {}",
+                    mm(g.curvature_radius_at_pitch_point_m(0)),
+                    mm(g.curvature_radius_at_pitch_point_m(1))
+                )?;
             }
             for (name, body) in [("body 1", d.body1), ("body 2", d.body2)] {
-                let radius = if body.radius_m.is_infinite() { "flat".to_string() } else { mm(body.radius_m) };
-                writeln!(out, "{name}: radius {radius}, E = {:.1} GPa, ν = {}", body.material.modulus_pa * 1e-9, body.material.poisson)?;
+                let radius = if body.radius_m.is_infinite() {
+                    "flat".to_string()
+                } else {
+                    mm(body.radius_m)
+                };
+                writeln!(
+                    out,
+                    "{name}: radius {radius}, E = {:.1} GPa, ν = {}",
+                    body.material.modulus_pa * 1e-9,
+                    body.material.poisson
+                )?;
             }
             let line = d.line;
-            writeln!(out, "load per unit length         P  = {:.4} kN/m", line.load_n_per_m * 1e-3)?;
-            writeln!(out, "effective modulus            E* = {:.3} GPa", line.effective_modulus_pa * 1e-9)?;
-            writeln!(out, "effective radius             R  = {}", mm(line.effective_radius_m))?;
-            writeln!(out, "contact half-width           a  = {:.3} µm", line.half_width_m * 1e6)?;
-            writeln!(out, "peak pressure                p0 = {:.2} MPa", line.p0_pa * 1e-6)?;
-            writeln!(out, "mean pressure                pm = {:.2} MPa (= π p0 / 4)", line.mean_pressure_pa * 1e-6)?;
+            writeln!(
+                out,
+                "load per unit length         P  = {:.4} kN/m",
+                line.load_n_per_m * 1e-3
+            )?;
+            writeln!(
+                out,
+                "effective modulus            E* = {:.3} GPa",
+                line.effective_modulus_pa * 1e-9
+            )?;
+            writeln!(
+                out,
+                "effective radius             R  = {}",
+                mm(line.effective_radius_m)
+            )?;
+            writeln!(
+                out,
+                "contact half-width           a  = {:.3} µm",
+                line.half_width_m * 1e6
+            )?;
+            writeln!(
+                out,
+                "peak pressure                p0 = {:.2} MPa",
+                line.p0_pa * 1e-6
+            )?;
+            writeln!(
+                out,
+                "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
+                line.mean_pressure_pa * 1e-6
+            )?;
             writeln!(out, "approach                     not defined by a 2-D line contact alone (it depends on the bodies' size)")?;
         }
     }
@@ -59,16 +118,37 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
         }
         let _ = write!(text, " at x = {:.3} a, z = {:.3} a", e.x_over_a, e.z_over_a);
         if dimensional {
-            let _ = write!(text, " (x = {}, z = {})", mm(e.x_over_a * a_m), mm(e.z_over_a * a_m));
+            let _ = write!(
+                text,
+                " (x = {}, z = {})",
+                mm(e.x_over_a * a_m),
+                mm(e.z_over_a * a_m)
+            );
         }
         text
     };
     writeln!(out, "stress maxima in body 1 (ν = {}):", contact.poisson)?;
-    writeln!(out, "  von Mises σvM                {}", describe(&maxima.von_mises))?;
-    writeln!(out, "  maximum shear (σ1 − σ3)/2    {}", describe(&maxima.max_shear))?;
+    writeln!(
+        out,
+        "  von Mises σvM                {}",
+        describe(&maxima.von_mises)
+    )?;
+    writeln!(
+        out,
+        "  maximum shear (σ1 − σ3)/2    {}",
+        describe(&maxima.max_shear)
+    )?;
     writeln!(out, "  principal shear τ1 (xz)      {}", describe(&tau1))?;
-    writeln!(out, "  von Mises on the surface     {}", describe(&maxima.von_mises_surface))?;
-    let starts = if maxima.yield_starts_at_surface() { "at the surface" } else { "below the surface" };
+    writeln!(
+        out,
+        "  von Mises on the surface     {}",
+        describe(&maxima.von_mises_surface)
+    )?;
+    let starts = if maxima.yield_starts_at_surface() {
+        "at the surface"
+    } else {
+        "below the surface"
+    };
     let vm = maxima.von_mises.value_over_p0;
     let tresca = maxima.max_shear.value_over_p0;
     writeln!(out, "first yield (von Mises) starts {starts}, at z = {:.3} a, when p0 = {:.3} Y (Tresca: p0 = {:.3} Y)", maxima.von_mises.z_over_a, 1.0 / vm, 0.5 / tresca)?;
@@ -91,12 +171,19 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let verdict = if ratio_vm < 1.0 {
         "no yield: the contact is fully elastic".to_string()
     } else if surface_ratio < 1.0 {
-        "yield in the subsurface only: the plastic zone is contained below an elastic surface layer".to_string()
+        "yield in the subsurface only: the plastic zone is contained below an elastic surface layer"
+            .to_string()
     } else {
         "yield reaches the surface: surface plastic flow has been initiated".to_string()
     };
     writeln!(out, "  verdict                      {verdict}")?;
     let p_yield = d.line.load_for_peak_pressure(y.pa / vm);
-    writeln!(out, "  load at first yield          P_Y = {:.3} kN/m (p0 = {:.1} MPa; load factor {:.2})", p_yield * 1e-3, y.pa / vm * 1e-6, p_yield / d.line.load_n_per_m)?;
+    writeln!(
+        out,
+        "  load at first yield          P_Y = {:.3} kN/m (p0 = {:.1} MPa; load factor {:.2})",
+        p_yield * 1e-3,
+        y.pa / vm * 1e-6,
+        p_yield / d.line.load_n_per_m
+    )?;
     Ok(())
 }

@@ -39,12 +39,24 @@ mod tests {
     #[test]
     fn seed_problem_one_radii() {
         // Seed notes, Problem 1: m = 5 mm, N = 20 and 40, phi = 20 deg.
-        let pair = SpurGearPair { module_m: 5e-3, teeth: [20, 40], pressure_angle_rad: 20f64.to_radians() };
+        let pair = SpurGearPair {
+            module_m: 5e-3,
+            teeth: [20, 40],
+            pressure_angle_rad: 20f64.to_radians(),
+        };
         assert_relative_eq!(pair.pitch_radius_m(0), 0.050, max_relative = 1e-15);
         assert_relative_eq!(pair.pitch_radius_m(1), 0.100, max_relative = 1e-15);
         // 50 mm * sin 20 deg = 17.101 mm, 100 mm * sin 20 deg = 34.202 mm.
-        assert_relative_eq!(pair.curvature_radius_at_pitch_point_m(0) * 1e3, 17.101_007_166, max_relative = 1e-10);
-        assert_relative_eq!(pair.curvature_radius_at_pitch_point_m(1) * 1e3, 34.202_014_332, max_relative = 1e-10);
+        assert_relative_eq!(
+            pair.curvature_radius_at_pitch_point_m(0) * 1e3,
+            17.101_007_166,
+            max_relative = 1e-10
+        );
+        assert_relative_eq!(
+            pair.curvature_radius_at_pitch_point_m(1) * 1e3,
+            34.202_014_332,
+            max_relative = 1e-10
+        );
         // The two radii add up to the length of the line of action between tangency points.
         let c = pair.pitch_radius_m(0) + pair.pitch_radius_m(1);
         assert_relative_eq!(

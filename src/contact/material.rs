@@ -20,13 +20,62 @@ pub struct Preset {
 /// Presets usable as `material = "steel"` in scenes. Values are typical, not guaranteed for a
 /// particular grade: give `modulus` and `poisson` explicitly for design work.
 pub const PRESETS: [Preset; 7] = [
-    Preset { name: "steel", material: Material { modulus_pa: 210e9, poisson: 0.30 }, description: "carbon and alloy steel" },
-    Preset { name: "bearing_steel", material: Material { modulus_pa: 208e9, poisson: 0.30 }, description: "through-hardened bearing steel (AISI 52100)" },
-    Preset { name: "cast_iron", material: Material { modulus_pa: 120e9, poisson: 0.26 }, description: "grey cast iron" },
-    Preset { name: "aluminium", material: Material { modulus_pa: 70e9, poisson: 0.33 }, description: "aluminium alloy" },
-    Preset { name: "titanium", material: Material { modulus_pa: 114e9, poisson: 0.34 }, description: "Ti-6Al-4V" },
-    Preset { name: "silicon_nitride", material: Material { modulus_pa: 310e9, poisson: 0.27 }, description: "Si3N4 (hybrid bearing balls)" },
-    Preset { name: "tungsten_carbide", material: Material { modulus_pa: 600e9, poisson: 0.22 }, description: "cemented WC-Co" },
+    Preset {
+        name: "steel",
+        material: Material {
+            modulus_pa: 210e9,
+            poisson: 0.30,
+        },
+        description: "carbon and alloy steel",
+    },
+    Preset {
+        name: "bearing_steel",
+        material: Material {
+            modulus_pa: 208e9,
+            poisson: 0.30,
+        },
+        description: "through-hardened bearing steel (AISI 52100)",
+    },
+    Preset {
+        name: "cast_iron",
+        material: Material {
+            modulus_pa: 120e9,
+            poisson: 0.26,
+        },
+        description: "grey cast iron",
+    },
+    Preset {
+        name: "aluminium",
+        material: Material {
+            modulus_pa: 70e9,
+            poisson: 0.33,
+        },
+        description: "aluminium alloy",
+    },
+    Preset {
+        name: "titanium",
+        material: Material {
+            modulus_pa: 114e9,
+            poisson: 0.34,
+        },
+        description: "Ti-6Al-4V",
+    },
+    Preset {
+        name: "silicon_nitride",
+        material: Material {
+            modulus_pa: 310e9,
+            poisson: 0.27,
+        },
+        description: "Si3N4 (hybrid bearing balls)",
+    },
+    Preset {
+        name: "tungsten_carbide",
+        material: Material {
+            modulus_pa: 600e9,
+            poisson: 0.22,
+        },
+        description: "cemented WC-Co",
+    },
 ];
 
 /// Looks up a preset by name.

@@ -79,7 +79,11 @@ impl LineContact {
     pub fn new(body1: &Body, body2: &Body, load_n_per_m: f64) -> Result<Self, ContactError> {
         let effective_radius_m = effective_radius(body1.radius_m, body2.radius_m)?;
         let effective_modulus_pa = effective_modulus(&body1.material, &body2.material);
-        Ok(Self::from_effective(load_n_per_m, effective_modulus_pa, effective_radius_m))
+        Ok(Self::from_effective(
+            load_n_per_m,
+            effective_modulus_pa,
+            effective_radius_m,
+        ))
     }
 
     pub fn from_effective(load_n_per_m: f64, e_star_pa: f64, radius_m: f64) -> Self {
@@ -125,7 +129,11 @@ impl PointContact {
     pub fn new(body1: &Body, body2: &Body, load_n: f64) -> Result<Self, ContactError> {
         let effective_radius_m = effective_radius(body1.radius_m, body2.radius_m)?;
         let effective_modulus_pa = effective_modulus(&body1.material, &body2.material);
-        Ok(Self::from_effective(load_n, effective_modulus_pa, effective_radius_m))
+        Ok(Self::from_effective(
+            load_n,
+            effective_modulus_pa,
+            effective_radius_m,
+        ))
     }
 
     pub fn from_effective(load_n: f64, e_star_pa: f64, radius_m: f64) -> Self {
@@ -153,26 +161,51 @@ mod tests {
     use approx::assert_relative_eq;
 
     fn steel() -> Material {
-        Material { modulus_pa: 210e9, poisson: 0.3 }
+        Material {
+            modulus_pa: 210e9,
+            poisson: 0.3,
+        }
     }
 
     #[test]
     fn line_contact_identities() {
         let c = LineContact::from_effective(40e3, 115e9, 0.0114);
         // P = (pi/2) a p0 (the integral of the elliptical pressure) and p0 = sqrt(P E*/(pi R)).
-        assert_relative_eq!(PI / 2.0 * c.half_width_m * c.p0_pa, 40e3, max_relative = 1e-14);
-        assert_relative_eq!(c.p0_pa, (40e3 * 115e9 / (PI * 0.0114)).sqrt(), max_relative = 1e-14);
+        assert_relative_eq!(
+            PI / 2.0 * c.half_width_m * c.p0_pa,
+            40e3,
+            max_relative = 1e-14
+        );
+        assert_relative_eq!(
+            c.p0_pa,
+            (40e3 * 115e9 / (PI * 0.0114)).sqrt(),
+            max_relative = 1e-14
+        );
         assert_relative_eq!(c.mean_pressure_pa, PI / 4.0 * c.p0_pa, max_relative = 1e-14);
-        assert_relative_eq!(c.load_for_peak_pressure(2.0 * c.p0_pa), 4.0 * 40e3, max_relative = 1e-14);
+        assert_relative_eq!(
+            c.load_for_peak_pressure(2.0 * c.p0_pa),
+            4.0 * 40e3,
+            max_relative = 1e-14
+        );
     }
 
     #[test]
     fn point_contact_identities() {
-        let body = Body { radius_m: 0.01, material: steel() };
-        let flat = Body { radius_m: f64::INFINITY, material: steel() };
+        let body = Body {
+            radius_m: 0.01,
+            material: steel(),
+        };
+        let flat = Body {
+            radius_m: f64::INFINITY,
+            material: steel(),
+        };
         let c = PointContact::new(&body, &flat, 100.0).expect("valid");
         // W = (2/3) pi a^2 p0 and p0 = (6 W E*^2 / (pi^3 R^2))^(1/3) (Johnson 1985, §4.2(a)).
-        assert_relative_eq!(2.0 / 3.0 * PI * c.radius_m.powi(2) * c.p0_pa, 100.0, max_relative = 1e-14);
+        assert_relative_eq!(
+            2.0 / 3.0 * PI * c.radius_m.powi(2) * c.p0_pa,
+            100.0,
+            max_relative = 1e-14
+        );
         let e = c.effective_modulus_pa;
         assert_relative_eq!(
             c.p0_pa,
@@ -189,10 +222,24 @@ mod tests {
 
     #[test]
     fn effective_values() {
-        assert_relative_eq!(effective_modulus(&steel(), &steel()), 210e9 / (2.0 * 0.91), max_relative = 1e-15);
+        assert_relative_eq!(
+            effective_modulus(&steel(), &steel()),
+            210e9 / (2.0 * 0.91),
+            max_relative = 1e-15
+        );
         assert_relative_eq!(effective_radius(0.02, f64::INFINITY).expect("flat"), 0.02);
-        assert_relative_eq!(effective_radius(0.01, -0.03).expect("conformal"), 0.015, max_relative = 1e-14);
-        assert!(matches!(effective_radius(0.03, -0.01), Err(ContactError::NotConvex { .. })));
-        assert_eq!(effective_radius(f64::INFINITY, f64::INFINITY), Err(ContactError::BothFlat));
+        assert_relative_eq!(
+            effective_radius(0.01, -0.03).expect("conformal"),
+            0.015,
+            max_relative = 1e-14
+        );
+        assert!(matches!(
+            effective_radius(0.03, -0.01),
+            Err(ContactError::NotConvex { .. })
+        ));
+        assert_eq!(
+            effective_radius(f64::INFINITY, f64::INFINITY),
+            Err(ContactError::BothFlat)
+        );
     }
 }

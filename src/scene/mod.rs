@@ -45,7 +45,9 @@ fn location_text(key: &Option<String>, line_column: &Option<(usize, usize)>) -> 
 }
 
 fn hint_text(hint: &Option<String>) -> String {
-    hint.as_ref().map(|h| format!("\nhint: {h}")).unwrap_or_default()
+    hint.as_ref()
+        .map(|h| format!("\nhint: {h}"))
+        .unwrap_or_default()
 }
 
 /// Contact geometry kind.
@@ -231,15 +233,20 @@ impl Scene {
             key: None,
             line_column: None,
             message: format!("cannot read the scene: {e}"),
-            hint: Some("check the path; scenes are TOML files such as scenes/line_tau1.toml".into()),
+            hint: Some(
+                "check the path; scenes are TOML files such as scenes/line_tau1.toml".into(),
+            ),
         })?;
-        let name = path.file_stem().map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
+        let name = path
+            .file_stem()
+            .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
         Self::parse(&text, &name, &file)
     }
 
     /// Parses and validates scene text; `name` names the outputs, `file` the error messages.
     pub fn parse(text: &str, name: &str, file: &str) -> Result<Self, SceneError> {
-        let deserializer = toml::Deserializer::parse(text).map_err(|e| toml_error(text, file, None, &e))?;
+        let deserializer =
+            toml::Deserializer::parse(text).map_err(|e| toml_error(text, file, None, &e))?;
         let raw: RawScene = serde_path_to_error::deserialize(deserializer).map_err(|e| {
             let path = e.path().to_string();
             let key = (path != "." && !path.is_empty()).then_some(path);
@@ -250,7 +257,8 @@ impl Scene {
 
     /// The grid of the panels, in units of a.
     pub fn plane(&self) -> Plane {
-        let unit_over_a = self.figure.length_unit.metres(self.contact.half_width_m()) / self.contact.half_width_m();
+        let unit_over_a = self.figure.length_unit.metres(self.contact.half_width_m())
+            / self.contact.half_width_m();
         let (x0, x1) = self.figure.x;
         let (z0, z1) = self.figure.z;
         let nx = self.figure.resolution;
@@ -281,7 +289,13 @@ fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Err
     } else {
         None
     };
-    SceneError { file: file.into(), key, line_column, message, hint }
+    SceneError {
+        file: file.into(),
+        key,
+        line_column,
+        message,
+        hint,
+    }
 }
 
 fn line_column(text: &str, offset: usize) -> (usize, usize) {
@@ -310,7 +324,10 @@ impl Validator<'_> {
         if raw.format != FORMAT {
             return Err(self.error(
                 "format",
-                format!("this build reads scene format {FORMAT}, the scene says {}", raw.format),
+                format!(
+                    "this build reads scene format {FORMAT}, the scene says {}",
+                    raw.format
+                ),
                 Some("set `format = 1`"),
             ));
         }
@@ -327,15 +344,32 @@ impl Validator<'_> {
                 Some(nu) => self.poisson(&format!("{key}.poisson"), nu)?,
                 None => contact.poisson,
             };
-            panels.push(PanelSpec { friction, poisson, subtitle: panel.subtitle.clone() });
+            panels.push(PanelSpec {
+                friction,
+                poisson,
+                subtitle: panel.subtitle.clone(),
+            });
         }
         if panels.is_empty() {
-            panels.push(PanelSpec { friction: contact.friction, poisson: contact.poisson, subtitle: None });
+            panels.push(PanelSpec {
+                friction: contact.friction,
+                poisson: contact.poisson,
+                subtitle: None,
+            });
         }
         if panels.len() > 6 {
-            return Err(self.error("panel", format!("{} panels is too many for one figure", panels.len()), Some("use at most 6 [[panel]] tables; split the rest into another scene")));
+            return Err(self.error(
+                "panel",
+                format!("{} panels is too many for one figure", panels.len()),
+                Some("use at most 6 [[panel]] tables; split the rest into another scene"),
+            ));
         }
-        let plane_points = figure.resolution * grid_rows(figure.resolution, figure.x.1 - figure.x.0, figure.z.1 - figure.z.0);
+        let plane_points = figure.resolution
+            * grid_rows(
+                figure.resolution,
+                figure.x.1 - figure.x.0,
+                figure.z.1 - figure.z.0,
+            );
         let bytes = plane_points.saturating_mul(panels.len()).saturating_mul(8);
         if bytes > crate::field::MAX_FIELD_BYTES {
             return Err(self.error(
@@ -350,19 +384,33 @@ impl Validator<'_> {
                 Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),
             ));
         }
-        Ok(Scene { name: name.into(), title: raw.title, contact, figure, panels })
+        Ok(Scene {
+            name: name.into(),
+            title: raw.title,
+            contact,
+            figure,
+            panels,
+        })
     }
 
     fn friction(&self, key: &str, mu: f64) -> Result<f64, SceneError> {
         if !(mu.is_finite() && mu >= 0.0) {
-            return Err(self.error(key, format!("friction coefficient must be >= 0 and finite, got {mu}"), Some("typical values are 0 to 0.5")));
+            return Err(self.error(
+                key,
+                format!("friction coefficient must be >= 0 and finite, got {mu}"),
+                Some("typical values are 0 to 0.5"),
+            ));
         }
         Ok(mu)
     }
 
     fn poisson(&self, key: &str, nu: f64) -> Result<f64, SceneError> {
         if !(nu > -1.0 && nu <= 0.5) {
-            return Err(self.error(key, format!("Poisson's ratio must lie in (-1, 0.5], got {nu}"), Some("steel is about 0.3")));
+            return Err(self.error(
+                key,
+                format!("Poisson's ratio must lie in (-1, 0.5], got {nu}"),
+                Some("steel is about 0.3"),
+            ));
         }
         Ok(nu)
     }
@@ -370,7 +418,11 @@ impl Validator<'_> {
     fn positive(&self, key: &str, text: &str, dimension: Dimension) -> Result<f64, SceneError> {
         let value = units::parse(text, dimension).map_err(|m| self.error(key, m, None))?;
         if !(value.is_finite() && value > 0.0) {
-            return Err(self.error(key, format!("must be positive and finite, got `{text}`"), None));
+            return Err(self.error(
+                key,
+                format!("must be positive and finite, got `{text}`"),
+                None,
+            ));
         }
         Ok(value)
     }
@@ -386,15 +438,26 @@ impl Validator<'_> {
                 ))
             }
             other => {
-                return Err(self.error("contact.kind", format!("unknown contact kind `{other}`"), Some("use \"line\"")))
+                return Err(self.error(
+                    "contact.kind",
+                    format!("unknown contact kind `{other}`"),
+                    Some("use \"line\""),
+                ))
             }
         };
         let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
-        let dimensional_keys = raw.load.is_some() || raw.body1.is_some() || raw.body2.is_some() || raw.gears.is_some();
+        let dimensional_keys =
+            raw.load.is_some() || raw.body1.is_some() || raw.body2.is_some() || raw.gears.is_some();
         let yield_strength = self.yield_strength(raw)?;
         if !dimensional_keys {
             let poisson = self.poisson("contact.poisson", raw.poisson.unwrap_or(0.3))?;
-            return Ok(Contact { kind, friction, poisson, dimensional: None, yield_strength });
+            return Ok(Contact {
+                kind,
+                friction,
+                poisson,
+                dimensional: None,
+                yield_strength,
+            });
         }
         if raw.poisson.is_some() {
             return Err(self.error(
@@ -404,13 +467,25 @@ impl Validator<'_> {
             ));
         }
         let load_text = raw.load.as_deref().ok_or_else(|| {
-            self.error("contact.load", "a dimensional scene needs the load", Some("add e.g. load = \"40 kN/m\" (force per unit length for line contact)"))
+            self.error(
+                "contact.load",
+                "a dimensional scene needs the load",
+                Some("add e.g. load = \"40 kN/m\" (force per unit length for line contact)"),
+            )
         })?;
         let load = self.positive("contact.load", load_text, Dimension::ForcePerLength)?;
         let gears = raw.gears.as_ref().map(|g| self.gears(g)).transpose()?;
         let empty = RawBody::default();
-        let mut body1 = self.body("contact.body1", raw.body1.as_ref().unwrap_or(&empty), gears.is_some())?;
-        let mut body2 = self.body("contact.body2", raw.body2.as_ref().unwrap_or(&empty), gears.is_some())?;
+        let mut body1 = self.body(
+            "contact.body1",
+            raw.body1.as_ref().unwrap_or(&empty),
+            gears.is_some(),
+        )?;
+        let mut body2 = self.body(
+            "contact.body2",
+            raw.body2.as_ref().unwrap_or(&empty),
+            gears.is_some(),
+        )?;
         if let Some(pair) = gears {
             body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
             body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
@@ -422,20 +497,33 @@ impl Validator<'_> {
             kind,
             friction,
             poisson: body1.material.poisson,
-            dimensional: Some(Dimensional { body1, body2, gears, line }),
+            dimensional: Some(Dimensional {
+                body1,
+                body2,
+                gears,
+                line,
+            }),
             yield_strength,
         })
     }
 
     fn yield_strength(&self, raw: &RawContact) -> Result<Option<YieldStrength>, SceneError> {
         match (&raw.yield_strength, &raw.hardness) {
-            (Some(_), Some(_)) => Err(self.error("contact.hardness", "give either yield_strength or hardness, not both", None)),
-            (Some(text), None) => {
-                Ok(Some(YieldStrength { pa: self.positive("contact.yield_strength", text, Dimension::Pressure)?, from_hardness: None }))
-            }
+            (Some(_), Some(_)) => Err(self.error(
+                "contact.hardness",
+                "give either yield_strength or hardness, not both",
+                None,
+            )),
+            (Some(text), None) => Ok(Some(YieldStrength {
+                pa: self.positive("contact.yield_strength", text, Dimension::Pressure)?,
+                from_hardness: None,
+            })),
             (None, Some(text)) => {
                 let number = self.positive("contact.hardness", text, Dimension::Hardness)?;
-                Ok(Some(YieldStrength { pa: yield_strength_from_hardness_pa(number), from_hardness: Some(number) }))
+                Ok(Some(YieldStrength {
+                    pa: yield_strength_from_hardness_pa(number),
+                    from_hardness: Some(number),
+                }))
             }
             (None, None) => Ok(None),
         }
@@ -443,15 +531,35 @@ impl Validator<'_> {
 
     fn gears(&self, raw: &raw::RawGears) -> Result<SpurGearPair, SceneError> {
         let module_m = self.positive("contact.gears.module", &raw.module, Dimension::Length)?;
-        let angle = units::parse(&raw.pressure_angle, Dimension::Angle).map_err(|m| self.error("contact.gears.pressure_angle", m, None))?;
+        let angle = units::parse(&raw.pressure_angle, Dimension::Angle)
+            .map_err(|m| self.error("contact.gears.pressure_angle", m, None))?;
         if !(angle > 0.0 && angle < std::f64::consts::FRAC_PI_2) {
-            return Err(self.error("contact.gears.pressure_angle", format!("must lie between 0 and 90 deg, got `{}`", raw.pressure_angle), Some("20 deg is standard")));
+            return Err(self.error(
+                "contact.gears.pressure_angle",
+                format!(
+                    "must lie between 0 and 90 deg, got `{}`",
+                    raw.pressure_angle
+                ),
+                Some("20 deg is standard"),
+            ));
         }
         let teeth: [u32; 2] = match raw.teeth.as_slice() {
-            [a, b] if *a >= 6 && *b >= 6 && *a <= 100_000 && *b <= 100_000 => [*a as u32, *b as u32],
-            _ => return Err(self.error("contact.gears.teeth", format!("needs two tooth counts of at least 6, got {:?}", raw.teeth), Some("e.g. teeth = [20, 40] (pinion = body1, gear = body2)"))),
+            [a, b] if *a >= 6 && *b >= 6 && *a <= 100_000 && *b <= 100_000 => {
+                [*a as u32, *b as u32]
+            }
+            _ => {
+                return Err(self.error(
+                    "contact.gears.teeth",
+                    format!("needs two tooth counts of at least 6, got {:?}", raw.teeth),
+                    Some("e.g. teeth = [20, 40] (pinion = body1, gear = body2)"),
+                ))
+            }
         };
-        Ok(SpurGearPair { module_m, teeth, pressure_angle_rad: angle })
+        Ok(SpurGearPair {
+            module_m,
+            teeth,
+            pressure_angle_rad: angle,
+        })
     }
 
     fn body(&self, key: &str, raw: &RawBody, radius_from_gears: bool) -> Result<Body, SceneError> {
@@ -477,28 +585,66 @@ impl Validator<'_> {
         let preset = match &raw.material {
             Some(name) => Some(material::preset(name).ok_or_else(|| {
                 let names: Vec<_> = material::PRESETS.iter().map(|p| p.name).collect();
-                self.error(&format!("{key}.material"), format!("unknown material `{name}`"), Some(&format!("use one of: {}; or give modulus and poisson", names.join(", "))))
+                self.error(
+                    &format!("{key}.material"),
+                    format!("unknown material `{name}`"),
+                    Some(&format!(
+                        "use one of: {}; or give modulus and poisson",
+                        names.join(", ")
+                    )),
+                )
             })?),
             None => None,
         };
         let modulus_pa = match (&raw.modulus, preset) {
-            (Some(text), _) => self.positive(&format!("{key}.modulus"), text, Dimension::Pressure)?,
+            (Some(text), _) => {
+                self.positive(&format!("{key}.modulus"), text, Dimension::Pressure)?
+            }
             (None, Some(p)) => p.material.modulus_pa,
-            (None, None) => return Err(self.error(&format!("{key}.modulus"), "missing elastic modulus", Some("add modulus = \"210 GPa\" or material = \"steel\""))),
+            (None, None) => {
+                return Err(self.error(
+                    &format!("{key}.modulus"),
+                    "missing elastic modulus",
+                    Some("add modulus = \"210 GPa\" or material = \"steel\""),
+                ))
+            }
         };
         let poisson = match (raw.poisson, preset) {
             (Some(nu), _) => self.poisson(&format!("{key}.poisson"), nu)?,
             (None, Some(p)) => p.material.poisson,
-            (None, None) => return Err(self.error(&format!("{key}.poisson"), "missing Poisson's ratio", Some("add poisson = 0.3 or material = \"steel\""))),
+            (None, None) => {
+                return Err(self.error(
+                    &format!("{key}.poisson"),
+                    "missing Poisson's ratio",
+                    Some("add poisson = 0.3 or material = \"steel\""),
+                ))
+            }
         };
-        Ok(Body { radius_m, material: Material { modulus_pa, poisson } })
+        Ok(Body {
+            radius_m,
+            material: Material {
+                modulus_pa,
+                poisson,
+            },
+        })
     }
 
-    fn range(&self, key: &str, values: Option<&Vec<f64>>, default: (f64, f64)) -> Result<(f64, f64), SceneError> {
-        let Some(values) = values else { return Ok(default) };
+    fn range(
+        &self,
+        key: &str,
+        values: Option<&Vec<f64>>,
+        default: (f64, f64),
+    ) -> Result<(f64, f64), SceneError> {
+        let Some(values) = values else {
+            return Ok(default);
+        };
         match values.as_slice() {
             [lo, hi] if lo.is_finite() && hi.is_finite() && lo < hi => Ok((*lo, *hi)),
-            [lo, hi] if lo >= hi => Err(self.error(key, format!("range [{lo}, {hi}] is empty or inverted"), Some("write [min, max] with min < max"))),
+            [lo, hi] if lo >= hi => Err(self.error(
+                key,
+                format!("range [{lo}, {hi}] is empty or inverted"),
+                Some("write [min, max] with min < max"),
+            )),
             _ => Err(self.error(key, format!("needs [min, max], got {values:?}"), None)),
         }
     }
@@ -507,50 +653,108 @@ impl Validator<'_> {
         let quantity = match &raw.quantity {
             Some(key) => Quantity::from_key(key).ok_or_else(|| {
                 let keys: Vec<_> = Quantity::ALL.iter().map(|q| q.key()).collect();
-                self.error("figure.quantity", format!("unknown quantity `{key}`"), Some(&format!("use one of: {}", keys.join(", "))))
+                self.error(
+                    "figure.quantity",
+                    format!("unknown quantity `{key}`"),
+                    Some(&format!("use one of: {}", keys.join(", "))),
+                )
             })?,
             None => Quantity::VonMises,
         };
         let dimensional = contact.dimensional.is_some();
         let length_unit = match &raw.length_unit {
-            Some(key) => LengthUnit::from_key(key).ok_or_else(|| self.error("figure.length_unit", format!("unknown length unit `{key}`"), Some("use \"a\", \"mm\", \"um\" or \"m\"")))?,
+            Some(key) => LengthUnit::from_key(key).ok_or_else(|| {
+                self.error(
+                    "figure.length_unit",
+                    format!("unknown length unit `{key}`"),
+                    Some("use \"a\", \"mm\", \"um\" or \"m\""),
+                )
+            })?,
             None if dimensional => LengthUnit::Millimetre,
             None => LengthUnit::HalfWidth,
         };
         let stress_unit = match &raw.stress_unit {
-            Some(key) => StressUnit::from_key(key).ok_or_else(|| self.error("figure.stress_unit", format!("unknown stress unit `{key}`"), Some("use \"p0\", \"MPa\", \"GPa\" or \"Pa\"")))?,
+            Some(key) => StressUnit::from_key(key).ok_or_else(|| {
+                self.error(
+                    "figure.stress_unit",
+                    format!("unknown stress unit `{key}`"),
+                    Some("use \"p0\", \"MPa\", \"GPa\" or \"Pa\""),
+                )
+            })?,
             None if dimensional => StressUnit::MegaPascal,
             None => StressUnit::PeakPressure,
         };
         if !dimensional && length_unit != LengthUnit::HalfWidth {
-            return Err(self.error("figure.length_unit", "a normalised scene (no load or bodies) is drawn in units of a", Some("use length_unit = \"a\", or give contact.load and the bodies")));
+            return Err(self.error(
+                "figure.length_unit",
+                "a normalised scene (no load or bodies) is drawn in units of a",
+                Some("use length_unit = \"a\", or give contact.load and the bodies"),
+            ));
         }
         if !dimensional && stress_unit != StressUnit::PeakPressure {
-            return Err(self.error("figure.stress_unit", "a normalised scene (no load or bodies) is drawn in units of p0", Some("use stress_unit = \"p0\", or give contact.load and the bodies")));
+            return Err(self.error(
+                "figure.stress_unit",
+                "a normalised scene (no load or bodies) is drawn in units of p0",
+                Some("use stress_unit = \"p0\", or give contact.load and the bodies"),
+            ));
         }
         let a_in_unit = contact.half_width_m() / length_unit.metres(contact.half_width_m());
-        let x = self.range("figure.x", raw.x.as_ref(), (-2.5 * a_in_unit, 2.5 * a_in_unit))?;
+        let x = self.range(
+            "figure.x",
+            raw.x.as_ref(),
+            (-2.5 * a_in_unit, 2.5 * a_in_unit),
+        )?;
         let z = self.range("figure.z", raw.z.as_ref(), (0.0, 2.0 * a_in_unit))?;
         if z.0 < 0.0 {
-            return Err(self.error("figure.z", format!("depth must be >= 0 (z points into the body), got {}", z.0), Some("start the range at 0 for the surface")));
+            return Err(self.error(
+                "figure.z",
+                format!("depth must be >= 0 (z points into the body), got {}", z.0),
+                Some("start the range at 0 for the surface"),
+            ));
         }
         let resolution = match raw.resolution {
             None => 801,
             Some(n) if (16..=20_000).contains(&n) => n as usize,
-            Some(n) => return Err(self.error("figure.resolution", format!("must lie in 16..=20000 samples along x, got {n}"), Some("600 to 1200 is plenty for a figure"))),
+            Some(n) => {
+                return Err(self.error(
+                    "figure.resolution",
+                    format!("must lie in 16..=20000 samples along x, got {n}"),
+                    Some("600 to 1200 is plenty for a figure"),
+                ))
+            }
         };
         let levels = match (raw.contours, &raw.levels) {
-            (Some(_), Some(_)) => return Err(self.error("figure.levels", "give either contours (a count) or levels (values), not both", None)),
+            (Some(_), Some(_)) => {
+                return Err(self.error(
+                    "figure.levels",
+                    "give either contours (a count) or levels (values), not both",
+                    None,
+                ))
+            }
             (Some(n), None) if (0..=100).contains(&n) => Levels::Count(n as usize),
-            (Some(n), None) => return Err(self.error("figure.contours", format!("must lie in 0..=100, got {n}"), None)),
-            (None, Some(values)) if values.iter().all(|v| v.is_finite()) => Levels::Values(values.clone()),
-            (None, Some(_)) => return Err(self.error("figure.levels", "levels must be finite numbers", None)),
+            (Some(n), None) => {
+                return Err(self.error(
+                    "figure.contours",
+                    format!("must lie in 0..=100, got {n}"),
+                    None,
+                ))
+            }
+            (None, Some(values)) if values.iter().all(|v| v.is_finite()) => {
+                Levels::Values(values.clone())
+            }
+            (None, Some(_)) => {
+                return Err(self.error("figure.levels", "levels must be finite numbers", None))
+            }
             (None, None) => Levels::Count(10),
         };
         let colormap = match &raw.colormap {
             Some(key) => ColorMap::from_key(key).ok_or_else(|| {
                 let keys: Vec<_> = ColorMap::ALL.iter().map(|c| c.key()).collect();
-                self.error("figure.colormap", format!("unknown colour map `{key}`"), Some(&format!("use one of: {}", keys.join(", "))))
+                self.error(
+                    "figure.colormap",
+                    format!("unknown colour map `{key}`"),
+                    Some(&format!("use one of: {}", keys.join(", "))),
+                )
             })?,
             None => match quantity.kind() {
                 QuantityKind::NonNegative => ColorMap::Viridis,
@@ -562,14 +766,38 @@ impl Validator<'_> {
             Some("min") => Mark::Min,
             Some("both") => Mark::Both,
             Some("none") => Mark::None,
-            Some(other) => return Err(self.error("figure.mark", format!("unknown mark `{other}`"), Some("use \"max\", \"min\", \"both\" or \"none\""))),
+            Some(other) => {
+                return Err(self.error(
+                    "figure.mark",
+                    format!("unknown mark `{other}`"),
+                    Some("use \"max\", \"min\", \"both\" or \"none\""),
+                ))
+            }
         };
         let width_px = match raw.width {
             None => 560,
             Some(w) if (200..=4000).contains(&w) => w as u32,
-            Some(w) => return Err(self.error("figure.width", format!("panel width must lie in 200..=4000 px, got {w}"), None)),
+            Some(w) => {
+                return Err(self.error(
+                    "figure.width",
+                    format!("panel width must lie in 200..=4000 px, got {w}"),
+                    None,
+                ))
+            }
         };
-        Ok(FigureSpec { quantity, x, z, length_unit, stress_unit, resolution, levels, colormap, mark, width_px, svg: raw.svg.unwrap_or(false) })
+        Ok(FigureSpec {
+            quantity,
+            x,
+            z,
+            length_unit,
+            stress_unit,
+            resolution,
+            levels,
+            colormap,
+            mark,
+            width_px,
+            svg: raw.svg.unwrap_or(false),
+        })
     }
 }
 
@@ -591,7 +819,8 @@ mod tests {
 
     #[test]
     fn unknown_key_reports_dotted_path_and_line() {
-        let err = parse("format = 1\n[contact]\nkind = \"line\"\npoison = 0.3\n").expect_err("typo");
+        let err =
+            parse("format = 1\n[contact]\nkind = \"line\"\npoison = 0.3\n").expect_err("typo");
         assert_eq!(err.key.as_deref(), Some("contact.poison"), "{err}");
         assert_eq!(err.line_column.map(|(l, _)| l), Some(4), "{err}");
     }

@@ -16,7 +16,14 @@ impl Dimension {
     /// hardness number itself for hardness).
     fn units(self) -> &'static [(&'static str, f64)] {
         match self {
-            Dimension::Length => &[("m", 1.0), ("cm", 1e-2), ("mm", 1e-3), ("um", 1e-6), ("µm", 1e-6), ("in", 0.0254)],
+            Dimension::Length => &[
+                ("m", 1.0),
+                ("cm", 1e-2),
+                ("mm", 1e-3),
+                ("um", 1e-6),
+                ("µm", 1e-6),
+                ("in", 0.0254),
+            ],
             Dimension::Pressure => &[
                 ("Pa", 1.0),
                 ("kPa", 1e3),
@@ -27,7 +34,12 @@ impl Dimension {
                 ("psi", 6_894.757_293_168_361),
                 ("ksi", 6_894_757.293_168_361),
             ],
-            Dimension::Force => &[("N", 1.0), ("kN", 1e3), ("MN", 1e6), ("lbf", 4.448_221_615_260_5)],
+            Dimension::Force => &[
+                ("N", 1.0),
+                ("kN", 1e3),
+                ("MN", 1e6),
+                ("lbf", 4.448_221_615_260_5),
+            ],
             Dimension::ForcePerLength => &[
                 ("N/m", 1.0),
                 ("kN/m", 1e3),
@@ -54,7 +66,11 @@ impl Dimension {
     }
 
     pub fn unit_list(self) -> String {
-        self.units().iter().map(|(u, _)| *u).collect::<Vec<_>>().join(", ")
+        self.units()
+            .iter()
+            .map(|(u, _)| *u)
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 }
 
@@ -66,7 +82,9 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
     while split < bytes.len() {
         let c = bytes[split];
         let exponent = (c == b'e' || c == b'E')
-            && bytes.get(split + 1).is_some_and(|n| n.is_ascii_digit() || *n == b'-' || *n == b'+');
+            && bytes
+                .get(split + 1)
+                .is_some_and(|n| n.is_ascii_digit() || *n == b'-' || *n == b'+');
         if c.is_ascii_digit() || c == b'.' || c == b'+' || c == b'-' || exponent {
             split += 1;
         } else {
@@ -84,7 +102,10 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
         ));
     }
     let value: f64 = number.parse().map_err(|_| {
-        format!("`{text}` does not start with a number; write e.g. {}", dimension.example())
+        format!(
+            "`{text}` does not start with a number; write e.g. {}",
+            dimension.example()
+        )
     })?;
     let factor = dimension
         .units()
@@ -92,7 +113,10 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
         .find(|(u, _)| *u == unit)
         .map(|(_, f)| *f)
         .ok_or_else(|| {
-            format!("unknown unit `{unit}` in `{text}`; use one of: {}", dimension.unit_list())
+            format!(
+                "unknown unit `{unit}` in `{text}`; use one of: {}",
+                dimension.unit_list()
+            )
         })?;
     Ok(value * factor)
 }
@@ -105,18 +129,30 @@ mod tests {
     #[test]
     fn parses_common_units() {
         assert_relative_eq!(parse("210 GPa", Dimension::Pressure).expect("ok"), 210e9);
-        assert_relative_eq!(parse("40 kN/m", Dimension::ForcePerLength).expect("ok"), 40e3);
+        assert_relative_eq!(
+            parse("40 kN/m", Dimension::ForcePerLength).expect("ok"),
+            40e3
+        );
         assert_relative_eq!(parse("20mm", Dimension::Length).expect("ok"), 0.02);
         assert_relative_eq!(parse("1.5e3 N", Dimension::Force).expect("ok"), 1500.0);
-        assert_relative_eq!(parse("20 deg", Dimension::Angle).expect("ok"), 20f64.to_radians());
+        assert_relative_eq!(
+            parse("20 deg", Dimension::Angle).expect("ok"),
+            20f64.to_radians()
+        );
         assert_relative_eq!(parse("-3 mm", Dimension::Length).expect("ok"), -0.003);
         assert_relative_eq!(parse("300 HB", Dimension::Hardness).expect("ok"), 300.0);
     }
 
     #[test]
     fn rejects_missing_or_wrong_units() {
-        assert!(parse("210", Dimension::Pressure).expect_err("no unit").contains("no unit"));
-        assert!(parse("40 kN", Dimension::ForcePerLength).expect_err("force").contains("unknown unit `kN`"));
-        assert!(parse("abc MPa", Dimension::Pressure).expect_err("nan").contains("number"));
+        assert!(parse("210", Dimension::Pressure)
+            .expect_err("no unit")
+            .contains("no unit"));
+        assert!(parse("40 kN", Dimension::ForcePerLength)
+            .expect_err("force")
+            .contains("unknown unit `kN`"));
+        assert!(parse("abc MPa", Dimension::Pressure)
+            .expect_err("nan")
+            .contains("number"));
     }
 }

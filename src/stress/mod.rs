@@ -145,7 +145,14 @@ mod tests {
     use approx::assert_relative_eq;
 
     fn general() -> Stress {
-        Stress { xx: 3.0, yy: -1.0, zz: 2.0, yz: 0.5, xz: -1.5, xy: 0.75 }
+        Stress {
+            xx: 3.0,
+            yy: -1.0,
+            zz: 2.0,
+            yz: 0.5,
+            xz: -1.5,
+            xy: 0.75,
+        }
     }
 
     #[test]
@@ -176,7 +183,14 @@ mod tests {
 
     #[test]
     fn plane_strain_fast_path_agrees_with_jacobi() {
-        let s = Stress { xx: -0.4, yy: -0.21, zz: -0.9, yz: 0.0, xz: 0.17, xy: 0.0 };
+        let s = Stress {
+            xx: -0.4,
+            yy: -0.21,
+            zz: -0.9,
+            yz: 0.0,
+            xz: 0.17,
+            xy: 0.0,
+        };
         let fast = s.principal();
         let mut slow = s.jacobi_eigenvalues();
         slow.sort_by(|a, b| b.total_cmp(a));
@@ -187,15 +201,26 @@ mod tests {
 
     #[test]
     fn uniaxial_and_pure_shear_textbook_values() {
-        let uniaxial = Stress { xx: 1.0, ..Stress::default() };
+        let uniaxial = Stress {
+            xx: 1.0,
+            ..Stress::default()
+        };
         assert_relative_eq!(uniaxial.von_mises(), 1.0, epsilon = 1e-15);
         assert_relative_eq!(uniaxial.max_shear(), 0.5, epsilon = 1e-15);
         assert_relative_eq!(uniaxial.hydrostatic(), 1.0 / 3.0, epsilon = 1e-15);
-        let shear = Stress { xz: 1.0, ..Stress::default() };
+        let shear = Stress {
+            xz: 1.0,
+            ..Stress::default()
+        };
         assert_relative_eq!(shear.von_mises(), 3f64.sqrt(), epsilon = 1e-15);
         assert_relative_eq!(shear.max_shear(), 1.0, epsilon = 1e-15);
         assert_relative_eq!(shear.principal_shear_xz(), 1.0, epsilon = 1e-15);
-        let spherical = Stress { xx: -2.0, yy: -2.0, zz: -2.0, ..Stress::default() };
+        let spherical = Stress {
+            xx: -2.0,
+            yy: -2.0,
+            zz: -2.0,
+            ..Stress::default()
+        };
         assert_eq!(spherical.principal(), [-2.0, -2.0, -2.0]);
         assert_eq!(spherical.von_mises(), 0.0);
     }

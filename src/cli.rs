@@ -52,10 +52,10 @@ pub enum Command {
         #[arg(long, value_enum, default_value_t = ContactArg::Line)]
         contact: ContactArg,
         /// Coefficient of sliding friction (overrides the scene's).
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         friction: Option<f64>,
         /// Poisson's ratio of the body (overrides the scene's).
-        #[arg(long)]
+        #[arg(long, allow_negative_numbers = true)]
         poisson: Option<f64>,
         #[arg(long, value_enum, default_value_t = MethodArg::ClosedForm)]
         method: MethodArg,

@@ -1,4 +1,7 @@
 //! One integration-test binary, one module per topic (see STYLE.md: each test binary links the
 //! whole crate, so keep them few).
 
+mod cli;
+mod golden;
 mod line_contact;
+mod scenes;

@@ -36,19 +36,6 @@ impl Stress {
         }
     }
 
-    /// Component-wise sum, for superposing solutions.
-    #[must_use]
-    pub fn add(self, other: Self) -> Self {
-        Self {
-            xx: self.xx + other.xx,
-            yy: self.yy + other.yy,
-            zz: self.zz + other.zz,
-            yz: self.yz + other.yz,
-            xz: self.xz + other.xz,
-            xy: self.xy + other.xy,
-        }
-    }
-
     /// Hydrostatic (mean normal) stress `(sxx + syy + szz) / 3`.
     pub fn hydrostatic(&self) -> f64 {
         (self.xx + self.yy + self.zz) / 3.0
@@ -98,6 +85,7 @@ impl Stress {
         values
     }
 
+    #[allow(clippy::needless_range_loop)] // rotations index rows and columns alike
     fn jacobi_eigenvalues(&self) -> [f64; 3] {
         let mut m = [
             [self.xx, self.xy, self.xz],
@@ -136,6 +124,22 @@ impl Stress {
             }
         }
         [m[0][0], m[1][1], m[2][2]]
+    }
+}
+
+/// Component-wise sum, for superposing solutions.
+impl std::ops::Add for Stress {
+    type Output = Self;
+
+    fn add(self, other: Self) -> Self {
+        Self {
+            xx: self.xx + other.xx,
+            yy: self.yy + other.yy,
+            zz: self.zz + other.zz,
+            yz: self.yz + other.yz,
+            xz: self.xz + other.xz,
+            xy: self.xy + other.xy,
+        }
     }
 }
 

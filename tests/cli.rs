@@ -1,0 +1,284 @@
+//! The command line: every subcommand, and every class of bad input gives a clear message, a
+//! non-zero exit and no partial output.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+use crate::line_contact::flamant_quadrature;
+
+fn stressfield() -> Command {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_stressfield"));
+    command.current_dir(env!("CARGO_MANIFEST_DIR")).env("CI", "true");
+    command
+}
+
+fn run(args: &[&str]) -> Output {
+    stressfield().args(args).output().expect("the binary runs")
+}
+
+fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
+    let mut child = stressfield()
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    child.stdin.take().expect("stdin").write_all(stdin.as_bytes()).expect("write stdin");
+    child.wait_with_output().expect("finishes")
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+fn repo(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(path)
+}
+
+/// Writes a scene into a fresh temporary directory and returns both.
+fn scene_file(text: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("case.toml");
+    std::fs::write(&path, text).expect("write scene");
+    (dir, path)
+}
+
+const SMALL_SCENE: &str = "format = 1\n[contact]\nkind = \"line\"\nfriction = 0.2\n[figure]\nquantity = \"von_mises\"\nresolution = 81\nwidth = 300\n";
+
+/// Asserts a failed run whose message contains every fragment.
+fn assert_fails_with(output: &Output, fragments: &[&str]) {
+    assert!(!output.status.success(), "expected failure, got success; stderr: {}", stderr(output));
+    let message = stderr(output);
+    for fragment in fragments {
+        assert!(message.contains(fragment), "missing `{fragment}` in:\n{message}");
+    }
+}
+
+#[test]
+fn render_writes_png_and_svg_atomically() {
+    let (dir, scene) = scene_file(SMALL_SCENE);
+    let out = dir.path().join("images");
+    let output = run(&["render", scene.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8"), "--svg"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let png = image::open(out.join("case.png")).expect("a decodable PNG").to_rgb8();
+    assert!(png.width() >= 300 && png.height() > 100);
+    let svg = std::fs::read_to_string(out.join("case.svg")).expect("an SVG");
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"), "{}", &svg[..40.min(svg.len())]);
+    let names: Vec<_> = std::fs::read_dir(&out).expect("list").map(|e| e.expect("entry").file_name()).collect();
+    assert_eq!(names.len(), 2, "only the two outputs, no temporary files: {names:?}");
+}
+
+#[test]
+fn render_without_scenes_renders_the_scenes_directory() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let scenes = dir.path().join("scenes");
+    std::fs::create_dir(&scenes).expect("mkdir");
+    std::fs::write(scenes.join("one.toml"), SMALL_SCENE).expect("write");
+    std::fs::write(scenes.join("two.toml"), SMALL_SCENE.replace("von_mises", "tau1")).expect("write");
+    std::fs::write(scenes.join("notes.txt"), "not a scene").expect("write");
+    let out = dir.path().join("out");
+    let output = run(&["render", "--scenes-dir", scenes.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(out.join("one.png").is_file() && out.join("two.png").is_file());
+}
+
+#[test]
+fn render_to_an_unwritable_place_fails_cleanly() {
+    let (dir, scene) = scene_file(SMALL_SCENE);
+    // A regular file where the output directory should be.
+    let blocker = dir.path().join("blocker");
+    std::fs::write(&blocker, "").expect("write");
+    let out = blocker.join("out");
+    let output = run(&["render", scene.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8")]);
+    assert_fails_with(&output, &["output directory", "--out-dir"]);
+    // A read-only directory (skipped when running as root, which can write anyway).
+    let readonly = dir.path().join("readonly");
+    std::fs::create_dir(&readonly).expect("mkdir");
+    let mut permissions = std::fs::metadata(&readonly).expect("meta").permissions();
+    std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o555);
+    std::fs::set_permissions(&readonly, permissions).expect("chmod");
+    if std::fs::write(readonly.join("probe"), "").is_err() {
+        let output = run(&["render", scene.to_str().expect("utf8"), "--out-dir", readonly.to_str().expect("utf8")]);
+        assert_fails_with(&output, &["cannot write", "case.png"]);
+        assert_eq!(std::fs::read_dir(&readonly).expect("list").count(), 0, "no partial file");
+    }
+}
+
+#[test]
+fn render_compare_detects_changes_and_writes_a_diff() {
+    let (dir, scene) = scene_file(SMALL_SCENE);
+    let reference = dir.path().join("reference");
+    let out = dir.path().join("out");
+    let scene = scene.to_str().expect("utf8");
+    let output = run(&["render", scene, "--out-dir", reference.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let same = run(&["render", scene, "--out-dir", out.to_str().expect("utf8"), "--compare", reference.to_str().expect("utf8")]);
+    assert!(same.status.success(), "{}", stderr(&same));
+    // Change the physics: the comparison must fail and leave a diff image.
+    std::fs::write(dir.path().join("case.toml"), SMALL_SCENE.replace("friction = 0.2", "friction = 0.4")).expect("write");
+    let differs = run(&["render", scene, "--out-dir", out.to_str().expect("utf8"), "--compare", reference.to_str().expect("utf8")]);
+    assert_fails_with(&differs, &["differ", "case"]);
+    assert!(out.join("case.diff.png").is_file());
+}
+
+#[test]
+fn hertz_reports_the_seed_gear_problem() {
+    let output = run(&["hertz", "scenes/gear_pitch_point.toml"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    // Reference values computed by hand from the seed notes' data (Problem 1, nu = 0.3):
+    // R1 = 50 sin 20° = 17.1010 mm, R2 = 34.2020 mm, R = 11.4007 mm, E* = 115.385 GPa,
+    // a = sqrt(4PR/(pi E*)) = 70.938 µm, p0 = 2P/(pi a) = 358.97 MPa, pm = 281.94 MPa,
+    // Y = 300 * 9.80665 / 3 = 981 MPa; sigma_vM,max = 0.5568 p0 = 199.9 MPa; no yield.
+    for fragment in [
+        "R1 = r1 sin φ = 17.1010 mm",
+        "R2 = r2 sin φ = 34.2020 mm",
+        "E* = 115.385 GPa",
+        "R  = 11.4007 mm",
+        "a  = 70.938 µm",
+        "p0 = 358.97 MPa",
+        "pm = 281.94 MPa",
+        "Y  = 981 MPa",
+        "below the surface",
+        "no yield",
+    ] {
+        assert!(text.contains(fragment), "missing `{fragment}` in:\n{text}");
+    }
+}
+
+#[test]
+fn check_accepts_every_shipped_scene() {
+    let mut scenes: Vec<String> = std::fs::read_dir(repo("scenes"))
+        .expect("scenes/")
+        .map(|e| e.expect("entry").path().display().to_string())
+        .filter(|p| p.ends_with(".toml"))
+        .collect();
+    scenes.sort();
+    assert!(scenes.len() >= 4);
+    let mut args = vec!["check"];
+    args.extend(scenes.iter().map(String::as_str));
+    let output = run(&args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(stdout(&output).lines().filter(|l| l.starts_with("ok ")).count(), scenes.len());
+}
+
+/// Each bad scene, the key its message must name, and a fragment of the fix.
+const BAD_SCENES: &[(&str, &str, &str)] = &[
+    ("format = 1\n[contact\nkind = \"line\"\n", "case.toml:2:", "invalid"),
+    ("format = 1\n[contact]\nkind = \"line\"\npoison = 0.3\n", "key `contact.poison`", "unknown field"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nresolutoin = 100\n", "key `figure.resolutoin`", "unknown field"),
+    ("format = 1\n[contact]\nkind = \"line\"\npoisson = 0.7\n", "key `contact.poisson`", "(-1, 0.5]"),
+    ("format = 1\n[contact]\nkind = \"line\"\npoisson = -1.0\n", "key `contact.poisson`", "(-1, 0.5]"),
+    ("format = 1\n[contact]\nkind = \"line\"\nfriction = -0.1\n", "key `contact.friction`", ">= 0"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"-40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"nan kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "unknown unit `kN`"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"0 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.radius`", "non-zero"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmodulus = \"0 GPa\"\npoisson = 0.3\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.modulus`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"-5 mm\"\nmaterial = \"steel\"\n", "key `contact.body2.radius`", "concave"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [2.0, -2.0]\n", "key `figure.x`", "min < max"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nz = [-1.0, 1.0]\n", "key `figure.z`", "into the body"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [-1.0, 1.0]\nz = [0.0, 100.0]\nresolution = 20000\n", "key `figure.resolution`", "MiB"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nquantity = \"vonmises\"\n", "key `figure.quantity`", "von_mises"),
+    ("format = 2\n[contact]\nkind = \"line\"\n", "key `format`", "format = 1"),
+    ("format = 1\n[contact]\nkind = \"point\"\n", "key `contact.kind`", "not yet supported"),
+];
+
+#[test]
+fn bad_scenes_name_the_key_and_the_fix() {
+    for (text, key, fix) in BAD_SCENES {
+        let (dir, scene) = scene_file(text);
+        let out = dir.path().join("out");
+        for args in [
+            vec!["check", scene.to_str().expect("utf8")],
+            vec!["render", scene.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8")],
+        ] {
+            let output = run(&args);
+            assert_fails_with(&output, &[key, fix]);
+        }
+        assert!(!out.join("case.png").exists(), "no output for a bad scene");
+    }
+}
+
+#[test]
+fn hertz_and_probe_reject_a_missing_scene() {
+    assert_fails_with(&run(&["hertz", "scenes/no_such_scene.toml"]), &["cannot read the scene"]);
+    assert_fails_with(&run(&["probe", "scenes/no_such_scene.toml", "--points", "-"]), &["cannot read the scene"]);
+}
+
+#[test]
+fn probe_agrees_with_flamant_quadrature_to_1e9_p0() {
+    let mut input = String::from("# depth sweep and off-axis points\nx,y,z\n");
+    let mut points = Vec::new();
+    for x in [-2.5, -1.0, -0.6, 0.0, 0.3, 0.99, 1.0, 1.7] {
+        for z in [0.0, 0.03, 0.2, 0.5, 0.786, 1.3, 3.0] {
+            input.push_str(&format!("{x},0.5,{z}\n"));
+            points.push((x, z));
+        }
+    }
+    let output = run_with_stdin(&["probe", "--friction", "0.3", "--poisson", "0.25", "--points", "-"], &input);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("x,y,z,sxx,syy,szz,syz,sxz,sxy,s1,s2,s3,von_mises,max_shear"));
+    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect()).collect();
+    assert_eq!(rows.len(), points.len());
+    for (row, &(x, z)) in rows.iter().zip(&points) {
+        assert_eq!(row.len(), 14);
+        assert_eq!((row[0], row[1], row[2]), (x, 0.5, z));
+        let expected = if z == 0.0 {
+            // On the surface the exact values are known in closed form (boundary conditions).
+            let p = if x.abs() < 1.0 { (1.0f64 - x * x).sqrt() } else { 0.0 };
+            let n = if x.abs() > 1.0 { x.signum() * (x * x - 1.0f64).sqrt() } else { 0.0 };
+            let sxx = -p + 2.0 * 0.3 * (n - x);
+            [sxx, 0.25 * (sxx - p), -p, 0.0, -0.3 * p, 0.0]
+        } else {
+            let s = flamant_quadrature(x, z, 0.3, 0.25);
+            [s.xx, s.yy, s.zz, s.yz, s.xz, s.xy]
+        };
+        for (k, value) in expected.iter().enumerate() {
+            assert!((row[3 + k] - value).abs() < 1e-9, "x={x} z={z} column {k}: {} vs {value}", row[3 + k]);
+        }
+        // Derived columns: von Mises from the components.
+        let s = stressfield::stress::Stress { xx: row[3], yy: row[4], zz: row[5], yz: row[6], xz: row[7], xy: row[8] };
+        assert!((row[12] - s.von_mises()).abs() < 1e-12);
+        assert!(row[9] >= row[10] && row[10] >= row[11]);
+    }
+}
+
+#[test]
+fn probe_prints_full_precision() {
+    let output = run_with_stdin(&["probe", "--points", "-"], "0,0,0.786\n");
+    assert!(output.status.success(), "{}", stderr(&output));
+    let row = stdout(&output).lines().nth(1).expect("a row").to_string();
+    let szz = row.split(',').nth(5).expect("szz");
+    // -1/sqrt(1 + 0.786^2) to the last bit.
+    assert_eq!(szz.parse::<f64>().expect("number"), -1.0 / (1.0f64 + 0.786 * 0.786).sqrt());
+    assert!(szz.trim_start_matches('-').len() >= 14, "{szz}");
+}
+
+#[test]
+fn probe_rejects_bad_input() {
+    let cases: &[(&[&str], &str, &[&str])] = &[
+        (&["probe", "--points", "-"], "0,0\n", &["line 1", "expected 3 fields"]),
+        (&["probe", "--points", "-"], "x,y,z\n0,0,1\n0,zero,1\n", &["line 3", "not a number"]),
+        (&["probe", "--points", "-"], "0,0,-0.5\n", &["line 1", "outside the body"]),
+        (&["probe", "--points", "-"], "# only a comment\n", &["no points"]),
+        (&["probe", "--contact", "point", "--points", "-"], "0,0,1\n", &["point contact", "not yet supported"]),
+        (&["probe", "--method", "numerical", "--points", "-"], "0,0,1\n", &["numerical", "not yet supported"]),
+        (&["probe", "--poisson", "0.7", "--points", "-"], "0,0,1\n", &["--poisson", "(-1, 0.5]"]),
+        (&["probe", "--friction", "-1", "--points", "-"], "0,0,1\n", &["--friction"]),
+        (&["probe", "--points", "/no/such/file.csv"], "", &["cannot open the points file"]),
+    ];
+    for (args, input, fragments) in cases {
+        let output = run_with_stdin(args, input);
+        assert_fails_with(&output, fragments);
+        assert!(stdout(&output).is_empty(), "no partial CSV for {args:?}");
+    }
+}

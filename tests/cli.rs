@@ -9,7 +9,9 @@ use crate::line_contact::flamant_quadrature;
 
 fn stressfield() -> Command {
     let mut command = Command::new(env!("CARGO_BIN_EXE_stressfield"));
-    command.current_dir(env!("CARGO_MANIFEST_DIR")).env("CI", "true");
+    command
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("CI", "true");
     command
 }
 
@@ -25,7 +27,12 @@ fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .expect("the binary runs");
-    child.stdin.take().expect("stdin").write_all(stdin.as_bytes()).expect("write stdin");
+    // The program may refuse its arguments before reading its input: a broken pipe is fine.
+    let _ = child
+        .stdin
+        .take()
+        .expect("stdin")
+        .write_all(stdin.as_bytes());
     child.wait_with_output().expect("finishes")
 }
 
@@ -53,10 +60,17 @@ const SMALL_SCENE: &str = "format = 1\n[contact]\nkind = \"line\"\nfriction = 0.
 
 /// Asserts a failed run whose message contains every fragment.
 fn assert_fails_with(output: &Output, fragments: &[&str]) {
-    assert!(!output.status.success(), "expected failure, got success; stderr: {}", stderr(output));
+    assert!(
+        !output.status.success(),
+        "expected failure, got success; stderr: {}",
+        stderr(output)
+    );
     let message = stderr(output);
     for fragment in fragments {
-        assert!(message.contains(fragment), "missing `{fragment}` in:\n{message}");
+        assert!(
+            message.contains(fragment),
+            "missing `{fragment}` in:\n{message}"
+        );
     }
 }
 
@@ -64,14 +78,33 @@ fn assert_fails_with(output: &Output, fragments: &[&str]) {
 fn render_writes_png_and_svg_atomically() {
     let (dir, scene) = scene_file(SMALL_SCENE);
     let out = dir.path().join("images");
-    let output = run(&["render", scene.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8"), "--svg"]);
+    let output = run(&[
+        "render",
+        scene.to_str().expect("utf8"),
+        "--out-dir",
+        out.to_str().expect("utf8"),
+        "--svg",
+    ]);
     assert!(output.status.success(), "{}", stderr(&output));
-    let png = image::open(out.join("case.png")).expect("a decodable PNG").to_rgb8();
+    let png = image::open(out.join("case.png"))
+        .expect("a decodable PNG")
+        .to_rgb8();
     assert!(png.width() >= 300 && png.height() > 100);
     let svg = std::fs::read_to_string(out.join("case.svg")).expect("an SVG");
-    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"), "{}", &svg[..40.min(svg.len())]);
-    let names: Vec<_> = std::fs::read_dir(&out).expect("list").map(|e| e.expect("entry").file_name()).collect();
-    assert_eq!(names.len(), 2, "only the two outputs, no temporary files: {names:?}");
+    assert!(
+        svg.starts_with("<svg") || svg.starts_with("<?xml"),
+        "{}",
+        &svg[..40.min(svg.len())]
+    );
+    let names: Vec<_> = std::fs::read_dir(&out)
+        .expect("list")
+        .map(|e| e.expect("entry").file_name())
+        .collect();
+    assert_eq!(
+        names.len(),
+        2,
+        "only the two outputs, no temporary files: {names:?}"
+    );
 }
 
 #[test]
@@ -80,10 +113,20 @@ fn render_without_scenes_renders_the_scenes_directory() {
     let scenes = dir.path().join("scenes");
     std::fs::create_dir(&scenes).expect("mkdir");
     std::fs::write(scenes.join("one.toml"), SMALL_SCENE).expect("write");
-    std::fs::write(scenes.join("two.toml"), SMALL_SCENE.replace("von_mises", "tau1")).expect("write");
+    std::fs::write(
+        scenes.join("two.toml"),
+        SMALL_SCENE.replace("von_mises", "tau1"),
+    )
+    .expect("write");
     std::fs::write(scenes.join("notes.txt"), "not a scene").expect("write");
     let out = dir.path().join("out");
-    let output = run(&["render", "--scenes-dir", scenes.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8")]);
+    let output = run(&[
+        "render",
+        "--scenes-dir",
+        scenes.to_str().expect("utf8"),
+        "--out-dir",
+        out.to_str().expect("utf8"),
+    ]);
     assert!(output.status.success(), "{}", stderr(&output));
     assert!(out.join("one.png").is_file() && out.join("two.png").is_file());
 }
@@ -95,7 +138,12 @@ fn render_to_an_unwritable_place_fails_cleanly() {
     let blocker = dir.path().join("blocker");
     std::fs::write(&blocker, "").expect("write");
     let out = blocker.join("out");
-    let output = run(&["render", scene.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8")]);
+    let output = run(&[
+        "render",
+        scene.to_str().expect("utf8"),
+        "--out-dir",
+        out.to_str().expect("utf8"),
+    ]);
     assert_fails_with(&output, &["output directory", "--out-dir"]);
     // A read-only directory (skipped when running as root, which can write anyway).
     let readonly = dir.path().join("readonly");
@@ -104,9 +152,18 @@ fn render_to_an_unwritable_place_fails_cleanly() {
     std::os::unix::fs::PermissionsExt::set_mode(&mut permissions, 0o555);
     std::fs::set_permissions(&readonly, permissions).expect("chmod");
     if std::fs::write(readonly.join("probe"), "").is_err() {
-        let output = run(&["render", scene.to_str().expect("utf8"), "--out-dir", readonly.to_str().expect("utf8")]);
+        let output = run(&[
+            "render",
+            scene.to_str().expect("utf8"),
+            "--out-dir",
+            readonly.to_str().expect("utf8"),
+        ]);
         assert_fails_with(&output, &["cannot write", "case.png"]);
-        assert_eq!(std::fs::read_dir(&readonly).expect("list").count(), 0, "no partial file");
+        assert_eq!(
+            std::fs::read_dir(&readonly).expect("list").count(),
+            0,
+            "no partial file"
+        );
     }
 }
 
@@ -116,13 +173,36 @@ fn render_compare_detects_changes_and_writes_a_diff() {
     let reference = dir.path().join("reference");
     let out = dir.path().join("out");
     let scene = scene.to_str().expect("utf8");
-    let output = run(&["render", scene, "--out-dir", reference.to_str().expect("utf8")]);
+    let output = run(&[
+        "render",
+        scene,
+        "--out-dir",
+        reference.to_str().expect("utf8"),
+    ]);
     assert!(output.status.success(), "{}", stderr(&output));
-    let same = run(&["render", scene, "--out-dir", out.to_str().expect("utf8"), "--compare", reference.to_str().expect("utf8")]);
+    let same = run(&[
+        "render",
+        scene,
+        "--out-dir",
+        out.to_str().expect("utf8"),
+        "--compare",
+        reference.to_str().expect("utf8"),
+    ]);
     assert!(same.status.success(), "{}", stderr(&same));
     // Change the physics: the comparison must fail and leave a diff image.
-    std::fs::write(dir.path().join("case.toml"), SMALL_SCENE.replace("friction = 0.2", "friction = 0.4")).expect("write");
-    let differs = run(&["render", scene, "--out-dir", out.to_str().expect("utf8"), "--compare", reference.to_str().expect("utf8")]);
+    std::fs::write(
+        dir.path().join("case.toml"),
+        SMALL_SCENE.replace("friction = 0.2", "friction = 0.4"),
+    )
+    .expect("write");
+    let differs = run(&[
+        "render",
+        scene,
+        "--out-dir",
+        out.to_str().expect("utf8"),
+        "--compare",
+        reference.to_str().expect("utf8"),
+    ]);
     assert_fails_with(&differs, &["differ", "case"]);
     assert!(out.join("case.diff.png").is_file());
 }
@@ -165,7 +245,13 @@ fn check_accepts_every_shipped_scene() {
     args.extend(scenes.iter().map(String::as_str));
     let output = run(&args);
     assert!(output.status.success(), "{}", stderr(&output));
-    assert_eq!(stdout(&output).lines().filter(|l| l.starts_with("ok ")).count(), scenes.len());
+    assert_eq!(
+        stdout(&output)
+            .lines()
+            .filter(|l| l.starts_with("ok "))
+            .count(),
+        scenes.len()
+    );
 }
 
 /// Each bad scene, the key its message must name, and a fragment of the fix.
@@ -177,7 +263,7 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"line\"\npoisson = -1.0\n", "key `contact.poisson`", "(-1, 0.5]"),
     ("format = 1\n[contact]\nkind = \"line\"\nfriction = -0.1\n", "key `contact.friction`", ">= 0"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"-40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "positive"),
-    ("format = 1\n[contact]\nkind = \"line\"\nload = \"nan kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"nan kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "does not start with a number"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "unknown unit `kN`"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"0 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.radius`", "non-zero"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmodulus = \"0 GPa\"\npoisson = 0.3\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.modulus`", "positive"),
@@ -197,7 +283,12 @@ fn bad_scenes_name_the_key_and_the_fix() {
         let out = dir.path().join("out");
         for args in [
             vec!["check", scene.to_str().expect("utf8")],
-            vec!["render", scene.to_str().expect("utf8"), "--out-dir", out.to_str().expect("utf8")],
+            vec![
+                "render",
+                scene.to_str().expect("utf8"),
+                "--out-dir",
+                out.to_str().expect("utf8"),
+            ],
         ] {
             let output = run(&args);
             assert_fails_with(&output, &[key, fix]);
@@ -208,8 +299,14 @@ fn bad_scenes_name_the_key_and_the_fix() {
 
 #[test]
 fn hertz_and_probe_reject_a_missing_scene() {
-    assert_fails_with(&run(&["hertz", "scenes/no_such_scene.toml"]), &["cannot read the scene"]);
-    assert_fails_with(&run(&["probe", "scenes/no_such_scene.toml", "--points", "-"]), &["cannot read the scene"]);
+    assert_fails_with(
+        &run(&["hertz", "scenes/no_such_scene.toml"]),
+        &["cannot read the scene"],
+    );
+    assert_fails_with(
+        &run(&["probe", "scenes/no_such_scene.toml", "--points", "-"]),
+        &["cannot read the scene"],
+    );
 }
 
 #[test]
@@ -222,20 +319,44 @@ fn probe_agrees_with_flamant_quadrature_to_1e9_p0() {
             points.push((x, z));
         }
     }
-    let output = run_with_stdin(&["probe", "--friction", "0.3", "--poisson", "0.25", "--points", "-"], &input);
+    let output = run_with_stdin(
+        &[
+            "probe",
+            "--friction",
+            "0.3",
+            "--poisson",
+            "0.25",
+            "--points",
+            "-",
+        ],
+        &input,
+    );
     assert!(output.status.success(), "{}", stderr(&output));
     let text = stdout(&output);
     let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("x,y,z,sxx,syy,szz,syz,sxz,sxy,s1,s2,s3,von_mises,max_shear"));
-    let rows: Vec<Vec<f64>> = lines.map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect()).collect();
+    assert_eq!(
+        lines.next(),
+        Some("x,y,z,sxx,syy,szz,syz,sxz,sxy,s1,s2,s3,von_mises,max_shear")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
+        .collect();
     assert_eq!(rows.len(), points.len());
     for (row, &(x, z)) in rows.iter().zip(&points) {
         assert_eq!(row.len(), 14);
         assert_eq!((row[0], row[1], row[2]), (x, 0.5, z));
         let expected = if z == 0.0 {
             // On the surface the exact values are known in closed form (boundary conditions).
-            let p = if x.abs() < 1.0 { (1.0f64 - x * x).sqrt() } else { 0.0 };
-            let n = if x.abs() > 1.0 { x.signum() * (x * x - 1.0f64).sqrt() } else { 0.0 };
+            let p = if x.abs() < 1.0 {
+                (1.0f64 - x * x).sqrt()
+            } else {
+                0.0
+            };
+            let n = if x.abs() > 1.0 {
+                x.signum() * (x * x - 1.0f64).sqrt()
+            } else {
+                0.0
+            };
             let sxx = -p + 2.0 * 0.3 * (n - x);
             [sxx, 0.25 * (sxx - p), -p, 0.0, -0.3 * p, 0.0]
         } else {
@@ -243,10 +364,21 @@ fn probe_agrees_with_flamant_quadrature_to_1e9_p0() {
             [s.xx, s.yy, s.zz, s.yz, s.xz, s.xy]
         };
         for (k, value) in expected.iter().enumerate() {
-            assert!((row[3 + k] - value).abs() < 1e-9, "x={x} z={z} column {k}: {} vs {value}", row[3 + k]);
+            assert!(
+                (row[3 + k] - value).abs() < 1e-9,
+                "x={x} z={z} column {k}: {} vs {value}",
+                row[3 + k]
+            );
         }
         // Derived columns: von Mises from the components.
-        let s = stressfield::stress::Stress { xx: row[3], yy: row[4], zz: row[5], yz: row[6], xz: row[7], xy: row[8] };
+        let s = stressfield::stress::Stress {
+            xx: row[3],
+            yy: row[4],
+            zz: row[5],
+            yz: row[6],
+            xz: row[7],
+            xy: row[8],
+        };
         assert!((row[12] - s.von_mises()).abs() < 1e-12);
         assert!(row[9] >= row[10] && row[10] >= row[11]);
     }
@@ -259,22 +391,61 @@ fn probe_prints_full_precision() {
     let row = stdout(&output).lines().nth(1).expect("a row").to_string();
     let szz = row.split(',').nth(5).expect("szz");
     // -1/sqrt(1 + 0.786^2) to the last bit.
-    assert_eq!(szz.parse::<f64>().expect("number"), -1.0 / (1.0f64 + 0.786 * 0.786).sqrt());
+    assert_eq!(
+        szz.parse::<f64>().expect("number"),
+        -1.0 / (1.0f64 + 0.786 * 0.786).sqrt()
+    );
     assert!(szz.trim_start_matches('-').len() >= 14, "{szz}");
 }
 
 #[test]
 fn probe_rejects_bad_input() {
     let cases: &[(&[&str], &str, &[&str])] = &[
-        (&["probe", "--points", "-"], "0,0\n", &["line 1", "expected 3 fields"]),
-        (&["probe", "--points", "-"], "x,y,z\n0,0,1\n0,zero,1\n", &["line 3", "not a number"]),
-        (&["probe", "--points", "-"], "0,0,-0.5\n", &["line 1", "outside the body"]),
-        (&["probe", "--points", "-"], "# only a comment\n", &["no points"]),
-        (&["probe", "--contact", "point", "--points", "-"], "0,0,1\n", &["point contact", "not yet supported"]),
-        (&["probe", "--method", "numerical", "--points", "-"], "0,0,1\n", &["numerical", "not yet supported"]),
-        (&["probe", "--poisson", "0.7", "--points", "-"], "0,0,1\n", &["--poisson", "(-1, 0.5]"]),
-        (&["probe", "--friction", "-1", "--points", "-"], "0,0,1\n", &["--friction"]),
-        (&["probe", "--points", "/no/such/file.csv"], "", &["cannot open the points file"]),
+        (
+            &["probe", "--points", "-"],
+            "0,0\n",
+            &["line 1", "expected 3 fields"],
+        ),
+        (
+            &["probe", "--points", "-"],
+            "x,y,z\n0,0,1\n0,zero,1\n",
+            &["line 3", "not a number"],
+        ),
+        (
+            &["probe", "--points", "-"],
+            "0,0,-0.5\n",
+            &["line 1", "outside the body"],
+        ),
+        (
+            &["probe", "--points", "-"],
+            "# only a comment\n",
+            &["no points"],
+        ),
+        (
+            &["probe", "--contact", "point", "--points", "-"],
+            "0,0,1\n",
+            &["point contact", "not yet supported"],
+        ),
+        (
+            &["probe", "--method", "numerical", "--points", "-"],
+            "0,0,1\n",
+            &["numerical", "not yet supported"],
+        ),
+        (
+            &["probe", "--poisson", "0.7", "--points", "-"],
+            "0,0,1\n",
+            &["--poisson", "(-1, 0.5]"],
+        ),
+        (
+            &["probe", "--friction", "-1", "--points", "-"],
+            "0,0,1\n",
+            &["--friction"],
+        ),
+        (
+            &["probe", "--points", "/no/such/file.csv"],
+            "",
+            &["cannot open the points file"],
+        ),
     ];
     for (args, input, fragments) in cases {
         let output = run_with_stdin(args, input);

@@ -11,11 +11,14 @@ use stressfield::scene::Scene;
 use stressfield::{figure, render};
 
 fn golden_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests").join("golden")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("golden")
 }
 
 fn check_golden(name: &str) {
-    let scene = Scene::load(&golden_dir().join(format!("{name}.toml"))).expect("golden scene is valid");
+    let scene =
+        Scene::load(&golden_dir().join(format!("{name}.toml"))).expect("golden scene is valid");
     let built = figure::build(&scene, &|| {}).expect("field evaluates");
     let actual = render::render_png(&built).expect("renders");
     let reference = golden_dir().join(format!("{name}.png"));
@@ -25,17 +28,29 @@ fn check_golden(name: &str) {
         return;
     }
     let expected = image::open(&reference)
-        .unwrap_or_else(|e| panic!("cannot open {}: {e}; run with UPDATE_GOLDEN=1 to create it", reference.display()))
+        .unwrap_or_else(|e| {
+            panic!(
+                "cannot open {}: {e}; run with UPDATE_GOLDEN=1 to create it",
+                reference.display()
+            )
+        })
         .to_rgb8();
     // Anti-aliased text and lines may move by a shade between platforms; 0.2 % of the pixels may
     // differ by more than 24 of 255 in some channel.
     let pixels = (actual.width() * actual.height()) as usize;
-    let tolerance = Tolerance { per_channel: 24, max_differing_pixels: pixels / 500 };
+    let tolerance = Tolerance {
+        per_channel: 24,
+        max_differing_pixels: pixels / 500,
+    };
     let comparison = compare(&actual, &expected, tolerance);
     if !comparison.passed() {
-        let failures = Path::new(env!("CARGO_MANIFEST_DIR")).join("target").join("golden-failures");
+        let failures = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("target")
+            .join("golden-failures");
         std::fs::create_dir_all(&failures).expect("mkdir");
-        actual.save(failures.join(format!("{name}.actual.png"))).expect("save actual");
+        actual
+            .save(failures.join(format!("{name}.actual.png")))
+            .expect("save actual");
         if actual.dimensions() == expected.dimensions() {
             diff_image(&actual, &expected, tolerance.per_channel)
                 .save(failures.join(format!("{name}.diff.png")))

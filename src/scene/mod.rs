@@ -245,8 +245,11 @@ impl Scene {
 
     /// Parses and validates scene text; `name` names the outputs, `file` the error messages.
     pub fn parse(text: &str, name: &str, file: &str) -> Result<Self, SceneError> {
-        let deserializer =
-            toml::Deserializer::parse(text).map_err(|e| toml_error(text, file, None, &e))?;
+        let deserializer = toml::Deserializer::parse(text).map_err(|e| {
+            let mut error = toml_error(text, file, None, &e);
+            error.message = format!("invalid TOML: {}", error.message);
+            error
+        })?;
         let raw: RawScene = serde_path_to_error::deserialize(deserializer).map_err(|e| {
             let path = e.path().to_string();
             let key = (path != "." && !path.is_empty()).then_some(path);

@@ -1,4 +1,5 @@
 pub mod assess;
+pub mod compare;
 pub mod contact;
 pub mod field;
 pub mod figure;

@@ -1,7 +1,6 @@
 //! The closed-form line-contact solution checked against independent references: numerical
 //! quadrature of the Flamant point-force solutions, literature values, and exact properties.
 
-use approx::assert_relative_eq;
 use proptest::prelude::*;
 use quadrature::double_exponential;
 use stressfield::assess::{maximum, StressMaxima};

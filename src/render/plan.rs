@@ -1,0 +1,524 @@
+//! Everything a figure shows, computed once in pixels before any drawing: the heat-map and
+//! colour-bar bitmaps, contour polylines, the placed contour and extreme labels, and the
+//! traction curves. PNG and SVG then draw the same plan.
+
+use ndarray::ArrayView2;
+
+use super::colormap::{self, ColorScale};
+use super::contour::{choose_levels, isolines_on};
+use super::font;
+use super::layout::{Layout, PanelLayout, Rect, TextSizes};
+use super::ticks::{format_fixed, format_levels, format_significant};
+use super::{ColorMap, Figure, Mark, Panel, RenderError};
+
+/// A box of text: the box (for the background) and where the text sits.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct TextBox {
+    pub text: String,
+    pub size: f64,
+    /// `[x0, y0, x1, y1]` in pixels.
+    pub bounds: [f64; 4],
+    /// Start of the baseline.
+    pub origin: (f64, f64),
+}
+
+impl TextBox {
+    /// A box of `text` padded by `pad` pixels, its top-left corner at `corner`.
+    fn new(text: String, size: f64, width: f64, pad: f64, corner: (f64, f64)) -> Self {
+        let cap = font::cap_height(size);
+        let bounds = [
+            corner.0,
+            corner.1,
+            corner.0 + width + 2.0 * pad,
+            corner.1 + cap + 2.0 * pad,
+        ];
+        Self {
+            text,
+            size,
+            bounds,
+            origin: (corner.0 + pad, corner.1 + pad + cap),
+        }
+    }
+
+    fn w(&self) -> f64 {
+        self.bounds[2] - self.bounds[0]
+    }
+
+    fn h(&self) -> f64 {
+        self.bounds[3] - self.bounds[1]
+    }
+
+    fn moved_to(&self, corner: (f64, f64)) -> Self {
+        let (dx, dy) = (corner.0 - self.bounds[0], corner.1 - self.bounds[1]);
+        Self {
+            text: self.text.clone(),
+            size: self.size,
+            bounds: [
+                self.bounds[0] + dx,
+                self.bounds[1] + dy,
+                self.bounds[2] + dx,
+                self.bounds[3] + dy,
+            ],
+            origin: (self.origin.0 + dx, self.origin.1 + dy),
+        }
+    }
+
+    fn overlaps(&self, other: &[f64; 4], gap: f64) -> bool {
+        let b = &self.bounds;
+        b[0] < other[2] + gap
+            && other[0] < b[2] + gap
+            && b[1] < other[3] + gap
+            && other[1] < b[3] + gap
+    }
+
+    fn inside(&self, rect: &Rect, inset: f64) -> bool {
+        let b = &self.bounds;
+        b[0] >= f64::from(rect.x) + inset
+            && b[1] >= f64::from(rect.y) + inset
+            && b[2] <= f64::from(rect.right()) - inset
+            && b[3] <= f64::from(rect.bottom()) - inset
+    }
+}
+
+/// A marked extreme of a panel.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Extreme {
+    /// Pixel position of the marker.
+    pub at: (f64, f64),
+    pub label: TextBox,
+}
+
+/// What one panel shows.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PanelPlan {
+    /// Contour polylines in pixels.
+    pub contours: Vec<Vec<(f64, f64)>>,
+    pub contour_labels: Vec<TextBox>,
+    pub extremes: Vec<Extreme>,
+    /// p(x) in strip pixels.
+    pub pressure: Vec<(f64, f64)>,
+    /// q(x) in strip pixels, when any q is not zero.
+    pub shear: Option<Vec<(f64, f64)>>,
+    /// Legend at the right end of the strip (else the left).
+    pub legend_right: bool,
+}
+
+/// The drawing plan of a figure.
+pub(crate) struct Plan<'f> {
+    pub figure: &'f Figure,
+    pub layout: Layout,
+    pub scale: ColorScale,
+    pub levels: Vec<f64>,
+    pub panels: Vec<PanelPlan>,
+    /// Bitmaps under everything else: one heat map per panel, then the colour bar.
+    pub images: Vec<(Rect, Vec<u8>)>,
+}
+
+impl<'f> Plan<'f> {
+    pub fn new(figure: &'f Figure) -> Result<Self, RenderError> {
+        if figure.panels.is_empty() {
+            return Err(RenderError::NoPanels);
+        }
+        for (i, panel) in figure.panels.iter().enumerate() {
+            check_panel(i, panel)?;
+        }
+        font::ensure_registered()?;
+        let (min, max) = finite_range(figure.panels.iter().map(|p| p.values.view()));
+        let scale = ColorScale::for_range(figure.colormap, min, max);
+        let layout = Layout::new(figure, &scale)?;
+        let skip_zero = figure.colormap != ColorMap::Diverging && min >= 0.0;
+        let levels = choose_levels(&figure.levels, min, max, skip_zero);
+
+        let mut images = Vec::with_capacity(figure.panels.len() + 1);
+        let mut panels = Vec::with_capacity(figure.panels.len());
+        for (panel, panel_layout) in figure.panels.iter().zip(&layout.panels) {
+            images.push((panel_layout.map, heat_map(panel, panel_layout, &scale)));
+            panels.push(plan_panel(figure, panel, panel_layout, &layout, &levels)?);
+        }
+        images.push((layout.colorbar, colorbar(figure.colormap, layout.colorbar)));
+        Ok(Self {
+            figure,
+            layout,
+            scale,
+            levels,
+            panels,
+            images,
+        })
+    }
+}
+
+fn check_panel(index: usize, panel: &Panel) -> Result<(), RenderError> {
+    let n = index + 1;
+    let axis_ok = |a: &crate::field::Axis| {
+        a.count >= 2 && a.min.is_finite() && a.max.is_finite() && a.max > a.min
+    };
+    if !axis_ok(&panel.x) || !axis_ok(&panel.z) {
+        return Err(RenderError::Draw(format!(
+            "panel {n}: axes need at least 2 samples over a non-empty finite range, got x {:?} and z {:?}",
+            panel.x, panel.z
+        )));
+    }
+    if panel.values.dim() != (panel.z.count, panel.x.count) {
+        let (rows, columns) = panel.values.dim();
+        return Err(RenderError::Draw(format!(
+            "panel {n}: values are {rows} x {columns} but the axes need {} x {} (z by x)",
+            panel.z.count, panel.x.count
+        )));
+    }
+    Ok(())
+}
+
+/// Smallest and largest finite value over all maps (0, 0 when there is none).
+fn finite_range<'a>(maps: impl Iterator<Item = ArrayView2<'a, f64>>) -> (f64, f64) {
+    let mut range: Option<(f64, f64)> = None;
+    for map in maps {
+        for &v in map.iter().filter(|v| v.is_finite()) {
+            range = Some(range.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))));
+        }
+    }
+    range.unwrap_or((0.0, 0.0))
+}
+
+/// Bilinear value of a panel's field at data coordinates (clamped to the grid).
+pub(crate) fn bilinear(panel: &Panel, x: f64, z: f64) -> f64 {
+    let fx = ((x - panel.x.min) / panel.x.step()).clamp(0.0, (panel.x.count - 1) as f64);
+    let fz = ((z - panel.z.min) / panel.z.step()).clamp(0.0, (panel.z.count - 1) as f64);
+    let i = (fx.floor() as usize).min(panel.x.count - 2);
+    let j = (fz.floor() as usize).min(panel.z.count - 2);
+    let (tx, tz) = (fx - i as f64, fz - j as f64);
+    let v = &panel.values;
+    let top = v[[j, i]] * (1.0 - tx) + v[[j, i + 1]] * tx;
+    let bottom = v[[j + 1, i]] * (1.0 - tx) + v[[j + 1, i + 1]] * tx;
+    top * (1.0 - tz) + bottom * tz
+}
+
+/// The panel's field resampled to the map's pixels (pixel centres), as RGB rows.
+fn heat_map(panel: &Panel, layout: &PanelLayout, scale: &ColorScale) -> Vec<u8> {
+    let (w, h) = (layout.map.w.max(0) as usize, layout.map.h.max(0) as usize);
+    let mut rgb = Vec::with_capacity(w * h * 3);
+    let xs: Vec<f64> = (0..w)
+        .map(|i| layout.data_x(f64::from(layout.map.x) + i as f64 + 0.5))
+        .collect();
+    for j in 0..h {
+        let z = layout.data_z(f64::from(layout.map.y) + j as f64 + 0.5);
+        for &x in &xs {
+            rgb.extend_from_slice(&scale.rgb(bilinear(panel, x, z)));
+        }
+    }
+    rgb
+}
+
+/// The colour bar: the colour map from the bottom (low) to the top (high).
+fn colorbar(map: ColorMap, rect: Rect) -> Vec<u8> {
+    let (w, h) = (rect.w.max(0) as usize, rect.h.max(0) as usize);
+    let mut rgb = Vec::with_capacity(w * h * 3);
+    for j in 0..h {
+        let t = 1.0 - (j as f64 + 0.5) / h as f64;
+        let color = colormap::eval(map, t);
+        for _ in 0..w {
+            rgb.extend_from_slice(&color);
+        }
+    }
+    rgb
+}
+
+fn plan_panel(
+    figure: &Figure,
+    panel: &Panel,
+    pl: &PanelLayout,
+    layout: &Layout,
+    levels: &[f64],
+) -> Result<PanelPlan, RenderError> {
+    let sizes = &layout.sizes;
+    let to_px = |p: &[f64; 2]| (pl.px(p[0]), pl.pz(p[1]));
+
+    // Contours, with their level, in pixels.
+    let mut lines: Vec<(usize, Vec<(f64, f64)>)> = Vec::new();
+    for (k, &level) in levels.iter().enumerate() {
+        for line in isolines_on(panel.values.view(), &panel.x, &panel.z, level) {
+            lines.push((k, line.points.iter().map(to_px).collect()));
+        }
+    }
+
+    // Extremes first: contour labels keep clear of them.
+    let mut taken: Vec<[f64; 4]> = Vec::new();
+    let mut extremes = Vec::new();
+    let wanted: &[bool] = match figure.mark {
+        Mark::Max => &[true],
+        Mark::Min => &[false],
+        Mark::Both => &[true, false],
+        Mark::None => &[],
+    };
+    for &maximum in wanted {
+        if let Some(extreme) = plan_extreme(panel, pl, sizes, maximum, &taken)? {
+            let r = marker_radius(sizes.tick);
+            taken.push([
+                extreme.at.0 - r,
+                extreme.at.1 - r,
+                extreme.at.0 + r,
+                extreme.at.1 + r,
+            ]);
+            taken.push(extreme.label.bounds);
+            extremes.push(extreme);
+        }
+    }
+
+    let contour_labels = place_contour_labels(&lines, levels, pl, sizes.contour, &mut taken)?;
+
+    // Traction curves within the map's x range.
+    let inside = |x: f64| x >= pl.x_min && x <= pl.x_max;
+    let samples: Vec<_> = panel
+        .traction
+        .iter()
+        .filter(|s| inside(s.x) && s.p.is_finite() && s.q.is_finite())
+        .collect();
+    let pressure: Vec<(f64, f64)> = samples
+        .iter()
+        .map(|s| (pl.px(s.x), layout.strip_y(pl, s.p)))
+        .collect();
+    let peak = samples
+        .iter()
+        .map(|s| s.p.abs().max(s.q.abs()))
+        .fold(0.0, f64::max);
+    let has_shear = samples
+        .iter()
+        .any(|s| s.q.abs() > 1e-12 * peak.max(f64::MIN_POSITIVE));
+    let shear = has_shear.then(|| {
+        // Only where q acts (and one zero sample either side), not along the free surface.
+        let first = samples
+            .iter()
+            .position(|s| s.q != 0.0)
+            .unwrap_or(0)
+            .saturating_sub(1);
+        let last = samples
+            .iter()
+            .rposition(|s| s.q != 0.0)
+            .map_or(samples.len(), |i| (i + 2).min(samples.len()));
+        samples[first..last]
+            .iter()
+            .map(|s| (pl.px(s.x), layout.strip_y(pl, s.q)))
+            .collect()
+    });
+    // The legend goes to the end where the tractions are lower.
+    let end_load = |right: bool| {
+        let span = 0.2 * (pl.x_max - pl.x_min);
+        samples
+            .iter()
+            .filter(|s| {
+                if right {
+                    s.x >= pl.x_max - span
+                } else {
+                    s.x <= pl.x_min + span
+                }
+            })
+            .map(|s| s.p.abs().max(s.q.abs()))
+            .fold(0.0, f64::max)
+    };
+    let legend_right = end_load(true) <= end_load(false);
+    Ok(PanelPlan {
+        contours: lines.into_iter().map(|(_, l)| l).collect(),
+        contour_labels,
+        extremes,
+        pressure,
+        shear,
+        legend_right,
+    })
+}
+
+/// Radius of the extreme marker for a tick font size.
+pub(crate) fn marker_radius(tick_size: f64) -> f64 {
+    (0.28 * tick_size).max(3.5)
+}
+
+/// Decimal places for coordinates on an axis spanning `span`: two for a span of 1 to 10.
+fn coordinate_decimals(span: f64) -> usize {
+    (2 - span.abs().log10().floor() as i32).clamp(0, 6) as usize
+}
+
+/// Finds the largest (or smallest) sampled value of a panel and places its label.
+fn plan_extreme(
+    panel: &Panel,
+    pl: &PanelLayout,
+    sizes: &TextSizes,
+    maximum: bool,
+    taken: &[[f64; 4]],
+) -> Result<Option<Extreme>, RenderError> {
+    let sign = if maximum { 1.0 } else { -1.0 };
+    let mut best: Option<((usize, usize), f64)> = None;
+    for ((j, i), &v) in panel.values.indexed_iter() {
+        if v.is_finite() && best.is_none_or(|(_, b)| sign * v > sign * b) {
+            best = Some(((j, i), v));
+        }
+    }
+    let Some(((j, i), v0)) = best else {
+        return Ok(None);
+    };
+    // The sampled extreme, not an interpolated one: the maxima of contact fields often sit on
+    // a kink (the contact edge, the surface), where a fitted parabola would overshoot.
+    let x = panel.x.value(i);
+    let z = panel.z.value(j);
+    let value = v0;
+
+    let text = format!(
+        "{} {} at ({}, {})",
+        if maximum { "max" } else { "min" },
+        format_significant(value),
+        format_fixed(x, coordinate_decimals(pl.x_max - pl.x_min)),
+        format_fixed(z, coordinate_decimals(pl.z_max - pl.z_min)),
+    );
+    let at = (pl.px(x), pl.pz(z));
+    let size = sizes.mark;
+    let width = font::text_width(&text, size)?;
+    let pad = 0.3 * size;
+    let template = TextBox::new(text, size, width, pad, (0.0, 0.0));
+    let (w, h) = (template.w(), template.h());
+    let r = marker_radius(sizes.tick) + 0.35 * size;
+    // Right, left, below, above, then the diagonals.
+    let candidates = [
+        (at.0 + r, at.1 - h / 2.0),
+        (at.0 - r - w, at.1 - h / 2.0),
+        (at.0 - w / 2.0, at.1 + r),
+        (at.0 - w / 2.0, at.1 - r - h),
+        (at.0 + r * 0.7, at.1 + r * 0.7),
+        (at.0 - r * 0.7 - w, at.1 + r * 0.7),
+        (at.0 + r * 0.7, at.1 - r * 0.7 - h),
+        (at.0 - r * 0.7 - w, at.1 - r * 0.7 - h),
+    ];
+    let inset = 3.0;
+    let label = candidates
+        .iter()
+        .map(|c| template.moved_to(*c))
+        .find(|b| b.inside(&pl.map, inset) && !taken.iter().any(|t| b.overlaps(t, 0.6 * size)))
+        .unwrap_or_else(|| {
+            // Nothing fits cleanly: right of the marker, pushed back inside the map.
+            let map = &pl.map;
+            let x = candidates[0]
+                .0
+                .min(f64::from(map.right()) - inset - w)
+                .max(f64::from(map.x) + inset);
+            let y = candidates[0]
+                .1
+                .min(f64::from(map.bottom()) - inset - h)
+                .max(f64::from(map.y) + inset);
+            template.moved_to((x, y))
+        });
+    Ok(Some(Extreme { at, label }))
+}
+
+/// Places one label on each long enough contour line (two on very long ones), longest lines
+/// first: on a straight stretch, inside the map, clear of other labels, the extremes and the
+/// lines of other levels.
+fn place_contour_labels(
+    lines: &[(usize, Vec<(f64, f64)>)],
+    levels: &[f64],
+    pl: &PanelLayout,
+    size: f64,
+    taken: &mut Vec<[f64; 4]>,
+) -> Result<Vec<TextBox>, RenderError> {
+    let map = pl.map;
+    let (mw, mh) = (map.w.max(1) as usize, map.h.max(1) as usize);
+    // Which level's line passes through each map pixel (0: none).
+    let mut owner = vec![0u16; mw * mh];
+    for (k, line) in lines {
+        for pair in line.windows(2) {
+            let (a, b) = (pair[0], pair[1]);
+            let steps = ((b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil() as usize).max(1);
+            for s in 0..=steps {
+                let t = s as f64 / steps as f64;
+                let px = (a.0 + t * (b.0 - a.0)).floor() as i64 - i64::from(map.x);
+                let py = (a.1 + t * (b.1 - a.1)).floor() as i64 - i64::from(map.y);
+                if px >= 0 && py >= 0 && (px as usize) < mw && (py as usize) < mh {
+                    owner[py as usize * mw + px as usize] = (*k + 1).min(u16::MAX as usize) as u16;
+                }
+            }
+        }
+    }
+    let crosses_other = |b: &TextBox, k: usize| {
+        let x0 = (b.bounds[0].floor() as i64 - i64::from(map.x)).max(0) as usize;
+        let y0 = (b.bounds[1].floor() as i64 - i64::from(map.y)).max(0) as usize;
+        let x1 = ((b.bounds[2].ceil() as i64 - i64::from(map.x)).max(0) as usize).min(mw);
+        let y1 = ((b.bounds[3].ceil() as i64 - i64::from(map.y)).max(0) as usize).min(mh);
+        (y0..y1).any(|y| {
+            (x0..x1).any(|x| {
+                let o = owner[y * mw + x];
+                o != 0 && usize::from(o) != k + 1
+            })
+        })
+    };
+
+    let texts = format_levels(levels);
+    let widths: Vec<f64> = texts
+        .iter()
+        .map(|t| font::text_width(t, size))
+        .collect::<Result<_, _>>()?;
+    let pad = 0.25 * size;
+
+    let mut order: Vec<(f64, usize)> = lines
+        .iter()
+        .enumerate()
+        .map(|(n, (_, l))| (path_length(l), n))
+        .collect();
+    order.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    let mut labels = Vec::new();
+    for (length, n) in order {
+        let (k, line) = &lines[n];
+        let template = TextBox::new(texts[*k].clone(), size, widths[*k], pad, (0.0, 0.0));
+        if length < 2.5 * template.w() {
+            continue;
+        }
+        let wanted: &[&[f64]] = if length > 1.5 * f64::from(map.w) {
+            &[&[0.25, 0.3, 0.2, 0.35, 0.15], &[0.75, 0.7, 0.8, 0.65, 0.85]]
+        } else {
+            &[&[0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.15, 0.85]]
+        };
+        for fractions in wanted {
+            let found = fractions.iter().find_map(|f| {
+                let centre = point_at(line, f * length)?;
+                // A straight enough stretch under the label.
+                let half = template.w() / 2.0;
+                let before = point_at(line, f * length - half)?;
+                let after = point_at(line, f * length + half)?;
+                let chord = (after.0 - before.0).hypot(after.1 - before.1);
+                if chord < 0.75 * template.w() {
+                    return None;
+                }
+                let b = template.moved_to((centre.0 - half, centre.1 - template.h() / 2.0));
+                let clear = b.inside(&map, 2.0)
+                    && !taken.iter().any(|t| b.overlaps(t, 3.0))
+                    && !crosses_other(&b, *k);
+                clear.then_some(b)
+            });
+            if let Some(b) = found {
+                taken.push(b.bounds);
+                labels.push(b);
+            }
+        }
+    }
+    Ok(labels)
+}
+
+fn path_length(line: &[(f64, f64)]) -> f64 {
+    line.windows(2)
+        .map(|p| (p[1].0 - p[0].0).hypot(p[1].1 - p[0].1))
+        .sum()
+}
+
+/// The point at arc length `s` along a polyline (`None` outside it).
+fn point_at(line: &[(f64, f64)], s: f64) -> Option<(f64, f64)> {
+    if s < 0.0 {
+        return None;
+    }
+    let mut travelled = 0.0;
+    for p in line.windows(2) {
+        let length = (p[1].0 - p[0].0).hypot(p[1].1 - p[0].1);
+        if travelled + length >= s && length > 0.0 {
+            let t = (s - travelled) / length;
+            return Some((
+                p[0].0 + t * (p[1].0 - p[0].0),
+                p[0].1 + t * (p[1].1 - p[0].1),
+            ));
+        }
+        travelled += length;
+    }
+    None
+}

@@ -88,6 +88,15 @@ fn progress_bar(total: u64) -> ProgressBar {
     bar
 }
 
+/// Prints a line above the progress bar, or on stderr when the bar is hidden (not a terminal).
+fn say(bar: &ProgressBar, line: impl AsRef<str>) {
+    if bar.is_hidden() {
+        eprintln!("{}", line.as_ref());
+    } else {
+        bar.println(line);
+    }
+}
+
 fn render_all(
     paths: &[PathBuf],
     out_dir: &Path,
@@ -124,26 +133,29 @@ fn render_all(
         bar.set_message(scene.name.clone());
         match render_scene(scene, out_dir, svg, &bar) {
             Ok(png) => {
-                bar.println(format!(
-                    "rendered {}",
-                    out_dir.join(format!("{}.png", scene.name)).display()
-                ));
+                say(
+                    &bar,
+                    format!(
+                        "rendered {}",
+                        out_dir.join(format!("{}.png", scene.name)).display()
+                    ),
+                );
                 if let Some(dir) = compare_dir {
                     match compare_with_reference(scene, &png, dir, out_dir, tolerance) {
                         Ok(None) => {}
                         Ok(Some(message)) => {
-                            bar.println(message);
+                            say(&bar, message);
                             mismatches.push(scene.name.clone());
                         }
                         Err(e) => {
-                            bar.println(format!("error: {e:#}"));
+                            say(&bar, format!("error: {e:#}"));
                             mismatches.push(scene.name.clone());
                         }
                     }
                 }
             }
             Err(e) => {
-                bar.println(format!("error: scene {}: {e:#}", scene.name));
+                say(&bar, format!("error: scene {}: {e:#}", scene.name));
                 failures.push(scene.name.clone());
             }
         }

@@ -44,13 +44,16 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
             half_width: length_per_a,
         });
     }
+    let any_friction = scene.panels.iter().any(|p| p.friction != 0.0);
     Ok(Figure {
         title: title(scene),
         panels,
         value_label: spec.stress_unit.label(spec.quantity.symbol()),
         x_label: spec.length_unit.axis_label("x"),
         z_label: spec.length_unit.axis_label("z"),
-        traction_label: spec.stress_unit.label("p, q"),
+        traction_label: spec
+            .stress_unit
+            .label(if any_friction { "p, q" } else { "p" }),
         colormap: spec.colormap,
         levels: spec.levels.clone(),
         mark: spec.mark,

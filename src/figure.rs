@@ -2,7 +2,7 @@
 //! everything to the figure's display units.
 
 use crate::field::{self, Axis, FieldError};
-use crate::render::{Figure, Panel, TractionSample};
+use crate::render::{Figure, Mark, Panel, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, PanelSpec, Scene, StressUnit};
 
 /// Number of samples of the traction profile across the figure.
@@ -44,6 +44,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
             half_width: length_per_a,
         });
     }
+    let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
     let any_friction = scene.panels.iter().any(|p| p.friction != 0.0);
     Ok(Figure {
         title: title(scene),
@@ -56,9 +57,30 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
             .label(if any_friction { "p, q" } else { "p" }),
         colormap: spec.colormap,
         levels: spec.levels.clone(),
-        mark: spec.mark,
+        mark,
         panel_width_px: spec.width_px,
     })
+}
+
+/// The extremes worth marking: those whose size is at least 5 % of the larger one (so an
+/// all-compressive map marks its minimum only, and σxx under friction both its tension peak and
+/// its compression peak).
+pub fn auto_mark(panels: &[Panel]) -> Mark {
+    let values = panels
+        .iter()
+        .flat_map(|p| p.values.iter().copied())
+        .filter(|v| v.is_finite());
+    let (lo, hi) = values.fold((0.0f64, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    let size = hi.max(-lo);
+    match (
+        hi >= 0.05 * size && hi > 0.0,
+        -lo >= 0.05 * size && lo < 0.0,
+    ) {
+        (true, true) => Mark::Both,
+        (false, true) => Mark::Min,
+        (true, false) => Mark::Max,
+        (false, false) => Mark::None,
+    }
 }
 
 /// Samples `(x, p, q)` across the axis, with the contact edges `x = ±1` included exactly so the
@@ -112,4 +134,33 @@ fn subtitle(scene: &Scene, panel: &PanelSpec) -> String {
         });
     }
     parts.join(",  ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ndarray::Array2;
+
+    fn panel(values: &[f64]) -> Panel {
+        Panel {
+            subtitle: String::new(),
+            x: Axis::new(0.0, 1.0, values.len()),
+            z: Axis::new(0.0, 1.0, 2),
+            values: Array2::from_shape_fn((2, values.len()), |(_, i)| values[i]),
+            traction: Vec::new(),
+            half_width: 1.0,
+        }
+    }
+
+    #[test]
+    fn auto_mark_picks_the_meaningful_extremes() {
+        assert_eq!(auto_mark(&[panel(&[0.0, 0.3, 0.1])]), Mark::Max);
+        assert_eq!(auto_mark(&[panel(&[-1.2, -0.4, 0.0])]), Mark::Min);
+        assert_eq!(
+            auto_mark(&[panel(&[-1.2, 0.0]), panel(&[0.0, 0.6])]),
+            Mark::Both
+        );
+        assert_eq!(auto_mark(&[panel(&[-1.0, 0.01])]), Mark::Min);
+        assert_eq!(auto_mark(&[panel(&[0.0, 0.0])]), Mark::None);
+    }
 }

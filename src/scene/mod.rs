@@ -200,7 +200,8 @@ pub struct FigureSpec {
     pub resolution: usize,
     pub levels: Levels,
     pub colormap: ColorMap,
-    pub mark: Mark,
+    /// Which extremes to mark; `None` chooses from the data (see `figure::auto_mark`).
+    pub mark: Option<Mark>,
     pub width_px: u32,
     pub svg: bool,
 }
@@ -765,15 +766,16 @@ impl Validator<'_> {
             },
         };
         let mark = match raw.mark.as_deref() {
-            None | Some("max") => Mark::Max,
-            Some("min") => Mark::Min,
-            Some("both") => Mark::Both,
-            Some("none") => Mark::None,
+            None | Some("auto") => None,
+            Some("max") => Some(Mark::Max),
+            Some("min") => Some(Mark::Min),
+            Some("both") => Some(Mark::Both),
+            Some("none") => Some(Mark::None),
             Some(other) => {
                 return Err(self.error(
                     "figure.mark",
                     format!("unknown mark `{other}`"),
-                    Some("use \"max\", \"min\", \"both\" or \"none\""),
+                    Some("use \"auto\", \"max\", \"min\", \"both\" or \"none\""),
                 ))
             }
         };

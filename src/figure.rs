@@ -119,15 +119,15 @@ fn subtitle(scene: &Scene, panel: &PanelSpec) -> String {
         format!("μ = {}", panel.friction),
         format!("ν = {}", panel.poisson),
     ];
-    if let Some(d) = scene.contact.dimensional {
-        let a = d.line.half_width_m;
+    if let Some(scale) = scene.contact.scale {
+        let a = scale.half_width_m;
         let a_text = match scene.figure.length_unit {
             LengthUnit::Micrometre | LengthUnit::HalfWidth => format!("a = {:.1} µm", a * 1e6),
             LengthUnit::Millimetre => format!("a = {:.4} mm", a * 1e3),
             LengthUnit::Metre => format!("a = {a:.3e} m"),
         };
         parts.push(a_text);
-        let p0 = d.line.p0_pa;
+        let p0 = scale.p0_pa;
         parts.push(match scene.figure.stress_unit {
             StressUnit::GigaPascal => format!("p0 = {:.3} GPa", p0 * 1e-9),
             _ => format!("p0 = {:.0} MPa", p0 * 1e-6),

@@ -23,15 +23,42 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     writeln!(out, "contact: line (two cylinders, plane strain); friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)", contact.friction)?;
     let a_m = contact.half_width_m();
     let p0_pa = contact.p0_pa();
-    match contact.dimensional {
-        None => {
+    match (contact.dimensional, contact.scale) {
+        (None, None) => {
             writeln!(
                 out,
                 "normalised contact: lengths in units of a, stresses in units of p0; body 1 ν = {}",
                 contact.poisson
             )?;
         }
-        Some(d) => {
+        (None, Some(scale)) => {
+            writeln!(
+                out,
+                "contact given by its size; body 1 ν = {}",
+                contact.poisson
+            )?;
+            writeln!(
+                out,
+                "contact half-width           a  = {:.3} µm",
+                scale.half_width_m * 1e6
+            )?;
+            writeln!(
+                out,
+                "peak pressure                p0 = {:.2} MPa",
+                scale.p0_pa * 1e-6
+            )?;
+            writeln!(
+                out,
+                "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
+                std::f64::consts::FRAC_PI_4 * scale.p0_pa * 1e-6
+            )?;
+            writeln!(
+                out,
+                "load per unit length         P  = {:.4} kN/m (= π a p0 / 2)",
+                std::f64::consts::FRAC_PI_2 * scale.half_width_m * scale.p0_pa * 1e-3
+            )?;
+        }
+        (Some(d), _) => {
             if let Some(g) = d.gears {
                 writeln!(
                     out,
@@ -110,7 +137,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let solution = contact.solution(contact.friction, contact.poisson);
     let maxima = StressMaxima::of(&solution);
     let tau1 = crate::assess::maximum(&solution, crate::stress::Quantity::Tau1, false);
-    let dimensional = contact.dimensional.is_some();
+    let dimensional = contact.scale.is_some();
     let describe = |e: &Extreme| {
         let mut text = format!("{:.4} p0", e.value_over_p0);
         if dimensional {
@@ -152,7 +179,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let vm = maxima.von_mises.value_over_p0;
     let tresca = maxima.max_shear.value_over_p0;
     writeln!(out, "first yield (von Mises) starts {starts}, at z = {:.3} a, when p0 = {:.3} Y (Tresca: p0 = {:.3} Y)", maxima.von_mises.z_over_a, 1.0 / vm, 0.5 / tresca)?;
-    let (Some(y), Some(d)) = (contact.yield_strength, contact.dimensional) else {
+    let (Some(y), true) = (contact.yield_strength, dimensional) else {
         if dimensional {
             writeln!(out, "yield strength not given: add contact.yield_strength or contact.hardness for a yield check")?;
         }
@@ -177,13 +204,22 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
         "yield reaches the surface: surface plastic flow has been initiated".to_string()
     };
     writeln!(out, "  verdict                      {verdict}")?;
-    let p_yield = d.line.load_for_peak_pressure(y.pa / vm);
-    writeln!(
-        out,
-        "  load at first yield          P_Y = {:.3} kN/m (p0 = {:.1} MPa; load factor {:.2})",
-        p_yield * 1e-3,
-        y.pa / vm * 1e-6,
-        p_yield / d.line.load_n_per_m
-    )?;
+    // The field scales with p0 and P ∝ p0² (line contact), so first yield is at p0 = Y / σvM,max.
+    let p0_yield = y.pa / vm;
+    let load_factor = (p0_yield / p0_pa).powi(2);
+    match contact.dimensional {
+        Some(d) => writeln!(
+            out,
+            "  load at first yield          P_Y = {:.3} kN/m (p0 = {:.1} MPa; load factor {:.2})",
+            d.line.load_for_peak_pressure(p0_yield) * 1e-3,
+            p0_yield * 1e-6,
+            load_factor
+        )?,
+        None => writeln!(
+            out,
+            "  first yield                  at p0 = {:.1} MPa (load factor {load_factor:.2} at the same geometry)",
+            p0_yield * 1e-6
+        )?,
+    }
     Ok(())
 }

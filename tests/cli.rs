@@ -272,6 +272,10 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nz = [-1.0, 1.0]\n", "key `figure.z`", "into the body"),
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [-1.0, 1.0]\nz = [0.0, 100.0]\nresolution = 20000\n", "key `figure.resolution`", "MiB"),
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nquantity = \"vonmises\"\n", "key `figure.quantity`", "von_mises"),
+    ("format = 1\n[contact]\nkind = \"line\"\na = \"0 mm\"\np0 = \"1 GPa\"\n", "key `contact.a`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\na = 2.0\np0 = 1.0\n", "key `contact.a`", "must be 1"),
+    ("format = 1\n[contact]\nkind = \"line\"\na = \"0.2 mm\"\n", "key `contact.p0`", "p0 = "),
+    ("format = 1\n[contact]\nkind = \"line\"\nhardness = \"300 HB\"\n", "key `contact.hardness`", "dimensional"),
     ("format = 2\n[contact]\nkind = \"line\"\n", "key `format`", "format = 1"),
     ("format = 1\n[contact]\nkind = \"point\"\n", "key `contact.kind`", "not yet supported"),
 ];

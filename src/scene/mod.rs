@@ -15,7 +15,7 @@ use crate::field::{Axis, Plane};
 use crate::render::{ColorMap, Levels, Mark};
 use crate::solution::Solution;
 use crate::stress::{Quantity, QuantityKind};
-use raw::{RawBody, RawContact, RawFigure, RawScene};
+use raw::{NumberOrText, RawBody, RawContact, RawFigure, RawScene};
 use units::Dimension;
 
 /// The scene format this build reads.
@@ -73,6 +73,13 @@ pub struct Dimensional {
     pub line: LineContact,
 }
 
+/// The physical size of a contact: half-width and peak pressure.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scale {
+    pub half_width_m: f64,
+    pub p0_pa: f64,
+}
+
 /// The validated contact of a scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact {
@@ -81,7 +88,9 @@ pub struct Contact {
     pub friction: f64,
     /// Poisson ratio of body 1, the body whose stresses are computed.
     pub poisson: f64,
-    /// `None` for a normalised scene (a = 1, p0 = 1).
+    /// Half-width and peak pressure in SI; `None` for a normalised scene (a = 1, p0 = 1).
+    pub scale: Option<Scale>,
+    /// Bodies, materials and load, when the scene gives them (then `scale` follows from them).
     pub dimensional: Option<Dimensional>,
     pub yield_strength: Option<YieldStrength>,
 }
@@ -89,12 +98,12 @@ pub struct Contact {
 impl Contact {
     /// Contact half-width in m (1 for a normalised scene, where lengths are in units of a).
     pub fn half_width_m(&self) -> f64 {
-        self.dimensional.map_or(1.0, |d| d.line.half_width_m)
+        self.scale.map_or(1.0, |s| s.half_width_m)
     }
 
     /// Peak pressure in Pa (1 for a normalised scene).
     pub fn p0_pa(&self) -> f64 {
-        self.dimensional.map_or(1.0, |d| d.line.p0_pa)
+        self.scale.map_or(1.0, |s| s.p0_pa)
     }
 
     pub fn solution(&self, friction: f64, poisson: f64) -> Solution {
@@ -453,15 +462,41 @@ impl Validator<'_> {
         let dimensional_keys =
             raw.load.is_some() || raw.body1.is_some() || raw.body2.is_some() || raw.gears.is_some();
         let yield_strength = self.yield_strength(raw)?;
+        let scale = self.scale(raw)?;
+        if !dimensional_keys && scale.is_none() && yield_strength.is_some() {
+            let key = if raw.hardness.is_some() {
+                "contact.hardness"
+            } else {
+                "contact.yield_strength"
+            };
+            return Err(self.error(
+                key,
+                "a yield check needs a dimensional contact; this scene is normalised (a = 1, p0 = 1)",
+                Some("give a and p0 with units, or load and bodies; `stressfield hertz` reports p0 at first yield in units of Y anyway"),
+            ));
+        }
         if !dimensional_keys {
             let poisson = self.poisson("contact.poisson", raw.poisson.unwrap_or(0.3))?;
             return Ok(Contact {
                 kind,
                 friction,
                 poisson,
+                scale,
                 dimensional: None,
                 yield_strength,
             });
+        }
+        if raw.a.is_some() || raw.p0.is_some() {
+            let key = if raw.a.is_some() {
+                "contact.a"
+            } else {
+                "contact.p0"
+            };
+            return Err(self.error(
+                key,
+                "a and p0 follow from the load and the bodies",
+                Some("give either a and p0, or load with [contact.body1] and [contact.body2]"),
+            ));
         }
         if raw.poisson.is_some() {
             return Err(self.error(
@@ -501,6 +536,10 @@ impl Validator<'_> {
             kind,
             friction,
             poisson: body1.material.poisson,
+            scale: Some(Scale {
+                half_width_m: line.half_width_m,
+                p0_pa: line.p0_pa,
+            }),
             dimensional: Some(Dimensional {
                 body1,
                 body2,
@@ -509,6 +548,51 @@ impl Validator<'_> {
             }),
             yield_strength,
         })
+    }
+
+    /// `a` and `p0` given directly: both bare 1 (normalised, the default) or both with units.
+    fn scale(&self, raw: &RawContact) -> Result<Option<Scale>, SceneError> {
+        let value = |key: &str, value: &NumberOrText, dimension: Dimension| match value {
+            NumberOrText::Number(n) if *n == 1.0 => Ok(None),
+            NumberOrText::Number(n) => Err(self.error(
+                key,
+                format!("a bare number means normalised units and must be 1, got {n}"),
+                Some(&format!(
+                    "write it with a unit for a dimensional scale, e.g. {}",
+                    dimension.example()
+                )),
+            )),
+            NumberOrText::Text(text) => self.positive(key, text, dimension).map(Some),
+        };
+        let a = raw
+            .a
+            .as_ref()
+            .map(|v| value("contact.a", v, Dimension::Length))
+            .transpose()?
+            .flatten();
+        let p0 = raw
+            .p0
+            .as_ref()
+            .map(|v| value("contact.p0", v, Dimension::Pressure))
+            .transpose()?
+            .flatten();
+        match (a, p0) {
+            (Some(half_width_m), Some(p0_pa)) => Ok(Some(Scale {
+                half_width_m,
+                p0_pa,
+            })),
+            (None, None) => Ok(None),
+            (Some(_), None) => Err(self.error(
+                "contact.p0",
+                "a dimensional half-width needs a dimensional peak pressure",
+                Some("add e.g. p0 = \"1.2 GPa\""),
+            )),
+            (None, Some(_)) => Err(self.error(
+                "contact.a",
+                "a dimensional peak pressure needs a dimensional half-width",
+                Some("add e.g. a = \"0.2 mm\""),
+            )),
+        }
     }
 
     fn yield_strength(&self, raw: &RawContact) -> Result<Option<YieldStrength>, SceneError> {
@@ -665,7 +749,7 @@ impl Validator<'_> {
             })?,
             None => Quantity::VonMises,
         };
-        let dimensional = contact.dimensional.is_some();
+        let dimensional = contact.scale.is_some();
         let length_unit = match &raw.length_unit {
             Some(key) => LengthUnit::from_key(key).ok_or_else(|| {
                 self.error(
@@ -820,6 +904,21 @@ mod tests {
         assert_eq!(scene.contact.poisson, 0.3);
         assert_eq!(scene.panels.len(), 1);
         assert_eq!(scene.figure.quantity, Quantity::VonMises);
+    }
+
+    #[test]
+    fn contact_given_by_size_is_drawn_in_mm_and_mpa() {
+        let text = "format = 1\n[contact]\nkind = \"line\"\na = \"0.25 mm\"\np0 = \"1.5 GPa\"\n";
+        let scene = parse(text).expect("valid");
+        assert_eq!(scene.contact.half_width_m(), 0.25e-3);
+        assert_eq!(scene.contact.p0_pa(), 1.5e9);
+        assert_eq!(scene.figure.length_unit, LengthUnit::Millimetre);
+        assert_eq!(scene.figure.stress_unit, StressUnit::MegaPascal);
+        // Default range ±2.5a, given in mm.
+        assert!((scene.figure.x.1 - 0.625).abs() < 1e-12);
+        let explicit =
+            parse("format = 1\n[contact]\nkind = \"line\"\na = 1\np0 = 1\n").expect("valid");
+        assert_eq!(explicit.contact.scale, None);
     }
 
     #[test]

@@ -21,6 +21,9 @@ pub struct RawContact {
     pub friction: Option<f64>,
     /// Poisson ratio of the body whose field is drawn, for normalised scenes.
     pub poisson: Option<f64>,
+    /// Contact half-width and peak pressure, given directly instead of load and bodies.
+    pub a: Option<NumberOrText>,
+    pub p0: Option<NumberOrText>,
     pub load: Option<String>,
     pub body1: Option<RawBody>,
     pub body2: Option<RawBody>,
@@ -69,4 +72,12 @@ pub struct RawPanel {
     pub friction: Option<f64>,
     pub poisson: Option<f64>,
     pub subtitle: Option<String>,
+}
+
+/// A value written either as a bare number or as a string with a unit.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum NumberOrText {
+    Number(f64),
+    Text(String),
 }

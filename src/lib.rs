@@ -1,3 +1,36 @@
+//! # stressfield
+//!
+//! Elastic stress fields under loaded contacts, from exact closed forms, evaluated in parallel
+//! on grids and drawn as figures.
+//!
+//! ## Pipeline
+//! Data flows one way, and the modules follow it:
+//!
+//! ```text
+//! scene (TOML) -> contact (Hertz: a, p0) -> solution (stress at a point) -> field (grid, rayon)
+//!              -> figure (display units) -> render (pixels / SVG text) -> output (atomic files)
+//! ```
+//!
+//! - [`scene`]: `scenes/*.toml` parsed with serde (unknown keys rejected by dotted path) and
+//!   validated into typed values in SI units.
+//! - [`contact`]: Hertz theory (effective modulus and radius, half-width, peak and mean
+//!   pressure), materials, spur-gear geometry.
+//! - [`solution`]: stress solutions as pure functions of a point, in units of `a` and `p0`.
+//! - [`stress`]: the stress tensor and derived measures (principal, von Mises, Tresca, τ1).
+//! - [`field`]: grids, and the one place where rayon evaluates them.
+//! - [`figure`], [`render`]: display units, then pixels; renderers do no I/O.
+//! - [`assess`], [`report`]: stress maxima, yield assessment, the `hertz` report.
+//! - [`probe`]: stresses at given points, CSV in and out.
+//! - [`output`], [`compare`]: atomic file writes, regression image comparison.
+//!
+//! ## Conventions
+//! - z >= 0 points into the body; depth is drawn downwards.
+//! - Tension positive, compression negative; the pressure `p >= 0` pushes on the surface, so
+//!   `σzz(x, 0) = -p(x)` inside the contact.
+//! - The tangential traction `q = μ p` acts on the body's surface in +x, so `τxz(x, 0) = -q(x)`;
+//!   the trailing edge is `x = -a`, where `σxx = +2 μ p0`.
+//! - SI units internally; solutions work in units of the half-width `a` and peak pressure `p0`.
+
 pub mod assess;
 pub mod compare;
 pub mod contact;

@@ -49,6 +49,7 @@ pub enum Command {
     Probe {
         /// Scene whose contact (friction, Poisson ratio) is used; default: a normalised contact.
         scene: Option<PathBuf>,
+        /// Contact geometry (point contact arrives in a later version).
         #[arg(long, value_enum, default_value_t = ContactArg::Line)]
         contact: ContactArg,
         /// Coefficient of sliding friction (overrides the scene's).
@@ -57,6 +58,7 @@ pub enum Command {
         /// Poisson's ratio of the body (overrides the scene's).
         #[arg(long, allow_negative_numbers = true)]
         poisson: Option<f64>,
+        /// Stress solution: the exact closed form (numerical integration arrives later).
         #[arg(long, value_enum, default_value_t = MethodArg::ClosedForm)]
         method: MethodArg,
         /// CSV file of points, or - for standard input.

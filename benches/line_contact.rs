@@ -14,10 +14,7 @@ fn line_contact(c: &mut Criterion) {
         poisson: 0.3,
     };
     for n in [256usize, 1024] {
-        let plane = Plane {
-            x: Axis::new(-3.0, 3.0, n),
-            z: Axis::new(0.0, 3.0, n),
-        };
+        let plane = Plane::xz(Axis::new(-3.0, 3.0, n), Axis::new(0.0, 3.0, n));
         group.throughput(Throughput::Elements((n * n) as u64));
         group.bench_with_input(
             BenchmarkId::new("sequential", format!("{n}x{n}")),

@@ -125,7 +125,7 @@ fn render_all(
     }
     let total_rows: usize = scenes
         .iter()
-        .map(|s| s.plane().z.count * s.panels.len())
+        .map(|s| s.plane().v.count * s.panels.len())
         .sum();
     let bar = progress_bar(total_rows as u64);
     let mut mismatches = Vec::new();
@@ -246,8 +246,8 @@ fn check(paths: &[PathBuf]) -> Result<()> {
                 "ok {} ({} panel(s), {} x {} points each)",
                 path.display(),
                 scene.panels.len(),
-                scene.plane().x.count,
-                scene.plane().z.count
+                scene.plane().u.count,
+                scene.plane().v.count
             ),
             Err(e) => {
                 eprintln!("error: {e}");

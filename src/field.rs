@@ -3,7 +3,7 @@
 //! Coordinates are in units of the contact half-width `a` and values in units of `p0`; the
 //! caller converts to display units. Only the requested quantities are stored.
 
-use ndarray::{Array3, ArrayView2, Axis as NdAxis};
+use ndarray::{Array3, Array4, ArrayView2, ArrayView3, Axis as NdAxis};
 use rayon::prelude::*;
 
 use crate::solution::Solution;
@@ -41,18 +41,83 @@ impl Axis {
     }
 }
 
-/// A section of the body. For a line contact (plane strain) the xz plane is the whole story.
+/// Which plane of the body a section lies in (coordinates in units of `a`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Section {
+    /// The xz plane at a given y: horizontal axis x, vertical axis z (depth).
+    Xz { y: f64 },
+    /// The yz plane at a given x: horizontal axis y, vertical axis z (depth).
+    Yz { x: f64 },
+    /// A plane parallel to the surface at depth z: horizontal axis x, vertical axis y.
+    Xy { z: f64 },
+}
+
+/// A section of the body: a plane and the two axes that span it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Plane {
-    /// Along the surface, in units of `a`.
-    pub x: Axis,
-    /// Depth below the surface (`>= 0`), in units of `a`.
-    pub z: Axis,
+    pub section: Section,
+    /// Horizontal axis: x for xz and xy sections, y for yz sections (units of `a`).
+    pub u: Axis,
+    /// Vertical axis: z (depth, `>= 0`) for xz and yz sections, y for xy sections.
+    pub v: Axis,
 }
 
 impl Plane {
+    /// The xz section at y = 0, the whole story for a line contact (plane strain).
+    pub fn xz(x: Axis, z: Axis) -> Self {
+        Self {
+            section: Section::Xz { y: 0.0 },
+            u: x,
+            v: z,
+        }
+    }
+
     pub fn points(&self) -> usize {
-        self.x.count * self.z.count
+        self.u.count * self.v.count
+    }
+
+    /// The point `(x, y, z)` at horizontal sample `iu` and vertical sample `iv`.
+    #[inline]
+    pub fn point(&self, iu: usize, iv: usize) -> (f64, f64, f64) {
+        let (u, v) = (self.u.value(iu), self.v.value(iv));
+        match self.section {
+            Section::Xz { y } => (u, y, v),
+            Section::Yz { x } => (x, u, v),
+            Section::Xy { z } => (u, v, z),
+        }
+    }
+}
+
+/// A box of points, `x` by `y` by `z` (units of `a`, `z >= 0`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Volume {
+    pub x: Axis,
+    pub y: Axis,
+    pub z: Axis,
+}
+
+impl Volume {
+    pub fn points(&self) -> usize {
+        self.x.count * self.y.count * self.z.count
+    }
+}
+
+/// Storage precision of evaluated values: `f64`, or `f32` to halve the memory of large grids.
+pub trait Precision: Copy + Default + Send + Sync + 'static {
+    fn from_f64(value: f64) -> Self;
+}
+
+impl Precision for f64 {
+    #[inline]
+    fn from_f64(value: f64) -> Self {
+        value
+    }
+}
+
+impl Precision for f32 {
+    #[inline]
+    fn from_f64(value: f64) -> Self {
+        value as f32
     }
 }
 
@@ -63,45 +128,65 @@ pub const MAX_FIELD_BYTES: usize = 4 << 30;
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum FieldError {
     #[error(
-        "the grid of {nx} x {nz} points with {quantities} quantities needs {needed_mib} MiB, more \
-         than the {limit_mib} MiB allowed\nhint: lower figure.resolution or draw fewer panels"
+        "the grid of {points} points with {quantities} quantities needs {needed_mib} MiB, more \
+         than the {limit_mib} MiB allowed\nhint: lower the resolution, store f32, or keep fewer \
+         quantities"
     )]
     TooLarge {
-        nx: usize,
-        nz: usize,
+        points: usize,
         quantities: usize,
         needed_mib: usize,
         limit_mib: usize,
     },
 }
 
-/// Values of several quantities on a plane: `values[[iz, k, ix]]` is quantity `k` at
-/// `(x[ix], z[iz])`.
+/// Values of several quantities on a plane: `values[[iv, k, iu]]` is quantity `k` at the
+/// horizontal sample `iu` and vertical sample `iv` (for an xz section: `(x[iu], z[iv])`).
 #[derive(Clone, Debug)]
-pub struct Field {
+pub struct Field<T = f64> {
     pub plane: Plane,
     pub quantities: Vec<Quantity>,
-    pub values: Array3<f64>,
+    pub values: Array3<T>,
 }
 
-impl Field {
-    /// The `[nz, nx]` map of one of the stored quantities.
-    pub fn map(&self, quantity: Quantity) -> Option<ArrayView2<'_, f64>> {
+impl<T> Field<T> {
+    /// The `[nv, nu]` map of one of the stored quantities.
+    pub fn map(&self, quantity: Quantity) -> Option<ArrayView2<'_, T>> {
         let k = self.quantities.iter().position(|&q| q == quantity)?;
         Some(self.values.index_axis(NdAxis(1), k))
     }
 }
 
-/// Checks the memory a field would take before allocating it.
-pub fn check_size(plane: &Plane, quantities: usize) -> Result<(), FieldError> {
-    let bytes = plane
-        .points()
+/// Values of several quantities in a volume: `values[[iz, k, iy, ix]]` is quantity `k` at
+/// `(x[ix], y[iy], z[iz])`.
+#[derive(Clone, Debug)]
+pub struct VolumeField<T = f64> {
+    pub volume: Volume,
+    pub quantities: Vec<Quantity>,
+    pub values: Array4<T>,
+}
+
+impl<T> VolumeField<T> {
+    /// The `[nz, ny, nx]` block of one of the stored quantities.
+    pub fn block(&self, quantity: Quantity) -> Option<ArrayView3<'_, T>> {
+        let k = self.quantities.iter().position(|&q| q == quantity)?;
+        Some(self.values.index_axis(NdAxis(1), k))
+    }
+}
+
+/// Checks the memory `points` values of `quantities` quantities of `bytes_per_value` bytes
+/// would take, before allocating them.
+pub fn check_size(
+    points: usize,
+    quantities: usize,
+    bytes_per_value: usize,
+) -> Result<(), FieldError> {
+    let bytes = points
         .saturating_mul(quantities.max(1))
-        .saturating_mul(std::mem::size_of::<f64>());
+        .saturating_mul(bytes_per_value);
     if bytes > MAX_FIELD_BYTES {
         return Err(FieldError::TooLarge {
-            nx: plane.x.count,
-            nz: plane.z.count,
+            points,
             quantities,
             needed_mib: bytes >> 20,
             limit_mib: MAX_FIELD_BYTES >> 20,
@@ -110,7 +195,7 @@ pub fn check_size(plane: &Plane, quantities: usize) -> Result<(), FieldError> {
     Ok(())
 }
 
-/// Evaluates `quantities` of `solution` on `plane`, rows in parallel (rayon).
+/// Evaluates `quantities` of `solution` on `plane`, rows in parallel (rayon), stored as `f64`.
 ///
 /// `on_row` is called once per finished row (from worker threads), for progress reporting.
 pub fn evaluate(
@@ -119,14 +204,24 @@ pub fn evaluate(
     quantities: &[Quantity],
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Field, FieldError> {
-    check_size(plane, quantities.len())?;
-    let mut values = Array3::zeros((plane.z.count, quantities.len(), plane.x.count));
+    evaluate_as::<f64>(solution, plane, quantities, on_row)
+}
+
+/// As [`evaluate`], storing values in the chosen precision (`f32` halves the memory).
+pub fn evaluate_as<T: Precision>(
+    solution: &Solution,
+    plane: &Plane,
+    quantities: &[Quantity],
+    on_row: &(dyn Fn() + Sync),
+) -> Result<Field<T>, FieldError> {
+    check_size(plane.points(), quantities.len(), std::mem::size_of::<T>())?;
+    let mut values = Array3::default((plane.v.count, quantities.len(), plane.u.count));
     values
         .axis_iter_mut(NdAxis(0))
         .into_par_iter()
         .enumerate()
-        .for_each(|(iz, mut row)| {
-            fill_row(solution, plane, quantities, iz, &mut row);
+        .for_each_init(RowBuffers::default, |buffers, (iv, mut row)| {
+            fill_plane_row(solution, plane, quantities, iv, &mut row, buffers);
             on_row();
         });
     Ok(Field {
@@ -142,10 +237,11 @@ pub fn evaluate_sequential(
     plane: &Plane,
     quantities: &[Quantity],
 ) -> Result<Field, FieldError> {
-    check_size(plane, quantities.len())?;
-    let mut values = Array3::zeros((plane.z.count, quantities.len(), plane.x.count));
-    for (iz, mut row) in values.axis_iter_mut(NdAxis(0)).enumerate() {
-        fill_row(solution, plane, quantities, iz, &mut row);
+    check_size(plane.points(), quantities.len(), std::mem::size_of::<f64>())?;
+    let mut values = Array3::zeros((plane.v.count, quantities.len(), plane.u.count));
+    let mut buffers = RowBuffers::default();
+    for (iv, mut row) in values.axis_iter_mut(NdAxis(0)).enumerate() {
+        fill_plane_row(solution, plane, quantities, iv, &mut row, &mut buffers);
     }
     Ok(Field {
         plane: *plane,
@@ -154,26 +250,92 @@ pub fn evaluate_sequential(
     })
 }
 
-fn fill_row(
+/// Evaluates `quantities` in a volume, in parallel over (z, y) rows, in the chosen precision.
+/// `on_layer` is called once per finished depth layer.
+pub fn evaluate_volume<T: Precision>(
+    solution: &Solution,
+    volume: &Volume,
+    quantities: &[Quantity],
+    on_layer: &(dyn Fn() + Sync),
+) -> Result<VolumeField<T>, FieldError> {
+    check_size(volume.points(), quantities.len(), std::mem::size_of::<T>())?;
+    let shape = (
+        volume.z.count,
+        quantities.len(),
+        volume.y.count,
+        volume.x.count,
+    );
+    let mut values = Array4::default(shape);
+    values
+        .axis_iter_mut(NdAxis(0))
+        .into_par_iter()
+        .enumerate()
+        .for_each(|(iz, mut layer)| {
+            let plane = Plane {
+                section: Section::Xy {
+                    z: volume.z.value(iz),
+                },
+                u: volume.x,
+                v: volume.y,
+            };
+            // Layers are independent; rows within a layer go to other threads too.
+            layer
+                .axis_iter_mut(NdAxis(1))
+                .into_par_iter()
+                .enumerate()
+                .for_each_init(RowBuffers::default, |buffers, (iy, mut row)| {
+                    fill_plane_row(solution, &plane, quantities, iy, &mut row, buffers);
+                });
+            on_layer();
+        });
+    Ok(VolumeField {
+        volume: *volume,
+        quantities: quantities.to_vec(),
+        values,
+    })
+}
+
+/// Scratch space reused from row to row by one worker.
+#[derive(Default)]
+struct RowBuffers {
+    xs: Vec<f64>,
+    stresses: Vec<Stress>,
+    values: Vec<f64>,
+}
+
+/// Fills row `iv` (`[quantity, iu]`) of a plane.
+fn fill_plane_row<T: Precision>(
     solution: &Solution,
     plane: &Plane,
     quantities: &[Quantity],
-    iz: usize,
-    row: &mut ndarray::ArrayViewMut2<'_, f64>,
+    iv: usize,
+    row: &mut ndarray::ArrayViewMut2<'_, T>,
+    buffers: &mut RowBuffers,
 ) {
-    let z = plane.z.value(iz);
-    let xs: Vec<f64> = plane.x.values().collect();
-    let mut stresses = vec![Stress::default(); xs.len()];
-    solution.stress_row_over_p0(&xs, 0.0, z, &mut stresses);
-    for (k, &quantity) in quantities.iter().enumerate() {
-        let mut out = row.index_axis_mut(NdAxis(0), k);
-        match out.as_slice_mut() {
-            Some(out) => fill_quantity(quantity, &stresses, out),
-            None => out
-                .iter_mut()
-                .zip(&stresses)
-                .for_each(|(o, s)| *o = quantity.of(s)),
+    let n = plane.u.count;
+    buffers.stresses.resize(n, Stress::default());
+    buffers.values.resize(n, 0.0);
+    match plane.section {
+        // Rows along x: the solution's vectorisable row kernel.
+        Section::Xz { .. } | Section::Xy { .. } => {
+            let (_, y, z) = plane.point(0, iv);
+            buffers.xs.clear();
+            buffers.xs.extend(plane.u.values());
+            solution.stress_row_over_p0(&buffers.xs, y, z, &mut buffers.stresses);
         }
+        Section::Yz { .. } => {
+            for (iu, stress) in buffers.stresses.iter_mut().enumerate() {
+                let (x, y, z) = plane.point(iu, iv);
+                *stress = solution.stress_over_p0(x, y, z);
+            }
+        }
+    }
+    for (k, &quantity) in quantities.iter().enumerate() {
+        fill_quantity(quantity, &buffers.stresses, &mut buffers.values);
+        row.index_axis_mut(NdAxis(0), k)
+            .iter_mut()
+            .zip(&buffers.values)
+            .for_each(|(out, &v)| *out = T::from_f64(v));
     }
 }
 
@@ -202,10 +364,7 @@ mod tests {
             friction: 0.3,
             poisson: 0.3,
         };
-        let plane = Plane {
-            x: Axis::new(-2.0, 2.0, 41),
-            z: Axis::new(0.0, 2.0, 21),
-        };
+        let plane = Plane::xz(Axis::new(-2.0, 2.0, 41), Axis::new(0.0, 2.0, 21));
         let quantities = [Quantity::VonMises, Quantity::Sxx];
         let parallel = evaluate(&solution, &plane, &quantities, &|| {}).expect("small grid");
         let sequential = evaluate_sequential(&solution, &plane, &quantities).expect("small grid");
@@ -217,12 +376,87 @@ mod tests {
 
     #[test]
     fn oversized_grid_is_refused_before_allocation() {
-        let plane = Plane {
-            x: Axis::new(-1.0, 1.0, 100_000),
-            z: Axis::new(0.0, 1.0, 100_000),
-        };
-        let err = check_size(&plane, 2).expect_err("80 GB grid");
+        let plane = Plane::xz(Axis::new(-1.0, 1.0, 100_000), Axis::new(0.0, 1.0, 100_000));
+        let err = check_size(plane.points(), 2, 8).expect_err("160 GB grid");
         assert!(err.to_string().contains("MiB"), "{err}");
+    }
+
+    #[test]
+    fn sections_place_their_points_in_the_right_plane() {
+        // The line contact does not depend on y: a yz section at x is constant along y and
+        // equals the xz section's column at x; an xy section at z equals its row at z.
+        let solution = Solution::LineHertz {
+            friction: 0.25,
+            poisson: 0.3,
+        };
+        let q = [Quantity::Sxx, Quantity::VonMises];
+        let xz = Plane::xz(Axis::new(-2.0, 2.0, 9), Axis::new(0.0, 2.0, 5));
+        let xz = evaluate(&solution, &xz, &q, &|| {}).expect("small");
+        let yz = Plane {
+            section: Section::Yz { x: 0.5 },
+            u: Axis::new(-1.0, 1.0, 7),
+            v: Axis::new(0.0, 2.0, 5),
+        };
+        let yz = evaluate(&solution, &yz, &q, &|| {}).expect("small");
+        let xy = Plane {
+            section: Section::Xy { z: 1.5 },
+            u: Axis::new(-2.0, 2.0, 9),
+            v: Axis::new(-1.0, 1.0, 3),
+        };
+        let xy = evaluate(&solution, &xy, &q, &|| {}).expect("small");
+        for k in 0..2 {
+            for iz in 0..5 {
+                for iy in 0..7 {
+                    assert_eq!(yz.values[[iz, k, iy]], xz.values[[iz, k, 5]]); // x = 0.5
+                }
+            }
+            for iy in 0..3 {
+                for ix in 0..9 {
+                    assert_eq!(xy.values[[iy, k, ix]], xz.values[[3, k, ix]]); // z = 1.5
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn volume_layers_match_sections_and_f32_rounds_f64() {
+        let solution = Solution::LineHertz {
+            friction: 0.1,
+            poisson: 0.28,
+        };
+        let volume = Volume {
+            x: Axis::new(-2.0, 2.0, 11),
+            y: Axis::new(-1.0, 1.0, 4),
+            z: Axis::new(0.0, 1.0, 6),
+        };
+        let q = [Quantity::VonMises, Quantity::Szz];
+        let wide = evaluate_volume::<f64>(&solution, &volume, &q, &|| {}).expect("small");
+        let narrow = evaluate_volume::<f32>(&solution, &volume, &q, &|| {}).expect("small");
+        for iz in 0..6 {
+            let layer = Plane {
+                section: Section::Xy {
+                    z: volume.z.value(iz),
+                },
+                u: volume.x,
+                v: volume.y,
+            };
+            let layer = evaluate(&solution, &layer, &q, &|| {}).expect("small");
+            for k in 0..2 {
+                for iy in 0..4 {
+                    for ix in 0..11 {
+                        let v = wide.values[[iz, k, iy, ix]];
+                        assert_eq!(v, layer.values[[iy, k, ix]]);
+                        assert_eq!(narrow.values[[iz, k, iy, ix]], v as f32);
+                    }
+                }
+            }
+        }
+        assert_eq!(wide.block(Quantity::Szz).expect("stored").dim(), (6, 4, 11));
+        // Memory: f32 halves the estimate, so a grid twice the limit in f64 is still refused
+        // in f64 but its half fits in f32.
+        let points = MAX_FIELD_BYTES / 8 + 1;
+        assert!(check_size(points, 1, 8).is_err());
+        assert!(check_size(points, 1, 4).is_ok());
     }
 
     #[test]

@@ -28,7 +28,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
             .values
             .index_axis(ndarray::Axis(1), 0)
             .mapv(|v| v * stress_per_p0);
-        let traction = traction_samples(&plane.x, |x| solution.surface_traction_over_p0(x))
+        let traction = traction_samples(&plane.u, |x| solution.surface_traction_over_p0(x))
             .map(|(x, p, q)| TractionSample {
                 x: x * length_per_a,
                 p: p * stress_per_p0,
@@ -37,8 +37,8 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
             .collect();
         panels.push(Panel {
             subtitle: subtitle(scene, panel),
-            x: to_display(plane.x),
-            z: to_display(plane.z),
+            x: to_display(plane.u),
+            z: to_display(plane.v),
             values,
             traction,
             half_width: length_per_a,

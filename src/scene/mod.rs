@@ -276,10 +276,10 @@ impl Scene {
         let (z0, z1) = self.figure.z;
         let nx = self.figure.resolution;
         let nz = grid_rows(nx, x1 - x0, z1 - z0);
-        Plane {
-            x: Axis::new(x0 * unit_over_a, x1 * unit_over_a, nx),
-            z: Axis::new(z0 * unit_over_a, z1 * unit_over_a, nz),
-        }
+        Plane::xz(
+            Axis::new(x0 * unit_over_a, x1 * unit_over_a, nx),
+            Axis::new(z0 * unit_over_a, z1 * unit_over_a, nz),
+        )
     }
 
     /// The stress solution of panel `i`.

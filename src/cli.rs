@@ -58,9 +58,13 @@ pub enum Command {
         /// Poisson's ratio of the body (overrides the scene's).
         #[arg(long, allow_negative_numbers = true)]
         poisson: Option<f64>,
-        /// Stress solution: the exact closed form (numerical integration arrives later).
+        /// Stress solution: the exact closed form, or numerical integration of the tractions
+        /// discretised into --strips uniform strips (a check of the closed form).
         #[arg(long, value_enum, default_value_t = MethodArg::ClosedForm)]
         method: MethodArg,
+        /// Number of strips of the numerical method (error about 0.1/strips p0 at z >= 0.1a).
+        #[arg(long, default_value_t = 2000)]
+        strips: usize,
         /// CSV file of points, or - for standard input.
         #[arg(long, value_name = "FILE|-")]
         points: PathBuf,

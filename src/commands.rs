@@ -11,6 +11,7 @@ use stressfield::compare::{self, Tolerance};
 use stressfield::output::write_atomic;
 use stressfield::probe;
 use stressfield::scene::Scene;
+use stressfield::solution::Solution;
 use stressfield::{figure, render, report};
 
 pub fn run(command: Command) -> Result<()> {
@@ -43,6 +44,7 @@ pub fn run(command: Command) -> Result<()> {
             friction,
             poisson,
             method,
+            strips,
             points,
         } => probe_command(
             scene.as_deref(),
@@ -50,6 +52,7 @@ pub fn run(command: Command) -> Result<()> {
             friction,
             poisson,
             method,
+            strips,
             &points,
         ),
     }
@@ -267,13 +270,14 @@ fn probe_command(
     friction: Option<f64>,
     poisson: Option<f64>,
     method: MethodArg,
+    strips: usize,
     points: &Path,
 ) -> Result<()> {
     if contact == ContactArg::Point {
         bail!("point contact is not yet supported by probe\nhint: use --contact line");
     }
-    if method == MethodArg::Numerical {
-        bail!("the numerical method is not yet supported by probe\nhint: use --method closed-form (exact)");
+    if !(1..=1_000_000).contains(&strips) {
+        bail!("--strips must lie in 1..=1000000, got {strips}");
     }
     let (mut mu, mut nu) = (0.0, 0.3);
     if let Some(path) = scene {
@@ -309,9 +313,12 @@ fn probe_command(
             }
         )
     })?;
-    let solution = stressfield::solution::Solution::LineHertz {
-        friction: mu,
-        poisson: nu,
+    let solution = match method {
+        MethodArg::ClosedForm => Solution::LineHertz {
+            friction: mu,
+            poisson: nu,
+        },
+        MethodArg::Numerical => Solution::line_numerical(mu, nu, strips),
     };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());

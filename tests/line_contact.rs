@@ -232,3 +232,58 @@ fn contact_edges_and_neighbourhood_are_finite_and_continuous() {
         }
     }
 }
+
+/// Flamant kernels integrated numerically over a strip, for the strip influence coefficients.
+fn strip_by_quadrature(x: f64, z: f64, s1: f64, s2: f64) -> ([f64; 3], [f64; 3]) {
+    let integrate = |f: &dyn Fn(f64) -> f64| {
+        let split = x.clamp(s1, s2);
+        let mut total = 0.0;
+        for (lo, hi) in [(s1, split), (split, s2)] {
+            if hi > lo {
+                total += double_exponential::integrate(f, lo, hi, 1e-14).integral;
+            }
+        }
+        total
+    };
+    let kernel = |s: f64, which: usize| {
+        let dx = x - s;
+        let r2 = dx * dx + z * z;
+        let f = -2.0 / std::f64::consts::PI / (r2 * r2);
+        f * match which {
+            0 => dx * dx * z,
+            1 => z * z * z,
+            2 => dx * z * z,
+            _ => dx * dx * dx,
+        }
+    };
+    let n = [0, 1, 2].map(|k| integrate(&|s| kernel(s, k)));
+    let t = [3, 2, 0].map(|k| integrate(&|s| kernel(s, k)));
+    (n, t)
+}
+
+#[test]
+fn strip_influence_coefficients_match_flamant_quadrature() {
+    use stressfield::solution::strip::uniform_strip;
+    for (s1, s2) in [(-1.0, 1.0), (0.2, 0.25), (-3.0, -1.5)] {
+        for x in [-4.0, -1.0, -0.3, 0.0, 0.22, 0.9, 2.5] {
+            for z in [0.01, 0.1, 0.5, 2.0, 7.0] {
+                let (normal, tangential) = uniform_strip(x, z, s1, s2);
+                let (qn, qt) = strip_by_quadrature(x, z, s1, s2);
+                for k in 0..3 {
+                    assert!(
+                        (normal[k] - qn[k]).abs() < 1e-10,
+                        "normal {k} at ({x}, {z}) strip [{s1}, {s2}]: {} vs {}",
+                        normal[k],
+                        qn[k]
+                    );
+                    assert!(
+                        (tangential[k] - qt[k]).abs() < 1e-10,
+                        "tangential {k} at ({x}, {z}) strip [{s1}, {s2}]: {} vs {}",
+                        tangential[k],
+                        qt[k]
+                    );
+                }
+            }
+        }
+    }
+}

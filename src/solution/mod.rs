@@ -2,25 +2,50 @@
 //! stress tensor (in units of the peak pressure). No I/O, no threads.
 
 pub mod line_hertz;
+pub mod line_numerical;
+pub mod strip;
+
+use std::sync::Arc;
 
 use crate::stress::Stress;
+use line_numerical::StripTractions;
 
 /// A stress solution that can be evaluated anywhere in the body `z >= 0`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Solution {
     /// Sliding Hertzian line contact, plane strain, closed form (McEwen 1949).
     LineHertz { friction: f64, poisson: f64 },
+    /// Line contact by numerical integration: the tractions as uniform strips, summed with the
+    /// strips' exact influence coefficients (plane strain).
+    LineNumerical {
+        tractions: Arc<StripTractions>,
+        friction: f64,
+        poisson: f64,
+    },
 }
 
 impl Solution {
+    /// The Hertz line contact integrated numerically over `strips` uniform strips.
+    pub fn line_numerical(friction: f64, poisson: f64, strips: usize) -> Self {
+        let tractions = Arc::new(StripTractions::hertz(strips, friction));
+        Solution::LineNumerical {
+            tractions,
+            friction,
+            poisson,
+        }
+    }
+
     /// Stress in units of `p0` at a point in units of `a` (`y` is ignored by line contacts).
     #[inline]
     pub fn stress_over_p0(&self, x_over_a: f64, y_over_a: f64, z_over_a: f64) -> Stress {
         let _ = y_over_a;
-        match *self {
+        match self {
             Solution::LineHertz { friction, poisson } => {
-                line_hertz::stress_over_p0(x_over_a, z_over_a, friction, poisson)
+                line_hertz::stress_over_p0(x_over_a, z_over_a, *friction, *poisson)
             }
+            Solution::LineNumerical {
+                tractions, poisson, ..
+            } => tractions.stress_over_p0(x_over_a, z_over_a, *poisson),
         }
     }
 
@@ -29,33 +54,46 @@ impl Solution {
     /// The match on the solution is hoisted out of the loop so the loop body can vectorise.
     pub fn stress_row_over_p0(&self, xs: &[f64], y_over_a: f64, z_over_a: f64, out: &mut [Stress]) {
         let _ = y_over_a;
-        match *self {
+        match self {
             Solution::LineHertz { friction, poisson } => {
                 for (stress, &x) in out.iter_mut().zip(xs) {
-                    *stress = line_hertz::stress_over_p0(x, z_over_a, friction, poisson);
+                    *stress = line_hertz::stress_over_p0(x, z_over_a, *friction, *poisson);
+                }
+            }
+            Solution::LineNumerical {
+                tractions, poisson, ..
+            } => {
+                for (stress, &x) in out.iter_mut().zip(xs) {
+                    *stress = tractions.stress_over_p0(x, z_over_a, *poisson);
                 }
             }
         }
     }
 
-    /// Surface pressure and tangential traction `(p/p0, q/p0)` along the x axis.
+    /// Surface pressure and tangential traction `(p/p0, q/p0)` along the x axis (for the
+    /// numerical solution, the discretised tractions).
     pub fn surface_traction_over_p0(&self, x_over_a: f64) -> (f64, f64) {
-        match *self {
+        match self {
             Solution::LineHertz { friction, .. } => {
-                line_hertz::surface_traction_over_p0(x_over_a, friction)
+                line_hertz::surface_traction_over_p0(x_over_a, *friction)
             }
+            Solution::LineNumerical { tractions, .. } => tractions.at(x_over_a),
         }
     }
 
     pub fn friction(&self) -> f64 {
-        match *self {
-            Solution::LineHertz { friction, .. } => friction,
+        match self {
+            Solution::LineHertz { friction, .. } | Solution::LineNumerical { friction, .. } => {
+                *friction
+            }
         }
     }
 
     pub fn poisson(&self) -> f64 {
-        match *self {
-            Solution::LineHertz { poisson, .. } => poisson,
+        match self {
+            Solution::LineHertz { poisson, .. } | Solution::LineNumerical { poisson, .. } => {
+                *poisson
+            }
         }
     }
 }

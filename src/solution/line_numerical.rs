@@ -1,0 +1,112 @@
+//! Line contact by numerical integration: the Hertz tractions discretised into uniform strips
+//! and the stress summed from the strips' exact influence coefficients ([`super::strip`]).
+//!
+//! This is an independent route to the closed form of [`super::line_hertz`] (a check of it,
+//! and the model for tractions that have no closed form).
+
+use super::strip;
+use crate::stress::Stress;
+
+/// Surface tractions discretised into `n` equal strips over `-a..a` (units of a and p0).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StripTractions {
+    /// `n + 1` strip edges.
+    pub edges: Vec<f64>,
+    /// Mean pressure on each strip.
+    pub pressure: Vec<f64>,
+    /// Mean tangential traction (on the body, +x) on each strip.
+    pub shear: Vec<f64>,
+}
+
+impl StripTractions {
+    /// The Hertz pressure `sqrt(1 - x²)` and `q = mu p`, each strip carrying the exact mean of
+    /// the pressure over it, `(F(b) - F(a)) / (b - a)` with `F(x) = (x sqrt(1-x²) + asin x)/2`,
+    /// so the total load `pi/2` is kept exactly.
+    pub fn hertz(strips: usize, mu: f64) -> Self {
+        let n = strips.max(1);
+        let edges: Vec<f64> = (0..=n).map(|i| -1.0 + 2.0 * i as f64 / n as f64).collect();
+        let antiderivative = |x: f64| 0.5 * (x * (1.0 - x * x).max(0.0).sqrt() + x.asin());
+        let pressure: Vec<f64> = edges
+            .windows(2)
+            .map(|w| (antiderivative(w[1]) - antiderivative(w[0])) / (w[1] - w[0]))
+            .collect();
+        let shear = pressure.iter().map(|p| mu * p).collect();
+        Self {
+            edges,
+            pressure,
+            shear,
+        }
+    }
+
+    /// Stress (units of p0) at `(x, z)` by direct summation over the strips (plane strain).
+    pub fn stress_over_p0(&self, x: f64, z: f64, nu: f64) -> Stress {
+        let mut sum = [0.0; 3];
+        for (i, edge) in self.edges.windows(2).enumerate() {
+            let (normal, tangential) = strip::uniform_strip(x, z, edge[0], edge[1]);
+            let (p, q) = (self.pressure[i], self.shear[i]);
+            for k in 0..3 {
+                sum[k] += p * normal[k] + q * tangential[k];
+            }
+        }
+        strip::plane_strain(sum, nu)
+    }
+
+    /// The tractions `(p, q)` of the strip containing `x` (zero outside the strips).
+    pub fn at(&self, x: f64) -> (f64, f64) {
+        let n = self.pressure.len();
+        let (first, last) = (self.edges[0], self.edges[n]);
+        if !(x >= first && x < last) {
+            return (0.0, 0.0);
+        }
+        let i = (((x - first) / (last - first)) * n as f64) as usize;
+        let i = i.min(n - 1);
+        (self.pressure[i], self.shear[i])
+    }
+
+    /// Total normal load per unit length (units of p0 a).
+    pub fn load(&self) -> f64 {
+        self.edges
+            .windows(2)
+            .zip(&self.pressure)
+            .map(|(w, p)| (w[1] - w[0]) * p)
+            .sum()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solution::line_hertz;
+
+    #[test]
+    fn discretised_load_is_exact() {
+        let tractions = StripTractions::hertz(37, 0.2);
+        assert!((tractions.load() - std::f64::consts::FRAC_PI_2).abs() < 1e-14);
+    }
+
+    #[test]
+    fn converges_to_the_closed_form_as_strips_are_refined() {
+        // Maximum error over a set of interior points (z >= 0.1a) for n and 4n strips: the
+        // piecewise-constant pressure converges at least like 1/n.
+        let points: Vec<(f64, f64)> = (0..=20)
+            .flat_map(|i| [0.1, 0.3, 0.786, 1.5].map(|z| (-2.0 + 0.2 * f64::from(i), z)))
+            .collect();
+        let error = |n: usize| {
+            let tractions = StripTractions::hertz(n, 0.3);
+            points
+                .iter()
+                .map(|&(x, z)| {
+                    let a = tractions.stress_over_p0(x, z, 0.3);
+                    let b = line_hertz::stress_over_p0(x, z, 0.3, 0.3);
+                    [a.xx - b.xx, a.zz - b.zz, a.xz - b.xz]
+                        .iter()
+                        .fold(0.0f64, |m, d| m.max(d.abs()))
+                })
+                .fold(0.0f64, f64::max)
+        };
+        let (coarse, fine) = (error(50), error(200));
+        assert!(fine < coarse / 3.0, "{coarse} -> {fine}");
+        assert!(fine < 2e-3, "{fine}");
+        assert!(error(2000) < 2e-4, "{}", error(2000));
+    }
+}

@@ -66,14 +66,7 @@ pub fn stress_over_p0(x: f64, z: f64, mu: f64, nu: f64) -> Stress {
     let xx = -bracket_m + mu * (n * m2_minus_z2 + 2.0 * dn);
     let zz = -m * m2_minus_z2 - mu * n * m2_minus_z2;
     let xz = -n * m2_minus_z2 - mu * bracket_m;
-    Stress {
-        xx,
-        yy: nu * (xx + zz),
-        zz,
-        yz: 0.0,
-        xz,
-        xy: 0.0,
-    }
+    Stress::plane_strain(xx, zz, xz, nu)
 }
 
 /// Real and imaginary parts of `sqrt(1 - (x + i z)^2) = m - i n`, with `m >= 0` and `n` of the

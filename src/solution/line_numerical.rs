@@ -48,7 +48,7 @@ impl StripTractions {
                 sum[k] += p * normal[k] + q * tangential[k];
             }
         }
-        strip::plane_strain(sum, nu)
+        Stress::plane_strain(sum[0], sum[1], sum[2], nu)
     }
 
     /// The tractions `(p, q)` of the strip containing `x` (zero outside the strips).

@@ -3,8 +3,6 @@
 
 use std::f64::consts::PI;
 
-use crate::stress::Stress;
-
 /// In-plane stresses `(sxx, szz, sxz)` at `(x, z)` due to a uniform pressure `p = 1` pushing on
 /// the strip `s1 <= x <= s2` (in +z, into the body), and due to a uniform tangential traction
 /// `q = 1` acting on the body in +x over the same strip.
@@ -48,20 +46,6 @@ pub fn uniform_strip(x: f64, z: f64, s1: f64, s2: f64) -> ([f64; 3], [f64; 3]) {
     let normal = [f * d[0], f * d[1], f * d[2]];
     let tangential = [f * d[3], f * d[2], f * d[0]];
     (normal, tangential)
-}
-
-/// The plane-strain stress tensor from in-plane components: `syy = nu (sxx + szz)`.
-#[inline]
-pub fn plane_strain(in_plane: [f64; 3], nu: f64) -> Stress {
-    let [xx, zz, xz] = in_plane;
-    Stress {
-        xx,
-        yy: nu * (xx + zz),
-        zz,
-        yz: 0.0,
-        xz,
-        xy: 0.0,
-    }
 }
 
 #[cfg(test)]

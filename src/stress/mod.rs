@@ -23,6 +23,20 @@ pub struct Stress {
 }
 
 impl Stress {
+    /// A plane-strain state from its in-plane components: `syy = nu (sxx + szz)`, and no
+    /// out-of-plane shear (Johnson, *Contact Mechanics* (1985), §2.1).
+    #[inline]
+    pub fn plane_strain(xx: f64, zz: f64, xz: f64, nu: f64) -> Self {
+        Self {
+            xx,
+            yy: nu * (xx + zz),
+            zz,
+            yz: 0.0,
+            xz,
+            xy: 0.0,
+        }
+    }
+
     /// Multiplies every component by `factor` (for example `p0` to go from `sigma/p0` to Pa).
     #[must_use]
     pub fn scaled(self, factor: f64) -> Self {

@@ -4,4 +4,5 @@
 mod cli;
 mod golden;
 mod line_contact;
+mod point_contact;
 mod scenes;

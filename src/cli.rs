@@ -49,7 +49,7 @@ pub enum Command {
     Probe {
         /// Scene whose contact (friction, Poisson ratio) is used; default: a normalised contact.
         scene: Option<PathBuf>,
-        /// Contact geometry (point contact arrives in a later version).
+        /// Contact geometry: line (cylinders, plane strain) or point (sphere; y is used).
         #[arg(long, value_enum, default_value_t = ContactArg::Line)]
         contact: ContactArg,
         /// Coefficient of sliding friction (overrides the scene's).

@@ -273,8 +273,15 @@ fn probe_command(
     strips: usize,
     points: &Path,
 ) -> Result<()> {
-    if contact == ContactArg::Point {
-        bail!("point contact is not yet supported by probe\nhint: use --contact line");
+    if contact == ContactArg::Point && method == MethodArg::Numerical {
+        bail!(
+            "the numerical method is not yet supported for point contact\nhint: use --method closed-form (exact)"
+        );
+    }
+    if contact == ContactArg::Point && scene.is_some() {
+        bail!(
+            "--contact point cannot use a scene: scenes describe line contacts in this version\nhint: give --friction and --poisson instead"
+        );
     }
     if !(1..=1_000_000).contains(&strips) {
         bail!("--strips must lie in 1..=1000000, got {strips}");
@@ -313,12 +320,16 @@ fn probe_command(
             }
         )
     })?;
-    let solution = match method {
-        MethodArg::ClosedForm => Solution::LineHertz {
+    let solution = match (contact, method) {
+        (ContactArg::Line, MethodArg::ClosedForm) => Solution::LineHertz {
             friction: mu,
             poisson: nu,
         },
-        MethodArg::Numerical => Solution::line_numerical(mu, nu, strips),
+        (ContactArg::Line, MethodArg::Numerical) => Solution::line_numerical(mu, nu, strips),
+        (ContactArg::Point, _) => Solution::SphereHertz {
+            friction: mu,
+            poisson: nu,
+        },
     };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());

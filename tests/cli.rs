@@ -426,9 +426,17 @@ fn probe_rejects_bad_input() {
             &["no points"],
         ),
         (
-            &["probe", "--contact", "point", "--points", "-"],
+            &[
+                "probe",
+                "--contact",
+                "point",
+                "--method",
+                "numerical",
+                "--points",
+                "-",
+            ],
             "0,0,1\n",
-            &["point contact", "not yet supported"],
+            &["numerical", "not yet supported for point contact"],
         ),
         (
             &[
@@ -503,4 +511,62 @@ fn probe_numerical_method_agrees_with_the_closed_form() {
             assert!((u - v).abs() < 1e-4, "{row_a:?} vs {row_b:?}");
         }
     }
+}
+
+#[test]
+fn probe_point_contact_gives_the_sphere_field() {
+    let input = "x,y,z\n0,0,0.5\n0.3,-0.4,0.2\n1,0,0\n";
+    let output = run_with_stdin(
+        &[
+            "probe",
+            "--contact",
+            "point",
+            "--friction",
+            "0.2",
+            "--poisson",
+            "0.3",
+            "--points",
+            "-",
+        ],
+        input,
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    let rows: Vec<Vec<f64>> = stdout(&output)
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
+        .collect();
+    assert_eq!(rows.len(), 3);
+    // On the axis the normal part gives szz = -1/(1 + z²) (Johnson §3.4); the traction adds
+    // nothing to szz on the axis (odd in x).
+    assert!((rows[0][5] + 1.0 / 1.25).abs() < 1e-12, "{:?}", rows[0]);
+    // y is used: the off-axis point has shear stresses out of the xz plane.
+    assert!(
+        rows[1][6].abs() > 1e-3 && rows[1][8].abs() > 1e-3,
+        "{:?}",
+        rows[1]
+    );
+    // Contact edge on the surface: szz = 0, and the y column is echoed.
+    assert!(rows[2][5].abs() < 1e-12 && rows[2][1] == 0.0);
+    for row in &rows {
+        let s =
+            stressfield::solution::sphere_hertz::stress_over_p0(row[0], row[1], row[2], 0.2, 0.3);
+        assert_eq!(
+            [row[3], row[4], row[5], row[6], row[7], row[8]],
+            [s.xx, s.yy, s.zz, s.yz, s.xz, s.xy]
+        );
+    }
+    // A scene describes a line contact: refuse the combination.
+    let refused = run_with_stdin(
+        &[
+            "probe",
+            "scenes/line_tau1.toml",
+            "--contact",
+            "point",
+            "--points",
+            "-",
+        ],
+        input,
+    );
+    assert_fails_with(&refused, &["--contact point", "scene"]);
 }

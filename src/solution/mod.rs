@@ -23,6 +23,8 @@ pub enum Solution {
         friction: f64,
         poisson: f64,
     },
+    /// Sliding Hertzian point contact (sphere), closed form (Hamilton 1983, Huber 1904).
+    SphereHertz { friction: f64, poisson: f64 },
 }
 
 impl Solution {
@@ -39,7 +41,6 @@ impl Solution {
     /// Stress in units of `p0` at a point in units of `a` (`y` is ignored by line contacts).
     #[inline]
     pub fn stress_over_p0(&self, x_over_a: f64, y_over_a: f64, z_over_a: f64) -> Stress {
-        let _ = y_over_a;
         match self {
             Solution::LineHertz { friction, poisson } => {
                 line_hertz::stress_over_p0(x_over_a, z_over_a, *friction, *poisson)
@@ -47,6 +48,9 @@ impl Solution {
             Solution::LineNumerical {
                 tractions, poisson, ..
             } => tractions.stress_over_p0(x_over_a, z_over_a, *poisson),
+            Solution::SphereHertz { friction, poisson } => {
+                sphere_hertz::stress_over_p0(x_over_a, y_over_a, z_over_a, *friction, *poisson)
+            }
         }
     }
 
@@ -54,7 +58,6 @@ impl Solution {
     ///
     /// The match on the solution is hoisted out of the loop so the loop body can vectorise.
     pub fn stress_row_over_p0(&self, xs: &[f64], y_over_a: f64, z_over_a: f64, out: &mut [Stress]) {
-        let _ = y_over_a;
         match self {
             Solution::LineHertz { friction, poisson } => {
                 for (stress, &x) in out.iter_mut().zip(xs) {
@@ -68,6 +71,12 @@ impl Solution {
                     *stress = tractions.stress_over_p0(x, z_over_a, *poisson);
                 }
             }
+            Solution::SphereHertz { friction, poisson } => {
+                for (stress, &x) in out.iter_mut().zip(xs) {
+                    *stress =
+                        sphere_hertz::stress_over_p0(x, y_over_a, z_over_a, *friction, *poisson);
+                }
+            }
         }
     }
 
@@ -79,22 +88,25 @@ impl Solution {
                 line_hertz::surface_traction_over_p0(x_over_a, *friction)
             }
             Solution::LineNumerical { tractions, .. } => tractions.at(x_over_a),
+            Solution::SphereHertz { friction, .. } => {
+                sphere_hertz::surface_traction_over_p0(x_over_a, 0.0, *friction)
+            }
         }
     }
 
     pub fn friction(&self) -> f64 {
         match self {
-            Solution::LineHertz { friction, .. } | Solution::LineNumerical { friction, .. } => {
-                *friction
-            }
+            Solution::LineHertz { friction, .. }
+            | Solution::LineNumerical { friction, .. }
+            | Solution::SphereHertz { friction, .. } => *friction,
         }
     }
 
     pub fn poisson(&self) -> f64 {
         match self {
-            Solution::LineHertz { poisson, .. } | Solution::LineNumerical { poisson, .. } => {
-                *poisson
-            }
+            Solution::LineHertz { poisson, .. }
+            | Solution::LineNumerical { poisson, .. }
+            | Solution::SphereHertz { poisson, .. } => *poisson,
         }
     }
 }

@@ -24,8 +24,10 @@ impl SpurGearPair {
     /// (AP and BP in the seed notes' figure 56).
     ///
     /// ## Reference
-    /// Shigley's *Mechanical Engineering Design* (9th ed.), §14-5 (curvature radii of the
-    /// teeth at the pitch point, `r sin(phi)`); Johnson (1985), §4.3 for the cylinder model.
+    /// The involute's radius of curvature at a point is the length of its generating line from
+    /// the base-circle tangency point; at the pitch point that is `r_b tan(phi) = r sin(phi)`.
+    /// Seed lecture notes (Homework 3, Problem 1 and figure 56, after Wang 2002) set the
+    /// problem; the teeth are then two cylinders in line contact (Hertz).
     pub fn curvature_radius_at_pitch_point_m(&self, i: usize) -> f64 {
         self.pitch_radius_m(i) * self.pressure_angle_rad.sin()
     }

@@ -89,8 +89,8 @@ pub fn preset(name: &str) -> Option<&'static Preset> {
 /// relation `H ≈ 3 Y` for the mean pressure under a fully plastic indentation gives `Y = H/3`.
 ///
 /// ## Reference
-/// D. Tabor, *The Hardness of Metals*, Oxford (1951), ch. 5; Johnson, *Contact Mechanics*
-/// (1985), §6.3 (fully plastic indentation, `p_m ≈ 3Y`).
+/// D. Tabor, *The Hardness of Metals*, Oxford (1951); Johnson, *Contact Mechanics* (1985),
+/// ch. 6 (fully plastic indentation, `p_m ≈ 3Y`).
 pub fn yield_strength_from_hardness_pa(hardness_number_kgf_per_mm2: f64) -> f64 {
     hardness_number_kgf_per_mm2 * 9.80665e6 / 3.0
 }

@@ -23,8 +23,8 @@ use std::f64::consts::PI;
 /// (returned as infinite exactly at an edge on the surface).
 ///
 /// ## Reference
-/// K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), §2.2 (Flamant) and
-/// §2.5 (distributed loads, uniform pressure on a strip).
+/// K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), ch. 2: §2.2 for the
+/// Flamant solutions; the same chapter treats distributed loads on a strip.
 #[inline]
 pub fn uniform_strip(x: f64, z: f64, s1: f64, s2: f64) -> ([f64; 3], [f64; 3]) {
     let antiderivatives = |big_x: f64| {
@@ -62,7 +62,7 @@ mod tests {
             "sxz = -q: {tangential:?}"
         );
         assert!(tangential[1].abs() < 1e-15);
-        // Uniform pressure: sxx = -p on the surface under the strip (Johnson §2.5).
+        // Uniform pressure: sxx = -p on the surface under the strip (Johnson ch. 2).
         assert!((normal[0] + 1.0).abs() < 1e-15);
         // Outside the strip the surface is free.
         let (normal, tangential) = uniform_strip(2.0, 0.0, -0.5, 1.0);

@@ -106,7 +106,7 @@ impl Stress {
             [self.xy, self.yy, self.yz],
             [self.xz, self.yz, self.zz],
         ];
-        // Cyclic Jacobi (Golub & Van Loan, Matrix Computations, 4th ed., Alg. 8.5.3):
+        // Cyclic Jacobi (Golub & Van Loan, *Matrix Computations*, the cyclic Jacobi method):
         // each rotation zeroes one off-diagonal entry; convergence is quadratic.
         for _sweep in 0..32 {
             let off = m[0][1].abs() + m[0][2].abs() + m[1][2].abs();

@@ -324,13 +324,7 @@ impl<'a, DB: DrawingBackend> Painter<'a, DB> {
                 for px in x0..x1 {
                     let d = distance_to_segment((px as f64 + 0.5, py as f64 + 0.5), a, b);
                     let c = (width / 2.0 + 0.5 - d).clamp(0.0, 1.0) as f32 * strength;
-                    if c > 0.0 {
-                        let index = py * self.width + px;
-                        if self.coverage[index] == 0.0 {
-                            self.touched.push(index);
-                        }
-                        self.coverage[index] = self.coverage[index].max(c);
-                    }
+                    self.cover(px, py, c);
                 }
             }
         }
@@ -352,16 +346,21 @@ impl<'a, DB: DrawingBackend> Painter<'a, DB> {
         for py in y0..y1 {
             for px in x0..x1 {
                 let c = shape(px as f64 + 0.5, py as f64 + 0.5) as f32;
-                if c > 0.0 {
-                    let index = py * self.width + px;
-                    if self.coverage[index] == 0.0 {
-                        self.touched.push(index);
-                    }
-                    self.coverage[index] = self.coverage[index].max(c);
-                }
+                self.cover(px, py, c);
             }
         }
         self.flush(color)
+    }
+
+    /// Raises the coverage of pixel `(px, py)` to at least `c` (remembering touched pixels).
+    fn cover(&mut self, px: usize, py: usize, c: f32) {
+        if c > 0.0 {
+            let index = py * self.width + px;
+            if self.coverage[index] == 0.0 {
+                self.touched.push(index);
+            }
+            self.coverage[index] = self.coverage[index].max(c);
+        }
     }
 
     /// Blends the accumulated coverage in `color` and clears it.

@@ -221,6 +221,27 @@ mod tests {
     }
 
     #[test]
+    fn load_at_a_given_peak_pressure_follows_hertz_scaling() {
+        // Independent of the scaling rule used inside: recompute the contact at the new load.
+        let body = Body {
+            radius_m: 0.01,
+            material: steel(),
+        };
+        let flat = Body {
+            radius_m: f64::INFINITY,
+            material: steel(),
+        };
+        let point = PointContact::new(&body, &flat, 100.0).expect("valid");
+        let load = point.load_for_peak_pressure(1.5 * point.p0_pa);
+        let again = PointContact::new(&body, &flat, load).expect("valid");
+        assert_relative_eq!(again.p0_pa, 1.5 * point.p0_pa, max_relative = 1e-13);
+        let line = LineContact::from_effective(40e3, 115e9, 0.0114);
+        let load = line.load_for_peak_pressure(0.7 * line.p0_pa);
+        let again = LineContact::from_effective(load, 115e9, 0.0114);
+        assert_relative_eq!(again.p0_pa, 0.7 * line.p0_pa, max_relative = 1e-13);
+    }
+
+    #[test]
     fn effective_values() {
         assert_relative_eq!(
             effective_modulus(&steel(), &steel()),

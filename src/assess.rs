@@ -8,43 +8,58 @@ use crate::stress::Quantity;
 pub struct Extreme {
     pub value_over_p0: f64,
     pub x_over_a: f64,
+    /// 0 for a line contact; for a point contact the maximum is searched over `y >= 0` (the
+    /// fields are symmetric in y), so its mirror image at `-y` is a maximum too.
+    pub y_over_a: f64,
     pub z_over_a: f64,
 }
 
-/// Finds the maximum of `quantity` over `|x| <= 3a`, `0 <= z <= 3a` (where every Hertz
-/// maximum lies), optionally restricted to the surface `z = 0`.
+/// Finds the maximum of `quantity` over `|x| <= 3a`, `0 <= y <= 3a` (point contacts only),
+/// `0 <= z <= 3a` (where every Hertz maximum lies), optionally restricted to the surface
+/// `z = 0`.
 ///
-/// A coarse scan (step 0.025a) is followed by a compass search that halves its step down to
-/// 1e-9 a, so locations are accurate to about 1e-8 a for smooth maxima.
+/// A coarse scan (step 0.025a in the xz plane of a line contact, 0.05a in the volume of a
+/// point contact) is followed by a compass search that halves its step down to 1e-9 a, so
+/// locations are accurate to about 1e-8 a for smooth maxima.
 pub fn maximum(solution: &Solution, quantity: Quantity, surface_only: bool) -> Extreme {
-    let value = |x: f64, z: f64| quantity.of(&solution.stress_over_p0(x, 0.0, z));
-    let step = 0.025;
-    let (mut best_x, mut best_z, mut best) = (0.0, 0.0, f64::NEG_INFINITY);
-    let nz = if surface_only { 1 } else { 121 };
+    let value = |p: [f64; 3]| quantity.of(&solution.stress_over_p0(p[0], p[1], p[2]));
+    let three_d = solution.is_three_dimensional();
+    let step: f64 = if three_d { 0.05 } else { 0.025 };
+    let n = (3.0 / step).round() as usize;
+    let ny = if three_d { n + 1 } else { 1 };
+    let nz = if surface_only { 1 } else { n + 1 };
+    let (mut best_at, mut best) = ([0.0; 3], f64::NEG_INFINITY);
     for iz in 0..nz {
-        let z = step * iz as f64;
-        for ix in 0..=240 {
-            let x = -3.0 + step * ix as f64;
-            let v = value(x, z);
-            if v > best {
-                (best_x, best_z, best) = (x, z, v);
+        for iy in 0..ny {
+            for ix in 0..=2 * n {
+                let p = [-3.0 + step * ix as f64, step * iy as f64, step * iz as f64];
+                let v = value(p);
+                if v > best {
+                    (best_at, best) = (p, v);
+                }
             }
         }
     }
+    // Directions the search may move in: x always, y for point contacts, z unless on the
+    // surface.
+    let axes: Vec<usize> = [(0, true), (1, three_d), (2, !surface_only)]
+        .into_iter()
+        .filter_map(|(axis, free)| free.then_some(axis))
+        .collect();
     let mut h = step;
     while h > 1e-9 {
         let mut improved = false;
-        let moves: &[(f64, f64)] = if surface_only {
-            &[(1.0, 0.0), (-1.0, 0.0)]
-        } else {
-            &[(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)]
-        };
-        for (dx, dz) in moves {
-            let (x, z) = (best_x + dx * h, (best_z + dz * h).max(0.0));
-            let v = value(x, z);
-            if v > best {
-                (best_x, best_z, best) = (x, z, v);
-                improved = true;
+        for &axis in &axes {
+            for sign in [1.0, -1.0] {
+                let mut p = best_at;
+                p[axis] += sign * h;
+                p[1] = p[1].max(0.0);
+                p[2] = p[2].max(0.0);
+                let v = value(p);
+                if v > best {
+                    (best_at, best) = (p, v);
+                    improved = true;
+                }
             }
         }
         if !improved {
@@ -53,8 +68,9 @@ pub fn maximum(solution: &Solution, quantity: Quantity, surface_only: bool) -> E
     }
     Extreme {
         value_over_p0: best,
-        x_over_a: best_x,
-        z_over_a: best_z,
+        x_over_a: best_at[0],
+        y_over_a: best_at[1],
+        z_over_a: best_at[2],
     }
 }
 
@@ -100,6 +116,26 @@ mod tests {
         assert!(tau1.x_over_a.abs() < 1e-6);
         let maxima = StressMaxima::of(&solution);
         assert!(!maxima.yield_starts_at_surface());
+    }
+
+    #[test]
+    fn frictionless_sphere_maxima() {
+        let solution = Solution::SphereHertz {
+            friction: 0.0,
+            poisson: 0.3,
+        };
+        // Johnson (1985) §3.4(b) (nu = 0.3): maximum shear 0.31 p0 at z = 0.48a on the axis;
+        // printed to two figures.
+        let shear = maximum(&solution, Quantity::MaxShear, false);
+        assert!((shear.value_over_p0 - 0.31).abs() < 0.005, "{shear:?}");
+        assert!((shear.z_over_a - 0.48).abs() < 0.01, "{shear:?}");
+        assert!(shear.x_over_a.abs() < 1e-6 && shear.y_over_a.abs() < 1e-6);
+        // On the axis two principal stresses are equal (sr = st), so von Mises is
+        // |sz - sr| = 2 tau_max there; its maximum is on the axis too.
+        let von_mises = maximum(&solution, Quantity::VonMises, false);
+        assert!((von_mises.value_over_p0 - 2.0 * shear.value_over_p0).abs() < 1e-9);
+        assert!((von_mises.z_over_a - shear.z_over_a).abs() < 1e-6);
+        assert!(!StressMaxima::of(&solution).yield_starts_at_surface());
     }
 
     #[test]

@@ -50,8 +50,9 @@ pub enum Command {
         /// Scene whose contact (friction, Poisson ratio) is used; default: a normalised contact.
         scene: Option<PathBuf>,
         /// Contact geometry: line (cylinders, plane strain) or point (sphere; y is used).
-        #[arg(long, value_enum, default_value_t = ContactArg::Line)]
-        contact: ContactArg,
+        /// Default: the scene's, else line.
+        #[arg(long, value_enum)]
+        contact: Option<ContactArg>,
         /// Coefficient of sliding friction (overrides the scene's).
         #[arg(long, allow_negative_numbers = true)]
         friction: Option<f64>,

@@ -10,7 +10,7 @@ use crate::cli::{Command, ContactArg, MethodArg};
 use stressfield::compare::{self, Tolerance};
 use stressfield::output::write_atomic;
 use stressfield::probe;
-use stressfield::scene::Scene;
+use stressfield::scene::{ContactKind, Scene};
 use stressfield::solution::Solution;
 use stressfield::{figure, render, report};
 
@@ -128,7 +128,7 @@ fn render_all(
     }
     let total_rows: usize = scenes
         .iter()
-        .map(|s| s.plane().v.count * s.panels.len())
+        .map(|s| s.panels.iter().map(|p| s.plane(p).v.count).sum::<usize>())
         .sum();
     let bar = progress_bar(total_rows as u64);
     let mut mismatches = Vec::new();
@@ -249,8 +249,8 @@ fn check(paths: &[PathBuf]) -> Result<()> {
                 "ok {} ({} panel(s), {} x {} points each)",
                 path.display(),
                 scene.panels.len(),
-                scene.plane().u.count,
-                scene.plane().v.count
+                scene.plane(&scene.panels[0]).u.count,
+                scene.plane(&scene.panels[0]).v.count
             ),
             Err(e) => {
                 eprintln!("error: {e}");
@@ -266,30 +266,39 @@ fn check(paths: &[PathBuf]) -> Result<()> {
 
 fn probe_command(
     scene: Option<&Path>,
-    contact: ContactArg,
+    contact: Option<ContactArg>,
     friction: Option<f64>,
     poisson: Option<f64>,
     method: MethodArg,
     strips: usize,
     points: &Path,
 ) -> Result<()> {
-    if contact == ContactArg::Point && method == MethodArg::Numerical {
-        bail!(
-            "the numerical method is not yet supported for point contact\nhint: use --method closed-form (exact)"
-        );
-    }
-    if contact == ContactArg::Point && scene.is_some() {
-        bail!(
-            "--contact point cannot use a scene: scenes describe line contacts in this version\nhint: give --friction and --poisson instead"
-        );
-    }
     if !(1..=1_000_000).contains(&strips) {
         bail!("--strips must lie in 1..=1000000, got {strips}");
     }
-    let (mut mu, mut nu) = (0.0, 0.3);
+    let (mut mu, mut nu, mut kind) = (0.0, 0.3, ContactArg::Line);
     if let Some(path) = scene {
         let scene = Scene::load(path)?;
         (mu, nu) = (scene.contact.friction, scene.contact.poisson);
+        kind = match scene.contact.kind {
+            ContactKind::Line => ContactArg::Line,
+            ContactKind::Point => ContactArg::Point,
+        };
+        if let Some(given) = contact.filter(|c| *c != kind) {
+            bail!(
+                "--contact {} contradicts the scene {}, a {} contact\nhint: drop --contact; the scene decides",
+                if given == ContactArg::Line { "line" } else { "point" },
+                path.display(),
+                if kind == ContactArg::Line { "line" } else { "point" }
+            );
+        }
+    } else if let Some(given) = contact {
+        kind = given;
+    }
+    if kind == ContactArg::Point && method == MethodArg::Numerical {
+        bail!(
+            "the numerical method is not yet supported for point contact\nhint: use --method closed-form (exact)"
+        );
     }
     if let Some(f) = friction {
         if !(f.is_finite() && f >= 0.0) {
@@ -320,7 +329,7 @@ fn probe_command(
             }
         )
     })?;
-    let solution = match (contact, method) {
+    let solution = match (kind, method) {
         (ContactArg::Line, MethodArg::ClosedForm) => Solution::LineHertz {
             friction: mu,
             poisson: nu,

@@ -1,18 +1,20 @@
 //! From a scene to a drawable figure: evaluates each panel's field on the grid and converts
 //! everything to the figure's display units.
 
-use crate::field::{self, Axis, FieldError};
+use crate::field::{self, Axis, FieldError, Section};
 use crate::render::{Figure, Mark, Panel, TractionSample};
-use crate::scene::{ContactKind, LengthUnit, PanelSpec, Scene, StressUnit};
+use crate::scene::{ContactKind, LengthUnit, PanelSpec, Scene, SectionKind, StressUnit};
 
 /// Number of samples of the traction profile across the figure.
 const TRACTION_SAMPLES: usize = 601;
+
+/// Number of segments of the contact circle drawn on planes parallel to the surface.
+const OUTLINE_SEGMENTS: usize = 256;
 
 /// Evaluates every panel of `scene` (in parallel within each panel) and assembles the figure.
 /// `on_row` is called once per evaluated grid row, for progress reporting.
 pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldError> {
     let spec = &scene.figure;
-    let plane = scene.plane();
     let a_m = scene.contact.half_width_m();
     let p0_pa = scene.contact.p0_pa();
     let length_per_a = a_m / spec.length_unit.metres(a_m);
@@ -22,36 +24,70 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
 
     let mut panels = Vec::with_capacity(scene.panels.len());
     for panel in &scene.panels {
+        let plane = scene.plane(panel);
         let solution = scene.solution(panel);
         let field = field::evaluate(&solution, &plane, &[spec.quantity], on_row)?;
         let values = field
             .values
             .index_axis(ndarray::Axis(1), 0)
             .mapv(|v| v * stress_per_p0);
-        let traction = traction_samples(&plane.u, |x| solution.surface_traction_over_p0(x))
-            .map(|(x, p, q)| TractionSample {
-                x: x * length_per_a,
-                p: p * stress_per_p0,
-                q: q * stress_per_p0,
-            })
-            .collect();
+        // Where the section meets the surface: the tractions along that line and the contact's
+        // extent on it (a chord of the contact circle for a point contact).
+        let chord = |offset: f64| match scene.contact.kind {
+            ContactKind::Line => 1.0,
+            ContactKind::Point => (1.0 - offset * offset).max(0.0).sqrt(),
+        };
+        let (traction, half_width_over_a, outlines) = match plane.section {
+            Section::Xz { y } => (
+                traction_samples(&plane.u, chord(y), |x| {
+                    solution.surface_traction_over_p0(x, y)
+                }),
+                chord(y),
+                Vec::new(),
+            ),
+            Section::Yz { x } => (
+                traction_samples(&plane.u, chord(x), |y| {
+                    solution.surface_traction_over_p0(x, y)
+                }),
+                chord(x),
+                Vec::new(),
+            ),
+            Section::Xy { .. } => (Vec::new(), 0.0, vec![contact_outline(scene.contact.kind)]),
+        };
         panels.push(Panel {
             subtitle: subtitle(scene, panel),
             x: to_display(plane.u),
             z: to_display(plane.v),
             values,
-            traction,
-            half_width: length_per_a,
+            traction: traction
+                .into_iter()
+                .map(|(u, p, q)| TractionSample {
+                    x: u * length_per_a,
+                    p: p * stress_per_p0,
+                    q: q * stress_per_p0,
+                })
+                .collect(),
+            half_width: half_width_over_a * length_per_a,
+            outlines: outlines
+                .into_iter()
+                .map(|line| {
+                    line.into_iter()
+                        .map(|(u, v)| (u * length_per_a, v * length_per_a))
+                        .collect()
+                })
+                .collect(),
         });
     }
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
     let any_friction = scene.panels.iter().any(|p| p.friction != 0.0);
+    let (horizontal, vertical, _) = spec.section.coordinates();
     Ok(Figure {
         title: title(scene),
         panels,
         value_label: spec.stress_unit.label(spec.quantity.symbol()),
-        x_label: spec.length_unit.axis_label("x"),
-        z_label: spec.length_unit.axis_label("z"),
+        x_label: spec.length_unit.axis_label(horizontal),
+        z_label: spec.length_unit.axis_label(vertical),
+        vertical_is_depth: spec.section.vertical_is_depth(),
         traction_label: spec
             .stress_unit
             .label(if any_friction { "p, q" } else { "p" }),
@@ -83,19 +119,71 @@ pub fn auto_mark(panels: &[Panel]) -> Mark {
     }
 }
 
-/// Samples `(x, p, q)` across the axis, with the contact edges `x = ±1` included exactly so the
-/// profile closes on the surface.
+/// Samples `(u, p, q)` along a surface line, with the contact edges `u = ±half_width`
+/// included exactly so the profile closes on the surface.
 fn traction_samples(
-    x: &Axis,
+    u: &Axis,
+    half_width: f64,
     traction: impl Fn(f64) -> (f64, f64),
-) -> impl Iterator<Item = (f64, f64, f64)> {
-    let mut xs: Vec<f64> = Axis::new(x.min, x.max, TRACTION_SAMPLES).values().collect();
-    xs.extend([-1.0, 1.0].into_iter().filter(|e| *e > x.min && *e < x.max));
-    xs.sort_by(f64::total_cmp);
-    xs.into_iter().map(move |x| {
-        let (p, q) = traction(x);
-        (x, p, q)
+) -> Vec<(f64, f64, f64)> {
+    let mut us: Vec<f64> = Axis::new(u.min, u.max, TRACTION_SAMPLES).values().collect();
+    if half_width > 0.0 {
+        us.extend(
+            [-half_width, half_width]
+                .into_iter()
+                .filter(|e| *e > u.min && *e < u.max),
+        );
+    }
+    us.sort_by(f64::total_cmp);
+    us.into_iter()
+        .map(|u| {
+            let (p, q) = traction(u);
+            (u, p, q)
+        })
+        .collect()
+}
+
+/// The contact's outline on a plane parallel to the surface, in units of a: the circle
+/// `r = a` of a point contact, or the two edges `x = ±a` of a line contact.
+fn contact_outline(kind: ContactKind) -> Vec<(f64, f64)> {
+    match kind {
+        ContactKind::Point => (0..=OUTLINE_SEGMENTS)
+            .map(|i| {
+                let angle = std::f64::consts::TAU * i as f64 / OUTLINE_SEGMENTS as f64;
+                (angle.cos(), angle.sin())
+            })
+            .collect(),
+        // Unreachable from scenes (a line contact has only xz sections), kept total.
+        ContactKind::Line => Vec::new(),
+    }
+}
+
+/// Which plane a panel shows, for point contacts (a line contact is the same in every xz
+/// plane, so its panels need no such label): e.g. "xz plane, y = 0.5a" or "surface z = 0".
+fn section_label(scene: &Scene, panel: &PanelSpec) -> Option<String> {
+    if scene.contact.kind == ContactKind::Line {
+        return None;
+    }
+    let section = scene.figure.section;
+    let (_, _, normal) = section.coordinates();
+    let at = panel.at;
+    let value = match scene.figure.length_unit {
+        _ if at == 0.0 => "0".to_string(),
+        LengthUnit::HalfWidth => format!("{}a", trim(at)),
+        LengthUnit::Millimetre => format!("{} mm", trim(at)),
+        LengthUnit::Micrometre => format!("{} µm", trim(at)),
+        LengthUnit::Metre => format!("{at:e} m"),
+    };
+    Some(match section {
+        SectionKind::Xy if at == 0.0 => "surface z = 0".to_string(),
+        _ => format!("{} plane, {normal} = {value}", section.key()),
     })
+}
+
+/// A short decimal: at most four decimals, trailing zeros dropped.
+fn trim(value: f64) -> String {
+    let text = format!("{value:.4}");
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
 fn title(scene: &Scene) -> String {
@@ -106,6 +194,7 @@ fn title(scene: &Scene) -> String {
     let mut title = format!("{}{}", quantity[..1].to_uppercase(), &quantity[1..]);
     match scene.contact.kind {
         ContactKind::Line => title.push_str(" — Hertz line contact"),
+        ContactKind::Point => title.push_str(" — Hertz point contact (sphere)"),
     }
     title
 }
@@ -115,10 +204,9 @@ fn subtitle(scene: &Scene, panel: &PanelSpec) -> String {
     if let Some(subtitle) = &panel.subtitle {
         return subtitle.clone();
     }
-    let mut parts = vec![
-        format!("μ = {}", panel.friction),
-        format!("ν = {}", panel.poisson),
-    ];
+    let mut parts: Vec<String> = section_label(scene, panel).into_iter().collect();
+    parts.push(format!("μ = {}", panel.friction));
+    parts.push(format!("ν = {}", panel.poisson));
     if let Some(scale) = scene.contact.scale {
         let a = scale.half_width_m;
         let a_text = match scene.figure.length_unit {
@@ -149,6 +237,7 @@ mod tests {
             values: Array2::from_shape_fn((2, values.len()), |(_, i)| values[i]),
             traction: Vec::new(),
             half_width: 1.0,
+            outlines: Vec::new(),
         }
     }
 

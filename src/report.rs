@@ -3,7 +3,7 @@
 use std::fmt::Write;
 
 use crate::assess::{Extreme, StressMaxima};
-use crate::scene::Scene;
+use crate::scene::{ContactKind, Hertz, Scene};
 
 /// Formats the report of a scene (first panel's friction and Poisson ratio are the scene's).
 pub fn hertz(scene: &Scene) -> String {
@@ -20,9 +20,24 @@ fn mm(m: f64) -> String {
 fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let contact = &scene.contact;
     writeln!(out, "scene {}", scene.name)?;
-    writeln!(out, "contact: line (two cylinders, plane strain); friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)", contact.friction)?;
+    let point = contact.kind == ContactKind::Point;
+    let geometry = if point {
+        "point (two spheres or a sphere on a flat, contact circle of radius a)"
+    } else {
+        "line (two cylinders, plane strain)"
+    };
+    writeln!(
+        out,
+        "contact: {geometry}; friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)",
+        contact.friction
+    )?;
     let a_m = contact.half_width_m();
     let p0_pa = contact.p0_pa();
+    let a_name = if point {
+        "contact radius              "
+    } else {
+        "contact half-width          "
+    };
     match (contact.dimensional, contact.scale) {
         (None, None) => {
             writeln!(
@@ -37,26 +52,36 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                 "contact given by its size; body 1 ν = {}",
                 contact.poisson
             )?;
-            writeln!(
-                out,
-                "contact half-width           a  = {:.3} µm",
-                scale.half_width_m * 1e6
-            )?;
+            let (a, p0) = (scale.half_width_m, scale.p0_pa);
+            writeln!(out, "{a_name} a  = {:.3} µm", a * 1e6)?;
             writeln!(
                 out,
                 "peak pressure                p0 = {:.2} MPa",
-                scale.p0_pa * 1e-6
+                p0 * 1e-6
             )?;
-            writeln!(
-                out,
-                "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
-                std::f64::consts::FRAC_PI_4 * scale.p0_pa * 1e-6
-            )?;
-            writeln!(
-                out,
-                "load per unit length         P  = {:.4} kN/m (= π a p0 / 2)",
-                std::f64::consts::FRAC_PI_2 * scale.half_width_m * scale.p0_pa * 1e-3
-            )?;
+            if point {
+                writeln!(
+                    out,
+                    "mean pressure                pm = {:.2} MPa (= 2 p0 / 3)",
+                    2.0 / 3.0 * p0 * 1e-6
+                )?;
+                writeln!(
+                    out,
+                    "load                         W  = {:.4} N (= 2 π a² p0 / 3)",
+                    2.0 / 3.0 * std::f64::consts::PI * a * a * p0
+                )?;
+            } else {
+                writeln!(
+                    out,
+                    "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
+                    std::f64::consts::FRAC_PI_4 * p0 * 1e-6
+                )?;
+                writeln!(
+                    out,
+                    "load per unit length         P  = {:.4} kN/m (= π a p0 / 2)",
+                    std::f64::consts::FRAC_PI_2 * a * p0 * 1e-3
+                )?;
+            }
         }
         (Some(d), _) => {
             if let Some(g) = d.gears {
@@ -100,50 +125,92 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                     body.material.poisson
                 )?;
             }
-            let line = d.line;
-            writeln!(
-                out,
-                "load per unit length         P  = {:.4} kN/m",
-                line.load_n_per_m * 1e-3
-            )?;
-            writeln!(
-                out,
-                "effective modulus            E* = {:.3} GPa",
-                line.effective_modulus_pa * 1e-9
-            )?;
-            writeln!(
-                out,
-                "effective radius             R  = {}",
-                mm(line.effective_radius_m)
-            )?;
-            writeln!(
-                out,
-                "contact half-width           a  = {:.3} µm",
-                line.half_width_m * 1e6
-            )?;
-            writeln!(
-                out,
-                "peak pressure                p0 = {:.2} MPa",
-                line.p0_pa * 1e-6
-            )?;
-            writeln!(
-                out,
-                "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
-                line.mean_pressure_pa * 1e-6
-            )?;
-            writeln!(out, "approach                     not defined by a 2-D line contact alone (it depends on the bodies' size)")?;
+            match d.hertz {
+                Hertz::Line(line) => {
+                    writeln!(
+                        out,
+                        "load per unit length         P  = {:.4} kN/m",
+                        line.load_n_per_m * 1e-3
+                    )?;
+                    writeln!(
+                        out,
+                        "effective modulus            E* = {:.3} GPa",
+                        line.effective_modulus_pa * 1e-9
+                    )?;
+                    writeln!(
+                        out,
+                        "effective radius             R  = {}",
+                        mm(line.effective_radius_m)
+                    )?;
+                    writeln!(out, "{a_name} a  = {:.3} µm", line.half_width_m * 1e6)?;
+                    writeln!(
+                        out,
+                        "peak pressure                p0 = {:.2} MPa",
+                        line.p0_pa * 1e-6
+                    )?;
+                    writeln!(
+                        out,
+                        "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
+                        line.mean_pressure_pa * 1e-6
+                    )?;
+                    writeln!(out, "approach                     not defined by a 2-D line contact alone (it depends on the bodies' size)")?;
+                }
+                Hertz::Point(point) => {
+                    writeln!(
+                        out,
+                        "load                         W  = {:.4} N",
+                        point.load_n
+                    )?;
+                    writeln!(
+                        out,
+                        "effective modulus            E* = {:.3} GPa",
+                        point.effective_modulus_pa * 1e-9
+                    )?;
+                    writeln!(
+                        out,
+                        "effective radius             R  = {}",
+                        mm(point.effective_radius_m)
+                    )?;
+                    writeln!(out, "{a_name} a  = {:.3} µm", point.radius_m * 1e6)?;
+                    writeln!(
+                        out,
+                        "peak pressure                p0 = {:.2} MPa",
+                        point.p0_pa * 1e-6
+                    )?;
+                    writeln!(
+                        out,
+                        "mean pressure                pm = {:.2} MPa (= 2 p0 / 3)",
+                        point.mean_pressure_pa * 1e-6
+                    )?;
+                    writeln!(
+                        out,
+                        "approach                     δ  = {:.4} µm (= a² / R)",
+                        point.approach_m * 1e6
+                    )?;
+                }
+            }
         }
     }
     let solution = contact.solution(contact.friction, contact.poisson);
     let maxima = StressMaxima::of(&solution);
-    let tau1 = crate::assess::maximum(&solution, crate::stress::Quantity::Tau1, false);
     let dimensional = contact.scale.is_some();
     let describe = |e: &Extreme| {
         let mut text = format!("{:.4} p0", e.value_over_p0);
         if dimensional {
             let _ = write!(text, " = {:.1} MPa", e.value_over_p0 * p0_pa * 1e-6);
         }
-        let _ = write!(text, " at x = {:.3} a, z = {:.3} a", e.x_over_a, e.z_over_a);
+        if point {
+            let _ = write!(
+                text,
+                " at x = {:.3} a, y = {}{:.3} a, z = {:.3} a",
+                e.x_over_a,
+                if e.y_over_a.abs() > 5e-4 { "±" } else { "" },
+                e.y_over_a,
+                e.z_over_a
+            );
+        } else {
+            let _ = write!(text, " at x = {:.3} a, z = {:.3} a", e.x_over_a, e.z_over_a);
+        }
         if dimensional {
             let _ = write!(
                 text,
@@ -165,7 +232,10 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
         "  maximum shear (σ1 − σ3)/2    {}",
         describe(&maxima.max_shear)
     )?;
-    writeln!(out, "  principal shear τ1 (xz)      {}", describe(&tau1))?;
+    if !point {
+        let tau1 = crate::assess::maximum(&solution, crate::stress::Quantity::Tau1, false);
+        writeln!(out, "  principal shear τ1 (xz)      {}", describe(&tau1))?;
+    }
     writeln!(
         out,
         "  von Mises on the surface     {}",
@@ -204,17 +274,24 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
         "yield reaches the surface: surface plastic flow has been initiated".to_string()
     };
     writeln!(out, "  verdict                      {verdict}")?;
-    // The field scales with p0 and P ∝ p0² (line contact), so first yield is at p0 = Y / σvM,max.
+    // The field scales with p0, and P ∝ p0² (line contact) or W ∝ p0³ (point contact), so
+    // first yield is at p0 = Y / σvM,max.
     let p0_yield = y.pa / vm;
-    let load_factor = (p0_yield / p0_pa).powi(2);
+    let load_factor = (p0_yield / p0_pa).powi(if point { 3 } else { 2 });
     match contact.dimensional {
-        Some(d) => writeln!(
-            out,
-            "  load at first yield          P_Y = {:.3} kN/m (p0 = {:.1} MPa; load factor {:.2})",
-            d.line.load_for_peak_pressure(p0_yield) * 1e-3,
-            p0_yield * 1e-6,
-            load_factor
-        )?,
+        Some(d) => {
+            let load = d.hertz.load_for_peak_pressure(p0_yield);
+            let load_text = match d.hertz {
+                Hertz::Line(_) => format!("P_Y = {:.3} kN/m", load * 1e-3),
+                Hertz::Point(_) => format!("W_Y = {load:.3} N"),
+            };
+            writeln!(
+                out,
+                "  load at first yield          {load_text} (p0 = {:.1} MPa; load factor {:.2})",
+                p0_yield * 1e-6,
+                load_factor
+            )?
+        }
         None => writeln!(
             out,
             "  first yield                  at p0 = {:.1} MPa (load factor {load_factor:.2} at the same geometry)",

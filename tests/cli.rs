@@ -277,7 +277,14 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"line\"\na = \"0.2 mm\"\n", "key `contact.p0`", "p0 = "),
     ("format = 1\n[contact]\nkind = \"line\"\nhardness = \"300 HB\"\n", "key `contact.hardness`", "dimensional"),
     ("format = 2\n[contact]\nkind = \"line\"\n", "key `format`", "format = 1"),
-    ("format = 1\n[contact]\nkind = \"point\"\n", "key `contact.kind`", "not yet supported"),
+    ("format = 1\n[contact]\nkind = \"sphere\"\n", "key `contact.kind`", "\"point\" (spheres)"),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "unknown unit `kN/m`"),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"1 kN\"\n[contact.gears]\nmodule = \"4 mm\"\nteeth = [20, 40]\npressure_angle = \"20 deg\"\n", "key `contact.gears`", "kind = \"line\""),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nsection = \"xy\"\n", "key `figure.section`", "plane strain"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[figure]\nsection = \"zx\"\n", "key `figure.section`", "\"yz\""),
+    ("format = 1\n[contact]\nkind = \"point\"\n[figure]\ny = [-1.0, 1.0]\n", "key `figure.y`", "figure.at"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[figure]\nsection = \"xy\"\nat = -0.5\n", "key `figure.at`", "surface"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[[panel]]\nat = 0.5\n", "key `panel[0].at`", "point contacts"),
 ];
 
 #[test]

@@ -101,3 +101,95 @@ fn gear_figure_is_in_mm_and_mpa() {
     let half_width_mm = built.panels[0].half_width;
     assert!((half_width_mm - 0.070_938).abs() < 1e-5, "{half_width_mm}");
 }
+
+/// Smallest value of a panel and where it is (display units).
+fn panel_min(panel: &render::Panel) -> (f64, f64, f64) {
+    let mut best = (f64::INFINITY, 0.0, 0.0);
+    for ((iz, ix), &v) in panel.values.indexed_iter() {
+        if v < best.0 {
+            best = (v, panel.x.value(ix), panel.z.value(iz));
+        }
+    }
+    best
+}
+
+#[test]
+fn sphere_max_shear_peaks_at_0_31_p0_near_0_48a() {
+    let (_, built) = load("sphere_max_shear");
+    let (max, x, z) = panel_max(&built.panels[0]);
+    // Johnson (1985) §3.4(b), nu = 0.3: 0.31 p0 at z = 0.48a on the axis (two figures); the
+    // exact maximum of the closed form is 0.3103 p0 at 0.4803a (tests/point_contact.rs).
+    assert!((max - 0.31).abs() < 2e-3, "{max}");
+    assert!(x.abs() <= 0.01 && (z - 0.48).abs() <= 0.01, "({x}, {z})");
+    assert!(built.vertical_is_depth);
+    assert_eq!(
+        built.panels[0].subtitle,
+        "xz plane, y = 0,  μ = 0,  ν = 0.3"
+    );
+}
+
+#[test]
+fn sliding_sphere_panels_raise_the_von_mises_maximum_to_the_surface() {
+    let (_, built) = load("sphere_von_mises_friction");
+    let maxima: Vec<(f64, f64, f64)> = built.panels.iter().map(panel_max).collect();
+    assert_eq!(maxima.len(), 3);
+    // mu = 0: on the axis at 0.48a; mu = 0.25: still below the surface but higher; mu = 0.5:
+    // at the trailing edge x = -a of the surface.
+    assert!(
+        (maxima[0].2 - 0.48).abs() < 0.01 && maxima[0].1.abs() < 0.01,
+        "{maxima:?}"
+    );
+    assert!(maxima[1].2 > 0.0 && maxima[1].2 < maxima[0].2, "{maxima:?}");
+    assert!(
+        maxima[2].2 == 0.0 && (maxima[2].1 + 1.0).abs() < 0.01,
+        "{maxima:?}"
+    );
+    assert!(
+        maxima[0].0 < maxima[1].0 && maxima[1].0 < maxima[2].0,
+        "{maxima:?}"
+    );
+}
+
+#[test]
+fn surface_map_shows_the_ring_tension_and_the_trailing_edge_peak() {
+    let (scene, built) = load("sphere_surface_s1");
+    assert!(!built.vertical_is_depth);
+    assert_eq!(
+        (built.x_label.as_str(), built.z_label.as_str()),
+        ("x/a", "y/a")
+    );
+    assert!(built.panels.iter().all(|p| p.traction.is_empty()));
+    assert!(built.panels.iter().all(|p| p.outlines.len() == 1));
+    assert_eq!(built.panels[0].subtitle, "surface z = 0,  μ = 0,  ν = 0.3");
+    let nu = scene.panels[0].poisson;
+    // Frictionless: the largest tension is the radial stress (1 - 2 nu)/3 p0 at r = a
+    // (Johnson 1985 §3.4(b)), and the centre carries s1 = s_r = -(1 + 2 nu)/2 p0.
+    let (max, x, y) = panel_max(&built.panels[0]);
+    assert!((max - (1.0 - 2.0 * nu) / 3.0).abs() < 1e-3, "{max}");
+    assert!(((x * x + y * y).sqrt() - 1.0).abs() < 0.01, "({x}, {y})");
+    let (min, x, y) = panel_min(&built.panels[0]);
+    assert!((min + (1.0 + 2.0 * nu) / 2.0).abs() < 1e-9 && x.abs() < 1e-9 && y.abs() < 1e-9);
+    // Sliding: the peak tension sits at the trailing edge (-a, 0) and exceeds the ring's.
+    let (max_sliding, x, y) = panel_max(&built.panels[1]);
+    assert!((x + 1.0).abs() < 0.01 && y.abs() < 0.01, "({x}, {y})");
+    assert!(max_sliding > 3.0 * max, "{max_sliding}");
+}
+
+#[test]
+fn ball_on_flat_is_drawn_across_the_sliding_direction_in_mm() {
+    let (scene, built) = load("sphere_ball_on_flat");
+    assert_eq!(
+        (built.x_label.as_str(), built.z_label.as_str()),
+        ("y (mm)", "z (mm)")
+    );
+    let a_mm = scene.contact.half_width_m() * 1e3;
+    // The traction strip spans the contact chord at x = 0, which is the diameter.
+    assert!((built.panels[0].half_width - a_mm).abs() < 1e-12);
+    let p0_mpa = scene.contact.p0_pa() * 1e-6;
+    let peak = built.panels[0]
+        .traction
+        .iter()
+        .map(|s| s.p)
+        .fold(0.0, f64::max);
+    assert!((peak / p0_mpa - 1.0).abs() < 1e-6, "{peak} of {p0_mpa}");
+}

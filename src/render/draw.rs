@@ -60,8 +60,19 @@ pub(crate) fn draw<DB: DrawingBackend>(
         for line in &pp.contours {
             painter.stroke(line, pens.contour, CONTOUR)?;
         }
+        for outline in &pp.outlines {
+            painter.dashed(
+                outline,
+                pens.contour,
+                5.0 * pens.contour,
+                3.5 * pens.contour,
+                INK,
+            )?;
+        }
         map_axes(painter, figure, layout, pl, first, &pens)?;
-        strip(painter, figure, layout, pl, pp, panel, first, &pens)?;
+        if layout.has_strips {
+            strip(painter, figure, layout, pl, pp, panel, first, &pens)?;
+        }
         for label in &pp.contour_labels {
             text_box(painter, label)?;
         }

@@ -88,6 +88,8 @@ pub(crate) struct PanelLayout {
     pub x_max: f64,
     pub z_min: f64,
     pub z_max: f64,
+    /// Whether `z` grows downwards (a depth) or upwards.
+    pub z_down: bool,
 }
 
 impl PanelLayout {
@@ -96,9 +98,11 @@ impl PanelLayout {
         f64::from(self.map.x) + (x - self.x_min) / (self.x_max - self.x_min) * f64::from(self.map.w)
     }
 
-    /// Pixel row of the depth `z` (downwards).
+    /// Pixel row of the vertical coordinate `z` (a depth grows downwards, y upwards).
     pub fn pz(&self, z: f64) -> f64 {
-        f64::from(self.map.y) + (z - self.z_min) / (self.z_max - self.z_min) * f64::from(self.map.h)
+        let f = (z - self.z_min) / (self.z_max - self.z_min);
+        let f = if self.z_down { f } else { 1.0 - f };
+        f64::from(self.map.y) + f * f64::from(self.map.h)
     }
 
     /// Data abscissa at a pixel column.
@@ -107,10 +111,11 @@ impl PanelLayout {
             + (px - f64::from(self.map.x)) / f64::from(self.map.w) * (self.x_max - self.x_min)
     }
 
-    /// Depth at a pixel row.
+    /// Vertical coordinate at a pixel row.
     pub fn data_z(&self, pz: f64) -> f64 {
-        self.z_min
-            + (pz - f64::from(self.map.y)) / f64::from(self.map.h) * (self.z_max - self.z_min)
+        let f = (pz - f64::from(self.map.y)) / f64::from(self.map.h);
+        let f = if self.z_down { f } else { 1.0 - f };
+        self.z_min + f * (self.z_max - self.z_min)
     }
 }
 
@@ -131,6 +136,8 @@ pub(crate) struct Layout {
     pub colorbar: Rect,
     pub colorbar_ticks: Ticks,
     pub colorbar_label_x: f64,
+    /// Whether the panels have traction strips above their maps.
+    pub has_strips: bool,
     /// Traction axis range shared by all strips.
     pub traction_min: f64,
     pub traction_max: f64,
@@ -174,14 +181,20 @@ impl Layout {
         let tick_cap = font::cap_height(s);
         let label_line = font::ascent(sizes.label) + font::descent(sizes.label);
 
-        // Tractions: one range for all strips, so panels compare at a glance.
+        // Tractions: one range for all strips, so panels compare at a glance. A figure whose
+        // panels carry no traction profile (a plane parallel to the surface) has no strips.
+        let has_strips = figure.panels.iter().any(|p| !p.traction.is_empty());
         let (t_min, t_max) = traction_range(&figure.panels);
-        let traction_label_w = font::text_width(&figure.traction_label, sizes.label)?;
-        let strip_h = (0.22 * tallest)
-            .max(90.0)
-            .max(traction_label_w + 0.4 * s)
-            .round();
-        let strip_ticks = vertical_ticks(t_min, t_max, strip_h, tick_cap);
+        let (strip_h, strip_ticks) = if has_strips {
+            let traction_label_w = font::text_width(&figure.traction_label, sizes.label)?;
+            let strip_h = (0.22 * tallest)
+                .max(90.0)
+                .max(traction_label_w + 0.4 * s)
+                .round();
+            (strip_h, vertical_ticks(t_min, t_max, strip_h, tick_cap))
+        } else {
+            (0.0, Ticks::default())
+        };
 
         // Per-panel ticks and the width of the axis text left of each map.
         let mut axes = Vec::with_capacity(count);
@@ -261,7 +274,7 @@ impl Layout {
         // Room for the top strip tick label, which is centred on its tick.
         y += tick_cap;
         let strip_y = y.round();
-        let strip_gap = (1.1 * s).round();
+        let strip_gap = if has_strips { (1.1 * s).round() } else { 0.0 };
         let map_y = strip_y + strip_h + strip_gap;
         let x_tick_label_bottom = map_y + tallest + tick_length + tick_gap + tick_cap;
         let x_label_baseline = x_tick_label_bottom + 0.7 * s + font::ascent(sizes.label);
@@ -292,6 +305,7 @@ impl Layout {
                     x_max: panel.x.max,
                     z_min: panel.z.min,
                     z_max: panel.z.max,
+                    z_down: figure.vertical_is_depth,
                 }
             })
             .collect();
@@ -308,6 +322,7 @@ impl Layout {
             colorbar: rect(colorbar_x + shift, map_y, colorbar_w, colorbar_h),
             colorbar_ticks,
             colorbar_label_x: colorbar_label_x + shift,
+            has_strips,
             traction_min: t_min,
             traction_max: t_max,
         })

@@ -32,8 +32,12 @@ pub struct Figure {
     pub value_label: String,
     /// e.g. "x/a" or "x (mm)".
     pub x_label: String,
-    /// e.g. "z/a" or "z (mm)"; depth is drawn downwards.
+    /// Label of the vertical axis, e.g. "z/a" or "z (mm)" (depth, drawn downwards), or "y/a"
+    /// for a plane parallel to the surface.
     pub z_label: String,
+    /// Whether the vertical axis is the depth, drawn downwards (row 0 at the top); otherwise it
+    /// points upwards (row 0 at the bottom), as for an xy section seen from above.
+    pub vertical_is_depth: bool,
     /// Caption of the traction profile axis, e.g. "p, q / p0" or "p, q (MPa)".
     pub traction_label: String,
     pub colormap: ColorMap,
@@ -50,14 +54,20 @@ pub struct Panel {
     pub subtitle: String,
     /// Horizontal axis (display units), `values` columns.
     pub x: Axis,
-    /// Depth axis (display units, `z.min >= 0`), `values` rows; row 0 is `z.min`.
+    /// Vertical axis (display units): the depth (`z.min >= 0`) or, for a plane parallel to the
+    /// surface, y; `values` rows, row 0 is `z.min`.
     pub z: Axis,
     /// `[z.count, x.count]` values in display units.
     pub values: Array2<f64>,
-    /// Surface tractions sampled along x (display units): drawn above the surface.
+    /// Surface tractions sampled along the horizontal axis (display units): drawn in a strip
+    /// above the map. When no panel has any, the figure has no strips.
     pub traction: Vec<TractionSample>,
-    /// Contact half-width in display units (the contact spans `-a..a`).
+    /// Half-length of the contact along the horizontal axis of this section, in display units
+    /// (the contact spans `-half_width..half_width`; 0 when the section misses it).
     pub half_width: f64,
+    /// Polylines drawn as thin dashed guides over the map (display units), e.g. the contact
+    /// outline on a plane parallel to the surface.
+    pub outlines: Vec<Vec<(f64, f64)>>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -214,6 +224,7 @@ mod tests {
             values,
             traction,
             half_width: 1.0,
+            outlines: Vec::new(),
         }
     }
 
@@ -227,6 +238,7 @@ mod tests {
             value_label: "τ1 / p0".to_string(),
             x_label: "x/a".to_string(),
             z_label: "z/a".to_string(),
+            vertical_is_depth: true,
             traction_label: "p, q / p0".to_string(),
             colormap: ColorMap::Viridis,
             levels,

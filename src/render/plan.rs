@@ -101,6 +101,8 @@ pub(crate) struct PanelPlan {
     pub shear: Option<Vec<(f64, f64)>>,
     /// Legend at the right end of the strip (else the left).
     pub legend_right: bool,
+    /// Guide polylines (the contact outline) in pixels, cut to the map.
+    pub outlines: Vec<Vec<(f64, f64)>>,
 }
 
 /// The drawing plan of a figure.
@@ -249,9 +251,25 @@ fn plan_panel(
         Mark::Both => &[true, false],
         Mark::None => &[],
     };
+    // Every marker is known before any label is placed, so no label covers another marker.
+    let r = marker_radius(sizes.tick);
+    let markers: Vec<(bool, [f64; 4])> = wanted
+        .iter()
+        .filter_map(|&maximum| {
+            let ((j, i), _) = sampled_extreme(panel, maximum)?;
+            let at = (pl.px(panel.x.value(i)), pl.pz(panel.z.value(j)));
+            Some((maximum, [at.0 - r, at.1 - r, at.0 + r, at.1 + r]))
+        })
+        .collect();
     for &maximum in wanted {
-        if let Some(extreme) = plan_extreme(panel, pl, sizes, maximum, &taken)? {
-            let r = marker_radius(sizes.tick);
+        let mut avoid = taken.clone();
+        avoid.extend(
+            markers
+                .iter()
+                .filter(|(m, _)| *m != maximum)
+                .map(|(_, b)| *b),
+        );
+        if let Some(extreme) = plan_extreme(panel, pl, sizes, maximum, &avoid)? {
             taken.push([
                 extreme.at.0 - r,
                 extreme.at.1 - r,
@@ -315,7 +333,13 @@ fn plan_panel(
             .fold(0.0, f64::max)
     };
     let legend_right = end_load(true) <= end_load(false);
+    let outlines = panel
+        .outlines
+        .iter()
+        .flat_map(|line| runs_inside(line, pl))
+        .collect();
     Ok(PanelPlan {
+        outlines,
         contours: lines.into_iter().map(|(_, l)| l).collect(),
         contour_labels,
         extremes,
@@ -323,6 +347,40 @@ fn plan_panel(
         shear,
         legend_right,
     })
+}
+
+/// The parts of a polyline (data units) that lie within the map, in pixels.
+fn runs_inside(line: &[(f64, f64)], pl: &PanelLayout) -> Vec<Vec<(f64, f64)>> {
+    let inside = |&(x, z): &(f64, f64)| {
+        let (z_lo, z_hi) = (pl.z_min.min(pl.z_max), pl.z_min.max(pl.z_max));
+        x >= pl.x_min && x <= pl.x_max && z >= z_lo && z <= z_hi
+    };
+    let mut runs = Vec::new();
+    let mut run: Vec<(f64, f64)> = Vec::new();
+    for point in line {
+        if inside(point) {
+            run.push((pl.px(point.0), pl.pz(point.1)));
+        } else if !run.is_empty() {
+            runs.push(std::mem::take(&mut run));
+        }
+    }
+    if run.len() > 1 {
+        runs.push(run);
+    }
+    runs.retain(|r| r.len() > 1);
+    runs
+}
+
+/// The grid index `(row, column)` and value of the largest (or smallest) finite sample.
+fn sampled_extreme(panel: &Panel, maximum: bool) -> Option<((usize, usize), f64)> {
+    let sign = if maximum { 1.0 } else { -1.0 };
+    let mut best: Option<((usize, usize), f64)> = None;
+    for ((j, i), &v) in panel.values.indexed_iter() {
+        if v.is_finite() && best.is_none_or(|(_, b)| sign * v > sign * b) {
+            best = Some(((j, i), v));
+        }
+    }
+    best
 }
 
 /// Radius of the extreme marker for a tick font size.
@@ -343,14 +401,7 @@ fn plan_extreme(
     maximum: bool,
     taken: &[[f64; 4]],
 ) -> Result<Option<Extreme>, RenderError> {
-    let sign = if maximum { 1.0 } else { -1.0 };
-    let mut best: Option<((usize, usize), f64)> = None;
-    for ((j, i), &v) in panel.values.indexed_iter() {
-        if v.is_finite() && best.is_none_or(|(_, b)| sign * v > sign * b) {
-            best = Some(((j, i), v));
-        }
-    }
-    let Some(((j, i), v0)) = best else {
+    let Some(((j, i), v0)) = sampled_extreme(panel, maximum) else {
         return Ok(None);
     };
     // The sampled extreme, not an interpolated one: the maxima of contact fields often sit on
@@ -373,8 +424,9 @@ fn plan_extreme(
     let template = TextBox::new(text, size, width, pad, (0.0, 0.0));
     let (w, h) = (template.w(), template.h());
     let r = marker_radius(sizes.tick) + 0.35 * size;
-    // Right, left, below, above, then the diagonals.
-    let candidates = [
+    // Right, left, below, above, then the diagonals, then further below and above (clear of
+    // a neighbouring label on the same row).
+    let mut candidates = vec![
         (at.0 + r, at.1 - h / 2.0),
         (at.0 - r - w, at.1 - h / 2.0),
         (at.0 - w / 2.0, at.1 + r),
@@ -384,24 +436,62 @@ fn plan_extreme(
         (at.0 + r * 0.7, at.1 - r * 0.7 - h),
         (at.0 - r * 0.7 - w, at.1 - r * 0.7 - h),
     ];
+    for k in 1..=2 {
+        let step = k as f64 * (h + 0.6 * size);
+        candidates.push((at.0 - w / 2.0, at.1 + r + step));
+        candidates.push((at.0 - w / 2.0, at.1 - r - h - step));
+    }
+    // The first candidate inside the map and clear of everything taken wins; failing that,
+    // each candidate is pushed back inside the map and the first clear one, else the one
+    // overlapping least, wins.
     let inset = 3.0;
-    let label = candidates
+    let map = &pl.map;
+    let placed: Vec<TextBox> = candidates
+        .iter()
+        .map(|c| {
+            let x =
+                c.0.min(f64::from(map.right()) - inset - w)
+                    .max(f64::from(map.x) + inset);
+            let y =
+                c.1.min(f64::from(map.bottom()) - inset - h)
+                    .max(f64::from(map.y) + inset);
+            template.moved_to((x, y))
+        })
+        .collect();
+    let overlap = |b: &TextBox| -> f64 {
+        taken
+            .iter()
+            .map(|t| {
+                let g = 0.6 * size;
+                let dx = (b.bounds[2].min(t[2] + g) - b.bounds[0].max(t[0] - g)).max(0.0);
+                let dy = (b.bounds[3].min(t[3] + g) - b.bounds[1].max(t[1] - g)).max(0.0);
+                dx * dy
+            })
+            .sum()
+    };
+    // Clamping may have pushed a label onto its own marker: such a place is never taken.
+    let mr = marker_radius(sizes.tick);
+    let own = [at.0 - mr, at.1 - mr, at.0 + mr, at.1 + mr];
+    let placed: Vec<TextBox> = placed
+        .into_iter()
+        .filter(|b| !b.overlaps(&own, 0.0))
+        .collect();
+    let clear = |b: &&TextBox| !taken.iter().any(|t| b.overlaps(t, 0.6 * size));
+    // Unmoved places first (in the order above), then the clamped ones.
+    let unmoved = candidates
         .iter()
         .map(|c| template.moved_to(*c))
-        .find(|b| b.inside(&pl.map, inset) && !taken.iter().any(|t| b.overlaps(t, 0.6 * size)))
-        .unwrap_or_else(|| {
-            // Nothing fits cleanly: right of the marker, pushed back inside the map.
-            let map = &pl.map;
-            let x = candidates[0]
-                .0
-                .min(f64::from(map.right()) - inset - w)
-                .max(f64::from(map.x) + inset);
-            let y = candidates[0]
-                .1
-                .min(f64::from(map.bottom()) - inset - h)
-                .max(f64::from(map.y) + inset);
-            template.moved_to((x, y))
-        });
+        .find(|b| b.inside(map, inset) && clear(&b));
+    let label = unmoved
+        .as_ref()
+        .or_else(|| placed.iter().find(clear))
+        .or_else(|| {
+            placed
+                .iter()
+                .min_by(|a, b| overlap(a).total_cmp(&overlap(b)))
+        })
+        .cloned()
+        .unwrap_or(template);
     Ok(Some(Extreme { at, label }))
 }
 

@@ -109,7 +109,7 @@ fn typeset_minus(text: &str) -> String {
 }
 
 /// Ticks of one axis: positions and their labels.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub(crate) struct Ticks {
     pub values: Vec<f64>,
     pub labels: Vec<String>,

@@ -10,8 +10,8 @@ use std::path::Path;
 
 use crate::contact::gear::SpurGearPair;
 use crate::contact::material::{self, yield_strength_from_hardness_pa, Material};
-use crate::contact::{Body, LineContact};
-use crate::field::{Axis, Plane};
+use crate::contact::{Body, LineContact, PointContact};
+use crate::field::{Axis, Plane, Section};
 use crate::render::{ColorMap, Levels, Mark};
 use crate::solution::Solution;
 use crate::stress::{Quantity, QuantityKind};
@@ -53,7 +53,43 @@ fn hint_text(hint: &Option<String>) -> String {
 /// Contact geometry kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ContactKind {
+    /// Two cylinders (or a cylinder on a flat) with parallel axes along y: plane strain.
     Line,
+    /// Two spheres, or a sphere on a flat: an axisymmetric Hertz contact of radius a.
+    Point,
+}
+
+/// The Hertz solution of a dimensional contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Hertz {
+    Line(LineContact),
+    Point(PointContact),
+}
+
+impl Hertz {
+    /// Half-width (line) or contact radius (point), in m.
+    pub fn half_width_m(&self) -> f64 {
+        match self {
+            Hertz::Line(line) => line.half_width_m,
+            Hertz::Point(point) => point.radius_m,
+        }
+    }
+
+    pub fn p0_pa(&self) -> f64 {
+        match self {
+            Hertz::Line(line) => line.p0_pa,
+            Hertz::Point(point) => point.p0_pa,
+        }
+    }
+
+    /// The load (N/m for a line contact, N for a point contact) at which the peak pressure
+    /// would be `p0_pa`.
+    pub fn load_for_peak_pressure(&self, p0_pa: f64) -> f64 {
+        match self {
+            Hertz::Line(line) => line.load_for_peak_pressure(p0_pa),
+            Hertz::Point(point) => point.load_for_peak_pressure(p0_pa),
+        }
+    }
 }
 
 /// Yield strength of the body whose field is drawn.
@@ -70,7 +106,7 @@ pub struct Dimensional {
     pub body1: Body,
     pub body2: Body,
     pub gears: Option<SpurGearPair>,
-    pub line: LineContact,
+    pub hertz: Hertz,
 }
 
 /// The physical size of a contact: half-width and peak pressure.
@@ -109,11 +145,12 @@ impl Contact {
     pub fn solution(&self, friction: f64, poisson: f64) -> Solution {
         match self.kind {
             ContactKind::Line => Solution::LineHertz { friction, poisson },
+            ContactKind::Point => Solution::SphereHertz { friction, poisson },
         }
     }
 }
 
-/// Unit of lengths on a figure (and of `figure.x` and `figure.z`).
+/// Unit of lengths on a figure (and of `figure.x`, `figure.y`, `figure.z` and `figure.at`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum LengthUnit {
     HalfWidth,
@@ -195,17 +232,62 @@ impl StressUnit {
     }
 }
 
+/// Which plane a figure cuts through the body.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SectionKind {
+    /// x horizontal, depth z downwards, at a given y.
+    Xz,
+    /// y horizontal, depth z downwards, at a given x.
+    Yz,
+    /// x horizontal, y upwards, at a given depth z (the surface at z = 0).
+    Xy,
+}
+
+impl SectionKind {
+    fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "xz" => Some(Self::Xz),
+            "yz" => Some(Self::Yz),
+            "xy" => Some(Self::Xy),
+            _ => None,
+        }
+    }
+
+    /// Names of the horizontal, vertical and normal coordinates.
+    pub fn coordinates(self) -> (&'static str, &'static str, &'static str) {
+        match self {
+            Self::Xz => ("x", "z", "y"),
+            Self::Yz => ("y", "z", "x"),
+            Self::Xy => ("x", "y", "z"),
+        }
+    }
+
+    /// Whether the vertical axis is the depth (drawn downwards).
+    pub fn vertical_is_depth(self) -> bool {
+        self != Self::Xy
+    }
+
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Xz => "xz",
+            Self::Yz => "yz",
+            Self::Xy => "xy",
+        }
+    }
+}
+
 /// What the figure shows and how.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FigureSpec {
     pub quantity: Quantity,
-    /// Range along the surface, in `length_unit`.
-    pub x: (f64, f64),
-    /// Depth range, in `length_unit`.
-    pub z: (f64, f64),
+    pub section: SectionKind,
+    /// Range along the horizontal axis (x, or y for a yz section), in `length_unit`.
+    pub horizontal: (f64, f64),
+    /// Range along the vertical axis (depth z, or y for an xy section), in `length_unit`.
+    pub vertical: (f64, f64),
     pub length_unit: LengthUnit,
     pub stress_unit: StressUnit,
-    /// Samples along x; z follows with the same spacing.
+    /// Samples along the horizontal axis; the vertical one follows with the same spacing.
     pub resolution: usize,
     pub levels: Levels,
     pub colormap: ColorMap,
@@ -215,11 +297,14 @@ pub struct FigureSpec {
     pub svg: bool,
 }
 
-/// One panel: the contact with its own friction and Poisson ratio.
+/// One panel: the contact with its own friction and Poisson ratio, cut at its own position.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PanelSpec {
     pub friction: f64,
     pub poisson: f64,
+    /// Position of the section along its normal (y for xz, x for yz, depth z for xy), in the
+    /// figure's `length_unit`.
+    pub at: f64,
     pub subtitle: Option<String>,
 }
 
@@ -268,18 +353,27 @@ impl Scene {
         Validator { file }.scene(raw, name)
     }
 
-    /// The grid of the panels, in units of a.
-    pub fn plane(&self) -> Plane {
-        let unit_over_a = self.figure.length_unit.metres(self.contact.half_width_m())
-            / self.contact.half_width_m();
-        let (x0, x1) = self.figure.x;
-        let (z0, z1) = self.figure.z;
-        let nx = self.figure.resolution;
-        let nz = grid_rows(nx, x1 - x0, z1 - z0);
-        Plane::xz(
-            Axis::new(x0 * unit_over_a, x1 * unit_over_a, nx),
-            Axis::new(z0 * unit_over_a, z1 * unit_over_a, nz),
-        )
+    /// Size of one figure length unit in units of a.
+    pub fn length_unit_over_a(&self) -> f64 {
+        self.figure.length_unit.metres(self.contact.half_width_m()) / self.contact.half_width_m()
+    }
+
+    /// The grid of a panel, in units of a.
+    pub fn plane(&self, panel: &PanelSpec) -> Plane {
+        let unit_over_a = self.length_unit_over_a();
+        let (u0, u1) = self.figure.horizontal;
+        let (v0, v1) = self.figure.vertical;
+        let nu = self.figure.resolution;
+        let nv = grid_rows(nu, u1 - u0, v1 - v0);
+        let u = Axis::new(u0 * unit_over_a, u1 * unit_over_a, nu);
+        let v = Axis::new(v0 * unit_over_a, v1 * unit_over_a, nv);
+        let at = panel.at * unit_over_a;
+        let section = match self.figure.section {
+            SectionKind::Xz => Section::Xz { y: at },
+            SectionKind::Yz => Section::Yz { x: at },
+            SectionKind::Xy => Section::Xy { z: at },
+        };
+        Plane { section, u, v }
     }
 
     /// The stress solution of panel `i`.
@@ -346,9 +440,16 @@ impl Validator<'_> {
         }
         let contact = self.contact(&raw.contact)?;
         let figure = self.figure(&raw.figure, &contact)?;
+        let at = self.section_position("figure.at", raw.figure.at, &contact, &figure)?;
         let mut panels = Vec::new();
         for (i, panel) in raw.panels.iter().enumerate() {
             let key = format!("panel[{i}]");
+            let at = match panel.at {
+                Some(value) => {
+                    self.section_position(&format!("{key}.at"), Some(value), &contact, &figure)?
+                }
+                None => at,
+            };
             let friction = match panel.friction {
                 Some(mu) => self.friction(&format!("{key}.friction"), mu)?,
                 None => contact.friction,
@@ -360,6 +461,7 @@ impl Validator<'_> {
             panels.push(PanelSpec {
                 friction,
                 poisson,
+                at,
                 subtitle: panel.subtitle.clone(),
             });
         }
@@ -367,6 +469,7 @@ impl Validator<'_> {
             panels.push(PanelSpec {
                 friction: contact.friction,
                 poisson: contact.poisson,
+                at,
                 subtitle: None,
             });
         }
@@ -380,8 +483,8 @@ impl Validator<'_> {
         let plane_points = figure.resolution
             * grid_rows(
                 figure.resolution,
-                figure.x.1 - figure.x.0,
-                figure.z.1 - figure.z.0,
+                figure.horizontal.1 - figure.horizontal.0,
+                figure.vertical.1 - figure.vertical.0,
             );
         let bytes = plane_points.saturating_mul(panels.len()).saturating_mul(8);
         if bytes > crate::field::MAX_FIELD_BYTES {
@@ -404,6 +507,41 @@ impl Validator<'_> {
             figure,
             panels,
         })
+    }
+
+    /// The position of a section along its normal: any y or x, a depth z >= 0; only 0 for a
+    /// line contact (its field does not depend on y).
+    fn section_position(
+        &self,
+        key: &str,
+        value: Option<f64>,
+        contact: &Contact,
+        figure: &FigureSpec,
+    ) -> Result<f64, SceneError> {
+        let Some(at) = value else {
+            return Ok(0.0);
+        };
+        let (_, _, normal) = figure.section.coordinates();
+        if !at.is_finite() {
+            return Err(self.error(key, format!("must be a finite {normal}, got {at}"), None));
+        }
+        if contact.kind == ContactKind::Line && at != 0.0 {
+            return Err(self.error(
+                key,
+                "a line contact is the same in every xz plane (plane strain)",
+                Some("remove it; sections at other y are for point contacts"),
+            ));
+        }
+        if figure.section == SectionKind::Xy && at < 0.0 {
+            return Err(self.error(
+                key,
+                format!(
+                    "the depth of an xy section must be >= 0 (z points into the body), got {at}"
+                ),
+                Some("0 is the surface"),
+            ));
+        }
+        Ok(at)
     }
 
     fn friction(&self, key: &str, mu: f64) -> Result<f64, SceneError> {
@@ -443,21 +581,22 @@ impl Validator<'_> {
     fn contact(&self, raw: &RawContact) -> Result<Contact, SceneError> {
         let kind = match raw.kind.as_str() {
             "line" => ContactKind::Line,
-            "point" => {
-                return Err(self.error(
-                    "contact.kind",
-                    "point contact is not yet supported in this version",
-                    Some("use kind = \"line\"; spheres come with the point-contact issue"),
-                ))
-            }
+            "point" => ContactKind::Point,
             other => {
                 return Err(self.error(
                     "contact.kind",
                     format!("unknown contact kind `{other}`"),
-                    Some("use \"line\""),
+                    Some("use \"line\" (cylinders, plane strain) or \"point\" (spheres)"),
                 ))
             }
         };
+        if kind == ContactKind::Point && raw.gears.is_some() {
+            return Err(self.error(
+                "contact.gears",
+                "spur gears make a line contact",
+                Some("use kind = \"line\" with [contact.gears], or give sphere radii in [contact.body1] and [contact.body2]"),
+            ));
+        }
         let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
         let dimensional_keys =
             raw.load.is_some() || raw.body1.is_some() || raw.body2.is_some() || raw.gears.is_some();
@@ -505,14 +644,24 @@ impl Validator<'_> {
                 Some("move it to [contact.body1] and [contact.body2] (or use a material preset)"),
             ));
         }
+        let (load_dimension, load_hint) = match kind {
+            ContactKind::Line => (
+                Dimension::ForcePerLength,
+                "add e.g. load = \"40 kN/m\" (force per unit length for a line contact)",
+            ),
+            ContactKind::Point => (
+                Dimension::Force,
+                "add e.g. load = \"500 N\" (the total force for a point contact)",
+            ),
+        };
         let load_text = raw.load.as_deref().ok_or_else(|| {
             self.error(
                 "contact.load",
                 "a dimensional scene needs the load",
-                Some("add e.g. load = \"40 kN/m\" (force per unit length for line contact)"),
+                Some(load_hint),
             )
         })?;
-        let load = self.positive("contact.load", load_text, Dimension::ForcePerLength)?;
+        let load = self.positive("contact.load", load_text, load_dimension)?;
         let gears = raw.gears.as_ref().map(|g| self.gears(g)).transpose()?;
         let empty = RawBody::default();
         let mut body1 = self.body(
@@ -529,22 +678,30 @@ impl Validator<'_> {
             body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
             body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
         }
-        let line = LineContact::new(&body1, &body2, load).map_err(|e| {
+        let radius_error = |e: crate::contact::ContactError| {
             self.error("contact.body2.radius", e.to_string(), Some("a flat is radius = \"flat\"; a concave body has a negative radius larger in size than the convex one's"))
-        })?;
+        };
+        let hertz = match kind {
+            ContactKind::Line => {
+                Hertz::Line(LineContact::new(&body1, &body2, load).map_err(radius_error)?)
+            }
+            ContactKind::Point => {
+                Hertz::Point(PointContact::new(&body1, &body2, load).map_err(radius_error)?)
+            }
+        };
         Ok(Contact {
             kind,
             friction,
             poisson: body1.material.poisson,
             scale: Some(Scale {
-                half_width_m: line.half_width_m,
-                p0_pa: line.p0_pa,
+                half_width_m: hertz.half_width_m(),
+                p0_pa: hertz.p0_pa(),
             }),
             dimensional: Some(Dimensional {
                 body1,
                 body2,
                 gears,
-                line,
+                hertz,
             }),
             yield_strength,
         })
@@ -786,17 +943,77 @@ impl Validator<'_> {
                 Some("use stress_unit = \"p0\", or give contact.load and the bodies"),
             ));
         }
+        let section = match &raw.section {
+            Some(key) => SectionKind::from_key(key).ok_or_else(|| {
+                self.error(
+                    "figure.section",
+                    format!("unknown section `{key}`"),
+                    Some("use \"xz\" (depth below the sliding direction), \"yz\" (depth across it) or \"xy\" (a plane at a depth, 0 for the surface)"),
+                )
+            })?,
+            None => SectionKind::Xz,
+        };
+        if contact.kind == ContactKind::Line && section != SectionKind::Xz {
+            return Err(self.error(
+                "figure.section",
+                format!(
+                    "a line contact is plane strain: its {} sections only repeat the xz field",
+                    section.key()
+                ),
+                Some("use section = \"xz\" (the default), or kind = \"point\""),
+            ));
+        }
+        let (horizontal_name, vertical_name, normal_name) = section.coordinates();
+        let ranges = [
+            ("x", raw.x.as_ref()),
+            ("y", raw.y.as_ref()),
+            ("z", raw.z.as_ref()),
+        ];
+        for (name, range) in ranges {
+            if range.is_some() && name == normal_name {
+                return Err(self.error(
+                    &format!("figure.{name}"),
+                    format!("an {} section has no {name} range: {name} is fixed by figure.at", section.key()),
+                    Some(&format!("give figure.{horizontal_name} and figure.{vertical_name}, and the section's {normal_name} as figure.at")),
+                ));
+            }
+        }
+        let range_of = |name: &str| {
+            ranges
+                .iter()
+                .find(|(n, _)| *n == name)
+                .and_then(|(_, range)| *range)
+        };
         let a_in_unit = contact.half_width_m() / length_unit.metres(contact.half_width_m());
-        let x = self.range(
-            "figure.x",
-            raw.x.as_ref(),
-            (-2.5 * a_in_unit, 2.5 * a_in_unit),
+        let default_horizontal = match (contact.kind, section) {
+            (ContactKind::Line, _) => 2.5,
+            (ContactKind::Point, _) => 2.0,
+        };
+        let horizontal = self.range(
+            &format!("figure.{horizontal_name}"),
+            range_of(horizontal_name),
+            (
+                -default_horizontal * a_in_unit,
+                default_horizontal * a_in_unit,
+            ),
         )?;
-        let z = self.range("figure.z", raw.z.as_ref(), (0.0, 2.0 * a_in_unit))?;
-        if z.0 < 0.0 {
+        let default_vertical = if section.vertical_is_depth() {
+            (0.0, 2.0 * a_in_unit)
+        } else {
+            (-2.0 * a_in_unit, 2.0 * a_in_unit)
+        };
+        let vertical = self.range(
+            &format!("figure.{vertical_name}"),
+            range_of(vertical_name),
+            default_vertical,
+        )?;
+        if section.vertical_is_depth() && vertical.0 < 0.0 {
             return Err(self.error(
                 "figure.z",
-                format!("depth must be >= 0 (z points into the body), got {}", z.0),
+                format!(
+                    "depth must be >= 0 (z points into the body), got {}",
+                    vertical.0
+                ),
                 Some("start the range at 0 for the surface"),
             ));
         }
@@ -876,8 +1093,9 @@ impl Validator<'_> {
         };
         Ok(FigureSpec {
             quantity,
-            x,
-            z,
+            section,
+            horizontal,
+            vertical,
             length_unit,
             stress_unit,
             resolution,
@@ -915,7 +1133,7 @@ mod tests {
         assert_eq!(scene.figure.length_unit, LengthUnit::Millimetre);
         assert_eq!(scene.figure.stress_unit, StressUnit::MegaPascal);
         // Default range ±2.5a, given in mm.
-        assert!((scene.figure.x.1 - 0.625).abs() < 1e-12);
+        assert!((scene.figure.horizontal.1 - 0.625).abs() < 1e-12);
         let explicit =
             parse("format = 1\n[contact]\nkind = \"line\"\na = 1\np0 = 1\n").expect("valid");
         assert_eq!(explicit.contact.scale, None);

@@ -53,7 +53,12 @@ pub struct RawGears {
 #[serde(deny_unknown_fields)]
 pub struct RawFigure {
     pub quantity: Option<String>,
+    /// "xz" (default), "yz" or "xy".
+    pub section: Option<String>,
+    /// Position of the section along its normal (y, x or depth z), in `length_unit`.
+    pub at: Option<f64>,
     pub x: Option<Vec<f64>>,
+    pub y: Option<Vec<f64>>,
     pub z: Option<Vec<f64>>,
     pub length_unit: Option<String>,
     pub stress_unit: Option<String>,
@@ -69,6 +74,7 @@ pub struct RawFigure {
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawPanel {
+    pub at: Option<f64>,
     pub friction: Option<f64>,
     pub poisson: Option<f64>,
     pub subtitle: Option<String>,

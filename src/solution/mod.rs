@@ -80,17 +80,25 @@ impl Solution {
         }
     }
 
-    /// Surface pressure and tangential traction `(p/p0, q/p0)` along the x axis (for the
-    /// numerical solution, the discretised tractions).
-    pub fn surface_traction_over_p0(&self, x_over_a: f64) -> (f64, f64) {
+    /// Surface pressure and tangential traction in +x `(p/p0, q/p0)` at `(x, y)` on the
+    /// surface (for the numerical solution, the discretised tractions; line contacts ignore y).
+    pub fn surface_traction_over_p0(&self, x_over_a: f64, y_over_a: f64) -> (f64, f64) {
         match self {
             Solution::LineHertz { friction, .. } => {
                 line_hertz::surface_traction_over_p0(x_over_a, *friction)
             }
             Solution::LineNumerical { tractions, .. } => tractions.at(x_over_a),
             Solution::SphereHertz { friction, .. } => {
-                sphere_hertz::surface_traction_over_p0(x_over_a, 0.0, *friction)
+                sphere_hertz::surface_traction_over_p0(x_over_a, y_over_a, *friction)
             }
+        }
+    }
+
+    /// Whether the field depends on y (a point contact), or not (plane strain).
+    pub fn is_three_dimensional(&self) -> bool {
+        match self {
+            Solution::LineHertz { .. } | Solution::LineNumerical { .. } => false,
+            Solution::SphereHertz { .. } => true,
         }
     }
 

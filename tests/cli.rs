@@ -577,3 +577,114 @@ fn probe_point_contact_gives_the_sphere_field() {
     );
     assert_fails_with(&refused, &["--contact point", "scene"]);
 }
+
+#[test]
+fn hertz_reports_a_ball_on_a_flat() {
+    let output = run(&["hertz", "scenes/sphere_ball_on_flat.toml"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    // By hand (Johnson 1985 §4.2(a)), steel E = 210 GPa, nu = 0.3, W = 300 N, R = 6.35 mm:
+    // E* = E / (2 (1 - nu^2)) = 115.385 GPa, a = (3 W R / (4 E*))^(1/3) = 231.350 µm,
+    // p0 = 3 W / (2 pi a^2) = 2676.23 MPa, pm = 2 p0 / 3 = 1784.15 MPa, delta = a^2/R = 8.4288 µm.
+    for fragment in [
+        "contact: point",
+        "W  = 300.0000 N",
+        "E* = 115.385 GPa",
+        "R  = 6.3500 mm",
+        "a  = 231.350 µm",
+        "p0 = 2676.23 MPa",
+        "pm = 1784.15 MPa",
+        "δ  = 8.4288 µm",
+        "Y  = 1800 MPa",
+        "no yield",
+        // W ∝ p0³: first yield at W (Y / sigma_vM,max)^3 with sigma_vM,max = 0.6244 p0.
+        "W_Y = 37",
+    ] {
+        assert!(text.contains(fragment), "missing `{fragment}` in:\n{text}");
+    }
+}
+
+#[test]
+fn hertz_gives_first_yield_of_a_frictionless_sphere() {
+    let (_dir, scene) = scene_file("format = 1\n[contact]\nkind = \"point\"\npoisson = 0.3\n");
+    let output = run(&["hertz", scene.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    // Johnson (1985) §6.2: under a sphere (nu = 0.3) yield begins at p0 = 1.60 Y, at 0.48a
+    // below the centre, by both criteria (on the axis two principal stresses are equal). The
+    // book rounds: tau_max = 0.3100 p0 gives 1/(2 x 0.31) = 1.613.
+    for fragment in ["below the surface, at z = 0.48", "y = 0.000 a"] {
+        assert!(text.contains(fragment), "missing `{fragment}` in:\n{text}");
+    }
+    let number_after = |key: &str| -> f64 {
+        let start = text
+            .find(key)
+            .unwrap_or_else(|| panic!("no `{key}` in:\n{text}"))
+            + key.len();
+        let digits: String = text[start..]
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        digits.parse().expect("a number")
+    };
+    let von_mises = number_after("when p0 = ");
+    let tresca = number_after("(Tresca: p0 = ");
+    assert!((von_mises - 1.60).abs() < 0.015, "{von_mises}");
+    assert!((tresca - von_mises).abs() < 1e-9, "{tresca}");
+}
+
+#[test]
+fn probe_takes_the_point_contact_from_a_scene() {
+    let input = "x,y,z\n0,0,0.5\n0.3,0.4,0.7\n-1.2,0.5,0\n";
+    let from_scene = run_with_stdin(
+        &[
+            "probe",
+            "scenes/sphere_von_mises_friction.toml",
+            "--friction",
+            "0.25",
+            "--points",
+            "-",
+        ],
+        input,
+    );
+    assert!(from_scene.status.success(), "{}", stderr(&from_scene));
+    let explicit = run_with_stdin(
+        &[
+            "probe",
+            "--contact",
+            "point",
+            "--friction",
+            "0.25",
+            "--poisson",
+            "0.3",
+            "--points",
+            "-",
+        ],
+        input,
+    );
+    assert!(explicit.status.success(), "{}", stderr(&explicit));
+    assert_eq!(stdout(&from_scene), stdout(&explicit));
+    // y matters: a line contact would give the same row for (0.3, 0.4) and (0.3, 0).
+    assert_ne!(
+        stdout(&from_scene),
+        stdout(&run_with_stdin(
+            &["probe", "--friction", "0.25", "--points", "-"],
+            input
+        ))
+    );
+    let contradiction = run_with_stdin(
+        &[
+            "probe",
+            "scenes/sphere_max_shear.toml",
+            "--contact",
+            "line",
+            "--points",
+            "-",
+        ],
+        input,
+    );
+    assert_fails_with(
+        &contradiction,
+        &["--contact line contradicts", "drop --contact"],
+    );
+}

@@ -74,3 +74,13 @@ fn golden_von_mises_friction() {
 fn golden_gear_mpa() {
     check_golden("gear_mpa");
 }
+
+#[test]
+fn golden_sphere_surface() {
+    check_golden("sphere_surface");
+}
+
+#[test]
+fn golden_sphere_sections() {
+    check_golden("sphere_sections");
+}

@@ -121,16 +121,33 @@ impl Precision for f32 {
     }
 }
 
-/// Largest grid (in bytes of stored values) that [`evaluate`] accepts.
+/// Largest grid (in bytes of stored values) that [`evaluate`] accepts on any machine; less
+/// when the machine has less memory available (see [`memory_limit_bytes`]).
 pub const MAX_FIELD_BYTES: usize = 4 << 30;
+
+/// The largest grid this machine should hold: [`MAX_FIELD_BYTES`], or three quarters of the
+/// memory available now (`MemAvailable` of `/proc/meminfo` on Linux) when that is smaller.
+pub fn memory_limit_bytes() -> usize {
+    let available = std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|text| {
+            let line = text.lines().find(|l| l.starts_with("MemAvailable:"))?;
+            let kib: usize = line.split_whitespace().nth(1)?.parse().ok()?;
+            Some(kib.saturating_mul(1024))
+        });
+    match available {
+        Some(bytes) => MAX_FIELD_BYTES.min(bytes / 4 * 3),
+        None => MAX_FIELD_BYTES,
+    }
+}
 
 /// Errors of grid evaluation.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum FieldError {
     #[error(
         "the grid of {points} points with {quantities} quantities needs {needed_mib} MiB, more \
-         than the {limit_mib} MiB allowed\nhint: lower the resolution, store f32, or keep fewer \
-         quantities"
+         than the {limit_mib} MiB allowed (at most 4096 MiB, and 3/4 of the memory available)\n\
+         hint: lower the resolution, store f32, or keep fewer quantities"
     )]
     TooLarge {
         points: usize,
@@ -175,21 +192,31 @@ impl<T> VolumeField<T> {
 }
 
 /// Checks the memory `points` values of `quantities` quantities of `bytes_per_value` bytes
-/// would take, before allocating them.
+/// would take against [`memory_limit_bytes`], before allocating them.
 pub fn check_size(
     points: usize,
     quantities: usize,
     bytes_per_value: usize,
 ) -> Result<(), FieldError> {
+    check_size_within(points, quantities, bytes_per_value, memory_limit_bytes())
+}
+
+/// [`check_size`] against a given limit in bytes.
+pub fn check_size_within(
+    points: usize,
+    quantities: usize,
+    bytes_per_value: usize,
+    limit_bytes: usize,
+) -> Result<(), FieldError> {
     let bytes = points
         .saturating_mul(quantities.max(1))
         .saturating_mul(bytes_per_value);
-    if bytes > MAX_FIELD_BYTES {
+    if bytes > limit_bytes {
         return Err(FieldError::TooLarge {
             points,
             quantities,
             needed_mib: bytes >> 20,
-            limit_mib: MAX_FIELD_BYTES >> 20,
+            limit_mib: limit_bytes >> 20,
         });
     }
     Ok(())
@@ -419,6 +446,63 @@ mod tests {
     }
 
     #[test]
+    fn sphere_sections_cross_where_they_should() {
+        // A point contact depends on y: the xz section at y = 0.4 and the yz section at
+        // x = -0.5 share the line (-0.5, 0.4, z); the xy section at z = 0.5 shares a row with
+        // the xz section; and the volume's layers, kept in f32, are the f64 sections rounded.
+        let solution = Solution::SphereHertz {
+            friction: 0.3,
+            poisson: 0.3,
+        };
+        let q = [Quantity::Sxz, Quantity::VonMises, Quantity::Syz];
+        let x = Axis::new(-2.0, 2.0, 9); // x = -0.5 is sample 3
+        let y = Axis::new(-1.2, 1.2, 7); // y = 0.4 is sample 4
+        let z = Axis::new(0.0, 2.0, 5); // z = 0.5 is sample 1
+        let xz = Plane {
+            section: Section::Xz { y: 0.4 },
+            u: x,
+            v: z,
+        };
+        let yz = Plane {
+            section: Section::Yz { x: -0.5 },
+            u: y,
+            v: z,
+        };
+        let xy = Plane {
+            section: Section::Xy { z: 0.5 },
+            u: x,
+            v: y,
+        };
+        let [xz, yz, xy] =
+            [xz, yz, xy].map(|p| evaluate(&solution, &p, &q, &|| {}).expect("small"));
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-14;
+        let narrow =
+            evaluate_volume::<f32>(&solution, &Volume { x, y, z }, &q, &|| {}).expect("small");
+        for k in 0..3 {
+            for iz in 0..5 {
+                assert!(
+                    close(xz.values[[iz, k, 3]], yz.values[[iz, k, 4]]),
+                    "k {k} iz {iz}"
+                );
+            }
+            for ix in 0..9 {
+                assert!(
+                    close(xz.values[[1, k, ix]], xy.values[[4, k, ix]]),
+                    "k {k} ix {ix}"
+                );
+                for iy in 0..7 {
+                    assert_eq!(narrow.values[[1, k, iy, ix]], xy.values[[iy, k, ix]] as f32);
+                }
+            }
+        }
+        // Symmetry in y of the sliding sphere: syz is odd, von Mises even.
+        for ix in 0..9 {
+            assert!(close(xy.values[[0, 1, ix]], xy.values[[6, 1, ix]]));
+            assert!(close(xy.values[[0, 2, ix]], -xy.values[[6, 2, ix]]));
+        }
+    }
+
+    #[test]
     fn volume_layers_match_sections_and_f32_rounds_f64() {
         let solution = Solution::LineHertz {
             friction: 0.1,
@@ -455,8 +539,10 @@ mod tests {
         // Memory: f32 halves the estimate, so a grid twice the limit in f64 is still refused
         // in f64 but its half fits in f32.
         let points = MAX_FIELD_BYTES / 8 + 1;
-        assert!(check_size(points, 1, 8).is_err());
-        assert!(check_size(points, 1, 4).is_ok());
+        assert!(check_size_within(points, 1, 8, MAX_FIELD_BYTES).is_err());
+        assert!(check_size_within(points, 1, 4, MAX_FIELD_BYTES).is_ok());
+        // The machine's limit never exceeds the fixed one.
+        assert!(memory_limit_bytes() <= MAX_FIELD_BYTES);
     }
 
     #[test]

@@ -4,6 +4,7 @@
 //! outer ring of a bearing, an internal gear) has a negative radius and makes a conformal
 //! contact, valid while the effective radius stays positive.
 
+pub mod elliptic;
 pub mod gear;
 pub mod material;
 
@@ -30,6 +31,19 @@ pub enum ContactError {
     NotConvex { curvature_per_m: f64 },
     #[error("both bodies are flat: Hertz theory needs at least one curved body")]
     BothFlat,
+    #[error("{name} must be {requirement}, got {value}")]
+    InvalidParameter {
+        name: &'static str,
+        requirement: &'static str,
+        value: f64,
+    },
+    #[error(
+        "the gap between the bodies must close in every direction: the smaller principal \
+         relative curvature is {curvature_per_m:.6} 1/m (zero: the bodies touch along a line, \
+         use a line contact; negative: a concave body's radius must be larger in size than the \
+         convex one's)"
+    )]
+    OpenGap { curvature_per_m: f64 },
 }
 
 /// Effective (contact) modulus `E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)`.

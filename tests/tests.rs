@@ -4,5 +4,6 @@
 mod cli;
 mod golden;
 mod line_contact;
+mod patch;
 mod point_contact;
 mod scenes;

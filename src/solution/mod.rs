@@ -3,6 +3,7 @@
 
 pub mod line_hertz;
 pub mod line_numerical;
+pub mod patch;
 pub mod sphere_hertz;
 pub mod strip;
 

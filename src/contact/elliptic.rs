@@ -788,7 +788,19 @@ mod tests {
             // Two toroidal bodies at a general angle.
             EllipticalContact::new(&body(0.01, 0.04), &body(0.03, -0.08), 1.1, 300.0)
                 .expect("valid"),
+            // A very elongated contact, A/B = 1e-4 (a/b about 240), major axis along y.
+            EllipticalContact::from_curvatures(
+                RelativeCurvature {
+                    half_curvature_x_per_m: 50.0,
+                    half_curvature_y_per_m: 5e-3,
+                    x_axis_from_body1_rad: 0.0,
+                },
+                115e9,
+                100.0,
+            )
+            .expect("valid"),
         ];
+        assert!(cases[2].semi_axis_y_m > 200.0 * cases[2].semi_axis_x_m);
         for c in &cases {
             let (a, b) = (c.semi_axis_x_m, c.semi_axis_y_m);
             for (xi, eta) in [

@@ -46,30 +46,41 @@ pub enum Command {
         scenes: Vec<PathBuf>,
     },
     /// Print stresses at points read as CSV rows x,y,z (units of a) as CSV (units of p0).
-    Probe {
-        /// Scene whose contact (friction, Poisson ratio) is used; default: a normalised contact.
-        scene: Option<PathBuf>,
-        /// Contact geometry: line (cylinders, plane strain) or point (sphere; y is used).
-        /// Default: the scene's, else line.
-        #[arg(long, value_enum)]
-        contact: Option<ContactArg>,
-        /// Coefficient of sliding friction (overrides the scene's).
-        #[arg(long, allow_negative_numbers = true)]
-        friction: Option<f64>,
-        /// Poisson's ratio of the body (overrides the scene's).
-        #[arg(long, allow_negative_numbers = true)]
-        poisson: Option<f64>,
-        /// Stress solution: the exact closed form, or numerical integration of the tractions
-        /// discretised into --strips uniform strips (a check of the closed form).
-        #[arg(long, value_enum, default_value_t = MethodArg::ClosedForm)]
-        method: MethodArg,
-        /// Number of strips of the numerical method (error about 0.1/strips p0 at z >= 0.1a).
-        #[arg(long, default_value_t = 2000)]
-        strips: usize,
-        /// CSV file of points, or - for standard input.
-        #[arg(long, value_name = "FILE|-")]
-        points: PathBuf,
-    },
+    Probe(ProbeArgs),
+}
+
+/// Options of `probe`.
+#[derive(Debug, clap::Args)]
+pub struct ProbeArgs {
+    /// Scene whose contact (friction, Poisson ratio) is used; default: a normalised contact.
+    pub scene: Option<PathBuf>,
+    /// Contact geometry: line (cylinders, plane strain) or point (sphere; y is used).
+    /// Default: the scene's, else line.
+    #[arg(long, value_enum)]
+    pub contact: Option<ContactArg>,
+    /// Coefficient of sliding friction (overrides the scene's).
+    #[arg(long, allow_negative_numbers = true)]
+    pub friction: Option<f64>,
+    /// Poisson's ratio of the body (overrides the scene's).
+    #[arg(long, allow_negative_numbers = true)]
+    pub poisson: Option<f64>,
+    /// Stress solution: the exact closed form, or numerical integration of the tractions
+    /// discretised into --strips uniform strips (line) or --cells² uniform cells (point),
+    /// an independent check of the closed form.
+    #[arg(long, value_enum, default_value_t = MethodArg::ClosedForm)]
+    pub method: MethodArg,
+    /// Number of strips of the numerical method (error about 0.1/strips p0 at z >= 0.1a).
+    #[arg(long, default_value_t = 2000)]
+    pub strips: usize,
+    /// Point contact, numerical method: cells per side of the square traction grid.
+    #[arg(long, default_value_t = 255)]
+    pub cells: usize,
+    /// Point contact, numerical method: the grid covers [-extent, extent]² (units of a).
+    #[arg(long, default_value_t = 2.0)]
+    pub extent: f64,
+    /// CSV file of points, or - for standard input.
+    #[arg(long, value_name = "FILE|-")]
+    pub points: PathBuf,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

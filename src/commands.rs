@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
-use crate::cli::{Command, ContactArg, MethodArg};
+use crate::cli::{Command, ContactArg, MethodArg, ProbeArgs};
 use stressfield::compare::{self, Tolerance};
 use stressfield::output::write_atomic;
 use stressfield::probe;
@@ -38,23 +38,7 @@ pub fn run(command: Command) -> Result<()> {
             Ok(())
         }
         Command::Check { scenes } => check(&scenes),
-        Command::Probe {
-            scene,
-            contact,
-            friction,
-            poisson,
-            method,
-            strips,
-            points,
-        } => probe_command(
-            scene.as_deref(),
-            contact,
-            friction,
-            poisson,
-            method,
-            strips,
-            &points,
-        ),
+        Command::Probe(args) => probe_command(&args),
     }
 }
 
@@ -264,15 +248,21 @@ fn check(paths: &[PathBuf]) -> Result<()> {
     Ok(())
 }
 
-fn probe_command(
-    scene: Option<&Path>,
-    contact: Option<ContactArg>,
-    friction: Option<f64>,
-    poisson: Option<f64>,
-    method: MethodArg,
-    strips: usize,
-    points: &Path,
-) -> Result<()> {
+fn probe_command(args: &ProbeArgs) -> Result<()> {
+    let ProbeArgs {
+        scene,
+        contact,
+        friction,
+        poisson,
+        method,
+        strips,
+        cells,
+        extent,
+        points,
+    } = args;
+    let (scene, contact, friction, poisson) = (scene.as_deref(), *contact, *friction, *poisson);
+    let (method, strips, cells, extent) = (*method, *strips, *cells, *extent);
+    let points = points.as_path();
     if !(1..=1_000_000).contains(&strips) {
         bail!("--strips must lie in 1..=1000000, got {strips}");
     }
@@ -295,10 +285,11 @@ fn probe_command(
     } else if let Some(given) = contact {
         kind = given;
     }
-    if kind == ContactArg::Point && method == MethodArg::Numerical {
-        bail!(
-            "the numerical method is not yet supported for point contact\nhint: use --method closed-form (exact)"
-        );
+    if !(8..=2048).contains(&cells) {
+        bail!("--cells must lie in 8..=2048, got {cells}");
+    }
+    if !(extent.is_finite() && (1.0..=20.0).contains(&extent)) {
+        bail!("--extent must lie in 1..=20 (units of a; the grid must cover the contact), got {extent}");
     }
     if let Some(f) = friction {
         if !(f.is_finite() && f >= 0.0) {
@@ -335,10 +326,13 @@ fn probe_command(
             poisson: nu,
         },
         (ContactArg::Line, MethodArg::Numerical) => Solution::line_numerical(mu, nu, strips),
-        (ContactArg::Point, _) => Solution::SphereHertz {
+        (ContactArg::Point, MethodArg::ClosedForm) => Solution::SphereHertz {
             friction: mu,
             poisson: nu,
         },
+        (ContactArg::Point, MethodArg::Numerical) => {
+            Solution::sphere_numerical(mu, nu, cells, extent)?
+        }
     };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());

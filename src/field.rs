@@ -6,6 +6,7 @@
 use ndarray::{Array3, Array4, ArrayView2, ArrayView3, Axis as NdAxis};
 use rayon::prelude::*;
 
+use crate::solution::point_numerical::PointTractions;
 use crate::solution::Solution;
 use crate::stress::{Quantity, Stress};
 
@@ -155,6 +156,8 @@ pub enum FieldError {
         needed_mib: usize,
         limit_mib: usize,
     },
+    #[error("numerical integration failed: {0}")]
+    Numerical(String),
 }
 
 /// Values of several quantities on a plane: `values[[iv, k, iu]]` is quantity `k` at the
@@ -242,6 +245,16 @@ pub fn evaluate_as<T: Precision>(
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Field<T>, FieldError> {
     check_size(plane.points(), quantities.len(), std::mem::size_of::<T>())?;
+    if let Solution::PointNumerical { tractions, .. } = solution {
+        if let Some(layout) = GridLayout::of(tractions, plane) {
+            let values = evaluate_layers(tractions, plane, &layout, quantities, on_row)?;
+            return Ok(Field {
+                plane: *plane,
+                quantities: quantities.to_vec(),
+                values,
+            });
+        }
+    }
     let mut values = Array3::default((plane.v.count, quantities.len(), plane.u.count));
     values
         .axis_iter_mut(NdAxis(0))
@@ -320,6 +333,113 @@ pub fn evaluate_volume<T: Precision>(
         quantities: quantities.to_vec(),
         values,
     })
+}
+
+/// Where a plane's samples lie among the cell centres of a numerical solution's traction grid:
+/// the index of the first sample's column (x) and row (y). A plane whose samples are all cell
+/// centres (any depths) is evaluated by DC-FFT, layer by layer.
+struct GridLayout {
+    first_column: usize,
+    first_row: usize,
+}
+
+impl GridLayout {
+    fn of(tractions: &PointTractions, plane: &Plane) -> Option<Self> {
+        let [ny, nx] = tractions.grid().shape();
+        let cell = tractions.grid().cell();
+        // The samples of `axis` are the centres first..first + count along grid axis `k`.
+        let along = |axis: &Axis, k: usize, n: usize| -> Option<usize> {
+            let first = tractions.nearest_centre(axis.min, k);
+            let last = first + axis.count - 1;
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-9 * cell[k];
+            (last < n
+                && close(axis.min, tractions.centre(first, k))
+                && close(axis.max, tractions.centre(last, k)))
+            .then_some(first)
+        };
+        let single = |value: f64, k: usize, n: usize| along(&Axis::new(value, value, 1), k, n);
+        let (first_column, first_row) = match plane.section {
+            Section::Xz { y } => (along(&plane.u, 0, nx)?, single(y, 1, ny)?),
+            Section::Yz { x } => (single(x, 0, nx)?, along(&plane.u, 1, ny)?),
+            Section::Xy { .. } => (along(&plane.u, 0, nx)?, along(&plane.v, 1, ny)?),
+        };
+        Some(Self {
+            first_column,
+            first_row,
+        })
+    }
+}
+
+/// Evaluates a plane lying on the traction grid by DC-FFT: one layer per depth row (xz, yz)
+/// or one layer (xy), in parallel over the layers, each layer's working set held by one worker.
+fn evaluate_layers<T: Precision>(
+    tractions: &PointTractions,
+    plane: &Plane,
+    layout: &GridLayout,
+    quantities: &[Quantity],
+    on_row: &(dyn Fn() + Sync),
+) -> Result<Array3<T>, FieldError> {
+    let (nu, nv) = (plane.u.count, plane.v.count);
+    let values = std::sync::Mutex::new(Array3::default((nv, quantities.len(), nu)));
+    let depths: Vec<f64> = match plane.section {
+        Section::Xz { .. } | Section::Yz { .. } => plane.v.values().collect(),
+        Section::Xy { z } => vec![z],
+    };
+    let stress = |layer: &ndarray::ArrayView3<f64>, row: usize, column: usize| Stress {
+        xx: layer[[0, row, column]],
+        yy: layer[[1, row, column]],
+        zz: layer[[2, row, column]],
+        yz: layer[[3, row, column]],
+        xz: layer[[4, row, column]],
+        xy: layer[[5, row, column]],
+    };
+    let (c0, r0) = (layout.first_column, layout.first_row);
+    tractions
+        .dcfft()
+        .for_each_layer(&depths, |index, _z, layer| {
+            // The rows of the plane this layer fills, each as (row index, stresses along u).
+            let rows: Vec<(usize, Vec<Stress>)> = match plane.section {
+                Section::Xz { .. } => {
+                    vec![(
+                        index,
+                        (0..nu).map(|iu| stress(&layer, r0, c0 + iu)).collect(),
+                    )]
+                }
+                Section::Yz { .. } => {
+                    vec![(
+                        index,
+                        (0..nu).map(|iu| stress(&layer, r0 + iu, c0)).collect(),
+                    )]
+                }
+                Section::Xy { .. } => (0..nv)
+                    .map(|iv| {
+                        (
+                            iv,
+                            (0..nu).map(|iu| stress(&layer, r0 + iv, c0 + iu)).collect(),
+                        )
+                    })
+                    .collect(),
+            };
+            let mut buffer = vec![0.0; nu];
+            for (iv, stresses) in rows {
+                let mut computed = Vec::with_capacity(quantities.len());
+                for &quantity in quantities {
+                    fill_quantity(quantity, &stresses, &mut buffer);
+                    computed.push(buffer.iter().map(|&v| T::from_f64(v)).collect::<Vec<T>>());
+                }
+                // A poisoned lock only means another worker panicked; the panic propagates.
+                let mut values = values.lock().unwrap_or_else(|e| e.into_inner());
+                for (k, row) in computed.into_iter().enumerate() {
+                    for (iu, v) in row.into_iter().enumerate() {
+                        values[[iv, k, iu]] = v;
+                    }
+                }
+                drop(values);
+                on_row();
+            }
+        })
+        .map_err(|e| FieldError::Numerical(e.to_string()))?;
+    Ok(values.into_inner().unwrap_or_else(|e| e.into_inner()))
 }
 
 /// Scratch space reused from row to row by one worker.
@@ -500,6 +620,62 @@ mod tests {
             assert!(close(xy.values[[0, 1, ix]], xy.values[[6, 1, ix]]));
             assert!(close(xy.values[[0, 2, ix]], -xy.values[[6, 2, ix]]));
         }
+    }
+
+    #[test]
+    fn numerical_planes_on_the_grid_use_dc_fft_and_agree_with_direct_summation() {
+        // 15 cells over [-1.5, 1.5]²: centres at multiples of 0.2; sections through centres
+        // go through DC-FFT layers, and must equal the direct sums at the same points.
+        let solution = Solution::sphere_numerical(0.3, 0.3, 15, 1.5).expect("grid");
+        let Solution::PointNumerical { tractions, .. } = &solution else {
+            unreachable!("a numerical solution")
+        };
+        let q = [Quantity::Sxx, Quantity::Syz, Quantity::VonMises];
+        let planes = [
+            Plane {
+                section: Section::Xz { y: 0.2 },
+                u: Axis::new(-1.0, 1.0, 11),
+                v: Axis::new(0.0, 1.0, 6),
+            },
+            Plane {
+                section: Section::Yz { x: -0.4 },
+                u: Axis::new(-1.4, 1.4, 15),
+                v: Axis::new(0.05, 0.85, 5),
+            },
+            Plane {
+                section: Section::Xy { z: 0.3 },
+                u: Axis::new(-0.6, 1.0, 9),
+                v: Axis::new(-1.0, 0.2, 7),
+            },
+        ];
+        for plane in planes {
+            assert!(
+                GridLayout::of(tractions, &plane).is_some(),
+                "{plane:?} is on the grid"
+            );
+            let field = evaluate(&solution, &plane, &q, &|| {}).expect("small");
+            for iv in 0..plane.v.count {
+                for iu in 0..plane.u.count {
+                    let (x, y, z) = plane.point(iu, iv);
+                    let direct = solution.stress_over_p0(x, y, z);
+                    for (k, quantity) in q.iter().enumerate() {
+                        let v = field.values[[iv, k, iu]];
+                        assert!(
+                            (v - quantity.of(&direct)).abs() < 1e-10,
+                            "{plane:?} ({x}, {y}, {z}) {quantity:?}: {v} vs {}",
+                            quantity.of(&direct)
+                        );
+                    }
+                }
+            }
+        }
+        // Off the grid: evaluated point by point (still correct, only slower).
+        let off = Plane {
+            section: Section::Xz { y: 0.25 },
+            u: Axis::new(-1.0, 1.0, 5),
+            v: Axis::new(0.1, 0.5, 2),
+        };
+        assert!(GridLayout::of(tractions, &off).is_none());
     }
 
     #[test]

@@ -1,9 +1,9 @@
 //! From a scene to a drawable figure: evaluates each panel's field on the grid and converts
 //! everything to the figure's display units.
 
-use crate::field::{self, Axis, FieldError, Section};
+use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::{Figure, Mark, Panel, TractionSample};
-use crate::scene::{ContactKind, LengthUnit, PanelSpec, Scene, SectionKind, StressUnit};
+use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
 
 /// Number of samples of the traction profile across the figure.
 const TRACTION_SAMPLES: usize = 601;
@@ -25,12 +25,17 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
     let mut panels = Vec::with_capacity(scene.panels.len());
     for panel in &scene.panels {
         let plane = scene.plane(panel);
-        let solution = scene.solution(panel);
+        let solution = scene
+            .solution(panel)
+            .map_err(|e| FieldError::Numerical(e.to_string()))?;
         let field = field::evaluate(&solution, &plane, &[spec.quantity], on_row)?;
-        let values = field
-            .values
-            .index_axis(ndarray::Axis(1), 0)
-            .mapv(|v| v * stress_per_p0);
+        let mut values = field.values.index_axis(ndarray::Axis(1), 0).to_owned();
+        if panel.method == Method::Difference {
+            let exact =
+                field::evaluate(&scene.closed_form(panel), &plane, &[spec.quantity], on_row)?;
+            values -= &exact.values.index_axis(ndarray::Axis(1), 0);
+        }
+        let values = values.mapv(|v| v * stress_per_p0);
         // Where the section meets the surface: the tractions along that line and the contact's
         // extent on it (a chord of the contact circle for a point contact).
         let chord = |offset: f64| match scene.contact.kind {
@@ -55,7 +60,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
             Section::Xy { .. } => (Vec::new(), 0.0, vec![contact_outline(scene.contact.kind)]),
         };
         panels.push(Panel {
-            subtitle: subtitle(scene, panel),
+            subtitle: subtitle(scene, panel, &plane),
             x: to_display(plane.u),
             z: to_display(plane.v),
             values,
@@ -160,13 +165,21 @@ fn contact_outline(kind: ContactKind) -> Vec<(f64, f64)> {
 
 /// Which plane a panel shows, for point contacts (a line contact is the same in every xz
 /// plane, so its panels need no such label): e.g. "xz plane, y = 0.5a" or "surface z = 0".
-fn section_label(scene: &Scene, panel: &PanelSpec) -> Option<String> {
+fn section_label(scene: &Scene, plane: &Plane) -> Option<String> {
     if scene.contact.kind == ContactKind::Line {
         return None;
     }
     let section = scene.figure.section;
     let (_, _, normal) = section.coordinates();
-    let at = panel.at;
+    // The plane's own position (a numerical panel lies on the nearest row of cell centres).
+    let at_over_a = match plane.section {
+        Section::Xz { y } => y,
+        Section::Yz { x } => x,
+        Section::Xy { z } => z,
+    };
+    let at = at_over_a / scene.length_unit_over_a();
+    // A row of cell centres through the axis may miss 0 by a rounding error.
+    let at = if at.abs() < 1e-12 { 0.0 } else { at };
     let value = match scene.figure.length_unit {
         _ if at == 0.0 => "0".to_string(),
         LengthUnit::HalfWidth => format!("{}a", trim(at)),
@@ -199,12 +212,23 @@ fn title(scene: &Scene) -> String {
     title
 }
 
-/// The panel caption: friction and Poisson ratio, and for dimensional scenes a and p0.
-fn subtitle(scene: &Scene, panel: &PanelSpec) -> String {
+/// The panel caption: the method when the figure uses more than one, the section, friction
+/// and Poisson ratio, and for dimensional scenes a and p0.
+fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
     if let Some(subtitle) = &panel.subtitle {
         return subtitle.clone();
     }
-    let mut parts: Vec<String> = section_label(scene, panel).into_iter().collect();
+    let mixed = scene.panels.iter().any(|p| p.method != panel.method);
+    let mut parts: Vec<String> = Vec::new();
+    let cells = scene.numerical.cells;
+    match (panel.method, scene.contact.kind) {
+        (Method::ClosedForm, _) if mixed => parts.push("closed form".into()),
+        (Method::ClosedForm, _) => {}
+        (Method::Numerical, ContactKind::Line) => parts.push(format!("numerical, {cells} strips")),
+        (Method::Numerical, ContactKind::Point) => parts.push(format!("numerical, {cells}² cells")),
+        (Method::Difference, _) => parts.push("numerical − closed form".into()),
+    }
+    parts.extend(section_label(scene, plane));
     parts.push(format!("μ = {}", panel.friction));
     parts.push(format!("ν = {}", panel.poisson));
     if let Some(scale) = scene.contact.scale {

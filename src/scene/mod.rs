@@ -13,6 +13,7 @@ use crate::contact::material::{self, yield_strength_from_hardness_pa, Material};
 use crate::contact::{Body, LineContact, PointContact};
 use crate::field::{Axis, Plane, Section};
 use crate::render::{ColorMap, Levels, Mark};
+use crate::solution::point_numerical::NumericalError;
 use crate::solution::Solution;
 use crate::stress::{Quantity, QuantityKind};
 use raw::{NumberOrText, RawBody, RawContact, RawFigure, RawScene};
@@ -148,6 +149,46 @@ impl Contact {
             ContactKind::Point => Solution::SphereHertz { friction, poisson },
         }
     }
+}
+
+/// How a panel's stresses are computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// The exact closed form (McEwen for a line contact, Hamilton for a sphere).
+    ClosedForm,
+    /// Numerical integration of the tractions discretised on the scene's `[numerical]` grid.
+    Numerical,
+    /// Numerical minus closed form: where the discretisation error sits.
+    Difference,
+}
+
+impl Method {
+    fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "closed_form" => Some(Self::ClosedForm),
+            "numerical" => Some(Self::Numerical),
+            "difference" => Some(Self::Difference),
+            _ => None,
+        }
+    }
+
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::ClosedForm => "closed_form",
+            Self::Numerical => "numerical",
+            Self::Difference => "difference",
+        }
+    }
+}
+
+/// The discretisation of the numerical method.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Numerical {
+    /// Cells per side of the square traction grid (point contact), or uniform strips across
+    /// the contact (line contact).
+    pub cells: usize,
+    /// The traction grid covers `[-extent, extent]²` in units of a (point contact).
+    pub extent_over_a: f64,
 }
 
 /// Unit of lengths on a figure (and of `figure.x`, `figure.y`, `figure.z` and `figure.at`).
@@ -300,6 +341,7 @@ pub struct FigureSpec {
 /// One panel: the contact with its own friction and Poisson ratio, cut at its own position.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PanelSpec {
+    pub method: Method,
     pub friction: f64,
     pub poisson: f64,
     /// Position of the section along its normal (y for xz, x for yz, depth z for xy), in the
@@ -317,6 +359,7 @@ pub struct Scene {
     pub contact: Contact,
     pub figure: FigureSpec,
     pub panels: Vec<PanelSpec>,
+    pub numerical: Numerical,
 }
 
 impl Scene {
@@ -358,8 +401,14 @@ impl Scene {
         self.figure.length_unit.metres(self.contact.half_width_m()) / self.contact.half_width_m()
     }
 
-    /// The grid of a panel, in units of a.
+    /// The grid of a panel, in units of a. A numerical (or difference) panel of a point contact
+    /// is sampled at the cell centres of the traction grid within the figure's range (and its
+    /// depths at the cell spacing), so that whole layers come from one DC-FFT each; an xz or
+    /// yz section then lies on the nearest row or column of centres.
     pub fn plane(&self, panel: &PanelSpec) -> Plane {
+        if self.contact.kind == ContactKind::Point && panel.method != Method::ClosedForm {
+            return self.grid_plane(panel);
+        }
         let unit_over_a = self.length_unit_over_a();
         let (u0, u1) = self.figure.horizontal;
         let (v0, v1) = self.figure.vertical;
@@ -376,8 +425,81 @@ impl Scene {
         Plane { section, u, v }
     }
 
-    /// The stress solution of panel `i`.
-    pub fn solution(&self, panel: &PanelSpec) -> Solution {
+    /// The plane of a numerical point-contact panel on the traction grid's cell centres.
+    fn grid_plane(&self, panel: &PanelSpec) -> Plane {
+        let unit_over_a = self.length_unit_over_a();
+        let Numerical {
+            cells,
+            extent_over_a: extent,
+        } = self.numerical;
+        let h = 2.0 * extent / cells as f64;
+        let centre = |i: usize| -extent + (i as f64 + 0.5) * h;
+        let index = |u: f64| {
+            ((u + extent) / h - 0.5)
+                .round()
+                .clamp(0.0, (cells - 1) as f64) as usize
+        };
+        // Centres within [lo, hi] (at least one).
+        let centres = |(lo, hi): (f64, f64)| {
+            let first = ((lo * unit_over_a + extent) / h - 0.5 - 1e-9)
+                .ceil()
+                .clamp(0.0, (cells - 1) as f64) as usize;
+            let last = ((hi * unit_over_a + extent) / h - 0.5 + 1e-9)
+                .floor()
+                .clamp(first as f64, (cells - 1) as f64) as usize;
+            Axis::new(centre(first), centre(last), last - first + 1)
+        };
+        let depths = |(lo, hi): (f64, f64)| {
+            let (lo, hi) = (lo * unit_over_a, hi * unit_over_a);
+            let count = ((hi - lo) / h + 1e-9).floor() as usize + 1;
+            Axis::new(lo, lo + (count - 1) as f64 * h, count.max(1))
+        };
+        let at = panel.at * unit_over_a;
+        let (section, u, v) = match self.figure.section {
+            SectionKind::Xz => (
+                Section::Xz {
+                    y: centre(index(at)),
+                },
+                centres(self.figure.horizontal),
+                depths(self.figure.vertical),
+            ),
+            SectionKind::Yz => (
+                Section::Yz {
+                    x: centre(index(at)),
+                },
+                centres(self.figure.horizontal),
+                depths(self.figure.vertical),
+            ),
+            SectionKind::Xy => (
+                Section::Xy { z: at },
+                centres(self.figure.horizontal),
+                centres(self.figure.vertical),
+            ),
+        };
+        Plane { section, u, v }
+    }
+
+    /// The stress solution of a panel (for a difference panel, the numerical one).
+    pub fn solution(&self, panel: &PanelSpec) -> Result<Solution, NumericalError> {
+        match panel.method {
+            Method::ClosedForm => Ok(self.closed_form(panel)),
+            Method::Numerical | Method::Difference => {
+                let (mu, nu) = (panel.friction, panel.poisson);
+                match self.contact.kind {
+                    ContactKind::Line => Ok(Solution::line_numerical(mu, nu, self.numerical.cells)),
+                    ContactKind::Point => Solution::sphere_numerical(
+                        mu,
+                        nu,
+                        self.numerical.cells,
+                        self.numerical.extent_over_a,
+                    ),
+                }
+            }
+        }
+    }
+
+    /// The closed-form solution of a panel's contact.
+    pub fn closed_form(&self, panel: &PanelSpec) -> Solution {
         self.contact.solution(panel.friction, panel.poisson)
     }
 }
@@ -440,10 +562,16 @@ impl Validator<'_> {
         }
         let contact = self.contact(&raw.contact)?;
         let figure = self.figure(&raw.figure, &contact)?;
+        let method = self.method("contact.method", raw.contact.method.as_deref())?;
+        let numerical = self.numerical(raw.numerical.as_ref(), &contact)?;
         let at = self.section_position("figure.at", raw.figure.at, &contact, &figure)?;
         let mut panels = Vec::new();
         for (i, panel) in raw.panels.iter().enumerate() {
             let key = format!("panel[{i}]");
+            let method = match panel.method.as_deref() {
+                Some(text) => self.method(&format!("{key}.method"), Some(text))?,
+                None => method,
+            };
             let at = match panel.at {
                 Some(value) => {
                     self.section_position(&format!("{key}.at"), Some(value), &contact, &figure)?
@@ -459,6 +587,7 @@ impl Validator<'_> {
                 None => contact.poisson,
             };
             panels.push(PanelSpec {
+                method,
                 friction,
                 poisson,
                 at,
@@ -467,6 +596,7 @@ impl Validator<'_> {
         }
         if panels.is_empty() {
             panels.push(PanelSpec {
+                method,
                 friction: contact.friction,
                 poisson: contact.poisson,
                 at,
@@ -506,6 +636,74 @@ impl Validator<'_> {
             contact,
             figure,
             panels,
+            numerical,
+        })
+    }
+
+    fn method(&self, key: &str, value: Option<&str>) -> Result<Method, SceneError> {
+        match value {
+            None => Ok(Method::ClosedForm),
+            Some(text) => Method::from_key(text).ok_or_else(|| {
+                self.error(
+                    key,
+                    format!("unknown method `{text}`"),
+                    Some("use \"closed_form\" (exact), \"numerical\" (integrated tractions) or \"difference\" (numerical minus closed form)"),
+                )
+            }),
+        }
+    }
+
+    fn numerical(
+        &self,
+        raw: Option<&raw::RawNumerical>,
+        contact: &Contact,
+    ) -> Result<Numerical, SceneError> {
+        let empty = raw::RawNumerical::default();
+        let raw = raw.unwrap_or(&empty);
+        let (default_cells, range, hint) = match contact.kind {
+            ContactKind::Line => (
+                400,
+                8..=100_000,
+                "strips across the contact: 400 is accurate to about 1e-4 p0 at z >= 0.1a",
+            ),
+            ContactKind::Point => (
+                255,
+                8..=2048,
+                "cells per side of the traction grid: 255 over ±2a is accurate to about 0.2 % p0",
+            ),
+        };
+        let cells = match raw.cells {
+            None => default_cells,
+            Some(n) if range.contains(&n) => n as usize,
+            Some(n) => {
+                return Err(self.error(
+                    "numerical.cells",
+                    format!("must lie in {}..={}, got {n}", range.start(), range.end()),
+                    Some(hint),
+                ))
+            }
+        };
+        let extent_over_a = match (raw.extent, contact.kind) {
+            (None, _) => 2.0,
+            (Some(_), ContactKind::Line) => {
+                return Err(self.error(
+                    "numerical.extent",
+                    "a line contact's strips always span the contact -a..a",
+                    Some("remove it; set the number of strips with numerical.cells"),
+                ))
+            }
+            (Some(e), ContactKind::Point) if (1.0..=20.0).contains(&e) => e,
+            (Some(e), ContactKind::Point) => {
+                return Err(self.error(
+                    "numerical.extent",
+                    format!("must lie in 1..=20 (units of a), got {e}"),
+                    Some("the grid must cover the contact, -a..a; 2 leaves room around it"),
+                ))
+            }
+        };
+        Ok(Numerical {
+            cells,
+            extent_over_a,
         })
     }
 

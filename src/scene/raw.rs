@@ -10,6 +10,7 @@ pub struct RawScene {
     pub contact: RawContact,
     #[serde(default)]
     pub figure: RawFigure,
+    pub numerical: Option<RawNumerical>,
     #[serde(default, rename = "panel")]
     pub panels: Vec<RawPanel>,
 }
@@ -18,6 +19,8 @@ pub struct RawScene {
 #[serde(deny_unknown_fields)]
 pub struct RawContact {
     pub kind: String,
+    /// "closed_form" (default), "numerical" or "difference".
+    pub method: Option<String>,
     pub friction: Option<f64>,
     /// Poisson ratio of the body whose field is drawn, for normalised scenes.
     pub poisson: Option<f64>,
@@ -74,10 +77,20 @@ pub struct RawFigure {
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawPanel {
+    pub method: Option<String>,
     pub at: Option<f64>,
     pub friction: Option<f64>,
     pub poisson: Option<f64>,
     pub subtitle: Option<String>,
+}
+
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawNumerical {
+    /// Cells per side of the square traction grid (point contact) or strips (line contact).
+    pub cells: Option<i64>,
+    /// Half-size of the traction grid in units of a (point contact).
+    pub extent: Option<f64>,
 }
 
 /// A value written either as a bare number or as a string with a unit.

@@ -1,9 +1,11 @@
 //! Stress solutions: pure functions from a point (in units of the contact half-width) to a
 //! stress tensor (in units of the peak pressure). No I/O, no threads.
 
+pub mod dcfft;
 pub mod line_hertz;
 pub mod line_numerical;
 pub mod patch;
+pub mod point_numerical;
 pub mod sphere_hertz;
 pub mod strip;
 
@@ -11,6 +13,7 @@ use std::sync::Arc;
 
 use crate::stress::Stress;
 use line_numerical::StripTractions;
+use point_numerical::{NumericalError, PointTractions};
 
 /// A stress solution that can be evaluated anywhere in the body `z >= 0`.
 #[derive(Clone, Debug, PartialEq)]
@@ -26,6 +29,13 @@ pub enum Solution {
     },
     /// Sliding Hertzian point contact (sphere), closed form (Hamilton 1983, Huber 1904).
     SphereHertz { friction: f64, poisson: f64 },
+    /// Point contact by numerical integration: tractions on a grid of uniform cells, summed
+    /// with the cells' exact influence coefficients (directly at points, by DC-FFT on grids).
+    PointNumerical {
+        tractions: Arc<PointTractions>,
+        friction: f64,
+        poisson: f64,
+    },
 }
 
 impl Solution {
@@ -37,6 +47,24 @@ impl Solution {
             friction,
             poisson,
         }
+    }
+
+    /// The Hertz sphere integrated numerically over `cells x cells` cells on
+    /// `[-extent, extent]²` (units of a).
+    pub fn sphere_numerical(
+        friction: f64,
+        poisson: f64,
+        cells: usize,
+        extent: f64,
+    ) -> Result<Self, NumericalError> {
+        let tractions = Arc::new(PointTractions::hertz_sphere(
+            cells, extent, friction, poisson,
+        )?);
+        Ok(Solution::PointNumerical {
+            tractions,
+            friction,
+            poisson,
+        })
     }
 
     /// Stress in units of `p0` at a point in units of `a` (`y` is ignored by line contacts).
@@ -51,6 +79,9 @@ impl Solution {
             } => tractions.stress_over_p0(x_over_a, z_over_a, *poisson),
             Solution::SphereHertz { friction, poisson } => {
                 sphere_hertz::stress_over_p0(x_over_a, y_over_a, z_over_a, *friction, *poisson)
+            }
+            Solution::PointNumerical { tractions, .. } => {
+                tractions.stress_over_p0(x_over_a, y_over_a, z_over_a)
             }
         }
     }
@@ -78,6 +109,11 @@ impl Solution {
                         sphere_hertz::stress_over_p0(x, y_over_a, z_over_a, *friction, *poisson);
                 }
             }
+            Solution::PointNumerical { tractions, .. } => {
+                for (stress, &x) in out.iter_mut().zip(xs) {
+                    *stress = tractions.stress_over_p0(x, y_over_a, z_over_a);
+                }
+            }
         }
     }
 
@@ -92,6 +128,7 @@ impl Solution {
             Solution::SphereHertz { friction, .. } => {
                 sphere_hertz::surface_traction_over_p0(x_over_a, y_over_a, *friction)
             }
+            Solution::PointNumerical { tractions, .. } => tractions.traction_at(x_over_a, y_over_a),
         }
     }
 
@@ -99,7 +136,7 @@ impl Solution {
     pub fn is_three_dimensional(&self) -> bool {
         match self {
             Solution::LineHertz { .. } | Solution::LineNumerical { .. } => false,
-            Solution::SphereHertz { .. } => true,
+            Solution::SphereHertz { .. } | Solution::PointNumerical { .. } => true,
         }
     }
 
@@ -107,7 +144,8 @@ impl Solution {
         match self {
             Solution::LineHertz { friction, .. }
             | Solution::LineNumerical { friction, .. }
-            | Solution::SphereHertz { friction, .. } => *friction,
+            | Solution::SphereHertz { friction, .. }
+            | Solution::PointNumerical { friction, .. } => *friction,
         }
     }
 
@@ -115,7 +153,8 @@ impl Solution {
         match self {
             Solution::LineHertz { poisson, .. }
             | Solution::LineNumerical { poisson, .. }
-            | Solution::SphereHertz { poisson, .. } => *poisson,
+            | Solution::SphereHertz { poisson, .. }
+            | Solution::PointNumerical { poisson, .. } => *poisson,
         }
     }
 }

@@ -1,0 +1,67 @@
+//! DC-FFT of gridded surface tractions (issue 4): the sliding Hertz point contact (p and
+//! qx = 0.3 p) on 256 x 256 cells over [-2a, 2a]^2, all six stress components on 128 depth
+//! layers, in parallel over the layers. Target: under 3 s on two cores.
+//! Also one layer on the calling thread, and direct summation against DC-FFT on a small grid
+//! (both on one thread) for the ratio.
+
+use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
+use ndarray::Array2;
+use stressfield::solution::dcfft::{DcFft, TractionGrid};
+
+/// Hertz tractions sampled at the cell centres of an n x n grid over [-2, 2]^2.
+fn hertz_grid(n: usize) -> TractionGrid {
+    let cell = 4.0 / n as f64;
+    let pressure = Array2::from_shape_fn((n, n), |(j, i)| {
+        let x = -2.0 + (i as f64 + 0.5) * cell;
+        let y = -2.0 + (j as f64 + 0.5) * cell;
+        (1.0 - x * x - y * y).max(0.0).sqrt()
+    });
+    let shear_x = pressure.mapv(|p| 0.3 * p);
+    match TractionGrid::new([-2.0, -2.0], [cell, cell], Some(pressure), Some(shear_x), None) {
+        Ok(grid) => grid,
+        Err(error) => panic!("{error}"),
+    }
+}
+
+fn dcfft(c: &mut Criterion) {
+    let mut group = c.benchmark_group("dcfft");
+    group.sample_size(10);
+    let grid = hertz_grid(256);
+    let fft = match DcFft::new(&grid, 0.3) {
+        Ok(fft) => fft,
+        Err(error) => panic!("{error}"),
+    };
+    let depths: Vec<f64> = (0..128).map(|k| 2.0 * f64::from(k) / 127.0).collect();
+    group.bench_with_input(
+        BenchmarkId::new("parallel_layers", "256x256x128"),
+        &depths,
+        |b, depths| {
+            b.iter(|| {
+                fft.for_each_layer(depths, |_, _, layer| {
+                    black_box(layer[[2, 128, 128]]);
+                })
+            })
+        },
+    );
+    let mut workspace = fft.workspace();
+    let mut layer = ndarray::Array3::zeros((6, 256, 256));
+    group.bench_function(BenchmarkId::new("sequential_layer", "256x256"), |b| {
+        b.iter(|| fft.layer_into(black_box(0.5), &mut workspace, layer.view_mut()))
+    });
+    // Direct summation against DC-FFT, one layer, one thread, small grid.
+    let small = hertz_grid(32);
+    let small_fft = match DcFft::new(&small, 0.3) {
+        Ok(fft) => fft,
+        Err(error) => panic!("{error}"),
+    };
+    group.bench_function(BenchmarkId::new("direct_layer", "32x32"), |b| {
+        b.iter(|| small.direct_layer(black_box(0.5), 0.3))
+    });
+    group.bench_function(BenchmarkId::new("sequential_layer", "32x32"), |b| {
+        b.iter(|| small_fft.layer(black_box(0.5)))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, dcfft);
+criterion_main!(benches);

@@ -17,20 +17,21 @@ fn hertz_grid(n: usize) -> TractionGrid {
         (1.0 - x * x - y * y).max(0.0).sqrt()
     });
     let shear_x = pressure.mapv(|p| 0.3 * p);
-    match TractionGrid::new([-2.0, -2.0], [cell, cell], Some(pressure), Some(shear_x), None) {
-        Ok(grid) => grid,
-        Err(error) => panic!("{error}"),
-    }
+    TractionGrid::new(
+        [-2.0, -2.0],
+        [cell, cell],
+        Some(pressure),
+        Some(shear_x),
+        None,
+    )
+    .expect("valid grid")
 }
 
 fn dcfft(c: &mut Criterion) {
     let mut group = c.benchmark_group("dcfft");
     group.sample_size(10);
     let grid = hertz_grid(256);
-    let fft = match DcFft::new(&grid, 0.3) {
-        Ok(fft) => fft,
-        Err(error) => panic!("{error}"),
-    };
+    let fft = DcFft::new(&grid, 0.3).expect("planned");
     let depths: Vec<f64> = (0..128).map(|k| 2.0 * f64::from(k) / 127.0).collect();
     group.bench_with_input(
         BenchmarkId::new("parallel_layers", "256x256x128"),
@@ -50,10 +51,7 @@ fn dcfft(c: &mut Criterion) {
     });
     // Direct summation against DC-FFT, one layer, one thread, small grid.
     let small = hertz_grid(32);
-    let small_fft = match DcFft::new(&small, 0.3) {
-        Ok(fft) => fft,
-        Err(error) => panic!("{error}"),
-    };
+    let small_fft = DcFft::new(&small, 0.3).expect("planned");
     group.bench_function(BenchmarkId::new("direct_layer", "32x32"), |b| {
         b.iter(|| small.direct_layer(black_box(0.5), 0.3))
     });

@@ -2,6 +2,7 @@
 //! whole crate, so keep them few).
 
 mod cli;
+mod dcfft;
 mod golden;
 mod line_contact;
 mod patch;

@@ -327,7 +327,6 @@ impl FftPlans {
     /// 2-D forward transform of the real `2ny x 2nx` grid whose row `r < ny` is written into
     /// its argument by `fill_row(r, line)` (other rows as `rows` says) into `spectrum`
     /// (column-major, see [`FftPlans::spectrum_len`]).
-    #[inline(never)]
     fn forward(
         &self,
         rows: Rows,
@@ -363,7 +362,6 @@ impl FftPlans {
 
     /// 2-D inverse transform of `spectrum` (destroyed), times `scale`, keeping the block of
     /// the first `ny` rows and `nx` columns, written into `out` `[y, x]`.
-    #[inline(never)]
     fn inverse_block(
         &self,
         spectrum: &mut [Complex<f64>],
@@ -581,8 +579,7 @@ impl DcFft {
                 };
                 let rows = Rows::Mirrored { parity: parity_y };
                 self.plans.forward(rows, fill_row, buffers, spectrum)?;
-                mac(accumulator, spectrum, traction);
-                for ((sum, coefficient), t) in [].iter_mut().zip(&[]).zip(&[]) as std::iter::Zip<std::iter::Zip<std::slice::IterMut<'_, Complex<f64>>, std::slice::Iter<'_, Complex<f64>>>, std::slice::Iter<'_, Complex<f64>>> accumulator.iter_mut().zip(&*spectrum).zip(traction)
+                for ((sum, coefficient), t) in accumulator.iter_mut().zip(&*spectrum).zip(traction)
                 {
                     *sum += coefficient * t;
                 }
@@ -645,7 +642,6 @@ impl DcFft {
 
     /// The influence coefficients at offsets `(a dx, b dy)`, `0 <= a < nx`, `0 <= b < ny`,
     /// as 18 arrays `[load][component][b][a]`.
-    #[inline(never)]
     fn influence_quadrant(&self, z: f64, quadrant: &mut [f64]) {
         let [ny, nx] = self.shape;
         let cells = nx * ny;
@@ -679,12 +675,12 @@ mod tests {
             loads[1].then(|| field(2.9)),
             loads[2].then(|| field(-1.7)),
         )
-        .unwrap()
+        .expect("valid grid")
     }
 
     fn assert_layers_agree(grid: &TractionGrid, depths: &[f64], nu: f64) {
-        let fft = DcFft::new(grid, nu).unwrap();
-        let layers = fft.layers(depths).unwrap();
+        let fft = DcFft::new(grid, nu).expect("planned");
+        let layers = fft.layers(depths).expect("transformed");
         for (d, &z) in depths.iter().enumerate() {
             let direct = grid.direct_layer(z, nu);
             let difference = (&layers.index_axis(Axis(0), d) - &direct)
@@ -730,12 +726,5 @@ mod tests {
             TractionGrid::new([0.0; 2], [0.0, 1.0], Some(a), None, None),
             Err(TractionGridError::CellSize { .. })
         ));
-    }
-}
-
-#[inline(never)]
-fn mac(a: &mut [Complex<f64>], b: &[Complex<f64>], c: &[Complex<f64>]) {
-    for ((sum, coefficient), t) in a.iter_mut().zip(b).zip(c) {
-        *sum += coefficient * t;
     }
 }

@@ -60,65 +60,105 @@ impl PointTractions {
         Ok(Self { grid, fft, poisson })
     }
 
-    /// The sliding Hertz sphere, `p = sqrt(1 - r²)`, `q = mu p` in +x, on `cells x cells`
-    /// cells covering `[-extent, extent]²`. Each cell carries the mean of the pressure over it
-    /// (Gauss–Legendre, 4 x 4 points on each of 4 x 4 sub-cells for cells the contact edge
-    /// crosses, where the pressure has its square-root edge), so the discretisation conserves
-    /// the load `2 pi / 3` up to the quadrature of the edge cells.
+    /// Tractions given as functions of `(x, y)` (units of a and p0) on `cells x cells` cells
+    /// covering `[-extent, extent]²`: each cell carries the mean of each function over it
+    /// (Gauss–Legendre, 4 x 4 points; cells where the pressure's support ends inside the cell,
+    /// at the contact edge where the pressure has its square-root edge, are split into 4 x 4
+    /// sub-cells), so the discretisation keeps the load up to that quadrature.
     ///
     /// An odd `cells` puts a cell centre on the axis (x = y = 0), where sections are drawn.
+    pub fn from_functions(
+        cells: usize,
+        extent: f64,
+        poisson: f64,
+        pressure: impl Fn(f64, f64) -> f64,
+        shear_x: Option<&dyn Fn(f64, f64) -> f64>,
+    ) -> Result<Self, NumericalError> {
+        let n = cells.max(1);
+        let h = 2.0 * extent / n as f64;
+        let origin = -extent;
+        let mean = |f: &dyn Fn(f64, f64) -> f64, x0: f64, y0: f64, w: f64| {
+            let mut sum = 0.0;
+            for (u, wu) in GAUSS_4 {
+                for (v, wv) in GAUSS_4 {
+                    sum += wu * wv * f(x0 + 0.5 * w * (1.0 + u), y0 + 0.5 * w * (1.0 + v));
+                }
+            }
+            sum / 4.0
+        };
+        // Whether the pressure's support boundary crosses the cell: its corners and centre
+        // disagree on being loaded.
+        let crossed = |x0: f64, y0: f64| {
+            let loaded = [(0.0, 0.0), (h, 0.0), (0.0, h), (h, h), (0.5 * h, 0.5 * h)]
+                .map(|(dx, dy)| pressure(x0 + dx, y0 + dy) > 0.0);
+            loaded.iter().any(|l| *l) && !loaded.iter().all(|l| *l)
+        };
+        let cell_mean = |f: &dyn Fn(f64, f64) -> f64, row: usize, column: usize| {
+            let (x0, y0) = (origin + column as f64 * h, origin + row as f64 * h);
+            if crossed(x0, y0) {
+                let sub = h / 4.0;
+                let mut sum = 0.0;
+                for i in 0..4 {
+                    for j in 0..4 {
+                        sum += mean(f, x0 + i as f64 * sub, y0 + j as f64 * sub, sub);
+                    }
+                }
+                sum / 16.0
+            } else {
+                mean(f, x0, y0, h)
+            }
+        };
+        let p = Array2::from_shape_fn((n, n), |(row, column)| cell_mean(&pressure, row, column));
+        let q = shear_x
+            .map(|f| Array2::from_shape_fn((n, n), |(row, column)| cell_mean(f, row, column)));
+        let grid = TractionGrid::new([origin, origin], [h, h], Some(p), q, None)?;
+        Self::new(grid, poisson)
+    }
+
+    /// The sliding Hertz sphere, `p = sqrt(1 - r²)`, `q = mu p` in +x (Johnson 1985, §3.4 and
+    /// ch. 7), as cell means (see [`PointTractions::from_functions`]).
     pub fn hertz_sphere(
         cells: usize,
         extent: f64,
         friction: f64,
         poisson: f64,
     ) -> Result<Self, NumericalError> {
-        let n = cells.max(1);
-        let h = 2.0 * extent / n as f64;
-        let origin = -extent;
         let pressure = |x: f64, y: f64| (1.0 - x * x - y * y).max(0.0).sqrt();
-        let mean = |x0: f64, y0: f64, w: f64| {
-            let mut sum = 0.0;
-            for (u, wu) in GAUSS_4 {
-                for (v, wv) in GAUSS_4 {
-                    sum += wu * wv * pressure(x0 + 0.5 * w * (1.0 + u), y0 + 0.5 * w * (1.0 + v));
-                }
-            }
-            sum / 4.0
-        };
-        let p = Array2::from_shape_fn((n, n), |(row, column)| {
-            let (x0, y0) = (origin + column as f64 * h, origin + row as f64 * h);
-            // Nearest and farthest corner distances decide whether the edge crosses the cell.
-            let near = |lo: f64| {
-                if lo > 0.0 {
-                    lo
-                } else if lo + h < 0.0 {
-                    lo + h
-                } else {
-                    0.0
-                }
-            };
-            let far = |lo: f64| lo.abs().max((lo + h).abs());
-            let r_near = near(x0).hypot(near(y0));
-            let r_far = far(x0).hypot(far(y0));
-            if r_near >= 1.0 {
-                0.0
-            } else if r_far <= 1.0 {
-                mean(x0, y0, h)
-            } else {
-                let sub = h / 4.0;
-                let mut sum = 0.0;
-                for i in 0..4 {
-                    for j in 0..4 {
-                        sum += mean(x0 + i as f64 * sub, y0 + j as f64 * sub, sub);
-                    }
-                }
-                sum / 16.0
-            }
-        });
-        let q = (friction != 0.0).then(|| p.mapv(|v| friction * v));
-        let grid = TractionGrid::new([origin, origin], [h, h], Some(p), q, None)?;
-        Self::new(grid, poisson)
+        let shear = move |x: f64, y: f64| friction * pressure(x, y);
+        let shear: Option<&dyn Fn(f64, f64) -> f64> = (friction != 0.0).then_some(&shear);
+        Self::from_functions(cells, extent, poisson, pressure, shear)
+    }
+
+    /// A sliding elliptical Hertz contact with semi-axes `a` along x (the unit of length) and
+    /// `b = b_over_a a` along y: `p = p0 sqrt(1 - x²/a² - y²/b²)`, `q = mu p` in +x
+    /// ([`crate::contact::elliptic::pressure_over_p0`]; Johnson 1985, §4.2).
+    pub fn hertz_ellipse(
+        cells: usize,
+        extent: f64,
+        b_over_a: f64,
+        friction: f64,
+        poisson: f64,
+    ) -> Result<Self, NumericalError> {
+        let pressure =
+            move |x: f64, y: f64| crate::contact::elliptic::pressure_over_p0(x, y / b_over_a);
+        let shear = move |x: f64, y: f64| friction * pressure(x, y);
+        let shear: Option<&dyn Fn(f64, f64) -> f64> = (friction != 0.0).then_some(&shear);
+        Self::from_functions(cells, extent, poisson, pressure, shear)
+    }
+
+    /// Cattaneo–Mindlin partial slip of a Hertz sphere under a tangential force
+    /// `Q = tangential_over_limit mu P` in +x: the Hertz pressure and the traction of
+    /// [`crate::contact::partial_slip::CattaneoMindlin`] (stick circle of radius
+    /// `c = a (1 - Q/(mu P))^(1/3)`).
+    pub fn mindlin_sphere(
+        cells: usize,
+        extent: f64,
+        slip: &crate::contact::partial_slip::CattaneoMindlin,
+        poisson: f64,
+    ) -> Result<Self, NumericalError> {
+        let pressure = |x: f64, y: f64| (1.0 - x * x - y * y).max(0.0).sqrt();
+        let shear = |x: f64, y: f64| slip.traction_over_p0(x, y);
+        Self::from_functions(cells, extent, poisson, pressure, Some(&shear))
     }
 
     pub fn grid(&self) -> &TractionGrid {
@@ -195,6 +235,38 @@ mod tests {
         assert!(tractions.centre(i, 0).abs() < 1e-15);
         assert_eq!(tractions.traction_at(5.0, 0.0), (0.0, 0.0));
         assert!((tractions.traction_at(0.0, 0.0).0 - 1.0).abs() < 1e-3);
+    }
+
+    /// Total normal and tangential (x) force of the cells.
+    fn resultants(tractions: &PointTractions) -> (f64, f64) {
+        let [ny, nx] = tractions.grid().shape();
+        let [dx, dy] = tractions.grid().cell();
+        let (mut p_sum, mut q_sum) = (0.0, 0.0);
+        for row in 0..ny {
+            for column in 0..nx {
+                let (p, qx, _) = tractions.grid().traction(row, column);
+                p_sum += p * dx * dy;
+                q_sum += qx * dx * dy;
+            }
+        }
+        (p_sum, q_sum)
+    }
+
+    #[test]
+    fn ellipse_and_partial_slip_cells_carry_their_loads() {
+        use crate::contact::partial_slip::CattaneoMindlin;
+        let third = 2.0 * std::f64::consts::PI / 3.0;
+        // Elliptical Hertz: P = (2/3) pi a b p0 (Johnson 1985 §4.2), here with b = 0.4a.
+        let ellipse = PointTractions::hertz_ellipse(81, 1.2, 0.4, 0.25, 0.3).expect("grid");
+        let (p, q) = resultants(&ellipse);
+        assert!((p / (0.4 * third) - 1.0).abs() < 1e-4, "{p}");
+        assert!((q / (0.25 * 0.4 * third) - 1.0).abs() < 1e-4, "{q}");
+        // Cattaneo-Mindlin: the traction carries Q = 0.6 mu P.
+        let slip = CattaneoMindlin::new(0.5, 0.6).expect("valid");
+        let partial = PointTractions::mindlin_sphere(81, 1.2, &slip, 0.3).expect("grid");
+        let (p, q) = resultants(&partial);
+        assert!((p / third - 1.0).abs() < 1e-4, "{p}");
+        assert!((q / (0.6 * 0.5 * third) - 1.0).abs() < 1e-4, "{q}");
     }
 
     #[test]

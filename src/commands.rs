@@ -10,7 +10,7 @@ use crate::cli::{Command, ContactArg, MethodArg, ProbeArgs};
 use stressfield::compare::{self, Tolerance};
 use stressfield::output::write_atomic;
 use stressfield::probe;
-use stressfield::scene::{ContactKind, Scene};
+use stressfield::scene::{ContactKind, Method, PanelSpec, Scene};
 use stressfield::solution::Solution;
 use stressfield::{figure, render, report};
 
@@ -267,12 +267,13 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
         bail!("--strips must lie in 1..=1000000, got {strips}");
     }
     let (mut mu, mut nu, mut kind) = (0.0, 0.3, ContactArg::Line);
+    let mut loaded = None;
     if let Some(path) = scene {
         let scene = Scene::load(path)?;
         (mu, nu) = (scene.contact.friction, scene.contact.poisson);
         kind = match scene.contact.kind {
             ContactKind::Line => ContactArg::Line,
-            ContactKind::Point => ContactArg::Point,
+            ContactKind::Point | ContactKind::Elliptical => ContactArg::Point,
         };
         if let Some(given) = contact.filter(|c| *c != kind) {
             bail!(
@@ -282,6 +283,7 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
                 if kind == ContactArg::Line { "line" } else { "point" }
             );
         }
+        loaded = Some(scene);
     } else if let Some(given) = contact {
         kind = given;
     }
@@ -320,6 +322,29 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
             }
         )
     })?;
+    // A scene's contact may have no closed form (elliptical, partial slip): then its numerical
+    // method, with the scene's [numerical] grid.
+    if let Some(scene) = loaded {
+        let panel = PanelSpec {
+            method: match method {
+                MethodArg::ClosedForm => Method::ClosedForm,
+                MethodArg::Numerical => Method::Numerical,
+            },
+            friction: mu,
+            poisson: nu,
+            at: 0.0,
+            subtitle: None,
+        };
+        let solution = match (scene.contact.kind, method) {
+            (ContactKind::Line, MethodArg::Numerical) => Solution::line_numerical(mu, nu, strips),
+            _ => scene.solution(&panel)?,
+        };
+        let stdout = std::io::stdout();
+        let mut out = std::io::BufWriter::new(stdout.lock());
+        probe::write_csv(&mut out, &solution, &rows)?;
+        out.flush()?;
+        return Ok(());
+    }
     let solution = match (kind, method) {
         (ContactArg::Line, MethodArg::ClosedForm) => Solution::LineHertz {
             friction: mu,

@@ -31,33 +31,55 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         let field = field::evaluate(&solution, &plane, &[spec.quantity], on_row)?;
         let mut values = field.values.index_axis(ndarray::Axis(1), 0).to_owned();
         if panel.method == Method::Difference {
-            let exact =
-                field::evaluate(&scene.closed_form(panel), &plane, &[spec.quantity], on_row)?;
+            let exact = scene.closed_form(panel).ok_or_else(|| {
+                FieldError::Numerical("this contact has no closed form to compare with".into())
+            })?;
+            let exact = field::evaluate(&exact, &plane, &[spec.quantity], on_row)?;
             values -= &exact.values.index_axis(ndarray::Axis(1), 0);
         }
-        let values = values.mapv(|v| v * stress_per_p0);
+        // Rounding noise around an exact zero (a free surface, a symmetry plane) would draw
+        // a tangle of zero contours: values below 1e-12 of the largest are zero.
+        let largest = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let values = values.mapv(|v| {
+            if v.abs() <= 1e-12 * largest {
+                0.0
+            } else {
+                v * stress_per_p0
+            }
+        });
         // Where the section meets the surface: the tractions along that line and the contact's
         // extent on it (a chord of the contact circle for a point contact).
-        let chord = |offset: f64| match scene.contact.kind {
+        let aspect = scene.contact.aspect;
+        let chord = |offset: f64, along_y: bool| match scene.contact.kind {
             ContactKind::Line => 1.0,
-            ContactKind::Point => (1.0 - offset * offset).max(0.0).sqrt(),
+            // The ellipse x² + (y/aspect)² = 1 (a circle for a sphere) cut at y or at x.
+            ContactKind::Point | ContactKind::Elliptical if along_y => {
+                aspect * (1.0 - offset * offset).max(0.0).sqrt()
+            }
+            ContactKind::Point | ContactKind::Elliptical => {
+                (1.0 - (offset / aspect).powi(2)).max(0.0).sqrt()
+            }
         };
         let (traction, half_width_over_a, outlines) = match plane.section {
             Section::Xz { y } => (
-                traction_samples(&plane.u, chord(y), |x| {
+                traction_samples(&plane.u, chord(y, false), |x| {
                     solution.surface_traction_over_p0(x, y)
                 }),
-                chord(y),
+                chord(y, false),
                 Vec::new(),
             ),
             Section::Yz { x } => (
-                traction_samples(&plane.u, chord(x), |y| {
+                traction_samples(&plane.u, chord(x, true), |y| {
                     solution.surface_traction_over_p0(x, y)
                 }),
-                chord(x),
+                chord(x, true),
                 Vec::new(),
             ),
-            Section::Xy { .. } => (Vec::new(), 0.0, vec![contact_outline(scene.contact.kind)]),
+            Section::Xy { .. } => (
+                Vec::new(),
+                0.0,
+                vec![contact_outline(scene.contact.kind, aspect)],
+            ),
         };
         panels.push(Panel {
             subtitle: subtitle(scene, panel, &plane),
@@ -81,6 +103,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
                         .collect()
                 })
                 .collect(),
+            scale: None,
         });
     }
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
@@ -149,13 +172,13 @@ fn traction_samples(
 }
 
 /// The contact's outline on a plane parallel to the surface, in units of a: the circle
-/// `r = a` of a point contact, or the two edges `x = ±a` of a line contact.
-fn contact_outline(kind: ContactKind) -> Vec<(f64, f64)> {
+/// `r = a` of a point contact or the ellipse with semi-axes 1 and `aspect` of an elliptical one.
+fn contact_outline(kind: ContactKind, aspect: f64) -> Vec<(f64, f64)> {
     match kind {
-        ContactKind::Point => (0..=OUTLINE_SEGMENTS)
+        ContactKind::Point | ContactKind::Elliptical => (0..=OUTLINE_SEGMENTS)
             .map(|i| {
                 let angle = std::f64::consts::TAU * i as f64 / OUTLINE_SEGMENTS as f64;
-                (angle.cos(), angle.sin())
+                (angle.cos(), aspect * angle.sin())
             })
             .collect(),
         // Unreachable from scenes (a line contact has only xz sections), kept total.
@@ -207,7 +230,11 @@ fn title(scene: &Scene) -> String {
     let mut title = format!("{}{}", quantity[..1].to_uppercase(), &quantity[1..]);
     match scene.contact.kind {
         ContactKind::Line => title.push_str(" — Hertz line contact"),
+        ContactKind::Point if scene.contact.tangential.is_some() => {
+            title.push_str(" — sphere in partial slip (Cattaneo–Mindlin)")
+        }
         ContactKind::Point => title.push_str(" — Hertz point contact (sphere)"),
+        ContactKind::Elliptical => title.push_str(" — elliptical Hertz contact"),
     }
     title
 }
@@ -225,7 +252,9 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
         (Method::ClosedForm, _) if mixed => parts.push("closed form".into()),
         (Method::ClosedForm, _) => {}
         (Method::Numerical, ContactKind::Line) => parts.push(format!("numerical, {cells} strips")),
-        (Method::Numerical, ContactKind::Point) => parts.push(format!("numerical, {cells}² cells")),
+        (Method::Numerical, ContactKind::Point | ContactKind::Elliptical) => {
+            parts.push(format!("numerical, {cells}² cells"))
+        }
         (Method::Difference, _) => parts.push("numerical − closed form".into()),
     }
     parts.extend(section_label(scene, plane));
@@ -262,6 +291,7 @@ mod tests {
             traction: Vec::new(),
             half_width: 1.0,
             outlines: Vec::new(),
+            scale: None,
         }
     }
 

@@ -20,11 +20,18 @@ fn mm(m: f64) -> String {
 fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let contact = &scene.contact;
     writeln!(out, "scene {}", scene.name)?;
-    let point = contact.kind == ContactKind::Point;
-    let geometry = if point {
-        "point (two spheres or a sphere on a flat, contact circle of radius a)"
-    } else {
-        "line (two cylinders, plane strain)"
+    let point = contact.kind != ContactKind::Line;
+    let geometry = match contact.kind {
+        ContactKind::Point if contact.tangential.is_some() => {
+            "point (a sphere in Cattaneo-Mindlin partial slip, contact circle of radius a)"
+        }
+        ContactKind::Point => {
+            "point (two spheres or a sphere on a flat, contact circle of radius a)"
+        }
+        ContactKind::Elliptical => {
+            "elliptical (two principal radii per body; semi-axes a along x, b along y)"
+        }
+        ContactKind::Line => "line (two cylinders, plane strain)",
     };
     writeln!(
         out,
@@ -113,7 +120,9 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                 )?;
             }
             for (name, body) in [("body 1", d.body1), ("body 2", d.body2)] {
-                let radius = if body.radius_m.is_infinite() {
+                let radius = if body.radius_m.is_nan() {
+                    "(principal radii in the scene)".to_string()
+                } else if body.radius_m.is_infinite() {
                     "flat".to_string()
                 } else {
                     mm(body.radius_m)
@@ -126,6 +135,52 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                 )?;
             }
             match d.hertz {
+                Hertz::Elliptical(ellipse) => {
+                    let c = ellipse.curvature;
+                    writeln!(
+                        out,
+                        "load                         W  = {:.4} N",
+                        ellipse.load_n
+                    )?;
+                    writeln!(
+                        out,
+                        "effective modulus            E* = {:.3} GPa",
+                        ellipse.effective_modulus_pa * 1e-9
+                    )?;
+                    writeln!(
+                        out,
+                        "relative radii               Rx = {}, Ry = {} (gap x²/(2Rx) + y²/(2Ry))",
+                        mm(0.5 / c.half_curvature_x_per_m),
+                        mm(0.5 / c.half_curvature_y_per_m)
+                    )?;
+                    writeln!(
+                        out,
+                        "semi-axes                    a  = {:.3} µm along x, b = {:.3} µm along y (b/a = {:.4})",
+                        ellipse.semi_axis_x_m * 1e6,
+                        ellipse.semi_axis_y_m * 1e6,
+                        ellipse.semi_axis_y_m / ellipse.semi_axis_x_m
+                    )?;
+                    writeln!(
+                        out,
+                        "eccentricity                 e  = {:.5}",
+                        ellipse.eccentricity
+                    )?;
+                    writeln!(
+                        out,
+                        "peak pressure                p0 = {:.2} MPa",
+                        ellipse.p0_pa * 1e-6
+                    )?;
+                    writeln!(
+                        out,
+                        "mean pressure                pm = {:.2} MPa (= 2 p0 / 3)",
+                        ellipse.mean_pressure_pa * 1e-6
+                    )?;
+                    writeln!(
+                        out,
+                        "approach                     δ  = {:.4} µm",
+                        ellipse.approach_m * 1e6
+                    )?;
+                }
                 Hertz::Line(line) => {
                     writeln!(
                         out,
@@ -191,7 +246,10 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             }
         }
     }
-    let solution = contact.solution(contact.friction, contact.poisson);
+    let Some(solution) = contact.solution(contact.friction, contact.poisson) else {
+        writeln!(out, "stress maxima and yield check: not computed by `hertz` for a contact without a closed form (elliptical or partial slip); render the scene (method = \"numerical\") to see the field")?;
+        return Ok(());
+    };
     let maxima = StressMaxima::of(&solution);
     let dimensional = contact.scale.is_some();
     let describe = |e: &Extreme| {
@@ -283,7 +341,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             let load = d.hertz.load_for_peak_pressure(p0_yield);
             let load_text = match d.hertz {
                 Hertz::Line(_) => format!("P_Y = {:.3} kN/m", load * 1e-3),
-                Hertz::Point(_) => format!("W_Y = {load:.3} N"),
+                Hertz::Point(_) | Hertz::Elliptical(_) => format!("W_Y = {load:.3} N"),
             };
             writeln!(
                 out,

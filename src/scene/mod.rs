@@ -8,12 +8,14 @@ pub mod units;
 
 use std::path::Path;
 
+use crate::contact::elliptic::{CurvedBody, EllipticalContact, PrincipalRadii};
 use crate::contact::gear::SpurGearPair;
 use crate::contact::material::{self, yield_strength_from_hardness_pa, Material};
+use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::{Body, LineContact, PointContact};
 use crate::field::{Axis, Plane, Section};
 use crate::render::{ColorMap, Levels, Mark};
-use crate::solution::point_numerical::NumericalError;
+use crate::solution::point_numerical::{NumericalError, PointTractions};
 use crate::solution::Solution;
 use crate::stress::{Quantity, QuantityKind};
 use raw::{NumberOrText, RawBody, RawContact, RawFigure, RawScene};
@@ -58,6 +60,9 @@ pub enum ContactKind {
     Line,
     /// Two spheres, or a sphere on a flat: an axisymmetric Hertz contact of radius a.
     Point,
+    /// Bodies with two principal radii each (a ball in a groove, crowned teeth): an elliptical
+    /// Hertz contact with semi-axes a along x and b along y. Numerical method only.
+    Elliptical,
 }
 
 /// The Hertz solution of a dimensional contact.
@@ -65,6 +70,7 @@ pub enum ContactKind {
 pub enum Hertz {
     Line(LineContact),
     Point(PointContact),
+    Elliptical(EllipticalContact),
 }
 
 impl Hertz {
@@ -73,6 +79,7 @@ impl Hertz {
         match self {
             Hertz::Line(line) => line.half_width_m,
             Hertz::Point(point) => point.radius_m,
+            Hertz::Elliptical(ellipse) => ellipse.semi_axis_x_m,
         }
     }
 
@@ -80,6 +87,7 @@ impl Hertz {
         match self {
             Hertz::Line(line) => line.p0_pa,
             Hertz::Point(point) => point.p0_pa,
+            Hertz::Elliptical(ellipse) => ellipse.p0_pa,
         }
     }
 
@@ -89,6 +97,7 @@ impl Hertz {
         match self {
             Hertz::Line(line) => line.load_for_peak_pressure(p0_pa),
             Hertz::Point(point) => point.load_for_peak_pressure(p0_pa),
+            Hertz::Elliptical(ellipse) => ellipse.load_for_peak_pressure(p0_pa),
         }
     }
 }
@@ -130,6 +139,10 @@ pub struct Contact {
     /// Bodies, materials and load, when the scene gives them (then `scale` follows from them).
     pub dimensional: Option<Dimensional>,
     pub yield_strength: Option<YieldStrength>,
+    /// Semi-axis along y over that along x: 1 for a sphere, b/a for an elliptical contact.
+    pub aspect: f64,
+    /// Cattaneo-Mindlin partial slip of a sphere: the tangential force over mu P, in (0, 1].
+    pub tangential: Option<f64>,
 }
 
 impl Contact {
@@ -143,10 +156,13 @@ impl Contact {
         self.scale.map_or(1.0, |s| s.p0_pa)
     }
 
-    pub fn solution(&self, friction: f64, poisson: f64) -> Solution {
-        match self.kind {
-            ContactKind::Line => Solution::LineHertz { friction, poisson },
-            ContactKind::Point => Solution::SphereHertz { friction, poisson },
+    /// The closed-form solution, if the contact has one (not an elliptical contact, nor
+    /// partial slip).
+    pub fn solution(&self, friction: f64, poisson: f64) -> Option<Solution> {
+        match (self.kind, self.tangential) {
+            (ContactKind::Line, _) => Some(Solution::LineHertz { friction, poisson }),
+            (ContactKind::Point, None) => Some(Solution::SphereHertz { friction, poisson }),
+            (ContactKind::Point, Some(_)) | (ContactKind::Elliptical, _) => None,
         }
     }
 }
@@ -187,7 +203,8 @@ pub struct Numerical {
     /// Cells per side of the square traction grid (point contact), or uniform strips across
     /// the contact (line contact).
     pub cells: usize,
-    /// The traction grid covers `[-extent, extent]²` in units of a (point contact).
+    /// The traction grid covers `extent` semi-axes each way: `[-e a, e a] x [-e b, e b]`
+    /// (point and elliptical contacts; `b = a` for a sphere).
     pub extent_over_a: f64,
 }
 
@@ -406,7 +423,12 @@ impl Scene {
     /// depths at the cell spacing), so that whole layers come from one DC-FFT each; an xz or
     /// yz section then lies on the nearest row or column of centres.
     pub fn plane(&self, panel: &PanelSpec) -> Plane {
-        if self.contact.kind == ContactKind::Point && panel.method != Method::ClosedForm {
+        let numerical = panel.method != Method::ClosedForm
+            || self
+                .contact
+                .solution(panel.friction, panel.poisson)
+                .is_none();
+        if self.contact.kind != ContactKind::Line && numerical {
             return self.grid_plane(panel);
         }
         let unit_over_a = self.length_unit_over_a();
@@ -432,24 +454,27 @@ impl Scene {
             cells,
             extent_over_a: extent,
         } = self.numerical;
-        let h = 2.0 * extent / cells as f64;
-        let centre = |i: usize| -extent + (i as f64 + 0.5) * h;
-        let index = |u: f64| {
-            ((u + extent) / h - 0.5)
-                .round()
-                .clamp(0.0, (cells - 1) as f64) as usize
+        // The grid covers `extent` semi-axes each way: [-e, e] x [-e b/a, e b/a].
+        let stretch = if self.contact.kind == ContactKind::Elliptical {
+            self.contact.aspect
+        } else {
+            1.0
         };
-        // Centres within [lo, hi] (at least one).
-        let centres = |(lo, hi): (f64, f64)| {
-            let first = ((lo * unit_over_a + extent) / h - 0.5 - 1e-9)
+        let last_cell = (cells - 1) as f64;
+        let x_axis = GridAxis::new(extent, cells);
+        let y_axis = GridAxis::new(extent * stretch, cells);
+        // Centres within the figure range [lo, hi] (figure units; at least one).
+        let centres = |axis: &GridAxis, (lo, hi): (f64, f64)| {
+            let first = ((lo * unit_over_a + axis.extent) / axis.cell - 0.5 - 1e-9)
                 .ceil()
-                .clamp(0.0, (cells - 1) as f64) as usize;
-            let last = ((hi * unit_over_a + extent) / h - 0.5 + 1e-9)
+                .clamp(0.0, last_cell) as usize;
+            let last = ((hi * unit_over_a + axis.extent) / axis.cell - 0.5 + 1e-9)
                 .floor()
-                .clamp(first as f64, (cells - 1) as f64) as usize;
-            Axis::new(centre(first), centre(last), last - first + 1)
+                .clamp(first as f64, last_cell) as usize;
+            Axis::new(axis.centre(first), axis.centre(last), last - first + 1)
         };
-        let depths = |(lo, hi): (f64, f64)| {
+        // Depths at the horizontal spacing, so that map cells are square.
+        let depths = |(lo, hi): (f64, f64), h: f64| {
             let (lo, hi) = (lo * unit_over_a, hi * unit_over_a);
             let count = ((hi - lo) / h + 1e-9).floor() as usize + 1;
             Axis::new(lo, lo + (count - 1) as f64 * h, count.max(1))
@@ -458,22 +483,22 @@ impl Scene {
         let (section, u, v) = match self.figure.section {
             SectionKind::Xz => (
                 Section::Xz {
-                    y: centre(index(at)),
+                    y: y_axis.nearest_centre(at),
                 },
-                centres(self.figure.horizontal),
-                depths(self.figure.vertical),
+                centres(&x_axis, self.figure.horizontal),
+                depths(self.figure.vertical, x_axis.cell),
             ),
             SectionKind::Yz => (
                 Section::Yz {
-                    x: centre(index(at)),
+                    x: x_axis.nearest_centre(at),
                 },
-                centres(self.figure.horizontal),
-                depths(self.figure.vertical),
+                centres(&y_axis, self.figure.horizontal),
+                depths(self.figure.vertical, y_axis.cell),
             ),
             SectionKind::Xy => (
                 Section::Xy { z: at },
-                centres(self.figure.horizontal),
-                centres(self.figure.vertical),
+                centres(&x_axis, self.figure.horizontal),
+                centres(&y_axis, self.figure.vertical),
             ),
         };
         Plane { section, u, v }
@@ -481,26 +506,67 @@ impl Scene {
 
     /// The stress solution of a panel (for a difference panel, the numerical one).
     pub fn solution(&self, panel: &PanelSpec) -> Result<Solution, NumericalError> {
-        match panel.method {
-            Method::ClosedForm => Ok(self.closed_form(panel)),
-            Method::Numerical | Method::Difference => {
-                let (mu, nu) = (panel.friction, panel.poisson);
-                match self.contact.kind {
-                    ContactKind::Line => Ok(Solution::line_numerical(mu, nu, self.numerical.cells)),
-                    ContactKind::Point => Solution::sphere_numerical(
-                        mu,
-                        nu,
-                        self.numerical.cells,
-                        self.numerical.extent_over_a,
-                    ),
-                }
+        let (mu, nu) = (panel.friction, panel.poisson);
+        if panel.method == Method::ClosedForm {
+            if let Some(solution) = self.contact.solution(mu, nu) {
+                return Ok(solution);
             }
+        }
+        let Numerical {
+            cells,
+            extent_over_a: extent,
+        } = self.numerical;
+        let tractions = match (self.contact.kind, self.contact.tangential) {
+            (ContactKind::Line, _) => return Ok(Solution::line_numerical(mu, nu, cells)),
+            (ContactKind::Point, None) => PointTractions::hertz_sphere(cells, extent, mu, nu)?,
+            (ContactKind::Point, Some(ratio)) => {
+                // Validated: 0 < ratio <= 1 and mu > 0.
+                let slip = CattaneoMindlin::new(mu, ratio)?;
+                PointTractions::mindlin_sphere(cells, extent, &slip, nu)?
+            }
+            (ContactKind::Elliptical, _) => {
+                PointTractions::hertz_ellipse(cells, extent, self.contact.aspect, mu, nu)?
+            }
+        };
+        Ok(Solution::PointNumerical {
+            tractions: std::sync::Arc::new(tractions),
+            friction: mu,
+            poisson: nu,
+        })
+    }
+
+    /// The closed-form solution of a panel's contact, if it has one (validated for every panel
+    /// drawn in closed form or as a difference).
+    pub fn closed_form(&self, panel: &PanelSpec) -> Option<Solution> {
+        self.contact.solution(panel.friction, panel.poisson)
+    }
+}
+
+/// One axis of a numerical traction grid: `cells` cells over `[-extent, extent]` (units of a).
+struct GridAxis {
+    extent: f64,
+    cell: f64,
+    cells: usize,
+}
+
+impl GridAxis {
+    fn new(extent: f64, cells: usize) -> Self {
+        Self {
+            extent,
+            cell: 2.0 * extent / cells as f64,
+            cells,
         }
     }
 
-    /// The closed-form solution of a panel's contact.
-    pub fn closed_form(&self, panel: &PanelSpec) -> Solution {
-        self.contact.solution(panel.friction, panel.poisson)
+    fn centre(&self, index: usize) -> f64 {
+        -self.extent + (index as f64 + 0.5) * self.cell
+    }
+
+    fn nearest_centre(&self, u: f64) -> f64 {
+        let index = ((u + self.extent) / self.cell - 0.5)
+            .round()
+            .clamp(0.0, (self.cells - 1) as f64);
+        self.centre(index as usize)
     }
 }
 
@@ -603,6 +669,31 @@ impl Validator<'_> {
                 subtitle: None,
             });
         }
+        if contact.solution(0.0, contact.poisson).is_none() {
+            let key = raw
+                .panels
+                .iter()
+                .position(|p| p.method.is_some())
+                .map_or_else(
+                    || "contact.method".to_string(),
+                    |i| format!("panel[{i}].method"),
+                );
+            if let Some(panel) = panels.iter().find(|p| p.method != Method::Numerical) {
+                let what = if contact.kind == ContactKind::Elliptical {
+                    "an elliptical contact"
+                } else {
+                    "partial slip"
+                };
+                return Err(self.error(
+                    &key,
+                    format!(
+                        "{what} has no closed form here, so `{}` cannot be drawn",
+                        panel.method.key()
+                    ),
+                    Some("use method = \"numerical\""),
+                ));
+            }
+        }
         if panels.len() > 6 {
             return Err(self.error(
                 "panel",
@@ -666,7 +757,7 @@ impl Validator<'_> {
                 8..=100_000,
                 "strips across the contact: 400 is accurate to about 1e-4 p0 at z >= 0.1a",
             ),
-            ContactKind::Point => (
+            ContactKind::Point | ContactKind::Elliptical => (
                 255,
                 8..=2048,
                 "cells per side of the traction grid: 255 over ±2a is accurate to about 0.2 % p0",
@@ -684,7 +775,6 @@ impl Validator<'_> {
             }
         };
         let extent_over_a = match (raw.extent, contact.kind) {
-            (None, _) => 2.0,
             (Some(_), ContactKind::Line) => {
                 return Err(self.error(
                     "numerical.extent",
@@ -692,12 +782,13 @@ impl Validator<'_> {
                     Some("remove it; set the number of strips with numerical.cells"),
                 ))
             }
-            (Some(e), ContactKind::Point) if (1.0..=20.0).contains(&e) => e,
-            (Some(e), ContactKind::Point) => {
+            (None, _) => 2.0,
+            (Some(e), _) if (1.0..=20.0).contains(&e) => e,
+            (Some(e), _) => {
                 return Err(self.error(
                     "numerical.extent",
-                    format!("must lie in 1..=20 (units of a), got {e}"),
-                    Some("the grid must cover the contact, -a..a; 2 leaves room around it"),
+                    format!("must lie in 1..=20 semi-axes, got {e}"),
+                    Some("the grid must cover the contact, -a..a (and -b..b across); 2 leaves room around it"),
                 ))
             }
         };
@@ -780,15 +871,41 @@ impl Validator<'_> {
         let kind = match raw.kind.as_str() {
             "line" => ContactKind::Line,
             "point" => ContactKind::Point,
+            "elliptical" => ContactKind::Elliptical,
             other => {
                 return Err(self.error(
                     "contact.kind",
                     format!("unknown contact kind `{other}`"),
-                    Some("use \"line\" (cylinders, plane strain) or \"point\" (spheres)"),
+                    Some("use \"line\" (cylinders, plane strain), \"point\" (spheres) or \"elliptical\" (two principal radii per body)"),
                 ))
             }
         };
-        if kind == ContactKind::Point && raw.gears.is_some() {
+        let tangential = match (raw.tangential, kind) {
+            (None, _) => None,
+            (Some(_), ContactKind::Line | ContactKind::Elliptical) => {
+                return Err(self.error(
+                    "contact.tangential",
+                    "partial slip (Cattaneo-Mindlin) is available for a sphere only",
+                    Some("use kind = \"point\", or remove it for full sliding (q = mu p)"),
+                ))
+            }
+            (Some(ratio), ContactKind::Point) if ratio > 0.0 && ratio <= 1.0 => Some(ratio),
+            (Some(ratio), ContactKind::Point) => {
+                return Err(self.error(
+                    "contact.tangential",
+                    format!("the tangential force over mu P must lie in (0, 1], got {ratio}"),
+                    Some("1 is full sliding; 0.5 leaves a stick circle of radius 0.79a"),
+                ))
+            }
+        };
+        if tangential.is_some() && raw.friction.is_none_or(|mu| mu <= 0.0) {
+            return Err(self.error(
+                "contact.friction",
+                "partial slip needs a friction coefficient > 0",
+                Some("add e.g. friction = 0.5"),
+            ));
+        }
+        if kind != ContactKind::Line && raw.gears.is_some() {
             return Err(self.error(
                 "contact.gears",
                 "spur gears make a line contact",
@@ -796,6 +913,24 @@ impl Validator<'_> {
             ));
         }
         let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
+        let mut aspect = match (raw.aspect, kind) {
+            (None, _) => 1.0,
+            (Some(_), ContactKind::Line | ContactKind::Point) => {
+                return Err(self.error(
+                    "contact.aspect",
+                    "the aspect ratio b/a is for an elliptical contact",
+                    Some("use kind = \"elliptical\", or remove it"),
+                ))
+            }
+            (Some(ratio), ContactKind::Elliptical) if (0.01..=100.0).contains(&ratio) => ratio,
+            (Some(ratio), ContactKind::Elliptical) => {
+                return Err(self.error(
+                    "contact.aspect",
+                    format!("the semi-axis ratio b/a must lie in 0.01..=100, got {ratio}"),
+                    Some("b is the semi-axis along y, a along x (the sliding direction)"),
+                ))
+            }
+        };
         let dimensional_keys =
             raw.load.is_some() || raw.body1.is_some() || raw.body2.is_some() || raw.gears.is_some();
         let yield_strength = self.yield_strength(raw)?;
@@ -813,6 +948,13 @@ impl Validator<'_> {
             ));
         }
         if !dimensional_keys {
+            if kind == ContactKind::Elliptical && raw.aspect.is_none() {
+                return Err(self.error(
+                    "contact.aspect",
+                    "a normalised elliptical contact needs its semi-axis ratio b/a",
+                    Some("add e.g. aspect = 0.3 (b along y over a along x), or give load and bodies with radius_x and radius_y"),
+                ));
+            }
             let poisson = self.poisson("contact.poisson", raw.poisson.unwrap_or(0.3))?;
             return Ok(Contact {
                 kind,
@@ -821,7 +963,16 @@ impl Validator<'_> {
                 scale,
                 dimensional: None,
                 yield_strength,
+                aspect,
+                tangential,
             });
+        }
+        if raw.aspect.is_some() {
+            return Err(self.error(
+                "contact.aspect",
+                "the semi-axis ratio follows from the load and the bodies",
+                Some("remove it, or remove the load and bodies for a normalised scene"),
+            ));
         }
         if raw.a.is_some() || raw.p0.is_some() {
             let key = if raw.a.is_some() {
@@ -847,7 +998,7 @@ impl Validator<'_> {
                 Dimension::ForcePerLength,
                 "add e.g. load = \"40 kN/m\" (force per unit length for a line contact)",
             ),
-            ContactKind::Point => (
+            ContactKind::Point | ContactKind::Elliptical => (
                 Dimension::Force,
                 "add e.g. load = \"500 N\" (the total force for a point contact)",
             ),
@@ -862,16 +1013,11 @@ impl Validator<'_> {
         let load = self.positive("contact.load", load_text, load_dimension)?;
         let gears = raw.gears.as_ref().map(|g| self.gears(g)).transpose()?;
         let empty = RawBody::default();
-        let mut body1 = self.body(
-            "contact.body1",
-            raw.body1.as_ref().unwrap_or(&empty),
-            gears.is_some(),
-        )?;
-        let mut body2 = self.body(
-            "contact.body2",
-            raw.body2.as_ref().unwrap_or(&empty),
-            gears.is_some(),
-        )?;
+        let elliptical = kind == ContactKind::Elliptical;
+        let raw1 = raw.body1.as_ref().unwrap_or(&empty);
+        let raw2 = raw.body2.as_ref().unwrap_or(&empty);
+        let mut body1 = self.body("contact.body1", raw1, gears.is_some(), elliptical)?;
+        let mut body2 = self.body("contact.body2", raw2, gears.is_some(), elliptical)?;
         if let Some(pair) = gears {
             body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
             body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
@@ -885,6 +1031,19 @@ impl Validator<'_> {
             }
             ContactKind::Point => {
                 Hertz::Point(PointContact::new(&body1, &body2, load).map_err(radius_error)?)
+            }
+            ContactKind::Elliptical => {
+                let curved = |radii, body: &Body| CurvedBody {
+                    radii,
+                    material: body.material,
+                };
+                let first = curved(self.principal_radii("contact.body1", raw1)?, &body1);
+                let second = curved(self.principal_radii("contact.body2", raw2)?, &body2);
+                let ellipse = EllipticalContact::new(&first, &second, 0.0, load).map_err(|e| {
+                    self.error("contact.body2.radius_y", e.to_string(), Some("each principal relative curvature must be positive: a concave radius must be larger in size than the convex one's in the same plane"))
+                })?;
+                aspect = ellipse.semi_axis_y_m / ellipse.semi_axis_x_m;
+                Hertz::Elliptical(ellipse)
             }
         };
         Ok(Contact {
@@ -902,6 +1061,8 @@ impl Validator<'_> {
                 hertz,
             }),
             yield_strength,
+            aspect,
+            tangential,
         })
     }
 
@@ -1005,8 +1166,62 @@ impl Validator<'_> {
         })
     }
 
-    fn body(&self, key: &str, raw: &RawBody, radius_from_gears: bool) -> Result<Body, SceneError> {
-        let radius_m = match (&raw.radius, radius_from_gears) {
+    /// A radius: `"flat"` or a non-zero length.
+    fn radius(&self, key: &str, text: &str) -> Result<f64, SceneError> {
+        match text.trim() {
+            "flat" | "inf" | "infinite" => Ok(f64::INFINITY),
+            _ => {
+                let r =
+                    units::parse(text, Dimension::Length).map_err(|m| self.error(key, m, None))?;
+                if !r.is_finite() || r == 0.0 {
+                    return Err(self.error(
+                        key,
+                        format!("must be non-zero and finite, got `{text}`"),
+                        Some("use \"flat\" for a plane"),
+                    ));
+                }
+                Ok(r)
+            }
+        }
+    }
+
+    /// The principal radii of a body in the xz and yz planes (elliptical contact): `radius_x`
+    /// and `radius_y`, each defaulting to `radius`.
+    fn principal_radii(&self, key: &str, raw: &RawBody) -> Result<PrincipalRadii, SceneError> {
+        let one = |name: &str, own: &Option<String>| {
+            match (own, &raw.radius) {
+            (Some(text), _) => self.radius(&format!("{key}.{name}"), text),
+            (None, Some(text)) => self.radius(&format!("{key}.radius"), text),
+            (None, None) => Err(self.error(&format!("{key}.{name}"), "missing radius", Some("give radius_x (in the xz plane, along the sliding direction) and radius_y (in the yz plane), or radius for both; \"flat\" for a plane, negative for a concave surface"))),
+        }
+        };
+        Ok(PrincipalRadii {
+            first_m: one("radius_x", &raw.radius_x)?,
+            second_m: one("radius_y", &raw.radius_y)?,
+        })
+    }
+
+    fn body(
+        &self,
+        key: &str,
+        raw: &RawBody,
+        radius_from_gears: bool,
+        elliptical: bool,
+    ) -> Result<Body, SceneError> {
+        if !elliptical {
+            if let Some(name) = [("radius_x", &raw.radius_x), ("radius_y", &raw.radius_y)]
+                .iter()
+                .find_map(|(n, v)| v.is_some().then_some(*n))
+            {
+                return Err(self.error(
+                    &format!("{key}.{name}"),
+                    "two principal radii make an elliptical contact",
+                    Some("use kind = \"elliptical\", or give one radius"),
+                ));
+            }
+        }
+        let radius_m = match (&raw.radius, radius_from_gears || elliptical) {
+            (_, true) if elliptical => f64::NAN,
             (Some(_), true) => {
                 return Err(self.error(&format!("{key}.radius"), "the radius follows from [contact.gears]", Some("remove it, or remove [contact.gears]")))
             }
@@ -1014,16 +1229,7 @@ impl Validator<'_> {
             (None, false) => {
                 return Err(self.error(&format!("{key}.radius"), "missing radius", Some("e.g. radius = \"20 mm\", radius = \"flat\", or a negative radius for a concave body")))
             }
-            (Some(text), false) => match text.trim() {
-                "flat" | "inf" | "infinite" => f64::INFINITY,
-                _ => {
-                    let r = units::parse(text, Dimension::Length).map_err(|m| self.error(&format!("{key}.radius"), m, None))?;
-                    if !r.is_finite() || r == 0.0 {
-                        return Err(self.error(&format!("{key}.radius"), format!("must be non-zero and finite, got `{text}`"), Some("use \"flat\" for a plane")));
-                    }
-                    r
-                }
-            },
+            (Some(text), false) => self.radius(&format!("{key}.radius"), text)?,
         };
         let preset = match &raw.material {
             Some(name) => Some(material::preset(name).ok_or_else(|| {
@@ -1186,6 +1392,9 @@ impl Validator<'_> {
         let default_horizontal = match (contact.kind, section) {
             (ContactKind::Line, _) => 2.5,
             (ContactKind::Point, _) => 2.0,
+            // Twice the semi-axis along the horizontal axis (b = aspect a along y).
+            (ContactKind::Elliptical, SectionKind::Yz) => 2.0 * contact.aspect,
+            (ContactKind::Elliptical, _) => 2.0,
         };
         let horizontal = self.range(
             &format!("figure.{horizontal_name}"),
@@ -1196,9 +1405,10 @@ impl Validator<'_> {
             ),
         )?;
         let default_vertical = if section.vertical_is_depth() {
-            (0.0, 2.0 * a_in_unit)
+            (0.0, 2.0 * a_in_unit * contact.aspect.min(1.0))
         } else {
-            (-2.0 * a_in_unit, 2.0 * a_in_unit)
+            let b = 2.0 * a_in_unit * contact.aspect;
+            (-b, b)
         };
         let vertical = self.range(
             &format!("figure.{vertical_name}"),

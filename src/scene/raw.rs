@@ -33,12 +33,19 @@ pub struct RawContact {
     pub gears: Option<RawGears>,
     pub yield_strength: Option<String>,
     pub hardness: Option<String>,
+    /// Elliptical contact given normalised: semi-axis along y over that along x.
+    pub aspect: Option<f64>,
+    /// Partial slip of a sphere: the tangential force as a fraction of mu P.
+    pub tangential: Option<f64>,
 }
 
 #[derive(Debug, Default, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawBody {
     pub radius: Option<String>,
+    /// Principal radii in the xz and yz planes (elliptical contact).
+    pub radius_x: Option<String>,
+    pub radius_y: Option<String>,
     pub material: Option<String>,
     pub modulus: Option<String>,
     pub poisson: Option<f64>,
@@ -89,7 +96,7 @@ pub struct RawPanel {
 pub struct RawNumerical {
     /// Cells per side of the square traction grid (point contact) or strips (line contact).
     pub cells: Option<i64>,
-    /// Half-size of the traction grid in units of a (point contact).
+    /// Half-size of the traction grid in semi-axes (point and elliptical contacts).
     pub extent: Option<f64>,
 }
 

@@ -11,12 +11,14 @@ use super::dcfft::{DcFft, DcFftError, TractionGrid, TractionGridError};
 use crate::stress::Stress;
 
 /// Errors building a numerical point contact.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, PartialEq, thiserror::Error)]
 pub enum NumericalError {
     #[error(transparent)]
     Grid(#[from] TractionGridError),
     #[error(transparent)]
     Fft(#[from] DcFftError),
+    #[error(transparent)]
+    Contact(#[from] crate::contact::ContactError),
 }
 
 /// Gauss–Legendre nodes and weights on `[-1, 1]`, 4 points (exact for cubics).
@@ -61,7 +63,8 @@ impl PointTractions {
     }
 
     /// Tractions given as functions of `(x, y)` (units of a and p0) on `cells x cells` cells
-    /// covering `[-extent, extent]²`: each cell carries the mean of each function over it
+    /// covering `[-extent, extent] x [-extent stretch, extent stretch]` (`stretch = b/a` keeps
+    /// the resolution relative to each semi-axis of an elliptical contact): each cell carries the mean of each function over it
     /// (Gauss–Legendre, 4 x 4 points; cells where the pressure's support ends inside the cell,
     /// at the contact edge where the pressure has its square-root edge, are split into 4 x 4
     /// sub-cells), so the discretisation keeps the load up to that quadrature.
@@ -70,18 +73,22 @@ impl PointTractions {
     pub fn from_functions(
         cells: usize,
         extent: f64,
+        stretch: f64,
         poisson: f64,
         pressure: impl Fn(f64, f64) -> f64,
         shear_x: Option<&dyn Fn(f64, f64) -> f64>,
     ) -> Result<Self, NumericalError> {
         let n = cells.max(1);
         let h = 2.0 * extent / n as f64;
-        let origin = -extent;
+        let k = h * stretch;
+        let (origin_x, origin_y) = (-extent, -extent * stretch);
+        // Mean over the cell [x0, x0 + w] x [y0, y0 + w stretch].
         let mean = |f: &dyn Fn(f64, f64) -> f64, x0: f64, y0: f64, w: f64| {
             let mut sum = 0.0;
             for (u, wu) in GAUSS_4 {
                 for (v, wv) in GAUSS_4 {
-                    sum += wu * wv * f(x0 + 0.5 * w * (1.0 + u), y0 + 0.5 * w * (1.0 + v));
+                    sum +=
+                        wu * wv * f(x0 + 0.5 * w * (1.0 + u), y0 + 0.5 * w * stretch * (1.0 + v));
                 }
             }
             sum / 4.0
@@ -89,18 +96,19 @@ impl PointTractions {
         // Whether the pressure's support boundary crosses the cell: its corners and centre
         // disagree on being loaded.
         let crossed = |x0: f64, y0: f64| {
-            let loaded = [(0.0, 0.0), (h, 0.0), (0.0, h), (h, h), (0.5 * h, 0.5 * h)]
+            let loaded = [(0.0, 0.0), (h, 0.0), (0.0, k), (h, k), (0.5 * h, 0.5 * k)]
                 .map(|(dx, dy)| pressure(x0 + dx, y0 + dy) > 0.0);
             loaded.iter().any(|l| *l) && !loaded.iter().all(|l| *l)
         };
         let cell_mean = |f: &dyn Fn(f64, f64) -> f64, row: usize, column: usize| {
-            let (x0, y0) = (origin + column as f64 * h, origin + row as f64 * h);
+            let (x0, y0) = (origin_x + column as f64 * h, origin_y + row as f64 * k);
             if crossed(x0, y0) {
                 let sub = h / 4.0;
                 let mut sum = 0.0;
                 for i in 0..4 {
                     for j in 0..4 {
-                        sum += mean(f, x0 + i as f64 * sub, y0 + j as f64 * sub, sub);
+                        let y = y0 + j as f64 * sub * stretch;
+                        sum += mean(f, x0 + i as f64 * sub, y, sub);
                     }
                 }
                 sum / 16.0
@@ -111,7 +119,7 @@ impl PointTractions {
         let p = Array2::from_shape_fn((n, n), |(row, column)| cell_mean(&pressure, row, column));
         let q = shear_x
             .map(|f| Array2::from_shape_fn((n, n), |(row, column)| cell_mean(f, row, column)));
-        let grid = TractionGrid::new([origin, origin], [h, h], Some(p), q, None)?;
+        let grid = TractionGrid::new([origin_x, origin_y], [h, k], Some(p), q, None)?;
         Self::new(grid, poisson)
     }
 
@@ -126,11 +134,11 @@ impl PointTractions {
         let pressure = |x: f64, y: f64| (1.0 - x * x - y * y).max(0.0).sqrt();
         let shear = move |x: f64, y: f64| friction * pressure(x, y);
         let shear: Option<&dyn Fn(f64, f64) -> f64> = (friction != 0.0).then_some(&shear);
-        Self::from_functions(cells, extent, poisson, pressure, shear)
+        Self::from_functions(cells, extent, 1.0, poisson, pressure, shear)
     }
 
     /// A sliding elliptical Hertz contact with semi-axes `a` along x (the unit of length) and
-    /// `b = b_over_a a` along y: `p = p0 sqrt(1 - x²/a² - y²/b²)`, `q = mu p` in +x
+    /// `b = b_over_a a` along y, on a grid covering `extent` semi-axes each way: `p = p0 sqrt(1 - x²/a² - y²/b²)`, `q = mu p` in +x
     /// ([`crate::contact::elliptic::pressure_over_p0`]; Johnson 1985, §4.2).
     pub fn hertz_ellipse(
         cells: usize,
@@ -143,7 +151,7 @@ impl PointTractions {
             move |x: f64, y: f64| crate::contact::elliptic::pressure_over_p0(x, y / b_over_a);
         let shear = move |x: f64, y: f64| friction * pressure(x, y);
         let shear: Option<&dyn Fn(f64, f64) -> f64> = (friction != 0.0).then_some(&shear);
-        Self::from_functions(cells, extent, poisson, pressure, shear)
+        Self::from_functions(cells, extent, b_over_a, poisson, pressure, shear)
     }
 
     /// Cattaneo–Mindlin partial slip of a Hertz sphere under a tangential force
@@ -158,7 +166,7 @@ impl PointTractions {
     ) -> Result<Self, NumericalError> {
         let pressure = |x: f64, y: f64| (1.0 - x * x - y * y).max(0.0).sqrt();
         let shear = |x: f64, y: f64| slip.traction_over_p0(x, y);
-        Self::from_functions(cells, extent, poisson, pressure, Some(&shear))
+        Self::from_functions(cells, extent, 1.0, poisson, pressure, Some(&shear))
     }
 
     pub fn grid(&self) -> &TractionGrid {
@@ -258,6 +266,7 @@ mod tests {
         let third = 2.0 * std::f64::consts::PI / 3.0;
         // Elliptical Hertz: P = (2/3) pi a b p0 (Johnson 1985 §4.2), here with b = 0.4a.
         let ellipse = PointTractions::hertz_ellipse(81, 1.2, 0.4, 0.25, 0.3).expect("grid");
+        assert!((ellipse.grid().cell()[1] / ellipse.grid().cell()[0] - 0.4).abs() < 1e-15);
         let (p, q) = resultants(&ellipse);
         assert!((p / (0.4 * third) - 1.0).abs() < 1e-4, "{p}");
         assert!((q / (0.25 * 0.4 * third) - 1.0).abs() < 1e-4, "{q}");

@@ -444,11 +444,13 @@ fn probe_rejects_bad_input() {
                 "point",
                 "--method",
                 "numerical",
+                "--extent",
+                "0.5",
                 "--points",
                 "-",
             ],
             "0,0,1\n",
-            &["numerical", "not yet supported for point contact"],
+            &["--extent must lie in 1..=20", "cover the contact"],
         ),
         (
             &[

@@ -39,7 +39,10 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         }
         // Rounding noise around an exact zero (a free surface, a symmetry plane) would draw
         // a tangle of zero contours: values below 1e-12 of the largest are zero.
-        let largest = values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let largest = values
+            .iter()
+            .filter(|v| v.is_finite())
+            .fold(0.0f64, |m, v| m.max(v.abs()));
         let values = values.mapv(|v| {
             if v.abs() <= 1e-12 * largest {
                 0.0

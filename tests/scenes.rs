@@ -193,3 +193,73 @@ fn ball_on_flat_is_drawn_across_the_sliding_direction_in_mm() {
         .fold(0.0, f64::max);
     assert!((peak / p0_mpa - 1.0).abs() < 1e-6, "{peak} of {p0_mpa}");
 }
+
+#[test]
+fn sphere_cross_check_difference_is_small_below_the_surface() {
+    let (_, built) = load("sphere_cross_check");
+    assert_eq!(built.panels.len(), 3);
+    let (exact_max, ..) = panel_max(&built.panels[0]);
+    let (numerical_max, ..) = panel_max(&built.panels[1]);
+    // 127 cells over [-2a, 2a]: von Mises maxima agree to 0.5 % of p0.
+    assert!(
+        (exact_max - numerical_max).abs() < 5e-3,
+        "{exact_max} vs {numerical_max}"
+    );
+    // The difference panel is numerical - closed form on the grid's cell centres; below
+    // z = 0.05a it stays under 1 % of p0, while the surface rows carry the largest error.
+    let difference = &built.panels[2];
+    let mut below = 0.0f64;
+    let mut surface = 0.0f64;
+    for ((iz, _), &v) in difference.values.indexed_iter() {
+        if difference.z.value(iz) >= 0.05 {
+            below = below.max(v.abs());
+        } else {
+            surface = surface.max(v.abs());
+        }
+    }
+    assert!(below < 1e-2, "{below}");
+    assert!(surface > below, "{surface} vs {below}");
+}
+
+#[test]
+fn line_cross_check_agrees_below_the_surface() {
+    let (_, built) = load("line_cross_check");
+    let difference = &built.panels[2];
+    let below = difference
+        .values
+        .indexed_iter()
+        .filter(|((iz, _), _)| difference.z.value(*iz) >= 0.1)
+        .fold(0.0f64, |m, (_, v)| m.max(v.abs()));
+    // 100 strips: about 1e-3 p0 at z >= 0.1a (the probe test measures the convergence).
+    assert!(below < 3e-3, "{below}");
+}
+
+#[test]
+fn elongated_ellipse_lies_between_line_and_sphere() {
+    let (scene, built) = load("ellipse_bearing_groove");
+    assert!(scene.contact.aspect > 8.0, "{}", scene.contact.aspect);
+    let p0_mpa = scene.contact.p0_pa() * 1e-6;
+    let a_mm = scene.contact.half_width_m() * 1e3;
+    let (max, _, z) = panel_max(&built.panels[0]);
+    // A long ellipse approaches plane strain: von Mises max 0.557 p0 at 0.70a for the line
+    // contact, 0.620 p0 at 0.48a for the sphere (Johnson 1985 §6.2, nu = 0.3).
+    let ratio = max / p0_mpa;
+    assert!(ratio > 0.557 && ratio < 0.62, "{ratio}");
+    assert!(z / a_mm > 0.48 && z / a_mm < 0.79, "{}", z / a_mm);
+}
+
+#[test]
+fn partial_slip_tension_lies_between_no_traction_and_sliding() {
+    let (scene, built) = load("sphere_partial_slip");
+    let (max, x, _) = panel_max(&built.panels[0]);
+    let mu = scene.contact.friction;
+    let nu = scene.contact.poisson;
+    // Closed-form surface tension at the trailing edge of the sliding sphere, computed here
+    // from the crate's Hamilton solution, and the frictionless ring (1 - 2 nu)/3.
+    let sliding = stressfield::solution::sphere_hertz::stress_over_p0(-1.0, 0.0, 0.0, mu, nu).xx;
+    assert!(
+        max < sliding && max > (1.0 - 2.0 * nu) / 3.0,
+        "{max} vs {sliding}"
+    );
+    assert!(x < -0.9, "the tension peak is behind the contact: x = {x}");
+}

@@ -1,4 +1,4 @@
-//! The colour scale shared by all panels of a figure and by its colour bar.
+//! The colour scale shared by a group of panels (see `scales.rs`) and by its colour bar.
 
 use colorous::Gradient;
 

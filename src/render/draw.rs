@@ -4,9 +4,10 @@
 use plotters::prelude::{DrawingBackend, RGBAColor};
 
 use super::font;
-use super::layout::{Layout, PanelLayout};
+use super::layout::{ColorbarLayout, Layout, PanelLayout};
 use super::paint::{Align, Painter};
 use super::plan::{marker_radius, PanelPlan, Plan, TextBox};
+use super::scales::ScaleGroup;
 use super::{Figure, Panel, RenderError};
 
 const INK: RGBAColor = RGBAColor(0, 0, 0, 1.0);
@@ -92,7 +93,9 @@ pub(crate) fn draw<DB: DrawingBackend>(
             TEXT,
         )?;
     }
-    colorbar(painter, plan, &pens)?;
+    for (group, bar) in plan.groups.iter().zip(&layout.colorbars) {
+        colorbar(painter, layout, group, bar, &pens)?;
+    }
     painter.text(
         &figure.title,
         (layout.title_x, layout.title_baseline),
@@ -293,21 +296,23 @@ fn legend<DB: DrawingBackend>(
     Ok(())
 }
 
-/// The colour bar with its frame, ticks, contour levels and label.
+/// A group's colour bar with its frame, ticks, contour levels and label.
 fn colorbar<DB: DrawingBackend>(
     painter: &mut Painter<'_, DB>,
-    plan: &Plan<'_>,
+    layout: &Layout,
+    group: &ScaleGroup<'_>,
+    bar_layout: &ColorbarLayout,
     pens: &Pens,
 ) -> Result<(), RenderError> {
-    let layout = &plan.layout;
     let s = layout.sizes.tick;
     let cap = font::cap_height(s);
-    let bar = layout.colorbar;
+    let bar = bar_layout.rect;
+    let scale = &group.scale;
     let (left, top) = (f64::from(bar.x) - 0.5, f64::from(bar.y) - 0.5);
     let (right, bottom) = (f64::from(bar.right()) + 0.5, f64::from(bar.bottom()) + 0.5);
-    let y_of = |v: f64| f64::from(bar.bottom()) - plan.scale.fraction(v) * f64::from(bar.h);
-    for level in &plan.levels {
-        if *level > plan.scale.lo && *level < plan.scale.hi {
+    let y_of = |v: f64| f64::from(bar.bottom()) - scale.fraction(v) * f64::from(bar.h);
+    for level in &group.levels {
+        if *level > scale.lo && *level < scale.hi {
             let y = y_of(*level);
             painter.stroke(&[(left, y), (right, y)], pens.contour, CONTOUR)?;
         }
@@ -320,12 +325,7 @@ fn colorbar<DB: DrawingBackend>(
         (left, top),
     ];
     painter.stroke(&frame, pens.axis, INK)?;
-    for (value, label) in layout
-        .colorbar_ticks
-        .values
-        .iter()
-        .zip(&layout.colorbar_ticks.labels)
-    {
+    for (value, label) in bar_layout.ticks.values.iter().zip(&bar_layout.ticks.labels) {
         let y = y_of(*value).clamp(top, bottom);
         painter.stroke(
             &[(right, y), (right + layout.tick_length, y)],
@@ -336,16 +336,6 @@ fn colorbar<DB: DrawingBackend>(
         painter.text(label, (start, y + cap / 2.0), s, Align::Left, false, TEXT)?;
     }
     let size = layout.sizes.label;
-    let at = (
-        rotated_baseline(layout.colorbar_label_x, size),
-        bar.center().1,
-    );
-    painter.text(
-        &plan.figure.value_label,
-        at,
-        size,
-        Align::Center,
-        true,
-        TEXT,
-    )
+    let at = (rotated_baseline(bar_layout.label_x, size), bar.center().1);
+    painter.text(group.value_label, at, size, Align::Center, true, TEXT)
 }

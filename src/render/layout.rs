@@ -1,12 +1,15 @@
-//! Where everything goes: text sizes, the rectangles of maps, traction strips and colour bar,
+//! Where everything goes: text sizes, the rectangles of maps, traction strips and colour bars,
 //! and the ticks of every axis, in pixels of the output image.
 //!
 //! The maps have equal aspect ratio: a map is `panel_width_px` wide and as tall as the depth
 //! range needs at the same scale. Everything else is measured around them with the embedded
 //! font, so nothing overlaps and nothing is clipped.
+//!
+//! A colour bar follows the last panel of each group of panels sharing a colour scale; a panel
+//! after a bar starts clear of the bar's label, with room for its own axis numbers.
 
-use super::colormap::ColorScale;
 use super::font;
+use super::scales::ScaleGroup;
 use super::ticks::{choose_ticks, Ticks};
 use super::{Figure, Panel, RenderError};
 
@@ -119,6 +122,22 @@ impl PanelLayout {
     }
 }
 
+/// A colour bar: the bar, its ticks (on its right) and the centre of its rotated label.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct ColorbarLayout {
+    pub rect: Rect,
+    pub ticks: Ticks,
+    /// Horizontal centre of the rotated caption right of the tick labels.
+    pub label_x: f64,
+}
+
+impl ColorbarLayout {
+    /// Right edge of the caption's line, in pixels.
+    pub fn right(&self, label_line: f64) -> f64 {
+        self.label_x + label_line / 2.0
+    }
+}
+
 /// The whole figure.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Layout {
@@ -133,9 +152,10 @@ pub(crate) struct Layout {
     pub title_x: f64,
     pub subtitle_baseline: f64,
     pub panels: Vec<PanelLayout>,
-    pub colorbar: Rect,
-    pub colorbar_ticks: Ticks,
-    pub colorbar_label_x: f64,
+    /// One per scale group, in the order of the groups.
+    pub colorbars: Vec<ColorbarLayout>,
+    /// Height of a line of label text (a rotated label's width).
+    pub label_line: f64,
     /// Whether the panels have traction strips above their maps.
     pub has_strips: bool,
     /// Traction axis range shared by all strips.
@@ -150,11 +170,20 @@ impl Layout {
         f64::from(panel.strip.bottom()) - f * f64::from(panel.strip.h)
     }
 
-    /// Lays out `figure` with its colour `scale`.
-    pub fn new(figure: &Figure, scale: &ColorScale) -> Result<Self, RenderError> {
+    /// Lays out `figure` with its scale `groups` (which cover its panels in order).
+    pub fn new(figure: &Figure, groups: &[ScaleGroup<'_>]) -> Result<Self, RenderError> {
         let count = figure.panels.len();
         if count == 0 {
             return Err(RenderError::NoPanels);
+        }
+        let covered = groups.iter().try_fold(0, |next, g| {
+            (g.panels.start == next && g.panels.end > next).then_some(g.panels.end)
+        });
+        if covered != Some(count) {
+            return Err(RenderError::Draw(format!(
+                "the colour-scale groups {:?} do not cover the {count} panels in order",
+                groups.iter().map(|g| g.panels.clone()).collect::<Vec<_>>()
+            )));
         }
         let map_w = f64::from(figure.panel_width_px.max(16));
         let map_heights: Vec<f64> = figure
@@ -173,7 +202,9 @@ impl Layout {
             )));
         }
         let tallest = map_heights.iter().copied().fold(0.0, f64::max);
-        let sizes = TextSizes::for_width(count as f64 * map_w + 250.0);
+        // Each colour bar after the first widens the figure by about as much as the first.
+        let extra_bars = (groups.len() - 1) as f64;
+        let sizes = TextSizes::for_width(count as f64 * map_w + 250.0 + 150.0 * extra_bars);
         let s = sizes.tick;
         let margin = (0.8 * s).round();
         let tick_length = (0.4 * s).round();
@@ -207,39 +238,51 @@ impl Layout {
         let gutter = |widest: f64| tick_length + tick_gap + widest;
         let rotated_column = label_line + 0.5 * s;
 
-        // Horizontal positions of the maps.
         let subtitle_widths: Vec<f64> = figure
             .panels
             .iter()
             .map(|p| font::text_width(&p.subtitle, sizes.subtitle))
             .collect::<Result<_, _>>()?;
+        // Horizontal positions of the maps and of the colour bar after each group.
+        let colorbar_w = (0.9 * s).clamp(12.0, 30.0).round();
         let mut map_x = Vec::with_capacity(count);
+        let mut colorbars: Vec<ColorbarLayout> = Vec::with_capacity(groups.len());
         let mut x = margin + rotated_column + gutter(axes[0].2);
         // The first subtitle must not start left of the margin.
         x = x.max(margin + subtitle_widths[0] / 2.0 - map_w / 2.0);
-        map_x.push(x.round());
-        for i in 1..count {
-            let mut gap = 1.3 * s + gutter(axes[i].2);
-            // Neighbouring subtitles keep a gap of one tick size.
-            let needed = (subtitle_widths[i - 1] + subtitle_widths[i]) / 2.0 + s - map_w;
-            gap = gap.max(needed);
-            x += map_w + gap;
-            map_x.push(x.round());
+        let mut maps_right = x + map_w;
+        for group in groups {
+            for i in group.panels.clone() {
+                if i > 0 {
+                    let mut gap = 1.3 * s + gutter(axes[i].2);
+                    // Neighbouring subtitles keep a gap of one tick size.
+                    let needed = (subtitle_widths[i - 1] + subtitle_widths[i]) / 2.0 + s - map_w;
+                    gap = gap.max(needed);
+                    x += map_w + gap;
+                    // After a colour bar: a wider gap than between panels, so that the bar reads
+                    // as part of the group on its left, then this panel's axis numbers.
+                    if let Some(bar) = colorbars.last().filter(|_| i == group.panels.start) {
+                        x = x.max(bar.right(label_line) + 2.5 * s + gutter(axes[i].2));
+                    }
+                }
+                map_x.push(x.round());
+                maps_right = x + map_w;
+            }
+            let bar_x = (maps_right + 1.2 * s).round();
+            let bar_h = map_heights[group.panels.start];
+            let ticks = vertical_ticks(group.scale.lo, group.scale.hi, bar_h, tick_cap);
+            let text = widest(&ticks.labels, s)?;
+            let label_x =
+                bar_x + colorbar_w + tick_length + tick_gap + text + 0.5 * s + label_line / 2.0;
+            // Moved down to the maps (and right with the title) below.
+            colorbars.push(ColorbarLayout {
+                rect: rect(bar_x, 0.0, colorbar_w, bar_h),
+                ticks,
+                label_x,
+            });
         }
-        let maps_right = x + map_w;
-        let colorbar_x = (maps_right + 1.2 * s).round();
-        let colorbar_w = (0.9 * s).clamp(12.0, 30.0).round();
-        let colorbar_h = map_heights[0];
-        let colorbar_ticks = vertical_ticks(scale.lo, scale.hi, colorbar_h, tick_cap);
-        let colorbar_text = widest(&colorbar_ticks.labels, s)?;
-        let colorbar_label_x = colorbar_x
-            + colorbar_w
-            + tick_length
-            + tick_gap
-            + colorbar_text
-            + 0.5 * s
-            + label_line / 2.0;
-        let mut width = colorbar_label_x + label_line / 2.0 + margin;
+        let last_bar = colorbars.last().ok_or(RenderError::NoPanels)?;
+        let mut width = last_bar.right(label_line) + margin;
         let last_subtitle_right = map_x[count - 1] + map_w / 2.0 + subtitle_widths[count - 1] / 2.0;
         width = width.max(last_subtitle_right + margin);
 
@@ -319,9 +362,19 @@ impl Layout {
             title_x,
             subtitle_baseline,
             panels,
-            colorbar: rect(colorbar_x + shift, map_y, colorbar_w, colorbar_h),
-            colorbar_ticks,
-            colorbar_label_x: colorbar_label_x + shift,
+            colorbars: colorbars
+                .into_iter()
+                .map(|bar| ColorbarLayout {
+                    rect: Rect {
+                        x: bar.rect.x + shift as i32,
+                        y: map_y.round() as i32,
+                        ..bar.rect
+                    },
+                    label_x: bar.label_x + shift,
+                    ..bar
+                })
+                .collect(),
+            label_line,
             has_strips,
             traction_min: t_min,
             traction_max: t_max,

@@ -1,4 +1,4 @@
-//! Figures: filled maps with labelled contours, colour bar, depth-down axes, surface traction
+//! Figures: filled maps with labelled contours, colour bars, depth-down axes, surface traction
 //! profiles and the extreme marked. Renderers draw into memory and return pixels or SVG text;
 //! the caller writes files.
 //!
@@ -12,6 +12,7 @@ mod font;
 mod layout;
 mod paint;
 mod plan;
+mod scales;
 mod svg;
 mod ticks;
 
@@ -22,13 +23,16 @@ use crate::field::Axis;
 use paint::{draw_error, Painter, Target};
 use plan::Plan;
 
-/// One figure: one or more panels side by side sharing a colour scale and a colour bar.
+/// One figure: one or more panels side by side. By default they share one colour scale and one
+/// colour bar at the right; a panel with its own [`PanelScale`] gets its own (see
+/// [`Panel::scale`]).
 #[derive(Clone, Debug)]
 pub struct Figure {
     /// Headline, e.g. "Hertz line contact (plane strain), ν = 0.3".
     pub title: String,
     pub panels: Vec<Panel>,
-    /// Colour-bar caption with its unit, e.g. "τ1 / p0" or "σvM (MPa)".
+    /// Colour-bar caption with its unit, e.g. "τ1 / p0" or "σvM (MPa)", of the shared scale
+    /// (panels whose `scale` is `None`).
     pub value_label: String,
     /// e.g. "x/a" or "x (mm)".
     pub x_label: String,
@@ -40,8 +44,11 @@ pub struct Figure {
     pub vertical_is_depth: bool,
     /// Caption of the traction profile axis, e.g. "p, q / p0" or "p, q (MPa)".
     pub traction_label: String,
+    /// Colour map of the shared scale.
     pub colormap: ColorMap,
+    /// Contour levels of the shared scale.
     pub levels: Levels,
+    /// Extremes marked in every panel, each panel its own.
     pub mark: Mark,
     /// Width in pixels of each panel's plotting area (the height follows from equal aspect).
     pub panel_width_px: u32,
@@ -68,6 +75,26 @@ pub struct Panel {
     /// Polylines drawn as thin dashed guides over the map (display units), e.g. the contact
     /// outline on a plane parallel to the surface.
     pub outlines: Vec<Vec<(f64, f64)>>,
+    /// The colour scale of this panel: `None` for the figure's shared one
+    /// (`Figure::value_label`, `colormap`, `levels`).
+    ///
+    /// Consecutive panels with the same scale (compared after resolving `None`) form a group:
+    /// one colour range spanning the group's values, one set of contour levels, and one colour
+    /// bar right after the group's last panel, e.g. `[A][B] |bar 1|  [A − B] |bar 2|` for a
+    /// closed form and a numerical result on one scale and their difference on its own. Panels
+    /// with the same scale that are not neighbours form separate groups, each with its own
+    /// range and bar.
+    pub scale: Option<PanelScale>,
+}
+
+/// A colour scale of its own for a panel (see [`Panel::scale`]), e.g. for a difference between
+/// two panels, much smaller than either and signed: `ColorMap::Diverging` centres it on zero.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PanelScale {
+    /// Colour-bar caption with its unit, e.g. "Δτ1 / p0".
+    pub value_label: String,
+    pub colormap: ColorMap,
+    pub levels: Levels,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -148,7 +175,9 @@ pub enum RenderError {
 }
 
 /// Draws `figure` into an RGB image: one row of panels (traction strip above each map, depth
-/// downwards, equal aspect), labelled contours, the extremes marked, one colour bar.
+/// downwards, equal aspect), labelled contours, the extremes marked, and one colour bar after
+/// each group of panels sharing a scale (one for the whole figure unless panels have their
+/// own [`PanelScale`]).
 ///
 /// The image size follows from `panel_width_px`, the axis extents and the text; the font is the
 /// embedded DejaVu Sans, so the pixels do not depend on the machine.
@@ -167,7 +196,7 @@ pub fn render_png(figure: &Figure) -> Result<image::RgbImage, RenderError> {
 }
 
 /// Draws `figure` as an SVG document, the same drawing as [`render_png`]: lines and text are
-/// vector elements, the heat maps and the colour bar embedded PNG images at the PNG's
+/// vector elements, the heat maps and the colour bars embedded PNG images at the PNG's
 /// resolution.
 pub fn render_svg(figure: &Figure) -> Result<String, RenderError> {
     let plan = Plan::new(figure)?;
@@ -225,6 +254,7 @@ mod tests {
             traction,
             half_width: 1.0,
             outlines: Vec::new(),
+            scale: None,
         }
     }
 
@@ -272,14 +302,18 @@ mod tests {
         assert_eq!(a.map.y, b.map.y);
         assert!(a.map.right() < b.map.x);
         assert!(a.strip.bottom() < a.map.y && a.strip.x == a.map.x && a.strip.w == a.map.w);
-        assert!(b.map.right() < layout.colorbar.x);
+        assert!(b.map.right() < layout.colorbars[0].rect.x);
         assert!(layout.title_baseline < layout.subtitle_baseline);
         assert!(layout.subtitle_baseline < f64::from(a.strip.y));
     }
 
     #[test]
     fn margins_stay_white() {
-        let image = render_png(&figure(Levels::Count(6), Mark::Both)).expect("render");
+        assert_margins_white(&render_png(&figure(Levels::Count(6), Mark::Both)).expect("render"));
+        assert_margins_white(&render_png(&compared(Mark::Both)).expect("render"));
+    }
+
+    fn assert_margins_white(image: &image::RgbImage) {
         let (w, h) = image.dimensions();
         let white = |x: u32, y: u32| image.get_pixel(x, y).0 == [255, 255, 255];
         for x in 0..w {
@@ -431,6 +465,258 @@ mod tests {
             Err(RenderError::Draw(message)) => assert!(message.contains("panel 2"), "{message}"),
             other => panic!("expected an error, got {:?}", other.map(|s| s.len())),
         }
+    }
+
+    /// The difference of [`compared`]: small and signed, 0 at x = 0.
+    fn difference(x: f64, z: f64) -> f64 {
+        0.01 * x * (1.0 + 0.2 * z)
+    }
+
+    /// The scale of the difference panel of [`compared`].
+    fn difference_scale() -> PanelScale {
+        PanelScale {
+            value_label: "Δτ1 / p0".to_string(),
+            colormap: ColorMap::Diverging,
+            levels: Levels::Count(4),
+        }
+    }
+
+    /// "closed form" and "numerical" on the shared scale, then "their difference" on its own.
+    fn compared(mark: Mark) -> Figure {
+        let exact = bump(-0.5);
+        let numerical = move |x, z| exact(x, z) + difference(x, z);
+        Figure {
+            panels: vec![
+                panel("closed form", bump(-0.5)),
+                panel("numerical", numerical),
+                Panel {
+                    scale: Some(difference_scale()),
+                    ..panel("numerical − closed form", difference)
+                },
+            ],
+            ..figure(Levels::Count(6), mark)
+        }
+    }
+
+    /// Whether the columns `x0..x1` are white over the rows `y0..y1`.
+    fn white_columns(image: &image::RgbImage, x0: i32, x1: i32, y0: i32, y1: i32) -> bool {
+        (x0..x1).all(|x| (y0..y1).all(|y| image.get_pixel(x as u32, y as u32).0 == [255; 3]))
+    }
+
+    #[test]
+    fn a_panel_with_its_own_scale_gets_its_own_group_and_colour_bar() {
+        let figure = compared(Mark::Max);
+        let plan = Plan::new(&figure).expect("plan");
+        let ranges: Vec<_> = plan.groups.iter().map(|g| g.panels.clone()).collect();
+        assert_eq!(ranges, vec![0..2, 2..3]);
+        assert_eq!(plan.layout.colorbars.len(), 2);
+        assert_eq!(plan.groups[0].value_label, "τ1 / p0");
+        assert_eq!(plan.groups[1].value_label, "Δτ1 / p0");
+
+        // Each group's scale spans its own values: the shared one both bumps (the numerical
+        // one dips a little below 0 at the left), the difference one ±max |difference|.
+        let shared = &plan.groups[0].scale;
+        let over = |panels: &[Panel], f: fn(f64, f64) -> f64, start: f64| {
+            panels
+                .iter()
+                .flat_map(|p| p.values.iter())
+                .fold(start, |m, v| f(m, *v))
+        };
+        let shared_panels = &figure.panels[..2];
+        assert_eq!(shared.lo, over(shared_panels, f64::min, f64::MAX));
+        assert_eq!(shared.hi, over(shared_panels, f64::max, f64::MIN));
+        assert!(shared.lo < 0.0 && shared.hi >= 1.0, "{shared:?}");
+        let own = &plan.groups[1].scale;
+        let largest = difference(2.0, 1.6);
+        assert!((own.hi - largest).abs() < 1e-12, "{} vs {largest}", own.hi);
+        assert_eq!(own.lo, -own.hi);
+
+        // Contour levels per group, within the group's range.
+        let levels = &plan.groups[0].levels;
+        assert!(levels.len() >= 4 && levels.iter().all(|l| *l > shared.lo && *l < shared.hi));
+        assert!(levels.iter().any(|l| *l > 0.5), "{levels:?}");
+        let small = &plan.groups[1].levels;
+        assert!(
+            small.len() >= 2 && small.iter().all(|l| l.abs() < largest),
+            "{small:?}"
+        );
+
+        // The difference bar is labelled in its own, small numbers.
+        let ticks = &plan.layout.colorbars[1].ticks;
+        assert!(ticks.values.contains(&0.0), "{ticks:?}");
+        assert!(
+            ticks.values.iter().all(|v| v.abs() <= own.hi + 1e-12),
+            "{ticks:?}"
+        );
+    }
+
+    #[test]
+    fn each_colour_bar_follows_its_group_and_clears_the_next_panel() {
+        let figure = compared(Mark::Both);
+        let image = render_png(&figure).expect("render");
+        let plan = Plan::new(&figure).expect("plan");
+        let layout = &plan.layout;
+        assert_eq!(image.dimensions(), (layout.width, layout.height));
+        let [a, b, c] = [0, 1, 2].map(|i| &layout.panels[i]);
+        let [first, second] = [0, 1].map(|i| &layout.colorbars[i]);
+
+        // Equal aspect, one row, the bars beside the maps of their group.
+        for panel in [a, b, c] {
+            assert_eq!((panel.map.w, panel.map.h), (300, 120));
+            assert_eq!(panel.map.y, a.map.y);
+        }
+        for bar in [first, second] {
+            assert_eq!((bar.rect.y, bar.rect.h), (a.map.y, a.map.h));
+        }
+        assert!(a.map.right() < b.map.x);
+        assert!(b.map.right() < first.rect.x);
+        assert!(first.right(layout.label_line) < f64::from(c.map.x));
+        assert!(c.map.right() < second.rect.x);
+        // A gap between panels of one group is narrower than the one after a bar.
+        let within = b.map.x - a.map.right();
+        let across = c.map.x - b.map.right();
+        assert!(across > within + first.rect.w, "{within} vs {across}");
+
+        // Between the first bar's caption and the next panel's axis numbers (strip and map),
+        // nothing: white columns, at least a tick size of them; so no rotated axis label
+        // either (only the first panel has one).
+        let s = layout.sizes.tick;
+        let (top, bottom) = (c.strip.y - 10, c.map.bottom() + 10);
+        let numbers = c
+            .z_ticks
+            .labels
+            .iter()
+            .chain(&c.strip_ticks.labels)
+            .map(|l| font::text_width(l, s).expect("width"))
+            .fold(0.0, f64::max);
+        let numbers_left = f64::from(c.map.x) - layout.tick_length - layout.tick_gap - numbers;
+        let caption_right = first.right(layout.label_line);
+        assert!(
+            numbers_left - caption_right >= s,
+            "{caption_right} .. {numbers_left}"
+        );
+        let band = (caption_right.ceil() as i32, numbers_left.floor() as i32 - 1);
+        assert!(
+            white_columns(&image, band.0, band.1, top, bottom),
+            "{band:?}"
+        );
+        // The caption and the numbers are there, just outside the band.
+        let ink_left = !white_columns(&image, first.rect.right(), band.0, top, bottom);
+        let ink_right = !white_columns(&image, band.1, c.map.x - 1, top, bottom);
+        assert!(ink_left && ink_right);
+
+        // The bars show their maps: the shared one viridis (yellow on top), the other
+        // diverging (red on top, white in the middle, blue at the bottom).
+        let top_of = |bar: &layout::ColorbarLayout, j: i32| {
+            image
+                .get_pixel(
+                    (bar.rect.x + bar.rect.w / 2) as u32,
+                    (bar.rect.y + j) as u32,
+                )
+                .0
+        };
+        let yellow = top_of(first, 2);
+        let t = 1.0 - 2.5 / f64::from(first.rect.h);
+        assert!(
+            close(yellow, colormap::eval(ColorMap::Viridis, t), 3),
+            "{yellow:?}"
+        );
+        let [r, g, bl] = top_of(second, 2);
+        assert!(r > 80 && r > g + 40 && r > bl + 40, "{:?}", [r, g, bl]);
+        // (Just above the middle: the level 0 is marked across it.)
+        let middle = top_of(second, second.rect.h / 2 - 3);
+        assert!(middle.iter().all(|v| *v > 225), "{middle:?}");
+    }
+
+    #[test]
+    fn the_difference_map_has_the_colour_of_its_own_scale() {
+        let figure = Figure {
+            levels: Levels::Values(Vec::new()),
+            panels: compared(Mark::None)
+                .panels
+                .into_iter()
+                .map(|p| Panel {
+                    scale: p.scale.map(|s| PanelScale {
+                        levels: Levels::Values(Vec::new()),
+                        ..s
+                    }),
+                    ..p
+                })
+                .collect(),
+            ..compared(Mark::None)
+        };
+        let image = render_png(&figure).expect("render");
+        let plan = Plan::new(&figure).expect("plan");
+        let layout = &plan.layout.panels[2];
+        let largest = difference(2.0, 1.6);
+        for (fx, fz) in [(0.1, 0.5), (0.3, 0.2), (0.7, 0.8), (0.95, 0.5)] {
+            let px = layout.map.x + (fx * f64::from(layout.map.w)) as i32;
+            let pz = layout.map.y + (fz * f64::from(layout.map.h)) as i32;
+            let x = layout.data_x(f64::from(px) + 0.5);
+            let z = layout.data_z(f64::from(pz) + 0.5);
+            let t = 0.5 + 0.5 * difference(x, z) / largest;
+            let expected = expected_colour(ColorMap::Diverging, t);
+            let got = image.get_pixel(px as u32, pz as u32).0;
+            assert!(
+                close(got, expected, 6),
+                "({x:.2}, {z:.2}): {got:?} vs {expected:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn panels_group_by_their_resolved_scale() {
+        let base = compared(Mark::Max);
+        let groups = |panels: Vec<Panel>| -> Vec<std::ops::Range<usize>> {
+            let figure = Figure {
+                panels,
+                ..base.clone()
+            };
+            let plan = Plan::new(&figure).expect("plan");
+            assert_eq!(plan.layout.colorbars.len(), plan.groups.len());
+            plan.groups.iter().map(|g| g.panels.clone()).collect()
+        };
+        let [a, b, d] = [0, 1, 2].map(|i| base.panels[i].clone());
+        // All shared: one group, as before panels had scales.
+        assert_eq!(groups(vec![a.clone(), b.clone()]), vec![0..2]);
+        // A panel's own scale equal to the shared one is the shared one.
+        let same = Panel {
+            scale: Some(PanelScale {
+                value_label: base.value_label.clone(),
+                colormap: base.colormap,
+                levels: base.levels.clone(),
+            }),
+            ..b.clone()
+        };
+        assert_eq!(groups(vec![a.clone(), same]), vec![0..2]);
+        // Only neighbours group: the shared scale on both sides of a difference is two groups.
+        assert_eq!(
+            groups(vec![a.clone(), d.clone(), b.clone()]),
+            vec![0..1, 1..2, 2..3]
+        );
+        assert_eq!(groups(vec![d.clone(), d, a, b]), vec![0..2, 2..4]);
+    }
+
+    #[test]
+    fn svg_shows_every_colour_bar() {
+        let figure = compared(Mark::Max);
+        let svg = render_svg(&figure).expect("svg");
+        let image = render_png(&figure).expect("png");
+        assert!(svg.contains(&format!(
+            "width=\"{}\" height=\"{}\"",
+            image.width(),
+            image.height()
+        )));
+        for text in [
+            "τ1 / p0",
+            "Δτ1 / p0",
+            "numerical − closed form",
+            "closed form",
+        ] {
+            assert!(svg.contains(text), "no `{text}` in the SVG");
+        }
+        // Three heat maps and two colour bars.
+        assert_eq!(svg.matches("<image").count(), 5);
     }
 
     #[test]

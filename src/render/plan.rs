@@ -2,12 +2,11 @@
 //! colour-bar bitmaps, contour polylines, the placed contour and extreme labels, and the
 //! traction curves. PNG and SVG then draw the same plan.
 
-use ndarray::ArrayView2;
-
 use super::colormap::{self, ColorScale};
-use super::contour::{choose_levels, isolines_on};
+use super::contour::isolines_on;
 use super::font;
 use super::layout::{Layout, PanelLayout, Rect, TextSizes};
+use super::scales::{scale_groups, ScaleGroup};
 use super::ticks::{format_fixed, format_levels, format_significant};
 use super::{ColorMap, Figure, Mark, Panel, RenderError};
 
@@ -109,10 +108,11 @@ pub(crate) struct PanelPlan {
 pub(crate) struct Plan<'f> {
     pub figure: &'f Figure,
     pub layout: Layout,
-    pub scale: ColorScale,
-    pub levels: Vec<f64>,
+    /// The panels sharing each colour scale, left to right; `layout.colorbars` in the same
+    /// order.
+    pub groups: Vec<ScaleGroup<'f>>,
     pub panels: Vec<PanelPlan>,
-    /// Bitmaps under everything else: one heat map per panel, then the colour bar.
+    /// Bitmaps under everything else: one heat map per panel, then one colour bar per group.
     pub images: Vec<(Rect, Vec<u8>)>,
 }
 
@@ -125,24 +125,34 @@ impl<'f> Plan<'f> {
             check_panel(i, panel)?;
         }
         font::ensure_registered()?;
-        let (min, max) = finite_range(figure.panels.iter().map(|p| p.values.view()));
-        let scale = ColorScale::for_range(figure.colormap, min, max);
-        let layout = Layout::new(figure, &scale)?;
-        let skip_zero = figure.colormap != ColorMap::Diverging && min >= 0.0;
-        let levels = choose_levels(&figure.levels, min, max, skip_zero);
+        let groups = scale_groups(figure);
+        let layout = Layout::new(figure, &groups)?;
 
-        let mut images = Vec::with_capacity(figure.panels.len() + 1);
+        let mut images = Vec::with_capacity(figure.panels.len() + groups.len());
         let mut panels = Vec::with_capacity(figure.panels.len());
-        for (panel, panel_layout) in figure.panels.iter().zip(&layout.panels) {
-            images.push((panel_layout.map, heat_map(panel, panel_layout, &scale)));
-            panels.push(plan_panel(figure, panel, panel_layout, &layout, &levels)?);
+        for group in &groups {
+            for index in group.panels.clone() {
+                let (panel, panel_layout) = (&figure.panels[index], &layout.panels[index]);
+                images.push((
+                    panel_layout.map,
+                    heat_map(panel, panel_layout, &group.scale),
+                ));
+                panels.push(plan_panel(
+                    figure,
+                    panel,
+                    panel_layout,
+                    &layout,
+                    &group.levels,
+                )?);
+            }
         }
-        images.push((layout.colorbar, colorbar(figure.colormap, layout.colorbar)));
+        for (group, bar) in groups.iter().zip(&layout.colorbars) {
+            images.push((bar.rect, colorbar(group.colormap, bar.rect)));
+        }
         Ok(Self {
             figure,
             layout,
-            scale,
-            levels,
+            groups,
             panels,
             images,
         })
@@ -168,17 +178,6 @@ fn check_panel(index: usize, panel: &Panel) -> Result<(), RenderError> {
         )));
     }
     Ok(())
-}
-
-/// Smallest and largest finite value over all maps (0, 0 when there is none).
-fn finite_range<'a>(maps: impl Iterator<Item = ArrayView2<'a, f64>>) -> (f64, f64) {
-    let mut range: Option<(f64, f64)> = None;
-    for map in maps {
-        for &v in map.iter().filter(|v| v.is_finite()) {
-            range = Some(range.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))));
-        }
-    }
-    range.unwrap_or((0.0, 0.0))
 }
 
 /// Bilinear value of a panel's field at data coordinates (clamped to the grid).

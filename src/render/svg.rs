@@ -1,4 +1,4 @@
-//! Finishing the SVG text that plotters wrote: the heat maps and the colour bar go in as
+//! Finishing the SVG text that plotters wrote: the heat maps and the colour bars go in as
 //! embedded PNG images under everything else, and text asks for DejaVu Sans first.
 //!
 //! plotters' SVG backend can only blit bitmaps pixel by pixel (one `<rect>` each) unless its

@@ -116,24 +116,55 @@ pub(crate) struct Ticks {
 }
 
 /// The densest nice ticks over `[lo, hi]` that `fits` accepts (it sees the step and the
-/// labels). Falls back to the two ends of the range.
+/// labels). When no step of 1, 2 or 5 times a power of ten both fits and leaves two ticks (a
+/// short colour bar over ±0.0425: 0.02 is too dense, 0.05 leaves only 0), steps of 4 times a
+/// power of ten are tried (−0.04, 0, 0.04); failing that, the two ends of the range are
+/// labelled to three significant digits.
 pub(crate) fn choose_ticks(lo: f64, hi: f64, fits: impl Fn(f64, &[String]) -> bool) -> Ticks {
     let span = hi - lo;
     if span.is_finite() && span > 0.0 {
-        for step in nice_steps(span / 20.0).take(12) {
+        let candidate = |step: f64| -> Option<Ticks> {
             let values = multiples(lo, hi, step);
             if values.len() < 2 {
-                break;
+                return None;
             }
             let decimals = decimals_for_step(step);
             let labels: Vec<String> = values.iter().map(|v| format_fixed(*v, decimals)).collect();
-            if fits(step, &labels) {
-                return Ticks { values, labels };
+            fits(step, &labels).then_some(Ticks { values, labels })
+        };
+        for step in nice_steps(span / 20.0).take(12) {
+            if multiples(lo, hi, step).len() < 2 {
+                break;
+            }
+            if let Some(ticks) = candidate(step) {
+                return ticks;
+            }
+        }
+        // Twice the steps of 2: 4 times a power of ten.
+        let fours = nice_steps(span / 20.0)
+            .take(12)
+            .filter(|step| {
+                let mantissa = step / 10f64.powf(step.log10().floor());
+                (mantissa - 2.0).abs() < 1e-6
+            })
+            .map(|step| 2.0 * step);
+        for step in fours {
+            if let Some(ticks) = candidate(step) {
+                return ticks;
             }
         }
     }
     let values = vec![lo, hi];
-    let labels = values.iter().map(|v| format_compact(*v)).collect();
+    let labels = values
+        .iter()
+        .map(|v| {
+            if *v == 0.0 {
+                format_compact(*v)
+            } else {
+                format_significant(*v)
+            }
+        })
+        .collect();
     Ticks { values, labels }
 }
 
@@ -186,5 +217,17 @@ mod tests {
         assert_eq!(ticks.labels[0], "\u{2212}2.0");
         let ticks = choose_ticks(0.0, 2.0, |_, labels| labels.len() <= 3);
         assert_eq!(ticks.labels, vec!["0", "1", "2"]);
+    }
+
+    #[test]
+    fn choose_ticks_tries_fours_before_the_ends() {
+        // 0.02 is too dense and 0.05 leaves only 0: steps of 0.04 label −0.04, 0, 0.04.
+        let ticks = choose_ticks(-0.0425, 0.0425, |step, _| step > 0.03);
+        assert_eq!(ticks.labels, vec!["\u{2212}0.04", "0.00", "0.04"]);
+        // Nothing fits: the ends, to three significant digits (zero as "0").
+        let ticks = choose_ticks(-0.042491, 0.042491, |_, _| false);
+        assert_eq!(ticks.labels, vec!["\u{2212}0.0425", "0.0425"]);
+        let ticks = choose_ticks(0.0, 1523.4, |_, _| false);
+        assert_eq!(ticks.labels, vec!["0", "1523"]);
     }
 }

@@ -1,0 +1,93 @@
+//! Which panels share a colour scale: runs of consecutive panels with the same
+//! [`PanelScale`](super::PanelScale) (or the figure's shared scale), each with its colour range,
+//! contour levels and colour-bar caption. Layout puts one colour bar after each group; the plan
+//! colours and contours each panel on its group's scale.
+
+use std::ops::Range;
+
+use ndarray::ArrayView2;
+
+use super::colormap::ColorScale;
+use super::contour::choose_levels;
+use super::{ColorMap, Figure, Levels, Panel};
+
+/// A run of consecutive panels drawn on one colour scale, with one colour bar after its last
+/// panel.
+#[derive(Clone, Debug)]
+pub(crate) struct ScaleGroup<'f> {
+    /// Indices of the group's panels in the figure.
+    pub panels: Range<usize>,
+    /// Caption of the group's colour bar.
+    pub value_label: &'f str,
+    pub colormap: ColorMap,
+    /// Spans the finite values of the group's panels (see [`ColorScale::for_range`]).
+    pub scale: ColorScale,
+    /// Contour levels of the group's maps, also marked on its colour bar.
+    pub levels: Vec<f64>,
+}
+
+/// The scale groups of `figure`, left to right; none when it has no panels.
+pub(crate) fn scale_groups(figure: &Figure) -> Vec<ScaleGroup<'_>> {
+    let mut runs: Vec<(Range<usize>, Scale<'_>)> = Vec::new();
+    for (index, panel) in figure.panels.iter().enumerate() {
+        let scale = Scale::of(figure, panel);
+        match runs.last_mut() {
+            Some((range, last)) if *last == scale => range.end = index + 1,
+            _ => runs.push((index..index + 1, scale)),
+        }
+    }
+    runs.into_iter()
+        .map(|(panels, wanted)| {
+            let values = figure.panels[panels.clone()]
+                .iter()
+                .map(|p| p.values.view());
+            let (min, max) = finite_range(values);
+            let scale = ColorScale::for_range(wanted.colormap, min, max);
+            let skip_zero = wanted.colormap != ColorMap::Diverging && min >= 0.0;
+            ScaleGroup {
+                panels,
+                value_label: wanted.value_label,
+                colormap: wanted.colormap,
+                scale,
+                levels: choose_levels(wanted.levels, min, max, skip_zero),
+            }
+        })
+        .collect()
+}
+
+/// What a panel asks of its colour scale.
+#[derive(PartialEq)]
+struct Scale<'f> {
+    value_label: &'f str,
+    colormap: ColorMap,
+    levels: &'f Levels,
+}
+
+impl<'f> Scale<'f> {
+    /// A panel's scale: its own, or the figure's shared one.
+    fn of(figure: &'f Figure, panel: &'f Panel) -> Self {
+        match &panel.scale {
+            Some(own) => Self {
+                value_label: &own.value_label,
+                colormap: own.colormap,
+                levels: &own.levels,
+            },
+            None => Self {
+                value_label: &figure.value_label,
+                colormap: figure.colormap,
+                levels: &figure.levels,
+            },
+        }
+    }
+}
+
+/// Smallest and largest finite value over all maps (0, 0 when there is none).
+fn finite_range<'a>(maps: impl Iterator<Item = ArrayView2<'a, f64>>) -> (f64, f64) {
+    let mut range: Option<(f64, f64)> = None;
+    for map in maps {
+        for &v in map.iter().filter(|v| v.is_finite()) {
+            range = Some(range.map_or((v, v), |(lo, hi)| (lo.min(v), hi.max(v))));
+        }
+    }
+    range.unwrap_or((0.0, 0.0))
+}

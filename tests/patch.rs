@@ -439,26 +439,46 @@ proptest! {
         z in 0.1f64..4.0,
         nu in 0.0f64..0.5,
     ) {
-        let rect = Rectangle { x1: -0.5, x2: 0.6, y1: -0.4, y2: 0.3 };
-        let h = 1e-4;
-        let s = |x, y, z| all_components(&uniform_patch(x, y, z, rect, nu));
-        let (xp, xm) = (s(x + h, y, z), s(x - h, y, z));
-        let (yp, ym) = (s(x, y + h, z), s(x, y - h, z));
-        let (zp, zm) = (s(x, y, z + h), s(x, y, z - h));
-        let d = |plus: f64, minus: f64| (plus - minus) / (2.0 * h);
-        // [xx, yy, zz, yz, xz, xy] = [0, 1, 2, 3, 4, 5]
-        for load in 0..3 {
-            let f = [
-                d(xp[load][0], xm[load][0]) + d(yp[load][5], ym[load][5]) + d(zp[load][4], zm[load][4]),
-                d(xp[load][5], xm[load][5]) + d(yp[load][1], ym[load][1]) + d(zp[load][3], zm[load][3]),
-                d(xp[load][4], xm[load][4]) + d(yp[load][3], ym[load][3]) + d(zp[load][2], zm[load][2]),
-            ];
-            // Truncation h^2/6 times a third derivative (below ~1/z^3 for z >= 0.1) and
-            // rounding eps/h: together below 1e-6.
-            prop_assert!(
-                f.iter().all(|v| v.abs() < 1e-6),
-                "({}, {}, {}) nu={} {}: {:?}", x, y, z, nu, LOADS[load], f
-            );
-        }
+        let f = divergence(x, y, z, nu);
+        prop_assert!(
+            f.iter().flatten().all(|v| v.abs() < 1e-6),
+            "({}, {}, {}) nu={}: {:?}", x, y, z, nu, f
+        );
     }
+}
+
+/// Divergence of each load's stress (p, qx, qy) by central differences with step 1e-5, for
+/// the rectangle [-0.5, 0.6] x [-0.4, 0.3].
+///
+/// Truncation is h^2/6 times a third derivative, which near an edge line grows like 1/d^3
+/// (d >= z >= 0.1: up to ~1e4 here; with h = 1e-4 the divergence reached 3.5e-6 at
+/// (0, 0.2696, 0.1), 0.03 from an edge); rounding is ~eps/h. Together below 1e-6.
+fn divergence(x: f64, y: f64, z: f64, nu: f64) -> [[f64; 3]; 3] {
+    let rect = Rectangle {
+        x1: -0.5,
+        x2: 0.6,
+        y1: -0.4,
+        y2: 0.3,
+    };
+    let h = 1e-5;
+    let s = |x, y, z| all_components(&uniform_patch(x, y, z, rect, nu));
+    let (xp, xm) = (s(x + h, y, z), s(x - h, y, z));
+    let (yp, ym) = (s(x, y + h, z), s(x, y - h, z));
+    let (zp, zm) = (s(x, y, z + h), s(x, y, z - h));
+    let d = |plus: f64, minus: f64| (plus - minus) / (2.0 * h);
+    // [xx, yy, zz, yz, xz, xy] = [0, 1, 2, 3, 4, 5]
+    std::array::from_fn(|load| {
+        [
+            d(xp[load][0], xm[load][0]) + d(yp[load][5], ym[load][5]) + d(zp[load][4], zm[load][4]),
+            d(xp[load][5], xm[load][5]) + d(yp[load][1], ym[load][1]) + d(zp[load][3], zm[load][3]),
+            d(xp[load][4], xm[load][4]) + d(yp[load][3], ym[load][3]) + d(zp[load][2], zm[load][2]),
+        ]
+    })
+}
+
+#[test]
+fn equilibrium_holds_near_an_edge() {
+    // Once found by the property test with a coarser step (see `divergence`).
+    let f = divergence(0.0, 0.269_557_759_280_798_8, 0.1, 0.0);
+    assert!(f.iter().flatten().all(|v| v.abs() < 1e-6), "{f:?}");
 }

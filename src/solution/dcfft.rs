@@ -285,13 +285,17 @@ pub struct FftPlans {
     column_inverse: Arc<dyn Fft<f64>>,
 }
 
-/// The rows of a real `2ny x 2nx` grid to transform.
+/// Columns of a spectrum transformed together, from gathering to the inverse transform, while
+/// they stay in cache.
+const COLUMN_CHUNK: usize = 8;
+
+/// The rows of a real `2ny x 2nx` grid beyond the `ny` given ones.
 #[derive(Clone, Copy, Debug)]
 enum Rows {
-    /// Rows `0..ny` given, the rest zero (zero-padded tractions).
+    /// Zero (zero-padded tractions).
     ZeroPadded,
-    /// Rows `0..ny` given, row `ny` zero, row `2ny - r` = `parity` times row `r` (influence
-    /// coefficients in wrap-around order); only rows `0..ny` are transformed.
+    /// Row `ny` zero and row `2ny - r` = `parity` times row `r` (influence coefficients in
+    /// wrap-around order), so their transforms are the given rows' times the parity.
     Mirrored { parity: f64 },
 }
 
@@ -310,10 +314,15 @@ impl FftPlans {
         }
     }
 
-    /// Length of one spectrum: `nx + 1` columns (`kx`) of `2 ny` values (`ky`), stored
-    /// column after column, so that the column transforms run on contiguous memory.
+    /// Length of one full spectrum: `nx + 1` columns (`kx`) of `2 ny` values (`ky`), stored
+    /// column after column, so that column transforms run on contiguous memory.
     fn spectrum_len(&self) -> usize {
         (self.shape[1] + 1) * 2 * self.shape[0]
+    }
+
+    /// Length of the row spectra of `ny` rows: `ny` rows of `nx + 1`.
+    fn rows_len(&self) -> usize {
+        (self.shape[1] + 1) * self.shape[0]
     }
 
     fn scratch_len(&self) -> usize {
@@ -324,28 +333,45 @@ impl FftPlans {
             .max(self.column_inverse.get_inplace_scratch_len())
     }
 
-    /// 2-D forward transform of the real `2ny x 2nx` grid whose row `r < ny` is written into
-    /// its argument by `fill_row(r, line)` (other rows as `rows` says) into `spectrum`
-    /// (column-major, see [`FftPlans::spectrum_len`]).
-    fn forward(
+    /// Real-to-complex transforms of the rows `r < ny` of a real `2ny x 2nx` grid, row `r`
+    /// written into its argument by `fill_row(r, line)`, into `rows` (`ny` rows of `nx + 1`).
+    fn row_spectra(
         &self,
-        rows: Rows,
         mut fill_row: impl FnMut(usize, &mut [f64]),
         work: &mut FftBuffers,
-        spectrum: &mut [Complex<f64>],
+        rows: &mut [Complex<f64>],
     ) -> Result<(), DcFftError> {
-        let [ny, nx] = self.shape;
-        let (width, height) = (nx + 1, 2 * ny);
-        for (r, row) in work.rows.chunks_exact_mut(width).enumerate() {
+        for (r, row) in rows.chunks_exact_mut(self.shape[1] + 1).enumerate() {
             fill_row(r, &mut work.line);
             self.row_forward
                 .process_with_scratch(&mut work.line, row, &mut work.scratch)?;
         }
-        transpose(&work.rows, width, [ny, width], spectrum, height);
+        Ok(())
+    }
+
+    /// Forward transforms of the columns `start..start + count` of a grid whose row spectra
+    /// are `rows` (completed as `more` says), into `chunk` (column after column, `2 ny` each).
+    fn column_chunk(
+        &self,
+        rows: &[Complex<f64>],
+        more: Rows,
+        start: usize,
+        chunk: &mut [Complex<f64>],
+        scratch: &mut [Complex<f64>],
+    ) {
+        let [ny, nx] = self.shape;
+        let (width, height) = (nx + 1, 2 * ny);
+        let count = chunk.len() / height;
+        // Gather (a transpose of a narrow band: whole cache lines read per row).
+        for (r, row) in rows.chunks_exact(width).enumerate() {
+            for (t, value) in row[start..start + count].iter().enumerate() {
+                chunk[t * height + r] = *value;
+            }
+        }
         let zero = Complex::new(0.0, 0.0);
-        for column in spectrum.chunks_exact_mut(height) {
+        for column in chunk.chunks_exact_mut(height) {
             let (upper, lower) = column.split_at_mut(ny);
-            match rows {
+            match more {
                 Rows::ZeroPadded => lower.fill(zero),
                 Rows::Mirrored { parity } => {
                     lower[0] = zero;
@@ -355,26 +381,58 @@ impl FftPlans {
                 }
             }
         }
-        self.column_forward
-            .process_with_scratch(spectrum, &mut work.scratch);
-        Ok(())
+        self.column_forward.process_with_scratch(chunk, scratch);
     }
 
-    /// 2-D inverse transform of `spectrum` (destroyed), times `scale`, keeping the block of
-    /// the first `ny` rows and `nx` columns, written into `out` `[y, x]`.
-    fn inverse_block(
+    /// The full spectrum of a zero-padded real grid whose rows `r < ny` are written by
+    /// `fill_row`, column-major (see [`FftPlans::spectrum_len`]).
+    fn spectrum(
         &self,
-        spectrum: &mut [Complex<f64>],
+        fill_row: impl FnMut(usize, &mut [f64]),
+        work: &mut FftBuffers,
+    ) -> Result<Vec<Complex<f64>>, DcFftError> {
+        let height = 2 * self.shape[0];
+        let mut rows = vec![Complex::new(0.0, 0.0); self.rows_len()];
+        self.row_spectra(fill_row, work, &mut rows)?;
+        let mut spectrum = vec![Complex::new(0.0, 0.0); self.spectrum_len()];
+        for (index, chunk) in spectrum.chunks_mut(COLUMN_CHUNK * height).enumerate() {
+            let start = index * COLUMN_CHUNK;
+            self.column_chunk(&rows, Rows::ZeroPadded, start, chunk, &mut work.scratch);
+        }
+        Ok(spectrum)
+    }
+
+    /// Inverse transforms of the columns `start..` of a spectrum given as `chunk` (destroyed),
+    /// keeping the first `ny` values of each, scattered into the row spectra `rows`.
+    fn inverse_column_chunk(
+        &self,
+        chunk: &mut [Complex<f64>],
+        start: usize,
+        rows: &mut [Complex<f64>],
+        scratch: &mut [Complex<f64>],
+    ) {
+        let [ny, nx] = self.shape;
+        let (width, height) = (nx + 1, 2 * ny);
+        self.column_inverse.process_with_scratch(chunk, scratch);
+        let count = chunk.len() / height;
+        for (r, row) in rows.chunks_exact_mut(width).enumerate() {
+            for (t, value) in row[start..start + count].iter_mut().enumerate() {
+                *value = chunk[t * height + r];
+            }
+        }
+    }
+
+    /// Complex-to-real inverse transforms of the row spectra `rows` (destroyed), times
+    /// `scale`, keeping the first `nx` values of each row, written into `out` `[y, x]`.
+    fn inverse_rows(
+        &self,
+        rows: &mut [Complex<f64>],
         scale: f64,
         work: &mut FftBuffers,
         mut out: ArrayViewMut2<f64>,
     ) -> Result<(), DcFftError> {
-        let [ny, nx] = self.shape;
-        let (width, height) = (nx + 1, 2 * ny);
-        self.column_inverse
-            .process_with_scratch(spectrum, &mut work.scratch);
-        transpose(spectrum, height, [width, ny], &mut work.rows, width);
-        for (r, row) in work.rows.chunks_exact_mut(width).enumerate() {
+        let nx = self.shape[1];
+        for (r, row) in rows.chunks_exact_mut(nx + 1).enumerate() {
             // Each row's spectrum is that of a real row: its first and last values are real
             // up to rounding, and the real inverse transform requires them exactly real.
             row[0].im = 0.0;
@@ -389,57 +447,35 @@ impl FftPlans {
     }
 }
 
-/// `target[c * target_stride + r] = source[r * source_stride + c]` for `[r, c] < shape`, in
-/// tiles that stay in the first-level cache.
-fn transpose(
-    source: &[Complex<f64>],
-    source_stride: usize,
-    shape: [usize; 2],
-    target: &mut [Complex<f64>],
-    target_stride: usize,
-) {
-    const TILE: usize = 16;
-    let [rows, columns] = shape;
-    for r0 in (0..rows).step_by(TILE) {
-        for c0 in (0..columns).step_by(TILE) {
-            let c1 = (c0 + TILE).min(columns);
-            for r in r0..(r0 + TILE).min(rows) {
-                let line = &source[r * source_stride + c0..r * source_stride + c1];
-                for (c, value) in (c0..c1).zip(line) {
-                    target[c * target_stride + r] = *value;
-                }
-            }
-        }
-    }
-}
-
-/// Row buffers and FFT scratch.
+/// A real row and FFT scratch.
 struct FftBuffers {
     line: Vec<f64>,
-    /// `ny` row spectra of `nx + 1`.
-    rows: Vec<Complex<f64>>,
     scratch: Vec<Complex<f64>>,
 }
 
 impl FftBuffers {
     fn new(plans: &FftPlans) -> Self {
-        let [ny, nx] = plans.shape;
         Self {
-            line: vec![0.0; 2 * nx],
-            rows: vec![Complex::new(0.0, 0.0); ny * (nx + 1)],
+            line: vec![0.0; 2 * plans.shape[1]],
             scratch: vec![Complex::new(0.0, 0.0); plans.scratch_len()],
         }
     }
 }
 
 /// The working memory of one depth layer (reused from layer to layer by one worker): the
-/// influence coefficients of one quadrant of offsets and two spectra, about
-/// `(144 + 64) nx ny` bytes.
+/// influence coefficients of one quadrant of offsets (`144 nx ny` bytes), the row spectra of
+/// one component for each load present and of the result (`16 nx ny` bytes each), and a few
+/// columns' spectra.
 pub struct Workspace {
     /// `[load][component][b][a]`: 18 arrays of `nx ny`.
     quadrant: Vec<f64>,
-    spectrum: Vec<Complex<f64>>,
-    accumulator: Vec<Complex<f64>>,
+    /// Row spectra of one component's coefficients, one per load present.
+    rows: Vec<Vec<Complex<f64>>>,
+    /// Row spectra of one component of the result.
+    result_rows: Vec<Complex<f64>>,
+    /// Spectra of a chunk of columns: one load's coefficients, and the sum over loads.
+    chunk: Vec<Complex<f64>>,
+    sum: Vec<Complex<f64>>,
     buffers: FftBuffers,
 }
 
@@ -457,12 +493,14 @@ pub struct Workspace {
 /// approximation. Per layer and per component the spectra of the loads present are multiplied
 /// and summed, and one inverse transform gives the component.
 ///
-/// The coefficients are evaluated on one quadrant `a, b >= 0` and mirrored by their parity
-/// (each component is even or odd in x and in y about the loaded cell); the mirrored rows'
-/// transforms are the transformed rows times the parity. The tractions' spectra are computed
-/// once, in [`DcFft::new`]; each layer then costs one forward transform per load and
-/// component and one inverse per component, real-to-complex along rows (`realfft`) and complex
-/// along columns (`rustfft`).
+/// The coefficients are evaluated on one quadrant `a, b >= 0` (from corner terms shared between
+/// neighbouring cells, [`uniform_patch_offsets`]) and mirrored by their parity (each component
+/// is even or odd in x and in y about the loaded cell); the mirrored rows' transforms are the
+/// transformed rows times the parity. The tractions' spectra are computed once, in
+/// [`DcFft::new`]; each layer then costs one forward transform per load and component and one
+/// inverse per component, real-to-complex along rows (`realfft`) and complex along columns
+/// (`rustfft`). The column pass runs on a few columns at a time, from gathering through the
+/// products to the inverse transform, so that it works in cache.
 ///
 /// The result equals direct summation ([`TractionGrid::direct_layer`]) up to rounding (the
 /// tests ask 1e-9 of the largest traction); its accuracy as an approximation of smooth
@@ -500,15 +538,13 @@ impl DcFft {
         let mut buffers = FftBuffers::new(&plans);
         let mut tractions = Vec::new();
         for (load, array) in grid.loads() {
-            let mut spectrum = vec![Complex::new(0.0, 0.0); plans.spectrum_len()];
             let fill_row = |r: usize, line: &mut [f64]| {
                 for (target, value) in line.iter_mut().zip(array.row(r)) {
                     *target = *value;
                 }
                 line[nx..].fill(0.0);
             };
-            plans.forward(Rows::ZeroPadded, fill_row, &mut buffers, &mut spectrum)?;
-            tractions.push((load, spectrum));
+            tractions.push((load, plans.spectrum(fill_row, &mut buffers)?));
         }
         Ok(Self {
             shape: grid.shape,
@@ -532,10 +568,14 @@ impl DcFft {
     /// Fresh working memory for [`DcFft::layer_into`].
     pub fn workspace(&self) -> Workspace {
         let [ny, nx] = self.shape;
+        let zero = Complex::new(0.0, 0.0);
+        let rows = self.plans.rows_len();
         Workspace {
             quadrant: vec![0.0; 18 * nx * ny],
-            spectrum: vec![Complex::new(0.0, 0.0); self.plans.spectrum_len()],
-            accumulator: vec![Complex::new(0.0, 0.0); self.plans.spectrum_len()],
+            rows: vec![vec![zero; rows]; self.tractions.len()],
+            result_rows: vec![zero; rows],
+            chunk: vec![zero; COLUMN_CHUNK * 2 * ny],
+            sum: vec![zero; COLUMN_CHUNK * 2 * ny],
             buffers: FftBuffers::new(&self.plans),
         }
     }
@@ -555,17 +595,19 @@ impl DcFft {
         assert_eq!(out.shape(), [6, ny, nx], "layer output must be [6, ny, nx]");
         let Workspace {
             quadrant,
-            spectrum,
-            accumulator,
+            rows,
+            result_rows,
+            chunk,
+            sum,
             buffers,
         } = workspace;
         self.influence_quadrant(z, quadrant);
         let scale = 1.0 / (4 * nx * ny) as f64;
-        let cells = nx * ny;
+        let (cells, height) = (nx * ny, 2 * ny);
         for c in 0..6 {
-            accumulator.fill(Complex::new(0.0, 0.0));
-            for (load, traction) in &self.tractions {
-                let (parity_x, parity_y) = load.parity(c);
+            // Row transforms of this component's coefficients, for each load.
+            for ((load, _), load_rows) in self.tractions.iter().zip(rows.iter_mut()) {
+                let parity_x = load.parity(c).0;
                 let offset = (*load as usize * 6 + c) * cells;
                 let coefficients = &quadrant[offset..offset + cells];
                 // Row b of the wrap-around grid: offsets 0..nx, a zero, then the mirror.
@@ -577,19 +619,31 @@ impl DcFft {
                         *target = parity_x * value;
                     }
                 };
-                let rows = Rows::Mirrored { parity: parity_y };
-                self.plans.forward(rows, fill_row, buffers, spectrum)?;
-                for ((sum, coefficient), t) in accumulator.iter_mut().zip(&*spectrum).zip(traction)
-                {
-                    *sum += coefficient * t;
-                }
+                self.plans.row_spectra(fill_row, buffers, load_rows)?;
             }
-            self.plans.inverse_block(
-                accumulator,
-                scale,
-                buffers,
-                out.index_axis_mut(Axis(0), c),
-            )?;
+            // Column by column chunk: forward transforms, products with the tractions'
+            // spectra summed over the loads, inverse transforms.
+            for start in (0..=nx).step_by(COLUMN_CHUNK) {
+                let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
+                let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
+                sum.fill(Complex::new(0.0, 0.0));
+                for ((load, traction), load_rows) in self.tractions.iter().zip(rows.iter()) {
+                    let more = Rows::Mirrored {
+                        parity: load.parity(c).1,
+                    };
+                    let scratch = &mut buffers.scratch;
+                    self.plans
+                        .column_chunk(load_rows, more, start, chunk, scratch);
+                    let traction = &traction[start * height..start * height + length];
+                    for ((total, coefficient), t) in sum.iter_mut().zip(&*chunk).zip(traction) {
+                        *total += coefficient * t;
+                    }
+                }
+                self.plans
+                    .inverse_column_chunk(sum, start, result_rows, &mut buffers.scratch);
+            }
+            self.plans
+                .inverse_rows(result_rows, scale, buffers, out.index_axis_mut(Axis(0), c))?;
         }
         Ok(())
     }

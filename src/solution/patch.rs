@@ -263,34 +263,35 @@ impl Corner {
                 ..Self::default()
             };
         }
-        let (u, v, w) = (x / r, y / r, z / r);
+        let inverse_r = 1.0 / r;
+        let (u, v, w) = (x * inverse_r, y * inverse_r, z * inverse_r);
         let (uu, vv) = (u * u, v * v);
         let one_plus_w = 1.0 + w;
         let numerator = u * v * (uu + vv);
         // Denominators are >= 0; atan2(0, 0) = 0 is the mean of the two sides.
         let tx = numerator.atan2(one_plus_w * (uu + w * vv));
         let ty = numerator.atan2(one_plus_w * (vv + w * uu));
-        // (z X, z²) / (R (R + Y)) in units of 1/R⁰: (w u, w²) / (1 + v).
-        let over_r_plus = |along: f64, across: f64, rho: f64| {
+        // (z X, z²) / (R (R + Y)), dimensionless: (w u, w²) / (1 + v); `across` is X.
+        let over_r_plus = |along: f64, across: f64, across_over_r: f64, rho: f64| {
             if along >= 0.0 {
                 let k = w / (1.0 + along);
-                (k * across, k * w)
+                (k * across_over_r, k * w)
+            } else if rho > 0.0 {
+                // 1 + v = (rho / R)² / (1 - v) with rho² = X² + z², so
+                // w u / (1 + v) = (z / rho)(X / rho)(1 - v).
+                let inverse_rho = 1.0 / rho;
+                let (z_rho, across_rho) = (z * inverse_rho, across * inverse_rho);
+                (
+                    z_rho * across_rho * (1.0 - along),
+                    z_rho * z_rho * (1.0 - along),
+                )
             } else {
-                // 1 + v = (u² + w²) / (1 - v), with u² + w² = (rho / R)².
-                let rho_hat = rho / r;
-                if rho_hat > 0.0 {
-                    let (w_rho, across_rho) = (w / rho_hat, across / rho_hat);
-                    (
-                        w_rho * across_rho * (1.0 - along),
-                        w_rho * w_rho * (1.0 - along),
-                    )
-                } else {
-                    (0.0, 0.0)
-                }
+                (0.0, 0.0)
             }
         };
-        let (ax, bx) = over_r_plus(v, u, rho_x);
-        let (ay, by) = over_r_plus(u, v, rho_y);
+        let (ax, bx) = over_r_plus(v, x, u, rho_x);
+        let (ay, by) = over_r_plus(u, y, v, rho_y);
+        let inverse_one_plus_w = 1.0 / one_plus_w;
         Self {
             r,
             tx,
@@ -299,10 +300,10 @@ impl Corner {
             bx,
             ay,
             by,
-            u1: u / one_plus_w,
-            u2: w * u / one_plus_w,
-            v1: v / one_plus_w,
-            v2: w * v / one_plus_w,
+            u1: u * inverse_one_plus_w,
+            u2: w * u * inverse_one_plus_w,
+            v1: v * inverse_one_plus_w,
+            v2: w * v * inverse_one_plus_w,
             w,
             lz: (r + z).ln(),
         }

@@ -2,7 +2,7 @@
 //! everything to the figure's display units.
 
 use crate::field::{self, Axis, FieldError, Plane, Section};
-use crate::render::{Figure, Mark, Panel, TractionSample};
+use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
 
 /// Number of samples of the traction profile across the figure.
@@ -84,6 +84,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
                 vec![contact_outline(scene.contact.kind, aspect)],
             ),
         };
+        let clip = clipped_range(&values);
         panels.push(Panel {
             subtitle: subtitle(scene, panel, &plane),
             x: to_display(plane.u),
@@ -106,7 +107,18 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
                         .collect()
                 })
                 .collect(),
-            scale: None,
+            // A difference is far smaller than the field: its own diverging scale.
+            scale: (panel.method == Method::Difference).then(|| PanelScale {
+                value_label: format!(
+                    "{}{}",
+                    spec.stress_unit
+                        .label(&format!("Δ{}", spec.quantity.symbol())),
+                    if clip.is_some() { ", clipped" } else { "" }
+                ),
+                colormap: ColorMap::Diverging,
+                levels: Levels::Count(8),
+                range: clip,
+            }),
         });
     }
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
@@ -127,6 +139,24 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         mark,
         panel_width_px: spec.width_px,
     })
+}
+
+/// The colour range of a difference map: `±` the 98th percentile of `|Δ|`, so that the
+/// spikes of the stepped tractions at the surface and the contact edges (a few cells) do not
+/// wash out the error below them; those take the end colours. `None` for an all-zero map.
+fn clipped_range(values: &ndarray::Array2<f64>) -> Option<(f64, f64)> {
+    let mut sizes: Vec<f64> = values
+        .iter()
+        .filter(|v| v.is_finite())
+        .map(|v| v.abs())
+        .collect();
+    if sizes.is_empty() {
+        return None;
+    }
+    sizes.sort_by(f64::total_cmp);
+    let index = ((sizes.len() - 1) as f64 * 0.98).round() as usize;
+    let limit = sizes[index];
+    (limit > 0.0).then_some((-limit, limit))
 }
 
 /// The extremes worth marking: those whose size is at least 5 % of the larger one (so an

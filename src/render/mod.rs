@@ -95,6 +95,9 @@ pub struct PanelScale {
     pub value_label: String,
     pub colormap: ColorMap,
     pub levels: Levels,
+    /// The colour range `(min, max)`; values beyond take the end colours. `None`: the range
+    /// of the group's values.
+    pub range: Option<(f64, f64)>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -478,6 +481,7 @@ mod tests {
             value_label: "Δτ1 / p0".to_string(),
             colormap: ColorMap::Diverging,
             levels: Levels::Count(4),
+            range: None,
         }
     }
 
@@ -685,6 +689,7 @@ mod tests {
                 value_label: base.value_label.clone(),
                 colormap: base.colormap,
                 levels: base.levels.clone(),
+                range: None,
             }),
             ..b.clone()
         };

@@ -41,7 +41,7 @@ pub(crate) fn scale_groups(figure: &Figure) -> Vec<ScaleGroup<'_>> {
             let values = figure.panels[panels.clone()]
                 .iter()
                 .map(|p| p.values.view());
-            let (min, max) = finite_range(values);
+            let (min, max) = wanted.range.unwrap_or_else(|| finite_range(values));
             let scale = ColorScale::for_range(wanted.colormap, min, max);
             let skip_zero = wanted.colormap != ColorMap::Diverging && min >= 0.0;
             ScaleGroup {
@@ -61,6 +61,7 @@ struct Scale<'f> {
     value_label: &'f str,
     colormap: ColorMap,
     levels: &'f Levels,
+    range: Option<(f64, f64)>,
 }
 
 impl<'f> Scale<'f> {
@@ -71,11 +72,13 @@ impl<'f> Scale<'f> {
                 value_label: &own.value_label,
                 colormap: own.colormap,
                 levels: &own.levels,
+                range: own.range,
             },
             None => Self {
                 value_label: &figure.value_label,
                 colormap: figure.colormap,
                 levels: &figure.levels,
+                range: None,
             },
         }
     }

@@ -109,12 +109,9 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
                 .collect(),
             // A difference is far smaller than the field: its own diverging scale.
             scale: (panel.method == Method::Difference).then(|| PanelScale {
-                value_label: format!(
-                    "{}{}",
-                    spec.stress_unit
-                        .label(&format!("Δ{}", spec.quantity.symbol())),
-                    if clip.is_some() { ", clipped" } else { "" }
-                ),
+                value_label: spec
+                    .stress_unit
+                    .label(&format!("Δ{}", spec.quantity.symbol())),
                 colormap: ColorMap::Diverging,
                 levels: Levels::Count(8),
                 range: clip,
@@ -288,7 +285,9 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
         (Method::Numerical, ContactKind::Point | ContactKind::Elliptical) => {
             parts.push(format!("numerical, {cells}² cells"))
         }
-        (Method::Difference, _) => parts.push("numerical − closed form".into()),
+        (Method::Difference, _) => {
+            parts.push("numerical − closed form (colours clipped at 98 %)".into())
+        }
     }
     parts.extend(section_label(scene, plane));
     parts.push(format!("μ = {}", panel.friction));

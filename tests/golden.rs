@@ -84,3 +84,8 @@ fn golden_sphere_surface() {
 fn golden_sphere_sections() {
     check_golden("sphere_sections");
 }
+
+#[test]
+fn golden_cross_check() {
+    check_golden("cross_check");
+}

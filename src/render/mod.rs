@@ -95,8 +95,8 @@ pub struct PanelScale {
     pub value_label: String,
     pub colormap: ColorMap,
     pub levels: Levels,
-    /// The colour range `(min, max)`; values beyond take the end colours. `None`: the range
-    /// of the group's values.
+    /// The colour range `(min, max)`; values beyond take the end colours (say so in the
+    /// subtitle). `None`: the range of the group's values.
     pub range: Option<(f64, f64)>,
 }
 

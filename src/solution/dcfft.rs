@@ -5,6 +5,10 @@
 //!
 //! Layout: traction and stress arrays are indexed `[row, column] = [y, x]`; a layer of stresses
 //! is `[component, y, x]` with the components in the order of [`COMPONENTS`].
+//!
+//! Threads: [`DcFft::layers`] and [`DcFft::for_each_layer`] compute depth layers in parallel
+//! with rayon, one workspace per worker (issue 4 asks for the engine to be parallel over the
+//! layers); everything else here runs on the calling thread.
 
 use std::sync::Arc;
 
@@ -695,15 +699,25 @@ impl DcFft {
     }
 
     /// The influence coefficients at offsets `(a dx, b dy)`, `0 <= a < nx`, `0 <= b < ny`,
-    /// as 18 arrays `[load][component][b][a]`.
+    /// as 18 arrays `[load][component][b][a]` (those of absent loads are left alone).
     fn influence_quadrant(&self, z: f64, quadrant: &mut [f64]) {
         let [ny, nx] = self.shape;
-        let cells = nx * ny;
+        let mut arrays: Vec<&mut [f64]> = quadrant.chunks_exact_mut(nx * ny).collect();
+        let present = |load: Load| self.tractions.iter().any(|(l, _)| *l == load);
+        let loads: Vec<Load> = [Load::Pressure, Load::ShearX, Load::ShearY]
+            .into_iter()
+            .filter(|&load| present(load))
+            .collect();
         uniform_patch_offsets(self.cell, z, [nx, ny], self.poisson, |a, b, s| {
-            for load in [Load::Pressure, Load::ShearX, Load::ShearY] {
+            let index = b * nx + a;
+            for &load in &loads {
                 let stress = load.stress(s);
-                for c in 0..6 {
-                    quadrant[(load as usize * 6 + c) * cells + b * nx + a] = component(stress, c);
+                let first = load as usize * 6;
+                let values = [
+                    stress.xx, stress.yy, stress.zz, stress.yz, stress.xz, stress.xy,
+                ];
+                for (array, value) in arrays[first..first + 6].iter_mut().zip(values) {
+                    array[index] = value;
                 }
             }
         });
@@ -744,6 +758,8 @@ mod tests {
                 difference < 1e-9,
                 "z = {z}: max |FFT - direct| = {difference:e}"
             );
+            let shape = grid.shape();
+            eprintln!("{shape:?}, z = {z}: max |FFT - direct| = {difference:.1e}");
         }
     }
 
@@ -757,6 +773,10 @@ mod tests {
         );
         assert_layers_agree(&grid([20, 20], [true, true, false]), &[0.0, 0.01, 2.0], 0.5);
         assert_layers_agree(&grid([7, 5], [false, false, true]), &[0.0, 0.2], 0.0);
+        // Degenerate shapes: one cell, one row, one column.
+        assert_layers_agree(&grid([1, 1], [true, true, true]), &[0.0, 0.5], 0.3);
+        assert_layers_agree(&grid([1, 6], [true, false, false]), &[0.1], 0.3);
+        assert_layers_agree(&grid([5, 1], [false, true, false]), &[0.1], 0.3);
     }
 
     #[test]

@@ -225,7 +225,7 @@ fn hertz_sphere_on_256_cells_is_within_half_a_percent_of_p0() {
     // for z >= 0.05a.
     let average = hertz_error(256, Discretisation::CellAverage, &DEPTHS);
     let centre = hertz_error(256, Discretisation::Centre, &DEPTHS);
-    eprintln!("Hertz sphere, 256 x 256: max error {average:.2e} p0 (cell averages), {centre:.2e} p0 (centre values)");
+    eprintln!("Hertz 256x256: max error {average:.2e} p0 (cell means), {centre:.2e} (centres)");
     assert!(average <= 0.005, "cell averages: {average:e}");
     assert!(centre <= 0.005, "centre values: {centre:e}");
     // Cell averages are the better discretisation (measured: about half the error).
@@ -238,7 +238,7 @@ fn hertz_sphere_error_falls_as_the_grid_is_refined() {
     for n in [32, 64, 128] {
         let average = hertz_error(n, Discretisation::CellAverage, &DEPTHS);
         let centre = hertz_error(n, Discretisation::Centre, &DEPTHS);
-        eprintln!("Hertz sphere, {n} x {n}: max error {average:.2e} p0 (cell averages), {centre:.2e} p0 (centre values)");
+        eprintln!("Hertz {n}x{n}: max error {average:.2e} p0 (cell means), {centre:.2e} (centres)");
         if let Some(previous) = previous {
             // Halving the cell at least halves the error.
             assert!(

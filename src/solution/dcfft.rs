@@ -512,7 +512,7 @@ pub struct Workspace {
 ///
 /// ## Reference
 /// S. Liu, Q. Wang, G. Liu, A versatile method of discrete convolution and FFT (DC-FFT) for
-/// contact analyses, *Wear* 243 (2000) 101–111.
+/// contact analyses, *Wear* 243 (2000).
 pub struct DcFft {
     shape: [usize; 2],
     cell: [f64; 2],

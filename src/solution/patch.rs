@@ -93,13 +93,15 @@ pub struct PatchStresses {
 ///
 /// and `qy` the same as `qx` with the roles of x and y exchanged (`Tx <-> Ty`, `Ax <-> Ay`,
 /// `Bx <-> By`, `U <-> V`, `LX <-> LY`; `sxx <-> syy`, `sxz <-> syz`), which by symmetry of the
-/// half-space is the Cerruti solution turned by a right angle. The pressure's result is Love's
-/// (1929) solution, here derived afresh rather than transcribed; the tangential ones are the
-/// corresponding Cerruti integrals (see Johnson 1985, ch. 3, and Liu & Wang 2002).
+/// half-space is the Cerruti solution turned by a right angle. The pressure's result solves
+/// the problem of Love (1929), here derived afresh rather than transcribed; the tangential
+/// ones are the corresponding integrals of Cerruti's solution (for the same problem see
+/// Johnson 1985, ch. 3, and Liu & Wang 2002).
 ///
 /// ## Evaluation
-/// - Each corner is evaluated in the dimensionless variables `X/R`, `Y/R`, `z/R`, so that
-///   nothing is squared but numbers of modulus at most one.
+/// - Each corner is evaluated in the dimensionless variables `X/R`, `Y/R`, `z/R`; apart from
+///   forming `R` and `sqrt(X² + z²)` (guarded against overflow and underflow), nothing is
+///   squared but numbers of modulus at most one.
 /// - `R + Y` (and `R + X`) cancel when `Y < 0`; there `1/(R + Y) = (R - Y)/(X² + z²)`.
 /// - The logarithms enter only with constant coefficients, so they are summed as differences
 ///   along an edge, `ln(R1 + Y1) - ln(R2 + Y2)`, each formed with `ln_1p` of the exact
@@ -114,7 +116,7 @@ pub struct PatchStresses {
 /// Any `z >= 0`, any point. For `z > 0` every result is finite. On the surface `z = 0` the
 /// results are the surface tractions' stresses: `szz = -p`, `sxz = -qx`, `syz = -qy` strictly
 /// inside the rectangle and 0 outside (half of that on an edge, a quarter at a corner, the mean
-/// of the two sides). Three surface components are logarithmically singular at the rectangle's
+/// of the two sides). Some surface components are logarithmically singular at the rectangle's
 /// edges and are returned as infinite exactly there, and only there: `sxx` and `syy` of `qx` on
 /// the edges `x = x1`, `x = x2` (with `y1 <= y <= y2`), `sxy` of `qx` on the edges `y = y1`,
 /// `y = y2`, the same with x and y exchanged for `qy`, and the pressure's `sxy` at the corners.
@@ -129,7 +131,7 @@ pub struct PatchStresses {
 ///
 /// ## References
 /// - A. E. H. Love, The stress produced in a semi-infinite solid by pressure on part of the
-///   boundary, *Phil. Trans. R. Soc. A* 228 (1929) 377–420.
+///   boundary, *Phil. Trans. R. Soc. A* 228 (1929).
 /// - K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), §3.2 (Love's
 ///   potentials, Boussinesq and Cerruti).
 /// - S. Liu, Q. Wang, Studying contact stress fields caused by surface tractions with a discrete

@@ -49,7 +49,10 @@ pub enum ContactError {
         "the tangential load {tangential_load_n} N exceeds the limit of friction mu P = \
          {limit_n} N: the contact slides as a whole (partial slip needs 0 <= Q <= mu P)"
     )]
-    GrossSliding { tangential_load_n: f64, limit_n: f64 },
+    GrossSliding {
+        tangential_load_n: f64,
+        limit_n: f64,
+    },
 }
 
 /// Effective (contact) modulus `E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2)`.

@@ -273,7 +273,9 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
         (mu, nu) = (scene.contact.friction, scene.contact.poisson);
         kind = match scene.contact.kind {
             ContactKind::Line => ContactArg::Line,
-            ContactKind::Point | ContactKind::Elliptical => ContactArg::Point,
+            ContactKind::Point | ContactKind::Elliptical | ContactKind::Tractions => {
+                ContactArg::Point
+            }
         };
         if let Some(given) = contact.filter(|c| *c != kind) {
             bail!(

@@ -55,6 +55,8 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         let aspect = scene.contact.aspect;
         let chord = |offset: f64, along_y: bool| match scene.contact.kind {
             ContactKind::Line => 1.0,
+            // Tractions from a file: no contact outline is known.
+            ContactKind::Tractions => 0.0,
             // The ellipse x² + (y/aspect)² = 1 (a circle for a sphere) cut at y or at x.
             ContactKind::Point | ContactKind::Elliptical if along_y => {
                 aspect * (1.0 - offset * offset).max(0.0).sqrt()
@@ -119,7 +121,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         });
     }
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
-    let any_friction = scene.panels.iter().any(|p| p.friction != 0.0);
+    let any_friction = panels.iter().flat_map(|p| &p.traction).any(|s| s.q != 0.0);
     let (horizontal, vertical, _) = spec.section.coordinates();
     Ok(Figure {
         title: title(scene),
@@ -211,8 +213,8 @@ fn contact_outline(kind: ContactKind, aspect: f64) -> Vec<(f64, f64)> {
                 (angle.cos(), aspect * angle.sin())
             })
             .collect(),
-        // Unreachable from scenes (a line contact has only xz sections), kept total.
-        ContactKind::Line => Vec::new(),
+        // A line contact has only xz sections; a traction file has no known outline.
+        ContactKind::Line | ContactKind::Tractions => Vec::new(),
     }
 }
 
@@ -265,6 +267,7 @@ fn title(scene: &Scene) -> String {
         }
         ContactKind::Point => title.push_str(" — Hertz point contact (sphere)"),
         ContactKind::Elliptical => title.push_str(" — elliptical Hertz contact"),
+        ContactKind::Tractions => title.push_str(" — surface tractions from a file"),
     }
     title
 }
@@ -285,14 +288,24 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
         (Method::Numerical, ContactKind::Point | ContactKind::Elliptical) => {
             parts.push(format!("numerical, {cells}² cells"))
         }
+        (Method::Numerical, ContactKind::Tractions) => {
+            if let Some(grid) = &scene.tractions {
+                let [ny, nx] = grid.shape();
+                parts.push(format!("numerical, {nx} x {ny} cells"));
+            }
+        }
         (Method::Difference, _) => {
             parts.push("numerical − closed form (colours clipped at 98 %)".into())
         }
     }
     parts.extend(section_label(scene, plane));
-    parts.push(format!("μ = {}", panel.friction));
+    // Tractions from a file carry their own shear, and a and p0 are only the figure's units.
+    let from_file = scene.contact.kind == ContactKind::Tractions;
+    if !from_file {
+        parts.push(format!("μ = {}", panel.friction));
+    }
     parts.push(format!("ν = {}", panel.poisson));
-    if let Some(scale) = scene.contact.scale {
+    if let (Some(scale), false) = (scene.contact.scale, from_file) {
         let a = scale.half_width_m;
         let a_text = match scene.figure.length_unit {
             LengthUnit::Micrometre | LengthUnit::HalfWidth => format!("a = {:.1} µm", a * 1e6),

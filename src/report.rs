@@ -5,6 +5,74 @@ use std::fmt::Write;
 use crate::assess::{Extreme, StressMaxima};
 use crate::scene::{ContactKind, Hertz, Scene};
 
+/// The report of a traction scene: the figure's units and the resultants of the file's
+/// tractions.
+fn write_tractions(out: &mut String, scene: &Scene) -> std::fmt::Result {
+    let (a_m, p0_pa) = (scene.contact.half_width_m(), scene.contact.p0_pa());
+    let dimensional = scene.contact.scale.is_some();
+    if dimensional {
+        writeln!(
+            out,
+            "figure units: lengths in a = {:.3} µm, stresses in p0 = {:.2} MPa; body ν = {}",
+            a_m * 1e6,
+            p0_pa * 1e-6,
+            scene.contact.poisson
+        )?;
+    } else {
+        writeln!(out, "normalised: the file gives lengths in units of a and tractions in units of p0; body ν = {}", scene.contact.poisson)?;
+    }
+    let Some(grid) = &scene.tractions else {
+        return Ok(());
+    };
+    let [ny, nx] = grid.shape();
+    let [dx, dy] = grid.cell();
+    let area = dx * dy;
+    let (mut normal, mut shear_x, mut shear_y, mut peak) = (0.0, 0.0, 0.0, 0.0f64);
+    for row in 0..ny {
+        for column in 0..nx {
+            let (p, qx, qy) = grid.traction(row, column);
+            normal += p * area;
+            shear_x += qx * area;
+            shear_y += qy * area;
+            peak = peak.max(p);
+        }
+    }
+    writeln!(
+        out,
+        "traction grid                {nx} x {ny} cells of {dx:.4} a x {dy:.4} a"
+    )?;
+    if dimensional {
+        let force = p0_pa * a_m * a_m;
+        writeln!(
+            out,
+            "resultant normal force       P  = {:.4} N",
+            normal * force
+        )?;
+        writeln!(
+            out,
+            "resultant tangential forces  Qx = {:.4} N, Qy = {:.4} N",
+            shear_x * force,
+            shear_y * force
+        )?;
+        writeln!(
+            out,
+            "largest pressure             {:.2} MPa",
+            peak * p0_pa * 1e-6
+        )?;
+    } else {
+        writeln!(out, "resultant normal force       P  = {normal:.6} p0 a²")?;
+        writeln!(
+            out,
+            "resultant tangential forces  Qx = {shear_x:.6} p0 a², Qy = {shear_y:.6} p0 a²"
+        )?;
+        writeln!(out, "largest pressure             {peak:.4} p0")?;
+    }
+    writeln!(
+        out,
+        "stress maxima: render the scene (numerical method) to see the field"
+    )
+}
+
 /// Formats the report of a scene (first panel's friction and Poisson ratio are the scene's).
 pub fn hertz(scene: &Scene) -> String {
     let mut out = String::new();
@@ -32,7 +100,12 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             "elliptical (two principal radii per body; semi-axes a along x, b along y)"
         }
         ContactKind::Line => "line (two cylinders, plane strain)",
+        ContactKind::Tractions => "surface tractions read from a CSV grid ([tractions])",
     };
+    if contact.kind == ContactKind::Tractions {
+        writeln!(out, "contact: {geometry}")?;
+        return write_tractions(out, scene);
+    }
     writeln!(
         out,
         "contact: {geometry}; friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)",

@@ -290,6 +290,11 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"point\"\n[numerical]\ncells = 3\n", "key `numerical.cells`", "8..=2048"),
     ("format = 1\n[contact]\nkind = \"point\"\n[numerical]\nextent = 0.5\n", "key `numerical.extent`", "cover the contact"),
     ("format = 1\n[contact]\nkind = \"line\"\n[numerical]\nextent = 2.0\n", "key `numerical.extent`", "numerical.cells"),
+    ("format = 1\n[contact]\nkind = \"tractions\"\nmethod = \"numerical\"\n", "key `tractions`", "[tractions]"),
+    ("format = 1\n[contact]\nkind = \"tractions\"\nfriction = 0.2\nmethod = \"numerical\"\n[tractions]\nfile = \"t.csv\"\n", "key `contact.friction`", "qx"),
+    ("format = 1\n[contact]\nkind = \"tractions\"\nmethod = \"numerical\"\n[tractions]\nfile = \"missing.csv\"\n", "key `tractions.file`", "relative to the scene file"),
+    ("format = 1\n[contact]\nkind = \"tractions\"\nmethod = \"numerical\"\n[tractions]\nfile = \"t.csv\"\nlength_unit = \"mm\"\n", "key `tractions.length_unit`", "contact.a"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[tractions]\nfile = \"t.csv\"\n", "key `tractions`", "kind = \"tractions\""),
 ];
 
 #[test]
@@ -772,4 +777,76 @@ fn probe_integrates_a_point_contact_numerically() {
         input,
     );
     assert_fails_with(&bad, &["--cells must lie in 8..=2048"]);
+}
+
+#[test]
+fn traction_files_are_read_in_their_units() {
+    use stressfield::solution::point_numerical::PointTractions;
+    // The sliding Hertz sphere's cell means (31 cells over [-2a, 2a]), written in mm and MPa
+    // for a = 0.2 mm and p0 = 1.5 GPa: the scene must integrate exactly the same tractions as
+    // `probe --contact point --method numerical` on the same grid.
+    let tractions = PointTractions::hertz_sphere(31, 2.0, 0.3, 0.3).expect("grid");
+    let grid = tractions.grid();
+    let [ny, nx] = grid.shape();
+    let mut csv = String::from("# Hertz sphere, mu = 0.3\nqx,x,y,p\n");
+    // Rows in reverse order: the reader must place them by their coordinates.
+    for row in (0..ny).rev() {
+        for column in (0..nx).rev() {
+            let (x, y) = grid.cell_centre(row, column);
+            let (p, qx, _) = grid.traction(row, column);
+            csv.push_str(&format!(
+                "{},{},{},{}\n",
+                qx * 1500.0,
+                x * 0.2,
+                y * 0.2,
+                p * 1500.0
+            ));
+        }
+    }
+    let dir = tempfile::tempdir().expect("temp dir");
+    std::fs::write(dir.path().join("sphere.csv"), csv).expect("write csv");
+    let scene = dir.path().join("sphere.toml");
+    std::fs::write(
+        &scene,
+        "format = 1\n[contact]\nkind = \"tractions\"\na = \"0.2 mm\"\np0 = \"1.5 GPa\"\npoisson = 0.3\nmethod = \"numerical\"\n[tractions]\nfile = \"sphere.csv\"\nlength_unit = \"mm\"\nstress_unit = \"MPa\"\n",
+    )
+    .expect("write scene");
+    let input = "x,y,z\n0,0,0.5\n-0.7,0.4,0.3\n1.2,-0.2,0.8\n";
+    let rows = |args: &[&str]| -> Vec<Vec<f64>> {
+        let output = run_with_stdin(args, input);
+        assert!(output.status.success(), "{}", stderr(&output));
+        stdout(&output)
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
+            .collect()
+    };
+    let from_file = rows(&["probe", scene.to_str().expect("utf8"), "--points", "-"]);
+    let built_in = rows(&[
+        "probe",
+        "--contact",
+        "point",
+        "--friction",
+        "0.3",
+        "--method",
+        "numerical",
+        "--cells",
+        "31",
+        "--extent",
+        "2",
+        "--points",
+        "-",
+    ]);
+    for (a, b) in from_file.iter().zip(&built_in) {
+        for (u, v) in a.iter().zip(b) {
+            assert!((u - v).abs() < 1e-9, "{a:?} vs {b:?}");
+        }
+    }
+    // The hertz report adds up the file's resultants: P = 2 pi a^2 p0 / 3 = 125.664 N here
+    // (the cell means on 31 cells give 125.669 N), Qx = 0.3 P = 37.70 N.
+    let output = run(&["hertz", scene.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    assert!(text.contains("P  = 125.6"), "{text}");
+    assert!(text.contains("Qx = 37.70"), "{text}");
 }

@@ -4,6 +4,7 @@
 //! See the README for the format reference.
 
 mod raw;
+pub mod traction_csv;
 pub mod units;
 
 use std::path::Path;
@@ -15,6 +16,7 @@ use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::{Body, LineContact, PointContact};
 use crate::field::{Axis, Plane, Section};
 use crate::render::{ColorMap, Levels, Mark};
+use crate::solution::dcfft::TractionGrid;
 use crate::solution::point_numerical::{NumericalError, PointTractions};
 use crate::solution::Solution;
 use crate::stress::{Quantity, QuantityKind};
@@ -63,6 +65,8 @@ pub enum ContactKind {
     /// Bodies with two principal radii each (a ball in a groove, crowned teeth): an elliptical
     /// Hertz contact with semi-axes a along x and b along y. Numerical method only.
     Elliptical,
+    /// Surface tractions read from a CSV grid (`[tractions]`). Numerical method only.
+    Tractions,
 }
 
 /// The Hertz solution of a dimensional contact.
@@ -162,7 +166,8 @@ impl Contact {
         match (self.kind, self.tangential) {
             (ContactKind::Line, _) => Some(Solution::LineHertz { friction, poisson }),
             (ContactKind::Point, None) => Some(Solution::SphereHertz { friction, poisson }),
-            (ContactKind::Point, Some(_)) | (ContactKind::Elliptical, _) => None,
+            (ContactKind::Point, Some(_))
+            | (ContactKind::Elliptical | ContactKind::Tractions, _) => None,
         }
     }
 }
@@ -377,6 +382,8 @@ pub struct Scene {
     pub figure: FigureSpec,
     pub panels: Vec<PanelSpec>,
     pub numerical: Numerical,
+    /// The user's tractions (kind = "tractions") on their grid, in units of a and p0.
+    pub tractions: Option<std::sync::Arc<TractionGrid>>,
 }
 
 impl Scene {
@@ -450,27 +457,43 @@ impl Scene {
     /// The plane of a numerical point-contact panel on the traction grid's cell centres.
     fn grid_plane(&self, panel: &PanelSpec) -> Plane {
         let unit_over_a = self.length_unit_over_a();
-        let Numerical {
-            cells,
-            extent_over_a: extent,
-        } = self.numerical;
-        // The grid covers `extent` semi-axes each way: [-e, e] x [-e b/a, e b/a].
-        let stretch = if self.contact.kind == ContactKind::Elliptical {
-            self.contact.aspect
-        } else {
-            1.0
+        let (x_axis, y_axis) = match &self.tractions {
+            // The user's grid as it is.
+            Some(grid) => {
+                let ([x0, y0], [dx, dy], [ny, nx]) = (grid.origin(), grid.cell(), grid.shape());
+                (
+                    GridAxis {
+                        origin: x0,
+                        cell: dx,
+                        cells: nx,
+                    },
+                    GridAxis {
+                        origin: y0,
+                        cell: dy,
+                        cells: ny,
+                    },
+                )
+            }
+            // The Hertz grid covers `extent` semi-axes each way: [-e, e] x [-e b/a, e b/a].
+            None => {
+                let Numerical {
+                    cells,
+                    extent_over_a: extent,
+                } = self.numerical;
+                let stretch = if self.contact.kind == ContactKind::Elliptical {
+                    self.contact.aspect
+                } else {
+                    1.0
+                };
+                (
+                    GridAxis::centred(extent, cells),
+                    GridAxis::centred(extent * stretch, cells),
+                )
+            }
         };
-        let last_cell = (cells - 1) as f64;
-        let x_axis = GridAxis::new(extent, cells);
-        let y_axis = GridAxis::new(extent * stretch, cells);
         // Centres within the figure range [lo, hi] (figure units; at least one).
         let centres = |axis: &GridAxis, (lo, hi): (f64, f64)| {
-            let first = ((lo * unit_over_a + axis.extent) / axis.cell - 0.5 - 1e-9)
-                .ceil()
-                .clamp(0.0, last_cell) as usize;
-            let last = ((hi * unit_over_a + axis.extent) / axis.cell - 0.5 + 1e-9)
-                .floor()
-                .clamp(first as f64, last_cell) as usize;
+            let (first, last) = axis.within(lo * unit_over_a, hi * unit_over_a);
             Axis::new(axis.centre(first), axis.centre(last), last - first + 1)
         };
         // Depths at the horizontal spacing, so that map cells are square.
@@ -527,6 +550,10 @@ impl Scene {
             (ContactKind::Elliptical, _) => {
                 PointTractions::hertz_ellipse(cells, extent, self.contact.aspect, mu, nu)?
             }
+            (ContactKind::Tractions, _) => match &self.tractions {
+                Some(grid) => PointTractions::new(grid.as_ref().clone(), nu)?,
+                None => return Err(NumericalError::MissingTractions),
+            },
         };
         Ok(Solution::PointNumerical {
             tractions: std::sync::Arc::new(tractions),
@@ -544,26 +571,40 @@ impl Scene {
 
 /// One axis of a numerical traction grid: `cells` cells over `[-extent, extent]` (units of a).
 struct GridAxis {
-    extent: f64,
+    /// Edge of the first cell.
+    origin: f64,
     cell: f64,
     cells: usize,
 }
 
 impl GridAxis {
-    fn new(extent: f64, cells: usize) -> Self {
+    /// `cells` cells over `[-extent, extent]`.
+    fn centred(extent: f64, cells: usize) -> Self {
         Self {
-            extent,
+            origin: -extent,
             cell: 2.0 * extent / cells as f64,
             cells,
         }
     }
 
     fn centre(&self, index: usize) -> f64 {
-        -self.extent + (index as f64 + 0.5) * self.cell
+        self.origin + (index as f64 + 0.5) * self.cell
+    }
+
+    /// Index of the first and last cell centre within `[lo, hi]` (at least one).
+    fn within(&self, lo: f64, hi: f64) -> (usize, usize) {
+        let last_cell = (self.cells - 1) as f64;
+        let first = ((lo - self.origin) / self.cell - 0.5 - 1e-9)
+            .ceil()
+            .clamp(0.0, last_cell) as usize;
+        let last = ((hi - self.origin) / self.cell - 0.5 + 1e-9)
+            .floor()
+            .clamp(first as f64, last_cell) as usize;
+        (first, last)
     }
 
     fn nearest_centre(&self, u: f64) -> f64 {
-        let index = ((u + self.extent) / self.cell - 0.5)
+        let index = ((u - self.origin) / self.cell - 0.5)
             .round()
             .clamp(0.0, (self.cells - 1) as f64);
         self.centre(index as usize)
@@ -630,6 +671,7 @@ impl Validator<'_> {
         let figure = self.figure(&raw.figure, &contact)?;
         let method = self.method("contact.method", raw.contact.method.as_deref())?;
         let numerical = self.numerical(raw.numerical.as_ref(), &contact)?;
+        let tractions = self.tractions(&raw, &contact)?;
         let at = self.section_position("figure.at", raw.figure.at, &contact, &figure)?;
         let mut panels = Vec::new();
         for (i, panel) in raw.panels.iter().enumerate() {
@@ -679,10 +721,10 @@ impl Validator<'_> {
                     |i| format!("panel[{i}].method"),
                 );
             if let Some(panel) = panels.iter().find(|p| p.method != Method::Numerical) {
-                let what = if contact.kind == ContactKind::Elliptical {
-                    "an elliptical contact"
-                } else {
-                    "partial slip"
+                let what = match contact.kind {
+                    ContactKind::Elliptical => "an elliptical contact",
+                    ContactKind::Tractions => "a traction grid from a file",
+                    _ => "partial slip",
                 };
                 return Err(self.error(
                     &key,
@@ -728,7 +770,111 @@ impl Validator<'_> {
             figure,
             panels,
             numerical,
+            tractions,
         })
+    }
+
+    /// The `[tractions]` table of a `kind = "tractions"` scene: the CSV grid read and converted
+    /// to units of a and p0 (the contact's `a` and `p0`, or the file's own units `a`, `p0`).
+    fn tractions(
+        &self,
+        raw: &RawScene,
+        contact: &Contact,
+    ) -> Result<Option<std::sync::Arc<TractionGrid>>, SceneError> {
+        let table = match (&raw.tractions, contact.kind) {
+            (None, ContactKind::Tractions) => {
+                return Err(self.error(
+                    "tractions",
+                    "a traction scene needs its [tractions] table",
+                    Some("add [tractions] with file = \"my_tractions.csv\" (rows x,y,p[,qx][,qy]), length_unit and stress_unit"),
+                ))
+            }
+            (None, _) => return Ok(None),
+            (Some(_), kind) if kind != ContactKind::Tractions => {
+                return Err(self.error(
+                    "tractions",
+                    "tractions from a file need kind = \"tractions\"",
+                    Some("set contact.kind = \"tractions\", or remove [tractions]"),
+                ))
+            }
+            (Some(table), _) => table,
+        };
+        if raw.numerical.is_some() {
+            return Err(self.error(
+                "numerical",
+                "the grid of a traction scene is the file's",
+                Some("remove [numerical]"),
+            ));
+        }
+        let length_unit = match table.length_unit.as_deref() {
+            None => LengthUnit::HalfWidth,
+            Some(key) => LengthUnit::from_key(key).ok_or_else(|| {
+                self.error(
+                    "tractions.length_unit",
+                    format!("unknown length unit `{key}`"),
+                    Some("use \"a\", \"mm\", \"um\" or \"m\""),
+                )
+            })?,
+        };
+        let stress_unit = match table.stress_unit.as_deref() {
+            None => StressUnit::PeakPressure,
+            Some(key) => StressUnit::from_key(key).ok_or_else(|| {
+                self.error(
+                    "tractions.stress_unit",
+                    format!("unknown stress unit `{key}`"),
+                    Some("use \"p0\", \"MPa\", \"GPa\" or \"Pa\""),
+                )
+            })?,
+        };
+        let dimensional_units =
+            length_unit != LengthUnit::HalfWidth || stress_unit != StressUnit::PeakPressure;
+        if dimensional_units && contact.scale.is_none() {
+            return Err(self.error(
+                "tractions.length_unit",
+                "tractions in physical units need the reference length a and pressure p0 of the figures",
+                Some("add contact.a (e.g. \"0.1 mm\") and contact.p0 (e.g. \"1 GPa\"), or give the file in units of a and p0"),
+            ));
+        }
+        let path = std::path::Path::new(self.file)
+            .parent()
+            .unwrap_or_else(|| std::path::Path::new(""))
+            .join(&table.file);
+        let text = std::fs::read_to_string(&path).map_err(|e| {
+            self.error(
+                "tractions.file",
+                format!("cannot read {}: {e}", path.display()),
+                Some("the path is relative to the scene file"),
+            )
+        })?;
+        let read = traction_csv::read(&text)
+            .map_err(|m| self.error("tractions.file", format!("{}: {m}", path.display()), None))?;
+        let a_m = contact.half_width_m();
+        let p0_pa = contact.p0_pa();
+        let length = length_unit.metres(a_m) / a_m;
+        let stress = stress_unit.pascals(p0_pa) / p0_pa;
+        let cell = [read.cell[0] * length, read.cell[1] * length];
+        let origin = [
+            read.first_centre[0] * length - 0.5 * cell[0],
+            read.first_centre[1] * length - 0.5 * cell[1],
+        ];
+        let scaled = |a: ndarray::Array2<f64>| a.mapv(|v| v * stress);
+        let grid = TractionGrid::new(
+            origin,
+            cell,
+            Some(scaled(read.pressure)),
+            read.shear_x.map(scaled),
+            read.shear_y.map(scaled),
+        )
+        .map_err(|e| self.error("tractions.file", e.to_string(), None))?;
+        let [ny, nx] = grid.shape();
+        if nx > 4096 || ny > 4096 {
+            return Err(self.error(
+                "tractions.file",
+                format!("a {nx} x {ny} grid is larger than 4096 x 4096"),
+                Some("resample the tractions more coarsely"),
+            ));
+        }
+        Ok(Some(std::sync::Arc::new(grid)))
     }
 
     fn method(&self, key: &str, value: Option<&str>) -> Result<Method, SceneError> {
@@ -757,7 +903,7 @@ impl Validator<'_> {
                 8..=100_000,
                 "strips across the contact: 400 is accurate to about 1e-4 p0 at z >= 0.1a",
             ),
-            ContactKind::Point | ContactKind::Elliptical => (
+            ContactKind::Point | ContactKind::Elliptical | ContactKind::Tractions => (
                 255,
                 8..=2048,
                 "cells per side of the traction grid: 255 over ±2a is accurate to about 0.2 % p0",
@@ -872,6 +1018,7 @@ impl Validator<'_> {
             "line" => ContactKind::Line,
             "point" => ContactKind::Point,
             "elliptical" => ContactKind::Elliptical,
+            "tractions" => ContactKind::Tractions,
             other => {
                 return Err(self.error(
                     "contact.kind",
@@ -882,7 +1029,7 @@ impl Validator<'_> {
         };
         let tangential = match (raw.tangential, kind) {
             (None, _) => None,
-            (Some(_), ContactKind::Line | ContactKind::Elliptical) => {
+            (Some(_), ContactKind::Line | ContactKind::Elliptical | ContactKind::Tractions) => {
                 return Err(self.error(
                     "contact.tangential",
                     "partial slip (Cattaneo-Mindlin) is available for a sphere only",
@@ -905,6 +1052,30 @@ impl Validator<'_> {
                 Some("add e.g. friction = 0.5"),
             ));
         }
+        if kind == ContactKind::Tractions {
+            if raw.friction.is_some() {
+                return Err(self.error(
+                    "contact.friction",
+                    "the tangential tractions of a traction scene come from the file",
+                    Some("remove it; give qx (and qy) columns in the CSV file instead"),
+                ));
+            }
+            let key = [
+                ("contact.load", raw.load.is_some()),
+                ("contact.body1", raw.body1.is_some()),
+                ("contact.body2", raw.body2.is_some()),
+                ("contact.gears", raw.gears.is_some()),
+            ]
+            .into_iter()
+            .find_map(|(key, given)| given.then_some(key));
+            if let Some(key) = key {
+                return Err(self.error(
+                    key,
+                    "a traction scene has no bodies or load: the file gives the tractions",
+                    Some("remove it; contact.a and contact.p0 set the figures' units"),
+                ));
+            }
+        }
         if kind != ContactKind::Line && raw.gears.is_some() {
             return Err(self.error(
                 "contact.gears",
@@ -915,7 +1086,7 @@ impl Validator<'_> {
         let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
         let mut aspect = match (raw.aspect, kind) {
             (None, _) => 1.0,
-            (Some(_), ContactKind::Line | ContactKind::Point) => {
+            (Some(_), ContactKind::Line | ContactKind::Point | ContactKind::Tractions) => {
                 return Err(self.error(
                     "contact.aspect",
                     "the aspect ratio b/a is for an elliptical contact",
@@ -998,7 +1169,7 @@ impl Validator<'_> {
                 Dimension::ForcePerLength,
                 "add e.g. load = \"40 kN/m\" (force per unit length for a line contact)",
             ),
-            ContactKind::Point | ContactKind::Elliptical => (
+            ContactKind::Point | ContactKind::Elliptical | ContactKind::Tractions => (
                 Dimension::Force,
                 "add e.g. load = \"500 N\" (the total force for a point contact)",
             ),
@@ -1044,6 +1215,13 @@ impl Validator<'_> {
                 })?;
                 aspect = ellipse.semi_axis_y_m / ellipse.semi_axis_x_m;
                 Hertz::Elliptical(ellipse)
+            }
+            ContactKind::Tractions => {
+                return Err(self.error(
+                    "contact.load",
+                    "a traction scene has no bodies or load",
+                    None,
+                ))
             }
         };
         Ok(Contact {
@@ -1391,7 +1569,7 @@ impl Validator<'_> {
         let a_in_unit = contact.half_width_m() / length_unit.metres(contact.half_width_m());
         let default_horizontal = match (contact.kind, section) {
             (ContactKind::Line, _) => 2.5,
-            (ContactKind::Point, _) => 2.0,
+            (ContactKind::Point | ContactKind::Tractions, _) => 2.0,
             // Twice the semi-axis along the horizontal axis (b = aspect a along y).
             (ContactKind::Elliptical, SectionKind::Yz) => 2.0 * contact.aspect,
             (ContactKind::Elliptical, _) => 2.0,

@@ -11,6 +11,7 @@ pub struct RawScene {
     #[serde(default)]
     pub figure: RawFigure,
     pub numerical: Option<RawNumerical>,
+    pub tractions: Option<RawTractions>,
     #[serde(default, rename = "panel")]
     pub panels: Vec<RawPanel>,
 }
@@ -98,6 +99,17 @@ pub struct RawNumerical {
     pub cells: Option<i64>,
     /// Half-size of the traction grid in semi-axes (point and elliptical contacts).
     pub extent: Option<f64>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawTractions {
+    /// CSV file of `x,y,p[,qx][,qy]` rows, relative to the scene file.
+    pub file: String,
+    /// Unit of x and y: "a" (default), "m", "mm", "um".
+    pub length_unit: Option<String>,
+    /// Unit of p, qx, qy: "p0" (default), "Pa", "MPa", "GPa".
+    pub stress_unit: Option<String>,
 }
 
 /// A value written either as a bare number or as a string with a unit.

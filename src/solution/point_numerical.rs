@@ -19,6 +19,8 @@ pub enum NumericalError {
     Fft(#[from] DcFftError),
     #[error(transparent)]
     Contact(#[from] crate::contact::ContactError),
+    #[error("a traction-grid scene without its grid (a bug: the scene validation loads it)")]
+    MissingTractions,
 }
 
 /// Gauss–Legendre nodes and weights on `[-1, 1]`, 4 points (exact for cubics).

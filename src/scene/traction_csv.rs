@@ -1,0 +1,185 @@
+//! Surface tractions given by the user as a CSV grid: rows `x,y,p[,qx][,qy]` at the centres of
+//! a regular grid of cells, in the units the scene states.
+
+use ndarray::Array2;
+
+/// Tractions read from a CSV file, still in the file's units.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TractionTable {
+    /// Centre of cell `[0, 0]` (smallest x and y).
+    pub first_centre: [f64; 2],
+    /// `[dx, dy]`.
+    pub cell: [f64; 2],
+    /// `[y, x]` arrays; absent columns are `None`.
+    pub pressure: Array2<f64>,
+    pub shear_x: Option<Array2<f64>>,
+    pub shear_y: Option<Array2<f64>>,
+}
+
+/// Reads the table. The header names the columns (`x`, `y`, `p`, and optionally `qx`, `qy`, in
+/// any order); `#` comments and blank lines are skipped; the rows may come in any order but must
+/// cover every node of a regular grid (at least 2 x 2) exactly once. `p >= 0` (compressive
+/// contact pressure). Errors name the line and the fix.
+pub fn read(text: &str) -> Result<TractionTable, String> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let (header_line, header) = lines.next().ok_or(
+        "the file has no header row; the first row must name the columns: x,y,p[,qx][,qy]",
+    )?;
+    let names: Vec<&str> = header.split(',').map(str::trim).collect();
+    let column = |name: &str| names.iter().position(|n| *n == name);
+    let (Some(ix), Some(iy), Some(ip)) = (column("x"), column("y"), column("p")) else {
+        return Err(format!(
+            "line {header_line}: the header must name the columns x, y and p (and optionally qx, qy), got `{header}`"
+        ));
+    };
+    if let Some(unknown) = names
+        .iter()
+        .find(|n| !["x", "y", "p", "qx", "qy"].contains(n))
+    {
+        return Err(format!(
+            "line {header_line}: unknown column `{unknown}`; the columns are x, y, p, qx, qy"
+        ));
+    }
+    let (iqx, iqy) = (column("qx"), column("qy"));
+    let mut rows: Vec<[f64; 5]> = Vec::new();
+    for (number, line) in lines {
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        if fields.len() != names.len() {
+            return Err(format!(
+                "line {number}: expected {} fields like the header, got {}",
+                names.len(),
+                fields.len()
+            ));
+        }
+        let value = |index: Option<usize>, name: &str| -> Result<f64, String> {
+            let Some(index) = index else { return Ok(0.0) };
+            let v: f64 = fields[index].parse().map_err(|_| {
+                format!(
+                    "line {number}: {name} = `{}` is not a number",
+                    fields[index]
+                )
+            })?;
+            if !v.is_finite() {
+                return Err(format!("line {number}: {name} must be finite, got {v}"));
+            }
+            Ok(v)
+        };
+        let row = [
+            value(Some(ix), "x")?,
+            value(Some(iy), "y")?,
+            value(Some(ip), "p")?,
+            value(iqx, "qx")?,
+            value(iqy, "qy")?,
+        ];
+        if row[2] < 0.0 {
+            return Err(format!(
+                "line {number}: p = {} is negative; a contact pressure pushes on the surface (p >= 0)",
+                row[2]
+            ));
+        }
+        rows.push(row);
+    }
+    let axis = |k: usize, name: &str| -> Result<(f64, f64, usize), String> {
+        let mut values: Vec<f64> = rows.iter().map(|r| r[k]).collect();
+        values.sort_by(f64::total_cmp);
+        values.dedup();
+        if values.len() < 2 {
+            return Err(format!(
+                "the grid needs at least two distinct {name} values, got {}",
+                values.len()
+            ));
+        }
+        let step = (values[values.len() - 1] - values[0]) / (values.len() - 1) as f64;
+        let tolerance = 1e-6 * step;
+        if let Some(w) = values
+            .windows(2)
+            .find(|w| (w[1] - w[0] - step).abs() > tolerance)
+        {
+            return Err(format!(
+                "the {name} values are not evenly spaced: {} follows {} (step {step}); give the tractions at the centres of a regular grid",
+                w[1], w[0]
+            ));
+        }
+        Ok((values[0], step, values.len()))
+    };
+    let (x0, dx, nx) = axis(0, "x")?;
+    let (y0, dy, ny) = axis(1, "y")?;
+    if rows.len() != nx * ny {
+        return Err(format!(
+            "{} rows for a grid of {nx} x {ny} = {} nodes: every node must appear exactly once",
+            rows.len(),
+            nx * ny
+        ));
+    }
+    let mut seen = Array2::from_elem((ny, nx), false);
+    let mut arrays = [
+        Array2::zeros((ny, nx)),
+        Array2::zeros((ny, nx)),
+        Array2::zeros((ny, nx)),
+    ];
+    for row in &rows {
+        let i = ((row[0] - x0) / dx).round() as usize;
+        let j = ((row[1] - y0) / dy).round() as usize;
+        if std::mem::replace(&mut seen[[j, i]], true) {
+            return Err(format!(
+                "the node ({}, {}) appears twice; every node must appear exactly once",
+                row[0], row[1]
+            ));
+        }
+        for (array, value) in arrays.iter_mut().zip(&row[2..]) {
+            array[[j, i]] = *value;
+        }
+    }
+    let [pressure, shear_x, shear_y] = arrays;
+    Ok(TractionTable {
+        first_centre: [x0, y0],
+        cell: [dx, dy],
+        pressure,
+        shear_x: iqx.map(|_| shear_x),
+        shear_y: iqy.map(|_| shear_y),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_a_grid_in_any_order() {
+        let text = "# two by three\nx, y, qx, p\n0.5,1,0.1,2\n0.0,1,0,1\n0,0,0,0\n0.5,0,0,3\n0,2,0,4\n0.5,2,0.2,5\n";
+        let table = read(text).expect("valid");
+        assert_eq!(table.first_centre, [0.0, 0.0]);
+        assert_eq!(table.cell, [0.5, 1.0]);
+        assert_eq!(table.pressure[[1, 1]], 2.0);
+        assert_eq!(table.pressure[[2, 0]], 4.0);
+        assert_eq!(table.shear_x.as_ref().expect("qx")[[2, 1]], 0.2);
+        assert!(table.shear_y.is_none());
+    }
+
+    #[test]
+    fn bad_tables_say_what_is_wrong() {
+        let cases = [
+            ("", "no header"),
+            ("x,y\n0,0\n", "x, y and p"),
+            ("x,y,p,q\n0,0,1,0\n", "unknown column `q`"),
+            ("x,y,p\n0,0,1\n1,0\n", "line 3: expected 3 fields"),
+            ("x,y,p\n0,0,one\n", "line 2: p = `one`"),
+            ("x,y,p\n0,0,-1\n", "negative"),
+            (
+                "x,y,p\n0,0,1\n1,0,1\n3,0,1\n0,1,1\n1,1,1\n3,1,1\n",
+                "evenly spaced",
+            ),
+            ("x,y,p\n0,0,1\n1,0,1\n0,1,1\n", "every node"),
+            ("x,y,p\n0,0,1\n1,0,1\n0,1,1\n0,1,1\n", "appears twice"),
+            ("x,y,p\n0,0,1\n0,1,1\n", "two distinct x"),
+        ];
+        for (text, fragment) in cases {
+            let error = read(text).expect_err(text);
+            assert!(error.contains(fragment), "{text:?}: {error}");
+        }
+    }
+}

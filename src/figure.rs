@@ -80,11 +80,18 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
                 chord(x, true),
                 Vec::new(),
             ),
-            Section::Xy { .. } => (
-                Vec::new(),
-                0.0,
-                vec![contact_outline(scene.contact.kind, aspect)],
-            ),
+            Section::Xy { .. } => (Vec::new(), 0.0, {
+                let mut lines = vec![contact_outline(scene.contact.kind, aspect)];
+                // Partial slip: the stick circle c = a (1 - Q/(mu P))^(1/3) too.
+                if let Some(ratio) = scene.contact.tangential {
+                    let c = (1.0 - ratio).cbrt();
+                    if c > 0.0 {
+                        let circle = contact_outline(ContactKind::Point, 1.0);
+                        lines.push(circle.into_iter().map(|(x, y)| (c * x, c * y)).collect());
+                    }
+                }
+                lines
+            }),
         };
         let clip = clipped_range(&values);
         panels.push(Panel {

@@ -262,4 +262,9 @@ fn partial_slip_tension_lies_between_no_traction_and_sliding() {
         "{max} vs {sliding}"
     );
     assert!(x < -0.9, "the tension peak is behind the contact: x = {x}");
+    // The contact circle and the stick circle c = a (1 - 0.6)^(1/3) are drawn.
+    let outlines = &built.panels[0].outlines;
+    assert_eq!(outlines.len(), 2);
+    let c = outlines[1][0].0;
+    assert!((c - 0.4f64.cbrt()).abs() < 1e-12, "{c}");
 }

@@ -9,56 +9,10 @@ use stressfield::stress::Stress;
 
 /// Stress at `(x, y, z)` of a unit normal force pressing on the surface at the origin
 /// (Boussinesq) plus `mu` times a unit tangential force in +x (Cerruti), in the crate's
-/// convention (tension positive, z into the body).
-///
-/// Johnson, *Contact Mechanics* (1985), §3.2, with `R = sqrt(x^2 + y^2 + z^2)`. Normal force P:
-///
-/// ```text
-/// sxx = P/2pi [(1-2nu) (1/(R(R+z)) - y^2 (2R+z)/(R^3 (R+z)^2)) - 3 z x^2/R^5]
-/// syy = P/2pi [(1-2nu) (1/(R(R+z)) - x^2 (2R+z)/(R^3 (R+z)^2)) - 3 z y^2/R^5]
-/// szz = -3P/2pi z^3/R^5,   syz = -3P/2pi y z^2/R^5,   sxz = -3P/2pi x z^2/R^5
-/// sxy = P/2pi [(1-2nu) x y (2R+z)/(R^3 (R+z)^2) - 3 x y z/R^5]
-/// ```
-///
-/// (Johnson's `1/r^2` forms, rewritten with `1 - z/R = r^2/(R(R+z))` so that they are regular
-/// on the axis.) Tangential force Q in +x:
-///
-/// ```text
-/// sxx = Q/2pi [-3x^3/R^5 + (1-2nu)(x/R^3 - 3x/(R(R+z)^2) + x^3/(R^3(R+z)^2) + 2x^3/(R^2(R+z)^3))]
-/// syy = Q/2pi [-3xy^2/R^5 + (1-2nu)(x/R^3 - x/(R(R+z)^2) + xy^2/(R^3(R+z)^2) + 2xy^2/(R^2(R+z)^3))]
-/// szz = -3Q/2pi x z^2/R^5,   syz = -3Q/2pi x y z/R^5,   sxz = -3Q/2pi x^2 z/R^5
-/// sxy = Q/2pi [-3x^2y/R^5 + (1-2nu)(-y/(R(R+z)^2) + x^2y/(R^3(R+z)^2) + 2x^2y/(R^2(R+z)^3))]
-/// ```
-///
-/// Both were re-derived from Love's potentials (Johnson §3.2) by computer algebra while
-/// writing these tests; their plane resultants are `∫∫ szz = -P` and `∫∫ sxz = -Q`, i.e. the
-/// forces act on the body in +z and +x.
+/// convention (tension positive, z into the body): [`crate::patch::point_forces`], whose doc
+/// comment gives the formulas (Johnson, *Contact Mechanics* (1985), §3.2).
 fn point_force(x: f64, y: f64, z: f64, mu: f64, nu: f64) -> [f64; 6] {
-    let c = 1.0 - 2.0 * nu;
-    let r = (x * x + y * y + z * z).sqrt();
-    let rz = r + z;
-    let r3 = r * r * r;
-    let r5 = r3 * r * r;
-    let k = 1.0 / (2.0 * std::f64::consts::PI);
-    let shape = (2.0 * r + z) / (r3 * rz * rz);
-    let normal = [
-        k * (c * (1.0 / (r * rz) - y * y * shape) - 3.0 * z * x * x / r5),
-        k * (c * (1.0 / (r * rz) - x * x * shape) - 3.0 * z * y * y / r5),
-        -3.0 * k * z * z * z / r5,
-        -3.0 * k * y * z * z / r5,
-        -3.0 * k * x * z * z / r5,
-        k * (c * x * y * shape - 3.0 * x * y * z / r5),
-    ];
-    let a = 1.0 / (r * rz * rz);
-    let b = 1.0 / (r3 * rz * rz) + 2.0 / (r * r * rz * rz * rz);
-    let tangential = [
-        k * (-3.0 * x * x * x / r5 + c * (x / r3 - 3.0 * x * a + x * x * x * b)),
-        k * (-3.0 * x * y * y / r5 + c * (x / r3 - x * a + x * y * y * b)),
-        -3.0 * k * x * z * z / r5,
-        -3.0 * k * x * y * z / r5,
-        -3.0 * k * x * x * z / r5,
-        k * (-3.0 * x * x * y / r5 + c * (-y * a + x * x * y * b)),
-    ];
+    let (normal, tangential) = crate::patch::point_forces(x, y, z, nu);
     std::array::from_fn(|i| normal[i] + mu * tangential[i])
 }
 

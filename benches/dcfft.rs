@@ -1,12 +1,16 @@
 //! DC-FFT of gridded surface tractions (issue 4): the sliding Hertz point contact (p and
 //! qx = 0.3 p) on 256 x 256 cells over [-2a, 2a]^2, all six stress components on 128 depth
 //! layers, in parallel over the layers. Target: under 3 s on two cores.
-//! Also one layer on the calling thread, and direct summation against DC-FFT on a small grid
-//! (both on one thread) for the ratio.
+//! Also one layer on the calling thread, one xy section through the field layer (its six
+//! components in parallel), and direct summation against DC-FFT on a small grid (both on one
+//! thread) for the ratio.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use ndarray::Array2;
+use stressfield::field::{self, Axis, Plane, Section};
 use stressfield::solution::dcfft::{DcFft, TractionGrid};
+use stressfield::solution::Solution;
+use stressfield::stress::Quantity;
 
 /// Hertz tractions sampled at the cell centres of an n x n grid over [-2, 2]^2.
 fn hertz_grid(n: usize) -> TractionGrid {
@@ -48,6 +52,27 @@ fn dcfft(c: &mut Criterion) {
     let mut layer = ndarray::Array3::zeros((6, 256, 256));
     group.bench_function(BenchmarkId::new("sequential_layer", "256x256"), |b| {
         b.iter(|| fft.layer_into(black_box(0.5), &mut workspace, layer.view_mut()))
+    });
+    // One xy section through the field layer (the six components of one layer in parallel),
+    // against the sequential layer above, all six components and von Mises.
+    let solution = Solution::sphere_numerical(0.3, 0.3, 256, 2.0).expect("planned");
+    let centres = Axis::new(-2.0 + 2.0 / 256.0, 2.0 - 2.0 / 256.0, 256);
+    let section = Plane {
+        section: Section::Xy { z: 0.5 },
+        u: centres,
+        v: centres,
+    };
+    let quantities = [
+        Quantity::Sxx,
+        Quantity::Syy,
+        Quantity::Szz,
+        Quantity::Syz,
+        Quantity::Sxz,
+        Quantity::Sxy,
+        Quantity::VonMises,
+    ];
+    group.bench_function(BenchmarkId::new("field_xy_section", "256x256"), |b| {
+        b.iter(|| field::evaluate(&solution, &section, &quantities, &|| {}).expect("fits"))
     });
     // Direct summation against DC-FFT, one layer, one thread, small grid.
     let small = hertz_grid(32);

@@ -394,51 +394,84 @@ fn evaluate_layers<T: Precision>(
         xy: layer[[5, row, column]],
     };
     let (c0, r0) = (layout.first_column, layout.first_row);
-    tractions
-        .dcfft()
-        .for_each_layer(&depths, |index, _z, layer| {
-            // The rows of the plane this layer fills, each as (row index, stresses along u).
-            let rows: Vec<(usize, Vec<Stress>)> = match plane.section {
-                Section::Xz { .. } => {
-                    vec![(
-                        index,
-                        (0..nu).map(|iu| stress(&layer, r0, c0 + iu)).collect(),
-                    )]
-                }
-                Section::Yz { .. } => {
-                    vec![(
-                        index,
-                        (0..nu).map(|iu| stress(&layer, r0 + iu, c0)).collect(),
-                    )]
-                }
-                Section::Xy { .. } => (0..nv)
-                    .map(|iv| {
-                        (
-                            iv,
-                            (0..nu).map(|iu| stress(&layer, r0 + iv, c0 + iu)).collect(),
-                        )
-                    })
-                    .collect(),
-            };
-            let mut buffer = vec![0.0; nu];
-            for (iv, stresses) in rows {
-                let mut computed = Vec::with_capacity(quantities.len());
-                for &quantity in quantities {
-                    fill_quantity(quantity, &stresses, &mut buffer);
-                    computed.push(buffer.iter().map(|&v| T::from_f64(v)).collect::<Vec<T>>());
-                }
-                // A poisoned lock only means another worker panicked; the panic propagates.
-                let mut values = values.lock().unwrap_or_else(|e| e.into_inner());
-                for (k, row) in computed.into_iter().enumerate() {
-                    for (iu, v) in row.into_iter().enumerate() {
-                        values[[iv, k, iu]] = v;
-                    }
-                }
-                drop(values);
-                on_row();
+    // Copies what a finished layer (`[component, y, x]`) contributes to the plane.
+    let take = |index: usize, layer: ndarray::ArrayView3<f64>| {
+        // The rows of the plane this layer fills, each as (row index, stresses along u).
+        let rows: Vec<(usize, Vec<Stress>)> = match plane.section {
+            Section::Xz { .. } => {
+                vec![(
+                    index,
+                    (0..nu).map(|iu| stress(&layer, r0, c0 + iu)).collect(),
+                )]
             }
-        })
-        .map_err(|e| FieldError::Numerical(e.to_string()))?;
+            Section::Yz { .. } => {
+                vec![(
+                    index,
+                    (0..nu).map(|iu| stress(&layer, r0 + iu, c0)).collect(),
+                )]
+            }
+            Section::Xy { .. } => (0..nv)
+                .map(|iv| {
+                    (
+                        iv,
+                        (0..nu).map(|iu| stress(&layer, r0 + iv, c0 + iu)).collect(),
+                    )
+                })
+                .collect(),
+        };
+        let mut buffer = vec![0.0; nu];
+        for (iv, stresses) in rows {
+            let mut computed = Vec::with_capacity(quantities.len());
+            for &quantity in quantities {
+                fill_quantity(quantity, &stresses, &mut buffer);
+                computed.push(buffer.iter().map(|&v| T::from_f64(v)).collect::<Vec<T>>());
+            }
+            // A poisoned lock only means another worker panicked; the panic propagates.
+            let mut values = values.lock().unwrap_or_else(|e| e.into_inner());
+            for (k, row) in computed.into_iter().enumerate() {
+                for (iu, v) in row.into_iter().enumerate() {
+                    values[[iv, k, iu]] = v;
+                }
+            }
+            drop(values);
+            on_row();
+        }
+    };
+    let fft = tractions.dcfft();
+    let [ny, nx] = fft.shape();
+    let numerical = |e: crate::solution::dcfft::DcFftError| FieldError::Numerical(e.to_string());
+    if let [z] = depths[..] {
+        // One layer (an xy section): its six components in parallel.
+        let mut quadrant = Vec::new();
+        fft.influence_into(z, &mut quadrant);
+        let mut layer = ndarray::Array3::zeros((6, ny, nx));
+        layer
+            .axis_iter_mut(NdAxis(0))
+            .into_par_iter()
+            .enumerate()
+            .map_init(
+                || fft.component_workspace(),
+                |workspace, (c, out)| fft.component_into(&quadrant, c, workspace, out),
+            )
+            .collect::<Result<(), _>>()
+            .map_err(numerical)?;
+        take(0, layer.view());
+    } else {
+        // Many layers: in parallel over the depths, one layer's working set per worker.
+        depths
+            .par_iter()
+            .enumerate()
+            .map_init(
+                || (fft.workspace(), ndarray::Array3::zeros((6, ny, nx))),
+                |(workspace, layer), (index, &z)| {
+                    fft.layer_into(z, workspace, layer.view_mut())?;
+                    take(index, layer.view());
+                    Ok(())
+                },
+            )
+            .collect::<Result<(), _>>()
+            .map_err(numerical)?;
+    }
     Ok(values.into_inner().unwrap_or_else(|e| e.into_inner()))
 }
 

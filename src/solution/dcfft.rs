@@ -473,6 +473,11 @@ impl FftBuffers {
 pub struct Workspace {
     /// `[load][component][b][a]`: 18 arrays of `nx ny`.
     quadrant: Vec<f64>,
+    component: ComponentWorkspace,
+}
+
+/// Working memory of one stress component of a layer ([`DcFft::component_into`]).
+pub struct ComponentWorkspace {
     /// Row spectra of one component's coefficients, one per load present.
     rows: Vec<Vec<Complex<f64>>>,
     /// Row spectra of one component of the result.
@@ -572,10 +577,18 @@ impl DcFft {
     /// Fresh working memory for [`DcFft::layer_into`].
     pub fn workspace(&self) -> Workspace {
         let [ny, nx] = self.shape;
-        let zero = Complex::new(0.0, 0.0);
-        let rows = self.plans.rows_len();
         Workspace {
             quadrant: vec![0.0; 18 * nx * ny],
+            component: self.component_workspace(),
+        }
+    }
+
+    /// Fresh working memory for [`DcFft::component_into`].
+    pub fn component_workspace(&self) -> ComponentWorkspace {
+        let [ny, _] = self.shape;
+        let zero = Complex::new(0.0, 0.0);
+        let rows = self.plans.rows_len();
+        ComponentWorkspace {
             rows: vec![vec![zero; rows]; self.tractions.len()],
             result_rows: vec![zero; rows],
             chunk: vec![zero; COLUMN_CHUNK * 2 * ny],
@@ -597,58 +610,90 @@ impl DcFft {
     ) -> Result<(), DcFftError> {
         let [ny, nx] = self.shape;
         assert_eq!(out.shape(), [6, ny, nx], "layer output must be [6, ny, nx]");
-        let Workspace {
-            quadrant,
+        self.influence_into(z, &mut workspace.quadrant);
+        for c in 0..6 {
+            self.component_into(
+                &workspace.quadrant,
+                c,
+                &mut workspace.component,
+                out.index_axis_mut(Axis(0), c),
+            )?;
+        }
+        Ok(())
+    }
+
+    /// The influence coefficients of depth `z` for [`DcFft::component_into`]: fills
+    /// `quadrant`, of the length of [`Workspace`]'s (`18 nx ny`).
+    pub fn influence_into(&self, z: f64, quadrant: &mut Vec<f64>) {
+        let [ny, nx] = self.shape;
+        quadrant.resize(18 * nx * ny, 0.0);
+        self.influence_quadrant(z, quadrant);
+    }
+
+    /// One stress component (`c` in the order of [`COMPONENTS`]) of a layer whose influence
+    /// coefficients are in `quadrant` ([`DcFft::influence_into`]), `[y, x]`. The six
+    /// components of a layer are independent, so callers may compute them on different
+    /// threads, each with its own [`ComponentWorkspace`].
+    ///
+    /// # Panics
+    /// If `out` is not `[ny, nx]` or `c >= 6`.
+    pub fn component_into(
+        &self,
+        quadrant: &[f64],
+        c: usize,
+        workspace: &mut ComponentWorkspace,
+        out: ArrayViewMut2<f64>,
+    ) -> Result<(), DcFftError> {
+        let [ny, nx] = self.shape;
+        assert!(c < 6, "stress component index {c} out of 0..6");
+        assert_eq!(out.shape(), [ny, nx], "component output must be [ny, nx]");
+        let ComponentWorkspace {
             rows,
             result_rows,
             chunk,
             sum,
             buffers,
         } = workspace;
-        self.influence_quadrant(z, quadrant);
         let scale = 1.0 / (4 * nx * ny) as f64;
         let (cells, height) = (nx * ny, 2 * ny);
-        for c in 0..6 {
-            // Row transforms of this component's coefficients, for each load.
-            for ((load, _), load_rows) in self.tractions.iter().zip(rows.iter_mut()) {
-                let parity_x = load.parity(c).0;
-                let offset = (*load as usize * 6 + c) * cells;
-                let coefficients = &quadrant[offset..offset + cells];
-                // Row b of the wrap-around grid: offsets 0..nx, a zero, then the mirror.
-                let fill_row = |b: usize, line: &mut [f64]| {
-                    let source = &coefficients[b * nx..(b + 1) * nx];
-                    line[..nx].copy_from_slice(source);
-                    line[nx] = 0.0;
-                    for (target, value) in line[nx + 1..].iter_mut().rev().zip(&source[1..]) {
-                        *target = parity_x * value;
-                    }
-                };
-                self.plans.row_spectra(fill_row, buffers, load_rows)?;
-            }
-            // Column by column chunk: forward transforms, products with the tractions'
-            // spectra summed over the loads, inverse transforms.
-            for start in (0..=nx).step_by(COLUMN_CHUNK) {
-                let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
-                let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
-                sum.fill(Complex::new(0.0, 0.0));
-                for ((load, traction), load_rows) in self.tractions.iter().zip(rows.iter()) {
-                    let more = Rows::Mirrored {
-                        parity: load.parity(c).1,
-                    };
-                    let scratch = &mut buffers.scratch;
-                    self.plans
-                        .column_chunk(load_rows, more, start, chunk, scratch);
-                    let traction = &traction[start * height..start * height + length];
-                    for ((total, coefficient), t) in sum.iter_mut().zip(&*chunk).zip(traction) {
-                        *total += coefficient * t;
-                    }
+        // Row transforms of this component's coefficients, for each load.
+        for ((load, _), load_rows) in self.tractions.iter().zip(rows.iter_mut()) {
+            let parity_x = load.parity(c).0;
+            let offset = (*load as usize * 6 + c) * cells;
+            let coefficients = &quadrant[offset..offset + cells];
+            // Row b of the wrap-around grid: offsets 0..nx, a zero, then the mirror.
+            let fill_row = |b: usize, line: &mut [f64]| {
+                let source = &coefficients[b * nx..(b + 1) * nx];
+                line[..nx].copy_from_slice(source);
+                line[nx] = 0.0;
+                for (target, value) in line[nx + 1..].iter_mut().rev().zip(&source[1..]) {
+                    *target = parity_x * value;
                 }
+            };
+            self.plans.row_spectra(fill_row, buffers, load_rows)?;
+        }
+        // Column by column chunk: forward transforms, products with the tractions'
+        // spectra summed over the loads, inverse transforms.
+        for start in (0..=nx).step_by(COLUMN_CHUNK) {
+            let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
+            let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
+            sum.fill(Complex::new(0.0, 0.0));
+            for ((load, traction), load_rows) in self.tractions.iter().zip(rows.iter()) {
+                let more = Rows::Mirrored {
+                    parity: load.parity(c).1,
+                };
+                let scratch = &mut buffers.scratch;
                 self.plans
-                    .inverse_column_chunk(sum, start, result_rows, &mut buffers.scratch);
+                    .column_chunk(load_rows, more, start, chunk, scratch);
+                let traction = &traction[start * height..start * height + length];
+                for ((total, coefficient), t) in sum.iter_mut().zip(&*chunk).zip(traction) {
+                    *total += coefficient * t;
+                }
             }
             self.plans
-                .inverse_rows(result_rows, scale, buffers, out.index_axis_mut(Axis(0), c))?;
+                .inverse_column_chunk(sum, start, result_rows, &mut buffers.scratch);
         }
+        self.plans.inverse_rows(result_rows, scale, buffers, out)?;
         Ok(())
     }
 

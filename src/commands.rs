@@ -324,40 +324,37 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
             }
         )
     })?;
-    // A scene's contact may have no closed form (elliptical, partial slip): then its numerical
-    // method, with the scene's [numerical] grid.
-    if let Some(scene) = loaded {
-        let panel = PanelSpec {
-            method: match method {
-                MethodArg::ClosedForm => Method::ClosedForm,
-                MethodArg::Numerical => Method::Numerical,
-            },
-            friction: mu,
-            poisson: nu,
-            at: 0.0,
-            subtitle: None,
-        };
-        let solution = match (scene.contact.kind, method) {
-            (ContactKind::Line, MethodArg::Numerical) => Solution::line_numerical(mu, nu, strips),
-            _ => scene.solution(&panel)?,
-        };
-        let stdout = std::io::stdout();
-        let mut out = std::io::BufWriter::new(stdout.lock());
-        probe::write_csv(&mut out, &solution, &rows)?;
-        out.flush()?;
-        return Ok(());
-    }
-    let solution = match (kind, method) {
-        (ContactArg::Line, MethodArg::ClosedForm) => Solution::LineHertz {
+    // A scene's contact may have no closed form (elliptical, partial slip, a traction file):
+    // then its numerical method, with the scene's grid.
+    let solution = match (loaded, kind, method) {
+        (Some(scene), _, _) => {
+            let panel = PanelSpec {
+                method: match method {
+                    MethodArg::ClosedForm => Method::ClosedForm,
+                    MethodArg::Numerical => Method::Numerical,
+                },
+                friction: mu,
+                poisson: nu,
+                at: 0.0,
+                subtitle: None,
+            };
+            match (scene.contact.kind, method) {
+                (ContactKind::Line, MethodArg::Numerical) => {
+                    Solution::line_numerical(mu, nu, strips)
+                }
+                _ => scene.solution(&panel)?,
+            }
+        }
+        (None, ContactArg::Line, MethodArg::ClosedForm) => Solution::LineHertz {
             friction: mu,
             poisson: nu,
         },
-        (ContactArg::Line, MethodArg::Numerical) => Solution::line_numerical(mu, nu, strips),
-        (ContactArg::Point, MethodArg::ClosedForm) => Solution::SphereHertz {
+        (None, ContactArg::Line, MethodArg::Numerical) => Solution::line_numerical(mu, nu, strips),
+        (None, ContactArg::Point, MethodArg::ClosedForm) => Solution::SphereHertz {
             friction: mu,
             poisson: nu,
         },
-        (ContactArg::Point, MethodArg::Numerical) => {
+        (None, ContactArg::Point, MethodArg::Numerical) => {
             Solution::sphere_numerical(mu, nu, cells, extent)?
         }
     };

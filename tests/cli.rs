@@ -58,6 +58,17 @@ fn scene_file(text: &str) -> (tempfile::TempDir, PathBuf) {
 
 const SMALL_SCENE: &str = "format = 1\n[contact]\nkind = \"line\"\nfriction = 0.2\n[figure]\nquantity = \"von_mises\"\nresolution = 81\nwidth = 300\n";
 
+/// The numbers of a successful `probe` run's CSV rows (header dropped).
+fn probe_rows(args: &[&str], input: &str) -> Vec<Vec<f64>> {
+    let output = run_with_stdin(args, input);
+    assert!(output.status.success(), "{}", stderr(&output));
+    stdout(&output)
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
+        .collect()
+}
+
 /// Asserts a failed run whose message contains every fragment.
 fn assert_fails_with(output: &Output, fragments: &[&str]) {
     assert!(
@@ -704,15 +715,7 @@ fn probe_takes_the_point_contact_from_a_scene() {
 #[test]
 fn probe_integrates_a_point_contact_numerically() {
     let input = "x,y,z\n0,0,0.5\n0.4,-0.3,0.25\n-1.1,0.2,0.3\n0.5,0.5,1.5\n";
-    let rows = |args: &[&str]| -> Vec<Vec<f64>> {
-        let output = run_with_stdin(args, input);
-        assert!(output.status.success(), "{}", stderr(&output));
-        stdout(&output)
-            .lines()
-            .skip(1)
-            .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
-            .collect()
-    };
+    let rows = |args: &[&str]| probe_rows(args, input);
     let exact = rows(&[
         "probe",
         "--contact",
@@ -812,15 +815,7 @@ fn traction_files_are_read_in_their_units() {
     )
     .expect("write scene");
     let input = "x,y,z\n0,0,0.5\n-0.7,0.4,0.3\n1.2,-0.2,0.8\n";
-    let rows = |args: &[&str]| -> Vec<Vec<f64>> {
-        let output = run_with_stdin(args, input);
-        assert!(output.status.success(), "{}", stderr(&output));
-        stdout(&output)
-            .lines()
-            .skip(1)
-            .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
-            .collect()
-    };
+    let rows = |args: &[&str]| probe_rows(args, input);
     let from_file = rows(&["probe", scene.to_str().expect("utf8"), "--points", "-"]);
     let built_in = rows(&[
         "probe",

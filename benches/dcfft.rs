@@ -42,7 +42,7 @@ fn dcfft(c: &mut Criterion) {
         &depths,
         |b, depths| {
             b.iter(|| {
-                fft.for_each_layer(depths, |_, _, layer| {
+                field::for_each_dcfft_layer(&fft, depths, |_, _, layer| {
                     black_box(layer[[2, 128, 128]]);
                 })
             })

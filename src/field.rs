@@ -6,6 +6,7 @@
 use ndarray::{Array3, Array4, ArrayView2, ArrayView3, Axis as NdAxis};
 use rayon::prelude::*;
 
+use crate::solution::dcfft::{DcFft, DcFftError};
 use crate::solution::point_numerical::PointTractions;
 use crate::solution::Solution;
 use crate::stress::{Quantity, Stress};
@@ -437,14 +438,45 @@ fn evaluate_layers<T: Precision>(
             on_row();
         }
     };
-    let fft = tractions.dcfft();
+    for_each_dcfft_layer(tractions.dcfft(), &depths, |index, _, layer| {
+        take(index, layer)
+    })
+    .map_err(|e| FieldError::Numerical(e.to_string()))?;
+    Ok(values.into_inner().unwrap_or_else(|e| e.into_inner()))
+}
+
+/// Computes the DC-FFT layers of `fft` at `depths` and calls `take(index, z, layer)` for each
+/// (in no particular order) with the layer `[component, y, x]`, in parallel: over the depths
+/// when there are at least as many as threads, each worker holding one layer's working set;
+/// otherwise layer after layer, each split into blocks of influence-coefficient rows and then
+/// into its six components, which run in parallel.
+pub fn for_each_dcfft_layer<F>(fft: &DcFft, depths: &[f64], take: F) -> Result<(), DcFftError>
+where
+    F: Fn(usize, f64, ndarray::ArrayView3<f64>) + Sync,
+{
     let [ny, nx] = fft.shape();
-    let numerical = |e: crate::solution::dcfft::DcFftError| FieldError::Numerical(e.to_string());
-    if let [z] = depths[..] {
-        // One layer (an xy section): its six components in parallel.
-        let mut quadrant = Vec::new();
-        fft.influence_into(z, &mut quadrant);
-        let mut layer = ndarray::Array3::zeros((6, ny, nx));
+    let threads = rayon::current_num_threads();
+    if depths.len() >= threads {
+        return depths
+            .par_iter()
+            .enumerate()
+            .map_init(
+                || (fft.workspace(), Array3::zeros((6, ny, nx))),
+                |(workspace, layer), (index, &z)| {
+                    fft.layer_into(z, workspace, layer.view_mut())?;
+                    take(index, z, layer.view());
+                    Ok(())
+                },
+            )
+            .collect();
+    }
+    let mut quadrant = Vec::new();
+    let mut layer = Array3::zeros((6, ny, nx));
+    for (index, &z) in depths.iter().enumerate() {
+        // A few blocks per thread, so that uneven blocks still balance.
+        fft.influence_blocks(&mut quadrant, 4 * threads)
+            .into_par_iter()
+            .for_each(|block| fft.fill_influence(z, block));
         layer
             .axis_iter_mut(NdAxis(0))
             .into_par_iter()
@@ -453,26 +485,10 @@ fn evaluate_layers<T: Precision>(
                 || fft.component_workspace(),
                 |workspace, (c, out)| fft.component_into(&quadrant, c, workspace, out),
             )
-            .collect::<Result<(), _>>()
-            .map_err(numerical)?;
-        take(0, layer.view());
-    } else {
-        // Many layers: in parallel over the depths, one layer's working set per worker.
-        depths
-            .par_iter()
-            .enumerate()
-            .map_init(
-                || (fft.workspace(), ndarray::Array3::zeros((6, ny, nx))),
-                |(workspace, layer), (index, &z)| {
-                    fft.layer_into(z, workspace, layer.view_mut())?;
-                    take(index, layer.view());
-                    Ok(())
-                },
-            )
-            .collect::<Result<(), _>>()
-            .map_err(numerical)?;
+            .collect::<Result<(), _>>()?;
+        take(index, z, layer.view());
     }
-    Ok(values.into_inner().unwrap_or_else(|e| e.into_inner()))
+    Ok(())
 }
 
 /// Scratch space reused from row to row by one worker.

@@ -3,8 +3,9 @@
 //! Hertz point contact (Hamilton 1983) on refined grids, with the tractions discretised by cell
 //! averages or by centre values.
 
-use ndarray::{Array2, Axis};
+use ndarray::{Array2, Array3, Array4, Axis};
 use quadrature::double_exponential;
+use stressfield::field;
 use stressfield::solution::dcfft::{DcFft, TractionGrid};
 use stressfield::solution::patch::{uniform_patch, Rectangle};
 use stressfield::solution::sphere_hertz;
@@ -16,6 +17,16 @@ fn components(s: &Stress) -> [f64; 6] {
 
 fn dcfft(grid: &TractionGrid, nu: f64) -> DcFft {
     DcFft::new(grid, nu).expect("planned")
+}
+
+/// Every layer, `[depth, component, y, x]`, one after another on this thread.
+fn all_layers(fft: &DcFft, depths: &[f64]) -> Array4<f64> {
+    let views: Vec<Array3<f64>> = depths
+        .iter()
+        .map(|&z| fft.layer(z).expect("valid input"))
+        .collect();
+    let views: Vec<_> = views.iter().map(|layer| layer.view()).collect();
+    ndarray::stack(Axis(0), &views).expect("layers of one shape")
 }
 
 #[test]
@@ -33,7 +44,7 @@ fn uniform_tractions_over_the_grid_equal_one_large_rectangle() {
     };
     let nu = 0.27;
     let depths = [0.0, 1e-4, 0.05, 0.4, 3.0];
-    let layers = dcfft(&grid, nu).layers(&depths).expect("valid input");
+    let layers = all_layers(&dcfft(&grid, nu), &depths);
     let mut worst = 0.0f64;
     for (d, &z) in depths.iter().enumerate() {
         for row in 0..ny {
@@ -101,18 +112,25 @@ fn parallel_layers_equal_single_layers() {
     .expect("valid input");
     let fft = dcfft(&grid, 0.2);
     let depths = [0.7, 0.0, 0.1, 2.5, 0.01];
-    let layers = fft.layers(&depths).expect("valid input");
-    let visited = std::sync::atomic::AtomicUsize::new(0);
-    fft.for_each_layer(&depths, |index, z, layer| {
-        assert_eq!(z, depths[index]);
-        assert_eq!(layer, layers.index_axis(Axis(0), index));
-        visited.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    })
-    .expect("valid input");
-    assert_eq!(visited.into_inner(), depths.len());
-    for (d, &z) in depths.iter().enumerate() {
-        let single = fft.layer(z).expect("valid input");
-        assert_eq!(single, layers.index_axis(Axis(0), d));
+    let layers = all_layers(&fft, &depths);
+    // Three threads: five depths run in parallel over the depths; two depths run one after
+    // the other, each split into blocks of influence rows and into components.
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(3)
+        .build()
+        .expect("a thread pool");
+    for depths in [&depths[..], &depths[1..3]] {
+        let visited = std::sync::atomic::AtomicUsize::new(0);
+        pool.install(|| {
+            field::for_each_dcfft_layer(&fft, depths, |index, z, layer| {
+                let d = index + usize::from(depths.len() == 2);
+                assert_eq!(z, depths[index]);
+                assert_eq!(layer, layers.index_axis(Axis(0), d));
+                visited.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            })
+        })
+        .expect("valid input");
+        assert_eq!(visited.into_inner(), depths.len());
     }
 }
 
@@ -198,7 +216,7 @@ fn hertz_error(n: usize, discretisation: Discretisation, depths: &[f64]) -> f64 
     let grid = hertz_grid(n, mu, discretisation);
     let fft = dcfft(&grid, nu);
     let worst = std::sync::Mutex::new(0.0f64);
-    fft.for_each_layer(depths, |_, z, layer| {
+    field::for_each_dcfft_layer(&fft, depths, |_, z, layer| {
         let mut layer_worst = 0.0f64;
         for row in 0..n {
             for column in 0..n {

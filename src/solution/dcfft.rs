@@ -6,19 +6,19 @@
 //! Layout: traction and stress arrays are indexed `[row, column] = [y, x]`; a layer of stresses
 //! is `[component, y, x]` with the components in the order of [`COMPONENTS`].
 //!
-//! Threads: [`DcFft::layers`] and [`DcFft::for_each_layer`] compute depth layers in parallel
-//! with rayon, one workspace per worker (issue 4 asks for the engine to be parallel over the
-//! layers); everything else here runs on the calling thread.
+//! Threads: everything here runs on the calling thread. The work of a layer splits into
+//! independent pieces, blocks of influence-coefficient rows ([`DcFft::influence_blocks`]) and
+//! the six stress components ([`DcFft::component_into`]), and layers are independent of each
+//! other; `crate::field` runs them in parallel.
 
 use std::sync::Arc;
 
-use ndarray::{Array2, Array3, Array4, ArrayView3, ArrayViewMut2, ArrayViewMut3, Axis};
-use rayon::prelude::*;
+use ndarray::{Array2, Array3, ArrayViewMut2, ArrayViewMut3, Axis};
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 
-use super::patch::{uniform_patch, uniform_patch_offsets, PatchStresses, Rectangle};
+use super::patch::{uniform_patch, uniform_patch_offset_rows, PatchStresses, Rectangle};
 use crate::stress::Stress;
 
 /// The order of the stress components in a layer: `xx, yy, zz, yz, xz, xy`.
@@ -503,7 +503,7 @@ pub struct ComponentWorkspace {
 /// and summed, and one inverse transform gives the component.
 ///
 /// The coefficients are evaluated on one quadrant `a, b >= 0` (from corner terms shared between
-/// neighbouring cells, [`uniform_patch_offsets`]) and mirrored by their parity (each component
+/// neighbouring cells, [`uniform_patch_offset_rows`]) and mirrored by their parity (each component
 /// is even or odd in x and in y about the loaded cell); the mirrored rows' transforms are the
 /// transformed rows times the parity. The tractions' spectra are computed once, in
 /// [`DcFft::new`]; each layer then costs one forward transform per load and component and one
@@ -625,9 +625,9 @@ impl DcFft {
     /// The influence coefficients of depth `z` for [`DcFft::component_into`]: fills
     /// `quadrant`, of the length of [`Workspace`]'s (`18 nx ny`).
     pub fn influence_into(&self, z: f64, quadrant: &mut Vec<f64>) {
-        let [ny, nx] = self.shape;
-        quadrant.resize(18 * nx * ny, 0.0);
-        self.influence_quadrant(z, quadrant);
+        for block in self.influence_blocks(quadrant, 1) {
+            self.fill_influence(z, block);
+        }
     }
 
     /// One stress component (`c` in the order of [`COMPONENTS`]) of a layer whose influence
@@ -705,56 +705,46 @@ impl DcFft {
         Ok(out)
     }
 
-    /// Every layer, `[depth, component, y, x]`, computed in parallel over the depths (one
-    /// workspace per worker). Memory: the result, `48 nx ny` bytes per depth.
-    pub fn layers(&self, depths: &[f64]) -> Result<Array4<f64>, DcFftError> {
+    /// Splits `quadrant` (resized to the length of [`Workspace`]'s, `18 nx ny`) into at most
+    /// `blocks` blocks of consecutive offset rows, to be filled by
+    /// [`DcFft::fill_influence`], possibly on different threads; together they make the
+    /// influence coefficients that [`DcFft::influence_into`] computes in one piece.
+    pub fn influence_blocks<'q>(
+        &self,
+        quadrant: &'q mut Vec<f64>,
+        blocks: usize,
+    ) -> Vec<InfluenceBlock<'q>> {
         let [ny, nx] = self.shape;
-        let mut out = Array4::zeros((depths.len(), 6, ny, nx));
-        out.axis_iter_mut(Axis(0))
-            .into_par_iter()
-            .zip(depths.par_iter())
-            .map_init(
-                || self.workspace(),
-                |workspace, (layer, &z)| self.layer_into(z, workspace, layer),
-            )
-            .collect::<Result<(), DcFftError>>()?;
-        Ok(out)
+        quadrant.resize(18 * nx * ny, 0.0);
+        let rows_per_block = ny.div_ceil(blocks.clamp(1, ny.max(1)));
+        let mut out: Vec<InfluenceBlock<'q>> = (0..ny.div_ceil(rows_per_block))
+            .map(|k| InfluenceBlock {
+                rows: k * rows_per_block..((k + 1) * rows_per_block).min(ny),
+                arrays: Vec::with_capacity(18),
+            })
+            .collect();
+        for array in quadrant.chunks_exact_mut(nx * ny) {
+            for (block, rows) in out.iter_mut().zip(array.chunks_mut(rows_per_block * nx)) {
+                block.arrays.push(rows);
+            }
+        }
+        out
     }
 
-    /// Calls `f(index, z, layer)` for every depth, in parallel over the depths and in no
-    /// particular order, with the layer `[component, y, x]`; only one layer per worker is held
-    /// at a time, so the caller can keep just what it needs (a maximum, a section, f32 copies).
-    pub fn for_each_layer<F>(&self, depths: &[f64], f: F) -> Result<(), DcFftError>
-    where
-        F: Fn(usize, f64, ArrayView3<f64>) + Sync,
-    {
-        let [ny, nx] = self.shape;
-        depths
-            .par_iter()
-            .enumerate()
-            .map_init(
-                || (self.workspace(), Array3::zeros((6, ny, nx))),
-                |(workspace, layer), (index, &z)| {
-                    self.layer_into(z, workspace, layer.view_mut())?;
-                    f(index, z, layer.view());
-                    Ok(())
-                },
-            )
-            .collect()
-    }
-
-    /// The influence coefficients at offsets `(a dx, b dy)`, `0 <= a < nx`, `0 <= b < ny`,
-    /// as 18 arrays `[load][component][b][a]` (those of absent loads are left alone).
-    fn influence_quadrant(&self, z: f64, quadrant: &mut [f64]) {
-        let [ny, nx] = self.shape;
-        let mut arrays: Vec<&mut [f64]> = quadrant.chunks_exact_mut(nx * ny).collect();
+    /// Fills one block of [`DcFft::influence_blocks`] with the coefficients of depth `z`: the
+    /// stresses at offsets `(a dx, b dy)`, `0 <= a < nx`, `b` in the block's rows, as 18 arrays
+    /// `[load][component][b][a]` (those of absent loads are left alone).
+    pub fn fill_influence(&self, z: f64, block: InfluenceBlock<'_>) {
+        let nx = self.shape[1];
+        let InfluenceBlock { rows, mut arrays } = block;
+        let first_row = rows.start;
         let present = |load: Load| self.tractions.iter().any(|(l, _)| *l == load);
         let loads: Vec<Load> = [Load::Pressure, Load::ShearX, Load::ShearY]
             .into_iter()
             .filter(|&load| present(load))
             .collect();
-        uniform_patch_offsets(self.cell, z, [nx, ny], self.poisson, |a, b, s| {
-            let index = b * nx + a;
+        uniform_patch_offset_rows(self.cell, z, nx, rows, self.poisson, |a, b, s| {
+            let index = (b - first_row) * nx + a;
             for &load in &loads {
                 let stress = load.stress(s);
                 let first = load as usize * 6;
@@ -767,6 +757,13 @@ impl DcFft {
             }
         });
     }
+}
+
+/// A block of rows of the influence coefficients of a layer ([`DcFft::influence_blocks`]):
+/// the rows `b` of each of the 18 arrays `[load][component]`.
+pub struct InfluenceBlock<'q> {
+    rows: std::ops::Range<usize>,
+    arrays: Vec<&'q mut [f64]>,
 }
 
 #[cfg(test)]
@@ -793,10 +790,9 @@ mod tests {
 
     fn assert_layers_agree(grid: &TractionGrid, depths: &[f64], nu: f64) {
         let fft = DcFft::new(grid, nu).expect("planned");
-        let layers = fft.layers(depths).expect("transformed");
-        for (d, &z) in depths.iter().enumerate() {
+        for &z in depths {
             let direct = grid.direct_layer(z, nu);
-            let difference = (&layers.index_axis(Axis(0), d) - &direct)
+            let difference = (&fft.layer(z).expect("transformed") - &direct)
                 .iter()
                 .fold(0.0f64, |m, v| m.max(v.abs()));
             assert!(

@@ -166,11 +166,24 @@ pub fn uniform_patch_offsets(
     z: f64,
     counts: [usize; 2],
     nu: f64,
+    f: impl FnMut(usize, usize, &PatchStresses),
+) {
+    uniform_patch_offset_rows(cell, z, counts[0], 0..counts[1], nu, f);
+}
+
+/// [`uniform_patch_offsets`] for the rows `b` in `rows` only (and `0 <= a < nx`), so that
+/// disjoint blocks of rows can be computed independently; each block evaluates one row of
+/// corners more than its share.
+pub fn uniform_patch_offset_rows(
+    cell: [f64; 2],
+    z: f64,
+    nx: usize,
+    rows: std::ops::Range<usize>,
+    nu: f64,
     mut f: impl FnMut(usize, usize, &PatchStresses),
 ) {
     let z = z + 0.0;
     let [dx, dy] = cell;
-    let [nx, ny] = counts;
     let columns: Vec<Edge> = (0..=nx)
         .map(|k| Edge::new((k as f64 - 0.5) * dx, z))
         .collect();
@@ -187,9 +200,9 @@ pub fn uniform_patch_offsets(
     let (mut below, mut above) = (Vec::with_capacity(nx + 1), Vec::with_capacity(nx + 1));
     let (mut ln_x_below, mut ln_x_above) = (Vec::with_capacity(nx), Vec::with_capacity(nx));
     let mut ln_y = vec![0.0; nx + 1];
-    let mut row_below = Edge::new(-0.5 * dy, z);
+    let mut row_below = Edge::new((rows.start as f64 - 0.5) * dy, z);
     corner_row(row_below, &mut below, &mut ln_x_below);
-    for b in 0..ny {
+    for b in rows {
         let row_above = Edge::new((b as f64 + 0.5) * dy, z);
         corner_row(row_above, &mut above, &mut ln_x_above);
         // D(X) = ln(R + Y_(b+1)) - ln(R + Y_b) along each column of corners.
@@ -529,6 +542,31 @@ mod tests {
                 visited += 1;
             });
             assert_eq!(visited, 63);
+        }
+    }
+
+    #[test]
+    fn blocks_of_rows_equal_the_whole() {
+        let (cell, nx, z) = ([0.3, 0.2], 6, 0.05);
+        let mut whole = Vec::new();
+        uniform_patch_offsets(cell, z, [nx, 7], 0.3, |a, b, s| whole.push((a, b, *s)));
+        let mut blocks = Vec::new();
+        for rows in [0..3, 3..4, 4..7] {
+            uniform_patch_offset_rows(cell, z, nx, rows, 0.3, |a, b, s| blocks.push((a, b, *s)));
+        }
+        assert_eq!(whole.len(), blocks.len());
+        for ((a, b, s), (a2, b2, s2)) in whole.iter().zip(&blocks) {
+            assert_eq!((a, b), (a2, b2));
+            for (g, e) in [
+                (s.pressure, s2.pressure),
+                (s.shear_x, s2.shear_x),
+                (s.shear_y, s2.shear_y),
+            ] {
+                let (g, e) = (components(&g), components(&e));
+                for i in 0..6 {
+                    assert!((g[i] - e[i]).abs() < 1e-14 * e[i].abs().max(1.0));
+                }
+            }
         }
     }
 

@@ -14,7 +14,8 @@ pub struct Args {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Render scenes to PNG (and SVG): every scene in scenes/ when none is named.
+    /// Render scenes to PNG (and SVG): every scene in scenes/ when none is named. Recording
+    /// scenes (with a [sweep] or a [volume]) are recorded to out/<scene>.rrd instead.
     Render {
         /// Scene files (TOML). Default: every *.toml in --scenes-dir.
         scenes: Vec<PathBuf>,
@@ -37,6 +38,24 @@ pub enum Command {
         /// Pixels allowed to differ beyond --tolerance, with --compare.
         #[arg(long, default_value_t = 0)]
         max_differing_pixels: usize,
+        /// Also record the (single) scene to this Rerun .rrd file.
+        #[arg(long, value_name = "FILE")]
+        rrd: Option<PathBuf>,
+    },
+    /// Record scenes to Rerun .rrd files (out/<scene>.rrd): every scene in scenes/ when none
+    /// is named. Open them with the Rerun viewer (see the README for versions).
+    Record {
+        /// Scene files (TOML). Default: every *.toml in --scenes-dir.
+        scenes: Vec<PathBuf>,
+        /// The recording's file, for a single scene (default: <out-dir>/<scene>.rrd).
+        #[arg(short = 'o', long, value_name = "FILE.rrd")]
+        output: Option<PathBuf>,
+        /// Directory for the recordings.
+        #[arg(long, default_value = "out")]
+        out_dir: PathBuf,
+        /// Directory searched when no scene is named.
+        #[arg(long, default_value = "scenes")]
+        scenes_dir: PathBuf,
     },
     /// Print the Hertz contact parameters and the yield assessment of a scene.
     Hertz { scene: PathBuf },

@@ -24,13 +24,37 @@ pub fn run(command: Command) -> Result<()> {
             compare,
             tolerance,
             max_differing_pixels,
+            rrd,
         } => {
+            let named = !scenes.is_empty();
             let scenes = scene_paths(scenes, &scenes_dir)?;
+            if rrd.is_some() && scenes.len() != 1 {
+                bail!("--rrd FILE records one scene, got {}\nhint: name one scene, or use `stressfield record` for several (one out/<scene>.rrd each)", scenes.len());
+            }
             let tolerance = Tolerance {
                 per_channel: tolerance,
                 max_differing_pixels,
             };
-            render_all(&scenes, &out_dir, svg, compare.as_deref(), tolerance)
+            let options = RenderOptions {
+                svg,
+                compare_dir: compare.as_deref(),
+                tolerance,
+                rrd: rrd.as_deref(),
+                named,
+            };
+            render_all(&scenes, &out_dir, &options)
+        }
+        Command::Record {
+            scenes,
+            output,
+            out_dir,
+            scenes_dir,
+        } => {
+            let scenes = scene_paths(scenes, &scenes_dir)?;
+            if output.is_some() && scenes.len() != 1 {
+                bail!("-o FILE.rrd records one scene, got {}\nhint: name one scene, or leave out -o to write <out-dir>/<scene>.rrd for each", scenes.len());
+            }
+            record_all(&scenes, &out_dir, output.as_deref())
         }
         Command::Hertz { scene } => {
             let scene = Scene::load(&scene)?;
@@ -84,14 +108,24 @@ fn say(bar: &ProgressBar, line: impl AsRef<str>) {
     }
 }
 
-fn render_all(
-    paths: &[PathBuf],
-    out_dir: &Path,
+/// Options of `render`.
+struct RenderOptions<'a> {
     svg: bool,
-    compare_dir: Option<&Path>,
+    compare_dir: Option<&'a Path>,
     tolerance: Tolerance,
-) -> Result<()> {
-    let mut failures = Vec::new();
+    /// Record the (single) scene to this file too.
+    rrd: Option<&'a Path>,
+    /// Scenes were named on the command line (a recording scene is then drawn as a figure
+    /// too); otherwise recording scenes are only recorded.
+    named: bool,
+}
+
+/// Whether a scene is a recording (a sweep or a volume) rather than a figure.
+fn is_recording(scene: &Scene) -> bool {
+    scene.sweep.is_some() || scene.volume.is_some()
+}
+
+fn load_scenes(paths: &[PathBuf], failures: &mut Vec<String>) -> Vec<Scene> {
     let mut scenes = Vec::new();
     for path in paths {
         match Scene::load(path) {
@@ -102,13 +136,23 @@ fn render_all(
             }
         }
     }
+    scenes
+}
+
+fn create_out_dir(out_dir: &Path) -> Result<()> {
+    std::fs::create_dir_all(out_dir).with_context(|| {
+        format!(
+            "cannot create the output directory {}\nhint: choose a writable one with --out-dir",
+            out_dir.display()
+        )
+    })
+}
+
+fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Result<()> {
+    let mut failures = Vec::new();
+    let scenes = load_scenes(paths, &mut failures);
     if !scenes.is_empty() {
-        std::fs::create_dir_all(out_dir).with_context(|| {
-            format!(
-                "cannot create the output directory {}\nhint: choose a writable one with --out-dir",
-                out_dir.display()
-            )
-        })?;
+        create_out_dir(out_dir)?;
     }
     let total_rows: usize = scenes
         .iter()
@@ -118,7 +162,26 @@ fn render_all(
     let mut mismatches = Vec::new();
     for scene in &scenes {
         bar.set_message(scene.name.clone());
-        match render_scene(scene, out_dir, svg, &bar) {
+        // The main job (no scenes named): a recording scene is recorded, not drawn.
+        if is_recording(scene) && !options.named {
+            let path = out_dir.join(format!("{}.rrd", scene.name));
+            match record_scene(scene, &path, &bar) {
+                Ok(line) => say(&bar, line),
+                Err(e) => {
+                    say(&bar, format!("error: scene {}: {e:#}", scene.name));
+                    failures.push(scene.name.clone());
+                }
+            }
+            continue;
+        }
+        let rendered = render_scene(scene, out_dir, options.svg, &bar).and_then(|png| {
+            if let Some(path) = options.rrd {
+                let line = record_scene(scene, path, &bar)?;
+                say(&bar, line);
+            }
+            Ok(png)
+        });
+        match rendered {
             Ok(png) => {
                 say(
                     &bar,
@@ -127,8 +190,8 @@ fn render_all(
                         out_dir.join(format!("{}.png", scene.name)).display()
                     ),
                 );
-                if let Some(dir) = compare_dir {
-                    match compare_with_reference(scene, &png, dir, out_dir, tolerance) {
+                if let Some(dir) = options.compare_dir {
+                    match compare_with_reference(scene, &png, dir, out_dir, options.tolerance) {
                         Ok(None) => {}
                         Ok(Some(message)) => {
                             say(&bar, message);
@@ -161,11 +224,73 @@ fn render_all(
             "{} of {} images differ from the references in {}: {}",
             mismatches.len(),
             scenes.len(),
-            compare_dir.map_or_else(String::new, |d| d.display().to_string()),
+            options
+                .compare_dir
+                .map_or_else(String::new, |d| d.display().to_string()),
             mismatches.join(", ")
         );
     }
     Ok(())
+}
+
+/// `record`: one recording per scene, `<out_dir>/<scene>.rrd` or `output`.
+fn record_all(paths: &[PathBuf], out_dir: &Path, output: Option<&Path>) -> Result<()> {
+    let mut failures = Vec::new();
+    let scenes = load_scenes(paths, &mut failures);
+    if !scenes.is_empty() && output.is_none() {
+        create_out_dir(out_dir)?;
+    }
+    let bar = progress_bar(scenes.len() as u64);
+    for scene in &scenes {
+        bar.set_message(scene.name.clone());
+        let path = output.map_or_else(
+            || out_dir.join(format!("{}.rrd", scene.name)),
+            Path::to_path_buf,
+        );
+        match record_scene(scene, &path, &bar) {
+            Ok(line) => say(&bar, line),
+            Err(e) => {
+                say(&bar, format!("error: scene {}: {e:#}", scene.name));
+                failures.push(scene.name.clone());
+            }
+        }
+    }
+    bar.finish_and_clear();
+    if !failures.is_empty() {
+        bail!(
+            "{} of {} scenes failed: {}",
+            failures.len(),
+            paths.len(),
+            failures.join(", ")
+        );
+    }
+    Ok(())
+}
+
+/// Records one scene to `path` (atomically); returns the line to print.
+#[cfg(feature = "rerun")]
+fn record_scene(scene: &Scene, path: &Path, bar: &ProgressBar) -> Result<String> {
+    let summary = stressfield::record::record_to_file(scene, path, &|| bar.inc(1))?;
+    let mut line = format!("recorded {}", path.display());
+    if summary.steps > 1 {
+        let timeline = stressfield::record::timeline(scene);
+        line.push_str(&format!(
+            " ({} steps on the timeline `{timeline}`)",
+            summary.steps
+        ));
+    }
+    if summary.volume_points > 0 {
+        line.push_str(&format!(", {} volume points", summary.volume_points));
+    }
+    Ok(line)
+}
+
+#[cfg(not(feature = "rerun"))]
+fn record_scene(scene: &Scene, _path: &Path, _bar: &ProgressBar) -> Result<String> {
+    bail!(
+        "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",
+        scene.name
+    )
 }
 
 /// Renders one scene, writes its PNG (and SVG) atomically, and returns the PNG image.

@@ -38,6 +38,8 @@ pub mod field;
 pub mod figure;
 pub mod output;
 pub mod probe;
+#[cfg(feature = "rerun")]
+pub mod record;
 pub mod render;
 pub mod report;
 pub mod scene;

@@ -7,4 +7,6 @@ mod golden;
 mod line_contact;
 mod patch;
 mod point_contact;
+#[cfg(feature = "rerun")]
+mod record;
 mod scenes;

@@ -5,7 +5,7 @@
 //! Everything here is in display units: the caller has already converted coordinates (x/a or
 //! mm) and values (multiples of p0, or MPa).
 
-mod colormap;
+pub(crate) mod colormap;
 mod contour;
 mod draw;
 mod font;

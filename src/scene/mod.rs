@@ -4,6 +4,7 @@
 //! See the README for the format reference.
 
 mod raw;
+mod sweep;
 pub mod traction_csv;
 pub mod units;
 
@@ -22,6 +23,8 @@ use crate::solution::Solution;
 use crate::stress::{Quantity, QuantityKind};
 use raw::{NumberOrText, RawBody, RawContact, RawFigure, RawScene};
 use units::Dimension;
+
+pub use sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
 
 /// The scene format this build reads.
 pub const FORMAT: i64 = 1;
@@ -243,6 +246,16 @@ impl LengthUnit {
         }
     }
 
+    /// The unit after a number: `a`, ` m`, ` mm`, ` µm`.
+    pub fn suffix(self) -> &'static str {
+        match self {
+            Self::HalfWidth => "a",
+            Self::Metre => " m",
+            Self::Millimetre => " mm",
+            Self::Micrometre => " µm",
+        }
+    }
+
     /// Axis label for a coordinate, e.g. `x/a` or `x (mm)`.
     pub fn axis_label(self, coordinate: &str) -> String {
         match self {
@@ -384,6 +397,12 @@ pub struct Scene {
     pub numerical: Numerical,
     /// The user's tractions (kind = "tractions") on their grid, in units of a and p0.
     pub tractions: Option<std::sync::Arc<TractionGrid>>,
+    /// A recording scene's sweep: one time point per value.
+    pub sweep: Option<Sweep>,
+    /// A recording scene's 3-D point cloud (point contacts).
+    pub volume: Option<VolumeSpec>,
+    /// The x position of the contact's centre on the body (units of a; a moving load's step).
+    pub load_centre_over_a: f64,
 }
 
 impl Scene {
@@ -527,8 +546,15 @@ impl Scene {
         Plane { section, u, v }
     }
 
-    /// The stress solution of a panel (for a difference panel, the numerical one).
+    /// The stress solution of a panel (for a difference panel, the numerical one), centred at
+    /// `load_centre_over_a`.
     pub fn solution(&self, panel: &PanelSpec) -> Result<Solution, NumericalError> {
+        Ok(self
+            .centred_solution(panel)?
+            .moved_to(self.load_centre_over_a))
+    }
+
+    fn centred_solution(&self, panel: &PanelSpec) -> Result<Solution, NumericalError> {
         let (mu, nu) = (panel.friction, panel.poisson);
         if panel.method == Method::ClosedForm {
             if let Some(solution) = self.contact.solution(mu, nu) {
@@ -565,7 +591,8 @@ impl Scene {
     /// The closed-form solution of a panel's contact, if it has one (validated for every panel
     /// drawn in closed form or as a difference).
     pub fn closed_form(&self, panel: &PanelSpec) -> Option<Solution> {
-        self.contact.solution(panel.friction, panel.poisson)
+        let solution = self.contact.solution(panel.friction, panel.poisson)?;
+        Some(solution.moved_to(self.load_centre_over_a))
     }
 }
 
@@ -763,7 +790,7 @@ impl Validator<'_> {
                 Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),
             ));
         }
-        Ok(Scene {
+        let mut scene = Scene {
             name: name.into(),
             title: raw.title,
             contact,
@@ -771,7 +798,17 @@ impl Validator<'_> {
             panels,
             numerical,
             tractions,
-        })
+            sweep: None,
+            volume: None,
+            load_centre_over_a: 0.0,
+        };
+        if let Some(sweep) = &raw.sweep {
+            scene.sweep = Some(self.sweep(sweep, &scene)?);
+        }
+        if let Some(volume) = &raw.volume {
+            scene.volume = Some(self.volume(volume, &scene.contact, &scene.figure)?);
+        }
+        Ok(scene)
     }
 
     /// The `[tractions]` table of a `kind = "tractions"` scene: the CSV grid read and converted

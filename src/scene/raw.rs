@@ -14,6 +14,34 @@ pub struct RawScene {
     pub tractions: Option<RawTractions>,
     #[serde(default, rename = "panel")]
     pub panels: Vec<RawPanel>,
+    pub sweep: Option<RawSweep>,
+    pub volume: Option<RawVolume>,
+}
+
+/// `[sweep]`: one time point of a recording per value.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSweep {
+    /// "friction", "load" or "position".
+    pub parameter: String,
+    pub values: Option<Vec<NumberOrText>>,
+    pub from: Option<f64>,
+    pub to: Option<f64>,
+    pub steps: Option<i64>,
+    /// `[[x, z], ...]` in the figure's length unit (position sweeps).
+    pub material_points: Option<Vec<Vec<f64>>>,
+}
+
+/// `[volume]`: a box under a point contact, recorded as a point cloud.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawVolume {
+    pub quantity: Option<String>,
+    pub x: Option<Vec<f64>>,
+    pub y: Option<Vec<f64>>,
+    pub z: Option<Vec<f64>>,
+    pub points: Option<i64>,
+    pub threshold: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -36,9 +36,36 @@ pub enum Solution {
         friction: f64,
         poisson: f64,
     },
+    /// Another solution with the contact's centre moved to `x = centre_x_over_a` on the
+    /// surface: `σ(x, y, z) = σ_inner(x - centre, y, z)`. A moving load seen in a fixed body
+    /// frame (evaluated point by point, never by DC-FFT layers).
+    Moved {
+        inner: Arc<Solution>,
+        centre_x_over_a: f64,
+    },
 }
 
 impl Solution {
+    /// This solution with the contact centred at `x = centre_x_over_a` (itself at 0).
+    pub fn moved_to(self, centre_x_over_a: f64) -> Self {
+        if centre_x_over_a == 0.0 {
+            return self;
+        }
+        match self {
+            Solution::Moved {
+                inner,
+                centre_x_over_a: centre,
+            } => Solution::Moved {
+                inner,
+                centre_x_over_a: centre + centre_x_over_a,
+            },
+            solution => Solution::Moved {
+                inner: Arc::new(solution),
+                centre_x_over_a,
+            },
+        }
+    }
+
     /// The Hertz line contact integrated numerically over `strips` uniform strips.
     pub fn line_numerical(friction: f64, poisson: f64, strips: usize) -> Self {
         let tractions = Arc::new(StripTractions::hertz(strips, friction));
@@ -83,6 +110,10 @@ impl Solution {
             Solution::PointNumerical { tractions, .. } => {
                 tractions.stress_over_p0(x_over_a, y_over_a, z_over_a)
             }
+            Solution::Moved {
+                inner,
+                centre_x_over_a,
+            } => inner.stress_over_p0(x_over_a - centre_x_over_a, y_over_a, z_over_a),
         }
     }
 
@@ -114,6 +145,13 @@ impl Solution {
                     *stress = tractions.stress_over_p0(x, y_over_a, z_over_a);
                 }
             }
+            Solution::Moved {
+                inner,
+                centre_x_over_a,
+            } => {
+                let shifted: Vec<f64> = xs.iter().map(|x| x - centre_x_over_a).collect();
+                inner.stress_row_over_p0(&shifted, y_over_a, z_over_a, out);
+            }
         }
     }
 
@@ -129,6 +167,10 @@ impl Solution {
                 sphere_hertz::surface_traction_over_p0(x_over_a, y_over_a, *friction)
             }
             Solution::PointNumerical { tractions, .. } => tractions.traction_at(x_over_a, y_over_a),
+            Solution::Moved {
+                inner,
+                centre_x_over_a,
+            } => inner.surface_traction_over_p0(x_over_a - centre_x_over_a, y_over_a),
         }
     }
 
@@ -137,6 +179,7 @@ impl Solution {
         match self {
             Solution::LineHertz { .. } | Solution::LineNumerical { .. } => false,
             Solution::SphereHertz { .. } | Solution::PointNumerical { .. } => true,
+            Solution::Moved { inner, .. } => inner.is_three_dimensional(),
         }
     }
 
@@ -146,6 +189,7 @@ impl Solution {
             | Solution::LineNumerical { friction, .. }
             | Solution::SphereHertz { friction, .. }
             | Solution::PointNumerical { friction, .. } => *friction,
+            Solution::Moved { inner, .. } => inner.friction(),
         }
     }
 
@@ -155,6 +199,7 @@ impl Solution {
             | Solution::LineNumerical { poisson, .. }
             | Solution::SphereHertz { poisson, .. }
             | Solution::PointNumerical { poisson, .. } => *poisson,
+            Solution::Moved { inner, .. } => inner.poisson(),
         }
     }
 }

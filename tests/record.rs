@@ -13,14 +13,19 @@ use stressfield::solution::line_hertz;
 struct Contents {
     chunks: BTreeMap<String, Vec<Chunk>>,
     application_ids: Vec<String>,
+    /// Blueprint stores (viewer layouts) among the messages.
+    blueprints: usize,
 }
 
 impl Contents {
     fn from_messages(messages: impl IntoIterator<Item = LogMsg>) -> Self {
         let mut chunks: BTreeMap<String, Vec<Chunk>> = BTreeMap::new();
         let mut application_ids = Vec::new();
+        let mut blueprints = 0;
         for message in messages {
             match message {
+                // The viewer layout (blueprint store) is not the data.
+                LogMsg::ArrowMsg(store, _) if store.kind() != rerun::StoreKind::Recording => {}
                 LogMsg::ArrowMsg(_, arrow) => {
                     let chunk = Chunk::from_arrow_msg(&arrow).expect("a valid chunk");
                     chunks
@@ -30,6 +35,8 @@ impl Contents {
                 }
                 LogMsg::SetStoreInfo(info) => {
                     application_ids.push(info.info.application_id().to_string());
+                    blueprints +=
+                        usize::from(info.info.store_id.kind() == rerun::StoreKind::Blueprint);
                 }
                 LogMsg::BlueprintActivationCommand(_) => {}
             }
@@ -37,6 +44,7 @@ impl Contents {
         Self {
             chunks,
             application_ids,
+            blueprints,
         }
     }
 
@@ -282,6 +290,8 @@ fn a_recording_written_to_a_file_decodes_with_its_entities() {
         .all(|id| id == APPLICATION_ID));
     assert!(contents.paths().contains(&"/sections/0/field"));
     assert_eq!(contents.scalars("/series/0/maximum", "friction").len(), 6);
+    // The file carries its viewer layout.
+    assert!(contents.blueprints >= 1);
     // Nothing else was left in the directory (no temporary file).
     let names: Vec<_> = std::fs::read_dir(dir.path())
         .expect("listed")

@@ -152,6 +152,7 @@ pub fn record_scene(scene: &Scene, stream: &RecordingStream) -> Result<Summary, 
     for k in 0..panels {
         log_placement(stream, k, &figures[0])?;
     }
+    send_blueprint(scene, stream, &figures[0])?;
     let volumes = scene
         .volume
         .as_ref()
@@ -186,6 +187,72 @@ pub fn record_scene(scene: &Scene, stream: &RecordingStream) -> Result<Summary, 
         panels,
         volume_points,
     })
+}
+
+/// The viewer layout: one 2-D view per panel (its field, tractions and maximum in physical
+/// coordinates), the 3-D volume, and beside them the description, the raw values, the series
+/// and the steps.
+fn send_blueprint(
+    scene: &Scene,
+    stream: &RecordingStream,
+    figure: &Figure,
+) -> Result<(), RecordError> {
+    use rerun::blueprint::{
+        Blueprint, BlueprintActivation, ContainerLike, Grid, Horizontal, Spatial2DView,
+        Spatial3DView, Tabs, TensorView, TextDocumentView, TextLogView, TimeSeriesView, Vertical,
+    };
+    let mut maps: Vec<ContainerLike> = figure
+        .panels
+        .iter()
+        .enumerate()
+        .map(|(k, panel)| {
+            let name = if panel.subtitle.is_empty() {
+                format!("panel {k}")
+            } else {
+                panel.subtitle.clone()
+            };
+            Spatial2DView::new(name)
+                .with_origin(format!("sections/{k}"))
+                .with_contents(["$origin/**", "- $origin/values"])
+                .into()
+        })
+        .collect();
+    if scene.volume.is_some() {
+        maps.push(
+            Spatial3DView::new("volume (z down)")
+                .with_origin("volume")
+                .into(),
+        );
+    }
+    let mut tabs: Vec<ContainerLike> = vec![TextDocumentView::new("scene")
+        .with_origin("description")
+        .into()];
+    tabs.extend((0..figure.panels.len()).map(|k| {
+        TensorView::new(format!("values {k}"))
+            .with_origin(format!("sections/{k}/values"))
+            .into()
+    }));
+    let mut side: Vec<ContainerLike> = vec![Tabs::new(tabs).into()];
+    side.push(TimeSeriesView::new("maxima").with_origin("series").into());
+    if let Some(sweep) = &scene.sweep {
+        if !sweep.material_points.is_empty() {
+            side.push(
+                TimeSeriesView::new("stress history")
+                    .with_origin("history")
+                    .into(),
+            );
+        }
+        side.push(TextLogView::new("steps").with_origin("log").into());
+    }
+    let root = Horizontal::new([Grid::new(maps).into(), Vertical::new(side).into()]);
+    Blueprint::new(root).send(
+        stream,
+        BlueprintActivation {
+            make_active: true,
+            make_default: true,
+        },
+    )?;
+    Ok(())
 }
 
 /// The static transform that places panel `k`'s image pixels at the grid samples.

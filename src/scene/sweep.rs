@@ -293,13 +293,15 @@ impl Validator<'_> {
                     [x, z] if x.is_finite() && z.is_finite() && *z >= 0.0 => {
                         material_points.push((*x, *z))
                     }
-                    _ => return Err(self.error(
-                        &format!("sweep.material_points[{i}]"),
-                        format!(
+                    _ => {
+                        return Err(self.error(
+                            &format!("sweep.material_points[{i}]"),
+                            format!(
                             "needs [x, z] with z >= 0 (in the figure's length unit), got {point:?}"
                         ),
-                        None,
-                    )),
+                            None,
+                        ))
+                    }
                 }
             }
             if scene.figure.section != super::SectionKind::Xz {

@@ -53,6 +53,21 @@ fn dcfft(c: &mut Criterion) {
     group.bench_function(BenchmarkId::new("sequential_layer", "256x256"), |b| {
         b.iter(|| fft.layer_into(black_box(0.5), &mut workspace, layer.view_mut()))
     });
+    // The influence coefficients of one layer: on one thread, and in blocks of rows over the
+    // rayon pool (as field::for_each_dcfft_layer does for fewer layers than threads).
+    let mut quadrant = Vec::new();
+    group.bench_function(BenchmarkId::new("influence_sequential", "256x256"), |b| {
+        b.iter(|| fft.influence_into(black_box(0.5), &mut quadrant))
+    });
+    group.bench_function(BenchmarkId::new("influence_blocks", "256x256"), |b| {
+        b.iter(|| {
+            use rayon::prelude::*;
+            let threads = rayon::current_num_threads();
+            fft.influence_blocks(&mut quadrant, 4 * threads)
+                .into_par_iter()
+                .for_each(|block| fft.fill_influence(black_box(0.5), block));
+        })
+    });
     // One xy section through the field layer (the six components of one layer in parallel),
     // against the sequential layer above, all six components and von Mises.
     let solution = Solution::sphere_numerical(0.3, 0.3, 256, 2.0).expect("planned");

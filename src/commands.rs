@@ -156,7 +156,15 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
     }
     let total_rows: usize = scenes
         .iter()
-        .map(|s| s.panels.iter().map(|p| s.plane(p).v.count).sum::<usize>())
+        .map(|s| {
+            let figure: usize = s.panels.iter().map(|p| s.plane(p).v.count).sum();
+            // A recording evaluates its sections at every step.
+            match (is_recording(s) && !options.named, options.rrd.is_some()) {
+                (true, _) => recording_rows(s),
+                (false, true) => figure + recording_rows(s),
+                (false, false) => figure,
+            }
+        })
         .sum();
     let bar = progress_bar(total_rows as u64);
     let mut mismatches = Vec::new();
@@ -240,7 +248,7 @@ fn record_all(paths: &[PathBuf], out_dir: &Path, output: Option<&Path>) -> Resul
     if !scenes.is_empty() && output.is_none() {
         create_out_dir(out_dir)?;
     }
-    let bar = progress_bar(scenes.len() as u64);
+    let bar = progress_bar(scenes.iter().map(recording_rows).sum::<usize>() as u64);
     for scene in &scenes {
         bar.set_message(scene.name.clone());
         let path = output.map_or_else(
@@ -265,6 +273,16 @@ fn record_all(paths: &[PathBuf], out_dir: &Path, output: Option<&Path>) -> Resul
         );
     }
     Ok(())
+}
+
+#[cfg(feature = "rerun")]
+fn recording_rows(scene: &Scene) -> usize {
+    stressfield::record::rows(scene)
+}
+
+#[cfg(not(feature = "rerun"))]
+fn recording_rows(_scene: &Scene) -> usize {
+    0
 }
 
 /// Records one scene to `path` (atomically); returns the line to print.

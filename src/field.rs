@@ -420,13 +420,22 @@ fn evaluate_layers<T: Precision>(
                 })
                 .collect(),
         };
-        let mut buffer = vec![0.0; nu];
-        for (iv, stresses) in rows {
-            let mut computed = Vec::with_capacity(quantities.len());
-            for &quantity in quantities {
-                fill_quantity(quantity, &stresses, &mut buffer);
-                computed.push(buffer.iter().map(|&v| T::from_f64(v)).collect::<Vec<T>>());
-            }
+        // The quantities of each row (in parallel: an xy section has all its rows here).
+        let computed: Vec<(usize, Vec<Vec<T>>)> = rows
+            .into_par_iter()
+            .map_init(
+                || vec![0.0; nu],
+                |buffer, (iv, stresses)| {
+                    let mut computed = Vec::with_capacity(quantities.len());
+                    for &quantity in quantities {
+                        fill_quantity(quantity, &stresses, buffer);
+                        computed.push(buffer.iter().map(|&v| T::from_f64(v)).collect());
+                    }
+                    (iv, computed)
+                },
+            )
+            .collect();
+        for (iv, computed) in computed {
             // A poisoned lock only means another worker panicked; the panic propagates.
             let mut values = values.lock().unwrap_or_else(|e| e.into_inner());
             for (k, row) in computed.into_iter().enumerate() {

@@ -306,6 +306,21 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"tractions\"\nmethod = \"numerical\"\n[tractions]\nfile = \"missing.csv\"\n", "key `tractions.file`", "relative to the scene file"),
     ("format = 1\n[contact]\nkind = \"tractions\"\nmethod = \"numerical\"\n[tractions]\nfile = \"t.csv\"\nlength_unit = \"mm\"\n", "key `tractions.length_unit`", "contact.a"),
     ("format = 1\n[contact]\nkind = \"point\"\n[tractions]\nfile = \"t.csv\"\n", "key `tractions`", "kind = \"tractions\""),
+    // Recording scenes.
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"speed\"\nvalues = [1.0]\n", "key `sweep.parameter`", "\"position\""),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\n", "key `sweep`", "from = 0.0, to = 0.5, steps = 11"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nfrom = 0.0\nto = 0.5\nsteps = 1000\n", "key `sweep.steps`", "2..=400"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nvalues = [0.1, -0.2]\n", "key `sweep.values[1]`", ">= 0"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"load\"\nvalues = [\"1 kN/m\"]\n", "key `sweep.parameter`", "contact.load"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n[figure]\nlength_unit = \"a\"\nstress_unit = \"p0\"\n[sweep]\nparameter = \"load\"\nvalues = [\"10 kN/m\", \"20 kN/m\"]\n", "key `figure.length_unit`", "length_unit = \"mm\""),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"300 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6 mm\"\nmaterial = \"steel\"\n[sweep]\nparameter = \"load\"\nvalues = [\"100 N/m\"]\n", "key `sweep.values[0]`", "unknown unit `N/m`"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nvalues = [0.1]\nmaterial_points = [[0.0, 0.5]]\n", "key `sweep.material_points`", "parameter = \"position\""),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"position\"\nvalues = [0.0]\nmaterial_points = [[0.0, -0.5]]\n", "key `sweep.material_points[0]`", "z >= 0"),
+    ("format = 1\n[contact]\nkind = \"point\"\nmethod = \"numerical\"\n[sweep]\nparameter = \"position\"\nvalues = [0.0, 1.0]\n", "key `sweep.parameter`", "closed_form"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[volume]\npoints = 32\n", "key `volume`", "kind = \"point\""),
+    ("format = 1\n[contact]\nkind = \"point\"\n[volume]\npoints = 1000\n", "key `volume.points`", "48 to 96"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[volume]\nthreshold = 1.5\n", "key `volume.threshold`", "[0, 1)"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[volume]\nz = [-1.0, 1.0]\n", "key `volume.z`", ">= 0"),
 ];
 
 #[test]
@@ -869,4 +884,57 @@ fn hertz_reports_maxima_of_a_contact_without_closed_form() {
         !text.contains("when p0 ="),
         "tractions from a file have no Hertz p0:\n{text}"
     );
+}
+
+#[test]
+fn record_writes_one_recording_per_scene_and_refuses_bad_outputs() {
+    let (dir, scene) = scene_file(&format!(
+        "{SMALL_SCENE}[sweep]\nparameter = \"friction\"\nvalues = [0.0, 0.3]\n"
+    ));
+    let scene = scene.to_str().expect("utf8");
+    let out = dir.path().join("out");
+    let output = run(&["record", scene, "--out-dir", out.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("2 steps on the timeline `friction`"),
+        "{}",
+        stderr(&output)
+    );
+    let bytes = std::fs::read(out.join("case.rrd")).expect("out/case.rrd");
+    assert!(bytes.len() > 1000);
+    // -o names the file; it takes one scene only.
+    let file = dir.path().join("named.rrd");
+    let output = run(&["record", scene, "-o", file.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(file.exists());
+    assert_fails_with(
+        &run(&["record", scene, scene, "-o", "x.rrd"]),
+        &["one scene", "-o"],
+    );
+    // An unwritable place: a clear error and nothing left behind.
+    let missing = dir.path().join("no").join("such.rrd");
+    assert_fails_with(
+        &run(&["record", scene, "-o", missing.to_str().expect("utf8")]),
+        &["cannot write", "writable"],
+    );
+    assert!(!dir.path().join("no").exists());
+    // render --rrd: the figure and its recording.
+    let figure_dir = dir.path().join("figures");
+    let recording = dir.path().join("figure.rrd");
+    let output = run(&[
+        "render",
+        scene,
+        "--out-dir",
+        figure_dir.to_str().expect("utf8"),
+        "--rrd",
+        recording.to_str().expect("utf8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(figure_dir.join("case.png").exists() && recording.exists());
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path())
+        .expect("listed")
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().contains(".part"))
+        .collect();
+    assert!(leftovers.is_empty(), "temporary files left: {leftovers:?}");
 }

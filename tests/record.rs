@@ -91,7 +91,13 @@ fn record_in_memory(scene: &Scene) -> (record::Summary, Contents) {
     let (stream, storage) = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
         .memory()
         .expect("an in-memory recording");
-    let summary = record::record_scene(scene, &stream).expect("recorded");
+    let rows = std::sync::atomic::AtomicUsize::new(0);
+    let on_row = || {
+        rows.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    };
+    let summary = record::record_scene(scene, &stream, &on_row).expect("recorded");
+    // Progress: one call per evaluated row.
+    assert_eq!(rows.into_inner(), record::rows(scene));
     stream.flush_blocking().expect("flushed");
     (summary, Contents::from_messages(storage.take()))
 }

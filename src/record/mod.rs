@@ -86,7 +86,7 @@ pub fn record_to_file(
     let stream = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
         .recording_name(scene.name.clone())
         .save(&temp)?;
-    let summary = record_scene(scene, &stream).and_then(|summary| {
+    let summary = record_scene(scene, &stream, on_row).and_then(|summary| {
         stream
             .flush_blocking()
             .map_err(|e| RecordError::Rerun(e.to_string()))?;
@@ -95,7 +95,6 @@ pub fn record_to_file(
     // The footer is written when the last handle of the stream is dropped.
     drop(stream);
     let summary = summary?;
-    on_row();
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
@@ -112,8 +111,20 @@ pub fn timeline(scene: &Scene) -> &'static str {
     scene.sweep.as_ref().map_or("step", |s| s.parameter.key())
 }
 
-/// Records every step of `scene` into `stream`.
-pub fn record_scene(scene: &Scene, stream: &RecordingStream) -> Result<Summary, RecordError> {
+/// Grid rows a recording of `scene` evaluates (its sections at every step), for progress.
+pub fn rows(scene: &Scene) -> usize {
+    let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
+    let rows: usize = scene.panels.iter().map(|p| scene.plane(p).v.count).sum();
+    steps * rows
+}
+
+/// Records every step of `scene` into `stream`; `on_row` is called once per evaluated grid
+/// row ([`rows`] in all).
+pub fn record_scene(
+    scene: &Scene,
+    stream: &RecordingStream,
+    on_row: &(dyn Fn() + Sync),
+) -> Result<Summary, RecordError> {
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
     let timeline = timeline(scene);
     stream.log_static(
@@ -128,7 +139,7 @@ pub fn record_scene(scene: &Scene, stream: &RecordingStream) -> Result<Summary, 
             step,
             message: e.to_string(),
         })?;
-        figures.push(figure::build(&step_scene, &|| {})?);
+        figures.push(figure::build(&step_scene, on_row)?);
         step_scenes.push(step_scene);
     }
     let panels = scene.panels.len();

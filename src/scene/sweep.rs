@@ -333,6 +333,16 @@ impl Validator<'_> {
                 Some("remove [volume], or use kind = \"point\""),
             ));
         }
+        if contact
+            .solution(contact.friction, contact.poisson)
+            .is_none()
+        {
+            return Err(self.error(
+                "volume",
+                "a volume is recorded from the closed form, which this contact has not (elliptical, partial slip or tractions from a file)",
+                Some("record sections of it instead (figure.section = \"xz\", \"yz\" or \"xy\" with [[panel]] at = ...)"),
+            ));
+        }
         let quantity = match &raw.quantity {
             Some(key) => Quantity::from_key(key).ok_or_else(|| {
                 let keys: Vec<_> = Quantity::ALL.iter().map(|q| q.key()).collect();
@@ -386,5 +396,44 @@ impl Validator<'_> {
             points,
             threshold,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_load_step_recomputes_hertz_at_fixed_geometry() {
+        let text = "format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[figure]\nlength_unit = \"mm\"\n[sweep]\nparameter = \"load\"\nvalues = [\"100 N\", \"800 N\"]\n";
+        let scene = Scene::parse(text, "t", "t.toml").expect("valid");
+        let (first, second) = (scene.at_step(0).expect("ok"), scene.at_step(1).expect("ok"));
+        assert_eq!(first.contact, scene.contact);
+        // Hertz (Johnson 1985, §4.2(a)): a and p0 grow as W^(1/3); 8 times the load, twice.
+        let ratio = |f: fn(&super::super::Contact) -> f64| f(&second.contact) / f(&first.contact);
+        assert!((ratio(|c| c.p0_pa()) - 2.0).abs() < 1e-12);
+        assert!((ratio(|c| c.half_width_m()) - 2.0).abs() < 1e-12);
+        let direct = PointContact::new(
+            &scene.contact.dimensional.expect("dimensional").body1,
+            &scene.contact.dimensional.expect("dimensional").body2,
+            800.0,
+        )
+        .expect("valid");
+        assert!((second.contact.p0_pa() - direct.p0_pa).abs() < 1e-6 * direct.p0_pa);
+    }
+
+    #[test]
+    fn a_position_step_moves_the_solution() {
+        let text = "format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"position\"\nvalues = [0.0, 1.5]\n";
+        let scene = Scene::parse(text, "t", "t.toml").expect("valid");
+        let moved = scene.at_step(1).expect("ok");
+        let solution = moved.solution(&moved.panels[0]).expect("closed form");
+        let centred = scene.solution(&scene.panels[0]).expect("closed form");
+        let (a, b) = (
+            solution.stress_over_p0(1.25, 0.0, 0.4),
+            centred.stress_over_p0(-0.25, 0.0, 0.4),
+        );
+        assert_eq!(a, b);
+        assert_eq!(solution.surface_traction_over_p0(1.5, 0.0), (1.0, 0.0));
     }
 }

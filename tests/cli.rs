@@ -321,6 +321,8 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"point\"\n[volume]\npoints = 1000\n", "key `volume.points`", "48 to 96"),
     ("format = 1\n[contact]\nkind = \"point\"\n[volume]\nthreshold = 1.5\n", "key `volume.threshold`", "[0, 1)"),
     ("format = 1\n[contact]\nkind = \"point\"\n[volume]\nz = [-1.0, 1.0]\n", "key `volume.z`", ">= 0"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [-1.0, 1.0]\nz = [0.0, 2.0]\nresolution = 8000\n[sweep]\nparameter = \"position\"\nfrom = -1.0\nto = 1.0\nsteps = 400\n", "key `sweep`", "fewer steps"),
+    ("format = 1\n[contact]\nkind = \"elliptical\"\naspect = 3.0\nmethod = \"numerical\"\n[volume]\npoints = 32\n", "key `volume`", "record sections"),
 ];
 
 #[test]

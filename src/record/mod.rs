@@ -15,7 +15,8 @@
 //!   the same coordinates (tractions drawn above the surface, `z < 0`).
 //! - `series/<k>/maximum`, `series/<k>/maximum_depth`, `series/<parameter>`: scalars per step.
 //! - `history/<k>/point<j>/<component>`: stresses at material points as a load moves.
-//! - `volume/points`, `volume/contact`, `volume/maximum`: the 3-D point cloud (z downwards).
+//! - `volume/points`, `volume/contact` (outline, and `patch`: a mesh shaded by the pressure),
+//!   `volume/maximum`: the 3-D point cloud (z downwards).
 //! - `log`: one line per step.
 //!
 //! Steps are time points of a sequence timeline named after the sweep's parameter (`friction`,
@@ -628,6 +629,7 @@ fn log_volume(
                 .with_colors([rerun::Color::from_rgb(20, 20, 20)])
                 .with_labels(["contact"]),
         )?;
+        stream.log("volume/contact/patch", &contact_patch(scene))?;
     }
     if let Some((position, value)) = cloud.maximum {
         stream.log(
@@ -645,6 +647,52 @@ fn log_volume(
         )?;
     }
     Ok(cloud.positions.len())
+}
+
+/// The contact patch on the surface `z = 0` as a mesh of rings, shaded by the Hertz pressure
+/// `p/p0 = sqrt(1 - r²)` (white at the edge, dark red at the centre), in the figure's length
+/// unit and at the load's current position.
+fn contact_patch(scene: &Scene) -> rerun::Mesh3D {
+    const RINGS: usize = 12;
+    const SEGMENTS: usize = 96;
+    let unit_over_a = scene.length_unit_over_a();
+    let (aspect, centre) = (scene.contact.aspect, scene.load_centre_over_a);
+    let shade = |r: f64| {
+        let p = (1.0 - r * r).max(0.0).sqrt();
+        let mix = |white: f64, dark: f64| (white + (dark - white) * p).round() as u8;
+        rerun::Color::from_rgb(mix(255.0, 150.0), mix(255.0, 20.0), mix(255.0, 20.0))
+    };
+    let mut positions = vec![[(centre / unit_over_a) as f32, 0.0, 0.0]];
+    let mut colors = vec![shade(0.0)];
+    for ring in 1..=RINGS {
+        let r = ring as f64 / RINGS as f64;
+        for k in 0..SEGMENTS {
+            let angle = std::f64::consts::TAU * k as f64 / SEGMENTS as f64;
+            positions.push([
+                ((centre + r * angle.cos()) / unit_over_a) as f32,
+                (aspect * r * angle.sin() / unit_over_a) as f32,
+                0.0,
+            ]);
+            colors.push(shade(r));
+        }
+    }
+    // Vertex of ring `ring` (1-based), segment `k`.
+    let index = |ring: usize, k: usize| (1 + (ring - 1) * SEGMENTS + k % SEGMENTS) as u32;
+    let mut triangles = Vec::new();
+    for k in 0..SEGMENTS {
+        triangles.push([0, index(1, k), index(1, k + 1)]);
+    }
+    for ring in 1..RINGS {
+        for k in 0..SEGMENTS {
+            let (a, b) = (index(ring, k), index(ring, k + 1));
+            let (c, d) = (index(ring + 1, k), index(ring + 1, k + 1));
+            triangles.push([a, c, d]);
+            triangles.push([a, d, b]);
+        }
+    }
+    rerun::Mesh3D::new(positions)
+        .with_triangle_indices(triangles)
+        .with_vertex_colors(colors)
 }
 
 /// The markdown description of a scene: title, contact, sweep and the `hertz` report.

@@ -279,6 +279,30 @@ impl Validator<'_> {
             }
             _ => {}
         }
+        // A recording holds every step's sections (to give each panel one colour range).
+        let plane_bytes: usize = scene
+            .panels
+            .iter()
+            .map(|p| {
+                let plane = scene.plane(p);
+                plane.u.count * plane.v.count * 8
+            })
+            .sum();
+        let bytes = plane_bytes.saturating_mul(values.len());
+        let limit = crate::field::memory_limit_bytes();
+        if bytes > limit {
+            return Err(self.error(
+                "sweep",
+                format!(
+                    "{} steps of {} MiB of sections need {} MiB, more than the {} MiB this machine allows",
+                    values.len(),
+                    plane_bytes >> 20,
+                    bytes >> 20,
+                    limit >> 20
+                ),
+                Some("use fewer steps or a lower figure.resolution"),
+            ));
+        }
         let mut material_points = Vec::new();
         if let Some(points) = &raw.material_points {
             if parameter != SweepParameter::Position {

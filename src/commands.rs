@@ -173,13 +173,7 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
         // The main job (no scenes named): a recording scene is recorded, not drawn.
         if is_recording(scene) && !options.named {
             let path = out_dir.join(format!("{}.rrd", scene.name));
-            match record_scene(scene, &path, &bar) {
-                Ok(line) => say(&bar, line),
-                Err(e) => {
-                    say(&bar, format!("error: scene {}: {e:#}", scene.name));
-                    failures.push(scene.name.clone());
-                }
-            }
+            record_reporting(scene, &path, &bar, &mut failures);
             continue;
         }
         let rendered = render_scene(scene, out_dir, options.svg, &bar).and_then(|png| {
@@ -219,14 +213,7 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
         }
     }
     bar.finish_and_clear();
-    if !failures.is_empty() {
-        bail!(
-            "{} of {} scenes failed: {}",
-            failures.len(),
-            paths.len(),
-            failures.join(", ")
-        );
-    }
+    fail_if_any(&failures, paths.len())?;
     if !mismatches.is_empty() {
         bail!(
             "{} of {} images differ from the references in {}: {}",
@@ -239,6 +226,30 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
         );
     }
     Ok(())
+}
+
+/// Fails with the names of the scenes that failed, if any.
+fn fail_if_any(failures: &[String], total: usize) -> Result<()> {
+    if !failures.is_empty() {
+        bail!(
+            "{} of {} scenes failed: {}",
+            failures.len(),
+            total,
+            failures.join(", ")
+        );
+    }
+    Ok(())
+}
+
+/// Records a scene and says so, or reports its error and adds it to `failures`.
+fn record_reporting(scene: &Scene, path: &Path, bar: &ProgressBar, failures: &mut Vec<String>) {
+    match record_scene(scene, path, bar) {
+        Ok(line) => say(bar, line),
+        Err(e) => {
+            say(bar, format!("error: scene {}: {e:#}", scene.name));
+            failures.push(scene.name.clone());
+        }
+    }
 }
 
 /// `record`: one recording per scene, `<out_dir>/<scene>.rrd` or `output`.
@@ -255,23 +266,10 @@ fn record_all(paths: &[PathBuf], out_dir: &Path, output: Option<&Path>) -> Resul
             || out_dir.join(format!("{}.rrd", scene.name)),
             Path::to_path_buf,
         );
-        match record_scene(scene, &path, &bar) {
-            Ok(line) => say(&bar, line),
-            Err(e) => {
-                say(&bar, format!("error: scene {}: {e:#}", scene.name));
-                failures.push(scene.name.clone());
-            }
-        }
+        record_reporting(scene, &path, &bar, &mut failures);
     }
     bar.finish_and_clear();
-    if !failures.is_empty() {
-        bail!(
-            "{} of {} scenes failed: {}",
-            failures.len(),
-            paths.len(),
-            failures.join(", ")
-        );
-    }
+    fail_if_any(&failures, paths.len())?;
     Ok(())
 }
 

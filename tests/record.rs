@@ -87,6 +87,21 @@ impl Contents {
     }
 }
 
+/// The positions of the `Points3D` in a chunk.
+fn positions_3d(chunk: &Chunk) -> Vec<[f32; 3]> {
+    chunk
+        .iter_component::<rerun::components::Position3D>(
+            rerun::Points3D::descriptor_positions().component,
+        )
+        .flat_map(|batch| {
+            batch
+                .iter()
+                .map(|p| [p.x(), p.y(), p.z()])
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
 fn record_in_memory(scene: &Scene) -> (record::Summary, Contents) {
     let (stream, storage) = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
         .memory()
@@ -243,36 +258,14 @@ threshold = 0.5
     ] {
         assert!(contents.paths().contains(&path), "{path} missing");
     }
-    let chunk = &contents.chunks["/volume/points"][0];
-    let positions: Vec<[f32; 3]> = chunk
-        .iter_component::<rerun::components::Position3D>(
-            rerun::Points3D::descriptor_positions().component,
-        )
-        .flat_map(|batch| {
-            batch
-                .iter()
-                .map(|p| [p.x(), p.y(), p.z()])
-                .collect::<Vec<_>>()
-        })
-        .collect();
+    let positions = positions_3d(&contents.chunks["/volume/points"][0]);
     assert_eq!(positions.len(), summary.volume_points);
     assert!(positions.iter().all(|p| p[2] >= 0.0 && p[2] <= 2.0));
     // Symmetric in y for a frictionless sphere: the cloud's mean y is zero.
     let mean_y = positions.iter().map(|p| f64::from(p[1])).sum::<f64>() / positions.len() as f64;
     assert!(mean_y.abs() < 1e-6, "{mean_y}");
     // The maximum is on the axis at z = 0.48a (Johnson 1985, §3.4(b)), on a 0.1a grid.
-    let maximum = &contents.chunks["/volume/maximum"][0];
-    let at: Vec<[f32; 3]> = maximum
-        .iter_component::<rerun::components::Position3D>(
-            rerun::Points3D::descriptor_positions().component,
-        )
-        .flat_map(|batch| {
-            batch
-                .iter()
-                .map(|p| [p.x(), p.y(), p.z()])
-                .collect::<Vec<_>>()
-        })
-        .collect();
+    let at = positions_3d(&contents.chunks["/volume/maximum"][0]);
     assert_eq!(at.len(), 1);
     assert!(at[0][0].abs() < 1e-6 && at[0][1].abs() < 1e-6, "{at:?}");
     assert!((at[0][2] - 0.5).abs() < 0.06, "{at:?}");

@@ -268,3 +268,32 @@ fn partial_slip_tension_lies_between_no_traction_and_sliding() {
     let c = outlines[1][0].0;
     assert!((c - 0.4f64.cbrt()).abs() < 1e-12, "{c}");
 }
+
+#[test]
+fn a_section_across_a_long_ellipse_has_depth_rows_as_fine_as_the_x_cells() {
+    // The groove ellipse (b/a = 9.3) cut across the rolling direction: the y cells are 9.3
+    // times the x cells; the depth rows follow the finer x cells, so the subsurface maximum is
+    // resolved as in the xz section (0.5746 p0 at z = 0.724a, the `hertz` grid maxima).
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/ellipse_bearing_groove.toml");
+    let text = std::fs::read_to_string(path)
+        .expect("the scene")
+        .replace("section = \"xz\"", "section = \"yz\"")
+        .replace("x = [-0.33, 0.33]", "y = [-2.0, 2.0]");
+    let scene = Scene::parse(&text, "yz", "yz.toml").expect("valid");
+    let plane = scene.plane(&scene.panels[0]);
+    let a_mm = scene.contact.half_width_m() * 1e3;
+    let cells = scene.numerical.cells as f64;
+    let x_cell = 2.0 * scene.numerical.extent_over_a / cells;
+    assert!(
+        (plane.v.step() - x_cell).abs() < 1e-9,
+        "{} vs {x_cell}",
+        plane.v.step()
+    );
+    assert!(plane.u.step() > 9.0 * plane.v.step());
+    let built = figure::build(&scene, &|| {}).expect("evaluates");
+    let (max, y, z) = panel_max(&built.panels[0]);
+    let p0_mpa = scene.contact.p0_pa() * 1e-6;
+    assert!((max / p0_mpa - 0.5746).abs() < 2e-3, "{}", max / p0_mpa);
+    assert!((z / a_mm - 0.724).abs() < 0.02, "{}", z / a_mm);
+    assert!(y.abs() < plane.u.step() * a_mm);
+}

@@ -515,7 +515,10 @@ impl Scene {
             let (first, last) = axis.within(lo * unit_over_a, hi * unit_over_a);
             Axis::new(axis.centre(first), axis.centre(last), last - first + 1)
         };
-        // Depths at the horizontal spacing, so that map cells are square.
+        // Depths at the smaller cell side: square map cells in an xz section of a sphere, and
+        // rows as fine as the x cells across a long ellipse (whose y cells are b/a times
+        // longer).
+        let dz = x_axis.cell.min(y_axis.cell);
         let depths = |(lo, hi): (f64, f64), h: f64| {
             let (lo, hi) = (lo * unit_over_a, hi * unit_over_a);
             let count = ((hi - lo) / h + 1e-9).floor() as usize + 1;
@@ -528,14 +531,14 @@ impl Scene {
                     y: y_axis.nearest_centre(at),
                 },
                 centres(&x_axis, self.figure.horizontal),
-                depths(self.figure.vertical, x_axis.cell),
+                depths(self.figure.vertical, dz),
             ),
             SectionKind::Yz => (
                 Section::Yz {
                     x: x_axis.nearest_centre(at),
                 },
                 centres(&y_axis, self.figure.horizontal),
-                depths(self.figure.vertical, y_axis.cell),
+                depths(self.figure.vertical, dz),
             ),
             SectionKind::Xy => (
                 Section::Xy { z: at },

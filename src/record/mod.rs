@@ -30,7 +30,7 @@ use crate::field::{self, Axis, FieldError, Volume};
 use crate::figure;
 use crate::render::colormap::ColorScale;
 use crate::render::{ColorMap, Figure};
-use crate::scene::{ContactKind, Scene, SectionKind, SweepParameter};
+use crate::scene::{ContactKind, Scene, SectionKind, SweepParameter, VolumeSpec};
 
 /// The application id of every recording.
 pub const APPLICATION_ID: &str = "stressfield";
@@ -165,16 +165,29 @@ pub fn record_scene(
         log_placement(stream, k, &figures[0])?;
     }
     send_blueprint(scene, stream, &figures[0])?;
-    let volumes = scene
-        .volume
-        .as_ref()
-        .map(|_| {
-            step_scenes
+    // The point clouds of every step, coloured on one scale.
+    let volumes = match &scene.volume {
+        Some(spec) => {
+            let clouds = step_scenes
                 .iter()
-                .map(volume_cloud)
-                .collect::<Result<Vec<_>, _>>()
-        })
-        .transpose()?;
+                .map(|step_scene| volume_cloud(step_scene, spec))
+                .collect::<Result<Vec<_>, _>>()?;
+            let (lo, hi) = clouds
+                .iter()
+                .flat_map(|c| c.values.iter().copied())
+                .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(v), hi.max(v))
+                });
+            let map = match spec.quantity.kind() {
+                crate::stress::QuantityKind::Signed => ColorMap::Diverging,
+                _ => scene.figure.colormap,
+            };
+            let scale = ColorScale::for_range(map, f64::from(lo), f64::from(hi));
+            stream.log_static("volume", &rerun::ViewCoordinates::RIGHT_HAND_Z_DOWN())?;
+            Some((spec, clouds, scale))
+        }
+        None => None,
+    };
     let mut volume_points = 0;
     for (step, (step_scene, figure)) in step_scenes.iter().zip(&figures).enumerate() {
         stream.set_time_sequence(timeline, step as i64);
@@ -190,8 +203,8 @@ pub fn record_scene(
             log_panel(stream, k, figure, panel, ranges[k], scene)?;
         }
         log_material_points(stream, step_scene)?;
-        if let Some(volumes) = &volumes {
-            volume_points = log_volume(stream, step_scene, &volumes[step], &volumes[..])?;
+        if let Some((spec, clouds, scale)) = &volumes {
+            volume_points = log_volume(stream, step_scene, spec, &clouds[step], scale)?;
         }
     }
     Ok(Summary {
@@ -500,15 +513,7 @@ struct Cloud {
 
 /// Evaluates the scene's `[volume]` for its first panel's contact and keeps the points whose
 /// |value| is at least `threshold` of the largest.
-fn volume_cloud(scene: &Scene) -> Result<Cloud, RecordError> {
-    let Some(spec) = &scene.volume else {
-        return Ok(Cloud {
-            positions: Vec::new(),
-            values: Vec::new(),
-            spacing: 1.0,
-            maximum: None,
-        });
-    };
+fn volume_cloud(scene: &Scene, spec: &VolumeSpec) -> Result<Cloud, RecordError> {
     let unit_over_a = scene.length_unit_over_a();
     let longest = (spec.x.1 - spec.x.0)
         .max(spec.y.1 - spec.y.0)
@@ -569,29 +574,15 @@ fn volume_cloud(scene: &Scene) -> Result<Cloud, RecordError> {
     Ok(cloud)
 }
 
-/// Logs a step's point cloud, coloured on one scale for all steps, with the contact outline on
+/// Logs a step's point cloud, coloured on `scale` (one for all steps), with the contact outline on
 /// the surface and the maximum labelled. Returns the number of points.
 fn log_volume(
     stream: &RecordingStream,
     scene: &Scene,
+    spec: &VolumeSpec,
     cloud: &Cloud,
-    all: &[Cloud],
+    scale: &ColorScale,
 ) -> Result<usize, RecordError> {
-    let Some(spec) = &scene.volume else {
-        return Ok(0);
-    };
-    stream.log_static("volume", &rerun::ViewCoordinates::RIGHT_HAND_Z_DOWN())?;
-    let (lo, hi) = all
-        .iter()
-        .flat_map(|c| c.values.iter().copied())
-        .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), v| {
-            (lo.min(v), hi.max(v))
-        });
-    let map = match spec.quantity.kind() {
-        crate::stress::QuantityKind::Signed => ColorMap::Diverging,
-        _ => scene.figure.colormap,
-    };
-    let scale = ColorScale::for_range(map, f64::from(lo), f64::from(hi));
     let colors: Vec<rerun::Color> = cloud
         .values
         .iter()

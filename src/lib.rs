@@ -45,3 +45,4 @@ pub mod report;
 pub mod scene;
 pub mod solution;
 pub mod stress;
+pub mod surface;

@@ -46,3 +46,4 @@ pub mod scene;
 pub mod solution;
 pub mod stress;
 pub mod surface;
+pub mod transform;

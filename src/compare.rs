@@ -26,7 +26,7 @@ impl Default for Tolerance {
 }
 
 /// The outcome of [`compare`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Comparison {
     /// Width and height of the actual image.
     pub actual_size: (u32, u32),
@@ -36,6 +36,9 @@ pub struct Comparison {
     pub differing_pixels: usize,
     /// Largest difference of any channel of any pixel (0 when sizes differ).
     pub max_channel_difference: u8,
+    /// Root mean square of the channel differences over the whole image, in levels of 255
+    /// (see [`rms_difference`]; 0 when sizes differ).
+    pub rms: f64,
     /// The tolerance the comparison was made with.
     pub tolerance: Tolerance,
 }
@@ -78,11 +81,13 @@ pub fn compare(actual: &RgbImage, expected: &RgbImage, tolerance: Tolerance) -> 
         expected_size: expected.dimensions(),
         differing_pixels: 0,
         max_channel_difference: 0,
+        rms: 0.0,
         tolerance,
     };
     if !comparison.sizes_match() {
         return comparison;
     }
+    comparison.rms = rms_difference(actual, expected);
     for (a, e) in actual.pixels().zip(expected.pixels()) {
         let difference = channel_difference(a, e);
         comparison.max_channel_difference = comparison.max_channel_difference.max(difference);
@@ -114,6 +119,28 @@ pub fn diff_image(actual: &RgbImage, expected: &RgbImage, per_channel: u8) -> Rg
             Rgb([faded, faded, faded])
         }
     })
+}
+
+/// The root mean square difference of two images of the same size over all pixels and
+/// channels, in levels of 255: `sqrt(Σ (a - e)² / (3 w h))`. This is matplotlib's measure for
+/// its image comparison tests (`matplotlib.testing.compare.calculate_rms`), which pytest-mpl
+/// uses with a default tolerance of 2.
+///
+/// # Panics
+/// If the sizes differ (check [`Comparison::sizes_match`] first).
+pub fn rms_difference(actual: &RgbImage, expected: &RgbImage) -> f64 {
+    assert_eq!(actual.dimensions(), expected.dimensions(), "image sizes");
+    let count = actual.as_raw().len();
+    if count == 0 {
+        return 0.0;
+    }
+    let sum: u64 = actual
+        .as_raw()
+        .iter()
+        .zip(expected.as_raw())
+        .map(|(a, e)| u64::from(a.abs_diff(*e)).pow(2))
+        .sum();
+    (sum as f64 / count as f64).sqrt()
 }
 
 fn channel_difference(a: &Rgb<u8>, b: &Rgb<u8>) -> u8 {
@@ -233,6 +260,18 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn rms_is_the_root_mean_square_of_channel_differences() {
+        let expected = gradient(4, 5);
+        let mut actual = expected.clone();
+        // One channel of one pixel off by 60: sqrt(3600 / 60) = sqrt(60).
+        actual.get_pixel_mut(1, 1).0[2] -= 60;
+        assert!((rms_difference(&actual, &expected) - 60f64.sqrt()).abs() < 1e-12);
+        let comparison = compare(&actual, &expected, Tolerance::default());
+        assert!((comparison.rms - 60f64.sqrt()).abs() < 1e-12);
+        assert_eq!(rms_difference(&expected, &expected), 0.0);
     }
 
     #[test]

@@ -40,6 +40,7 @@ pub mod output;
 pub mod probe;
 #[cfg(feature = "rerun")]
 pub mod record;
+pub mod regression;
 pub mod render;
 pub mod report;
 pub mod scene;

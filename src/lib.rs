@@ -35,6 +35,7 @@ pub mod assess;
 pub mod compare;
 pub mod contact;
 pub mod field;
+pub mod field_file;
 pub mod figure;
 pub mod output;
 pub mod probe;

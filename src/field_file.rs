@@ -1,0 +1,258 @@
+//! A figure's fields saved as NumPy arrays (`render --save-field`), and their comparison with
+//! saved references (`render --compare`).
+//!
+//! ## Format
+//! One `.npz` archive per scene (a zip of `.npy` files, float64, C order), loadable with
+//! `numpy.load`. For panel `k` (0 = left):
+//! - `values_k`: `[rows, columns]` in the figure's stress unit (p0, MPa, ...), row 0 at the
+//!   first vertical sample (the top of a depth section, the bottom of an xy section);
+//! - `horizontal_k`: the `columns` horizontal coordinates, in the figure's length unit (x/a or
+//!   mm; y for a yz section);
+//! - `vertical_k`: the `rows` vertical coordinates (the depth z, or y for an xy section).
+//!
+//! Encoding and decoding happen in memory; the caller writes the bytes (atomically).
+
+use std::io::Cursor;
+
+use ndarray::{Array1, Array2};
+use ndarray_npy::{NpzReader, NpzWriter};
+
+use crate::regression::{FieldCheck, FieldDifference};
+use crate::render::Figure;
+
+/// An unreadable or unwritable field archive.
+#[derive(Debug, thiserror::Error)]
+pub enum FieldFileError {
+    #[error("cannot write the field archive: {0}")]
+    Write(String),
+    #[error("not a field archive of stressfield: {0}")]
+    Read(String),
+}
+
+/// One panel's samples.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PanelField {
+    pub horizontal: Array1<f64>,
+    pub vertical: Array1<f64>,
+    /// `[vertical.len(), horizontal.len()]`.
+    pub values: Array2<f64>,
+}
+
+impl PanelField {
+    /// The samples of every panel of `figure`.
+    pub fn of_figure(figure: &Figure) -> Vec<PanelField> {
+        figure
+            .panels
+            .iter()
+            .map(|panel| PanelField {
+                horizontal: panel.x.values().collect(),
+                vertical: panel.z.values().collect(),
+                values: panel.values.clone(),
+            })
+            .collect()
+    }
+}
+
+/// The `.npz` bytes of `panels`.
+pub fn encode(panels: &[PanelField]) -> Result<Vec<u8>, FieldFileError> {
+    let error = |e: ndarray_npy::WriteNpzError| FieldFileError::Write(e.to_string());
+    let mut npz = NpzWriter::new(Cursor::new(Vec::new()));
+    for (k, panel) in panels.iter().enumerate() {
+        npz.add_array(format!("values_{k}"), &panel.values)
+            .map_err(error)?;
+        npz.add_array(format!("horizontal_{k}"), &panel.horizontal)
+            .map_err(error)?;
+        npz.add_array(format!("vertical_{k}"), &panel.vertical)
+            .map_err(error)?;
+    }
+    Ok(npz.finish().map_err(error)?.into_inner())
+}
+
+/// The panels of `.npz` bytes written by [`encode`].
+pub fn decode(bytes: &[u8]) -> Result<Vec<PanelField>, FieldFileError> {
+    let read = |e: ndarray_npy::ReadNpzError| FieldFileError::Read(e.to_string());
+    let mut npz = NpzReader::new(Cursor::new(bytes)).map_err(read)?;
+    let names = npz.names().map_err(read)?;
+    let mut panels = Vec::new();
+    // numpy.savez names members `name.npy`; NpzWriter does the same, and names() strips it.
+    while names
+        .iter()
+        .any(|n| n == &format!("values_{}", panels.len()))
+    {
+        let k = panels.len();
+        let values: Array2<f64> = npz.by_name(&format!("values_{k}")).map_err(read)?;
+        let horizontal: Array1<f64> = npz.by_name(&format!("horizontal_{k}")).map_err(read)?;
+        let vertical: Array1<f64> = npz.by_name(&format!("vertical_{k}")).map_err(read)?;
+        if values.dim() != (vertical.len(), horizontal.len()) {
+            return Err(FieldFileError::Read(format!(
+                "values_{k} has shape {:?} but its axes have {} x {} samples",
+                values.dim(),
+                vertical.len(),
+                horizontal.len()
+            )));
+        }
+        panels.push(PanelField {
+            horizontal,
+            vertical,
+            values,
+        });
+    }
+    if panels.is_empty() {
+        return Err(FieldFileError::Read("it has no array values_0".into()));
+    }
+    Ok(panels)
+}
+
+/// Compares `actual` with `reference` value by value: the largest absolute difference, where it
+/// is, and whether it is within `tolerance` (the figure's stress unit, named `unit`). Grids
+/// must match (same panel count, shapes, and coordinates to 1e-9 of their span); NaN equals
+/// NaN, and NaN against a number is an infinite difference.
+pub fn compare(
+    actual: &[PanelField],
+    reference: &[PanelField],
+    tolerance: f64,
+    unit: &str,
+) -> FieldCheck {
+    let mut check = FieldCheck {
+        tolerance,
+        unit: unit.to_string(),
+        largest: None,
+        mismatch: None,
+    };
+    if actual.len() != reference.len() {
+        check.mismatch = Some(format!(
+            "{} panel(s), the reference has {}",
+            actual.len(),
+            reference.len()
+        ));
+        return check;
+    }
+    for (k, (a, r)) in actual.iter().zip(reference).enumerate() {
+        if a.values.dim() != r.values.dim() {
+            check.mismatch = Some(format!(
+                "panel {k} has {} x {} samples, the reference {} x {}",
+                a.values.nrows(),
+                a.values.ncols(),
+                r.values.nrows(),
+                r.values.ncols()
+            ));
+            return check;
+        }
+        for (name, ours, theirs) in [
+            ("horizontal", &a.horizontal, &r.horizontal),
+            ("vertical", &a.vertical, &r.vertical),
+        ] {
+            let span = theirs
+                .iter()
+                .fold(0.0f64, |m, v| m.max(v.abs()))
+                .max(f64::MIN_POSITIVE);
+            if ours
+                .iter()
+                .zip(theirs)
+                .any(|(x, y)| (x - y).abs() > 1e-9 * span)
+            {
+                check.mismatch = Some(format!(
+                    "panel {k}: the {name} axis differs from the reference's (another range or resolution)"
+                ));
+                return check;
+            }
+        }
+        for ((j, i), (x, y)) in a
+            .values
+            .indexed_iter()
+            .zip(r.values.iter())
+            .map(|((index, x), y)| (index, (x, y)))
+        {
+            let difference = match (x.is_nan(), y.is_nan()) {
+                (true, true) => 0.0,
+                (false, false) if x == y => 0.0,
+                (false, false) => (x - y).abs(),
+                _ => f64::INFINITY,
+            };
+            let larger = check
+                .largest
+                .as_ref()
+                .is_none_or(|d| difference > d.largest);
+            if larger {
+                check.largest = Some(FieldDifference {
+                    panel: k,
+                    largest: difference,
+                    at: (a.horizontal[i], a.vertical[j]),
+                });
+            }
+        }
+    }
+    check
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn panel(shift: f64) -> PanelField {
+        let horizontal: Array1<f64> = Array1::linspace(-2.0, 2.0, 9);
+        let vertical: Array1<f64> = Array1::linspace(0.0, 1.0, 5);
+        let values = Array2::from_shape_fn((5, 9), |(j, i)| {
+            (horizontal[i] * vertical[j]).sin() + if (j, i) == (3, 6) { shift } else { 0.0 }
+        });
+        PanelField {
+            horizontal,
+            vertical,
+            values,
+        }
+    }
+
+    #[test]
+    fn round_trip_through_npz_bytes() {
+        let panels = vec![panel(0.0), panel(0.5)];
+        let bytes = encode(&panels).expect("encodes");
+        assert_eq!(decode(&bytes).expect("decodes"), panels);
+        // A zip archive: the local file header signature.
+        assert_eq!(&bytes[..4], b"PK\x03\x04");
+    }
+
+    #[test]
+    fn finds_a_change_of_1e_3_and_where_it_is() {
+        let reference = vec![panel(0.0), panel(0.0)];
+        let same = compare(&reference.clone(), &reference, 1e-4, "p0");
+        assert!(same.passed(), "{}", same.summary());
+        assert_eq!(same.largest.as_ref().map(|d| d.largest), Some(0.0));
+        let changed = vec![panel(0.0), panel(1e-3)];
+        let check = compare(&changed, &reference, 1e-4, "p0");
+        assert!(!check.passed());
+        let largest = check.largest.expect("largest");
+        assert_eq!(largest.panel, 1);
+        assert!((largest.largest - 1e-3).abs() < 1e-15);
+        assert_eq!(largest.at, (1.0, 0.75));
+        assert!(compare(&changed, &reference, 2e-3, "p0").passed());
+    }
+
+    #[test]
+    fn other_grids_are_mismatches_not_differences() {
+        let reference = vec![panel(0.0)];
+        let two = compare(&[panel(0.0), panel(0.0)], &reference, 1.0, "p0");
+        assert!(!two.passed() && two.mismatch.is_some());
+        let mut moved = panel(0.0);
+        moved.horizontal[2] += 0.01;
+        let check = compare(&[moved], &reference, 1.0, "p0");
+        assert!(check
+            .mismatch
+            .as_deref()
+            .is_some_and(|m| m.contains("horizontal")));
+        let mut nan = panel(0.0);
+        nan.values[[0, 0]] = f64::NAN;
+        assert!(!compare(&[nan.clone()], &reference, 1.0, "p0").passed());
+        assert!(compare(&[nan.clone()], &[nan], 0.0, "p0").passed());
+    }
+
+    #[test]
+    fn refuses_other_archives() {
+        assert!(decode(b"not a zip").is_err());
+        let mut npz = NpzWriter::new(Cursor::new(Vec::new()));
+        npz.add_array("pressure", &Array2::<f64>::zeros((2, 2)))
+            .expect("add");
+        let bytes = npz.finish().expect("finish").into_inner();
+        let error = decode(&bytes).expect_err("no values_0");
+        assert!(error.to_string().contains("values_0"), "{error}");
+    }
+}

@@ -12,6 +12,7 @@ use stressfield::output::write_atomic;
 use stressfield::probe;
 use stressfield::scene::{ContactKind, Method, PanelSpec, Scene};
 use stressfield::solution::Solution;
+use stressfield::study;
 use stressfield::{figure, render, report};
 
 pub fn run(command: Command) -> Result<()> {
@@ -157,7 +158,7 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
     let total_rows: usize = scenes
         .iter()
         .map(|s| {
-            let figure: usize = s.panels.iter().map(|p| s.plane(p).v.count).sum();
+            let figure: usize = s.panels.iter().map(|p| study::plane(s, p).v.count).sum();
             // A recording evaluates its sections at every step.
             match (is_recording(s) && !options.named, options.rrd.is_some()) {
                 (true, _) => recording_rows(s),
@@ -374,8 +375,8 @@ fn check(paths: &[PathBuf]) -> Result<()> {
                 "ok {} ({} panel(s), {} x {} points each)",
                 path.display(),
                 scene.panels.len(),
-                scene.plane(&scene.panels[0]).u.count,
-                scene.plane(&scene.panels[0]).v.count
+                study::plane(&scene, &scene.panels[0]).u.count,
+                study::plane(&scene, &scene.panels[0]).v.count
             ),
             Err(e) => {
                 eprintln!("error: {e}");
@@ -483,7 +484,7 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
                 (ContactKind::Line, MethodArg::Numerical) => {
                     Solution::line_numerical(mu, nu, strips)
                 }
-                _ => scene.solution(&panel)?,
+                _ => study::solution(&scene, &panel)?,
             }
         }
         (None, ContactArg::Line, MethodArg::ClosedForm) => Solution::LineHertz {

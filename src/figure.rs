@@ -4,6 +4,7 @@
 use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
+use crate::study;
 
 /// Number of samples of the traction profile across the figure.
 const TRACTION_SAMPLES: usize = 601;
@@ -15,23 +16,18 @@ const OUTLINE_SEGMENTS: usize = 256;
 /// `on_row` is called once per evaluated grid row, for progress reporting.
 pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldError> {
     let spec = &scene.figure;
-    let a_m = scene.contact.half_width_m();
-    let p0_pa = scene.contact.p0_pa();
-    let length_per_a = a_m / spec.length_unit.metres(a_m);
-    let stress_per_p0 = p0_pa / spec.stress_unit.pascals(p0_pa);
-    let to_display =
-        |axis: Axis| Axis::new(axis.min * length_per_a, axis.max * length_per_a, axis.count);
+    let units = study::DisplayUnits::of(scene);
+    let (length_per_a, stress_per_p0) = (units.length_per_a, units.stress_per_p0);
 
     let mut panels = Vec::with_capacity(scene.panels.len());
     for panel in &scene.panels {
-        let plane = scene.plane(panel);
-        let solution = scene
-            .solution(panel)
-            .map_err(|e| FieldError::Numerical(e.to_string()))?;
+        let plane = study::plane(scene, panel);
+        let solution =
+            study::solution(scene, panel).map_err(|e| FieldError::Numerical(e.to_string()))?;
         let field = field::evaluate(&solution, &plane, &[spec.quantity], on_row)?;
         let mut values = field.values.index_axis(ndarray::Axis(1), 0).to_owned();
         if panel.method == Method::Difference {
-            let exact = scene.closed_form(panel).ok_or_else(|| {
+            let exact = study::closed_form(scene, panel).ok_or_else(|| {
                 FieldError::Numerical("this contact has no closed form to compare with".into())
             })?;
             let exact = field::evaluate(&exact, &plane, &[spec.quantity], on_row)?;
@@ -96,8 +92,8 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         let clip = clipped_range(&values);
         panels.push(Panel {
             subtitle: subtitle(scene, panel, &plane),
-            x: to_display(plane.u),
-            z: to_display(plane.v),
+            x: units.axis(plane.u),
+            z: units.axis(plane.v),
             values,
             traction: traction
                 .into_iter()
@@ -239,7 +235,7 @@ fn section_label(scene: &Scene, plane: &Plane) -> Option<String> {
         Section::Yz { x } => x,
         Section::Xy { z } => z,
     };
-    let at = at_over_a / scene.length_unit_over_a();
+    let at = at_over_a / study::length_unit_over_a(scene);
     // A row of cell centres through the axis may miss 0 by a rounding error.
     let at = if at.abs() < 1e-12 { 0.0 } else { at };
     let value = match scene.figure.length_unit {

@@ -7,21 +7,27 @@
 //! Data flows one way, and the modules follow it:
 //!
 //! ```text
-//! scene (TOML) -> contact (Hertz: a, p0) -> solution (stress at a point) -> field (grid, rayon)
-//!              -> figure (display units) -> render (pixels / SVG text) -> output (atomic files)
+//! scene (what the user wrote) -> study (what will be computed) -> field (grids, rayon)
+//!       -> sinks: figure + render (pixels / SVG), record (Rerun), report, probe -> output
 //! ```
 //!
-//! - [`scene`]: `scenes/*.toml` parsed with serde (unknown keys rejected by dotted path) and
-//!   validated into typed values in SI units.
+//! - [`scene`]: the file format only: `scenes/*.toml` parsed with serde (unknown keys rejected
+//!   by dotted path) and validated, one file per table (`scene/validate/`), into plain typed
+//!   values in SI units.
+//! - [`study`]: a validated scene -> what is computed: the stress [`solution`] of each panel,
+//!   the grid planes, the display units, the scene at each step of a sweep.
 //! - [`contact`]: Hertz theory (effective modulus and radius, half-width, peak and mean
-//!   pressure), materials, spur-gear geometry.
+//!   pressure), materials, spur-gear geometry, elliptical contacts, partial slip.
 //! - [`solution`]: stress solutions as pure functions of a point, in units of `a` and `p0`.
 //! - [`stress`]: the stress tensor and derived measures (principal, von Mises, Tresca, τ1).
-//! - [`field`]: grids, and the one place where rayon evaluates them.
+//! - [`surface`]: height maps of rough surfaces.
+//! - [`field`]: grids, and the one place where rayon evaluates them; [`transform`]: the shared
+//!   parallel 2-D FFT.
 //! - [`figure`], [`render`]: display units, then pixels; renderers do no I/O.
 //! - [`assess`], [`report`]: stress maxima, yield assessment, the `hertz` report.
 //! - [`probe`]: stresses at given points, CSV in and out.
-//! - [`output`], [`compare`]: atomic file writes, regression image comparison.
+//! - [`output`], [`compare`], [`regression`], [`field_file`]: atomic file writes, regression
+//!   comparison of images and fields, the HTML report.
 //!
 //! ## Conventions
 //! - z >= 0 points into the body; depth is drawn downwards.
@@ -47,5 +53,6 @@ pub mod report;
 pub mod scene;
 pub mod solution;
 pub mod stress;
+pub mod study;
 pub mod surface;
 pub mod transform;

@@ -326,7 +326,8 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let point = contact.kind != ContactKind::Line;
     let a_m = contact.half_width_m();
     let p0_pa = contact.p0_pa();
-    let closed_form = contact.solution(contact.friction, contact.poisson);
+    let closed_form =
+        crate::study::closed_form_solution(contact, contact.friction, contact.poisson);
     let maxima = match &closed_form {
         Some(solution) => StressMaxima::of(solution),
         None => {
@@ -335,7 +336,7 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
                     method: Method::Numerical,
                     ..panel.clone()
                 };
-                scene.solution(&numerical)
+                crate::study::solution(scene, &numerical)
             });
             let maxima = match numerical {
                 Some(Ok(Solution::PointNumerical { tractions, .. })) => {

@@ -280,7 +280,7 @@ fn a_section_across_a_long_ellipse_has_depth_rows_as_fine_as_the_x_cells() {
         .replace("section = \"xz\"", "section = \"yz\"")
         .replace("x = [-0.33, 0.33]", "y = [-2.0, 2.0]");
     let scene = Scene::parse(&text, "yz", "yz.toml").expect("valid");
-    let plane = scene.plane(&scene.panels[0]);
+    let plane = stressfield::study::plane(&scene, &scene.panels[0]);
     let a_mm = scene.contact.half_width_m() * 1e3;
     let cells = scene.numerical.cells as f64;
     let x_cell = 2.0 * scene.numerical.extent_over_a / cells;

@@ -31,6 +31,7 @@ use crate::figure;
 use crate::render::colormap::ColorScale;
 use crate::render::{ColorMap, Figure};
 use crate::scene::{ContactKind, Scene, SectionKind, SweepParameter, VolumeSpec};
+use crate::study;
 
 /// The application id of every recording.
 pub const APPLICATION_ID: &str = "stressfield";
@@ -115,7 +116,11 @@ pub fn timeline(scene: &Scene) -> &'static str {
 /// Grid rows a recording of `scene` evaluates (its sections at every step), for progress.
 pub fn rows(scene: &Scene) -> usize {
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
-    let rows: usize = scene.panels.iter().map(|p| scene.plane(p).v.count).sum();
+    let rows: usize = scene
+        .panels
+        .iter()
+        .map(|p| study::plane(scene, p).v.count)
+        .sum();
     steps * rows
 }
 
@@ -136,7 +141,7 @@ pub fn record_scene(
     let mut step_scenes = Vec::with_capacity(steps);
     let mut figures = Vec::with_capacity(steps);
     for step in 0..steps {
-        let step_scene = scene.at_step(step).map_err(|e| RecordError::Step {
+        let step_scene = study::at_step(scene, step).map_err(|e| RecordError::Step {
             step,
             message: e.to_string(),
         })?;
@@ -473,12 +478,10 @@ fn log_material_points(stream: &RecordingStream, scene: &Scene) -> Result<(), Re
     if sweep.material_points.is_empty() {
         return Ok(());
     }
-    let unit_over_a = scene.length_unit_over_a();
-    let stress_per_p0 =
-        scene.contact.p0_pa() / scene.figure.stress_unit.pascals(scene.contact.p0_pa());
+    let unit_over_a = study::length_unit_over_a(scene);
+    let stress_per_p0 = study::DisplayUnits::of(scene).stress_per_p0;
     for (k, panel) in scene.panels.iter().enumerate() {
-        let solution = scene
-            .solution(panel)
+        let solution = study::solution(scene, panel)
             .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?;
         let y = match scene.figure.section {
             SectionKind::Xz => panel.at * unit_over_a,
@@ -514,7 +517,7 @@ struct Cloud {
 /// Evaluates the scene's `[volume]` for its first panel's contact and keeps the points whose
 /// |value| is at least `threshold` of the largest.
 fn volume_cloud(scene: &Scene, spec: &VolumeSpec) -> Result<Cloud, RecordError> {
-    let unit_over_a = scene.length_unit_over_a();
+    let unit_over_a = study::length_unit_over_a(scene);
     let longest = (spec.x.1 - spec.x.0)
         .max(spec.y.1 - spec.y.0)
         .max(spec.z.1 - spec.z.0);
@@ -531,18 +534,16 @@ fn volume_cloud(scene: &Scene, spec: &VolumeSpec) -> Result<Cloud, RecordError> 
     // The closed form where there is one (a numerical volume would take direct summation at
     // every point).
     let panel = &scene.panels[0];
-    let solution = match scene.closed_form(panel) {
+    let solution = match study::closed_form(scene, panel) {
         Some(solution) => solution,
-        None => scene
-            .solution(panel)
+        None => study::solution(scene, panel)
             .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?,
     };
     let field = field::evaluate_volume::<f32>(&solution, &volume, &[spec.quantity], &|| {})?;
     let block = field
         .block(spec.quantity)
         .ok_or_else(|| RecordError::Rerun("volume quantity missing".into()))?;
-    let stress_per_p0 =
-        scene.contact.p0_pa() / scene.figure.stress_unit.pascals(scene.contact.p0_pa());
+    let stress_per_p0 = study::DisplayUnits::of(scene).stress_per_p0;
     let largest = block
         .iter()
         .filter(|v| v.is_finite())
@@ -597,7 +598,7 @@ fn log_volume(
             .with_colors(colors)
             .with_radii([(0.35 * cloud.spacing) as f32]),
     )?;
-    let unit_over_a = scene.length_unit_over_a();
+    let unit_over_a = study::length_unit_over_a(scene);
     let aspect = scene.contact.aspect;
     let centre = scene.load_centre_over_a;
     if matches!(
@@ -646,7 +647,7 @@ fn log_volume(
 fn contact_patch(scene: &Scene) -> rerun::Mesh3D {
     const RINGS: usize = 12;
     const SEGMENTS: usize = 96;
-    let unit_over_a = scene.length_unit_over_a();
+    let unit_over_a = study::length_unit_over_a(scene);
     let (aspect, centre) = (scene.contact.aspect, scene.load_centre_over_a);
     let shade = |r: f64| {
         let p = (1.0 - r * r).max(0.0).sqrt();

@@ -1,0 +1,333 @@
+//! The typed scene: plain data in SI units, as validated from `scenes/*.toml` (the contact,
+//! the figure and its panels, the numerical grid, display units).
+
+use crate::contact::elliptic::EllipticalContact;
+use crate::contact::gear::SpurGearPair;
+use crate::contact::{Body, LineContact, PointContact};
+use crate::render::{ColorMap, Levels, Mark};
+use crate::stress::Quantity;
+
+/// Contact geometry kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ContactKind {
+    /// Two cylinders (or a cylinder on a flat) with parallel axes along y: plane strain.
+    Line,
+    /// Two spheres, or a sphere on a flat: an axisymmetric Hertz contact of radius a.
+    Point,
+    /// Bodies with two principal radii each (a ball in a groove, crowned teeth): an elliptical
+    /// Hertz contact with semi-axes a along x and b along y. Numerical method only.
+    Elliptical,
+    /// Surface tractions read from a CSV grid (`[tractions]`). Numerical method only.
+    Tractions,
+}
+
+/// The Hertz solution of a dimensional contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Hertz {
+    Line(LineContact),
+    Point(PointContact),
+    Elliptical(EllipticalContact),
+}
+
+impl Hertz {
+    /// Half-width (line) or contact radius (point), in m.
+    pub fn half_width_m(&self) -> f64 {
+        match self {
+            Hertz::Line(line) => line.half_width_m,
+            Hertz::Point(point) => point.radius_m,
+            Hertz::Elliptical(ellipse) => ellipse.semi_axis_x_m,
+        }
+    }
+
+    pub fn p0_pa(&self) -> f64 {
+        match self {
+            Hertz::Line(line) => line.p0_pa,
+            Hertz::Point(point) => point.p0_pa,
+            Hertz::Elliptical(ellipse) => ellipse.p0_pa,
+        }
+    }
+
+    /// The load (N/m for a line contact, N for a point contact) at which the peak pressure
+    /// would be `p0_pa`.
+    pub fn load_for_peak_pressure(&self, p0_pa: f64) -> f64 {
+        match self {
+            Hertz::Line(line) => line.load_for_peak_pressure(p0_pa),
+            Hertz::Point(point) => point.load_for_peak_pressure(p0_pa),
+            Hertz::Elliptical(ellipse) => ellipse.load_for_peak_pressure(p0_pa),
+        }
+    }
+}
+
+/// Yield strength of the body whose field is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct YieldStrength {
+    pub pa: f64,
+    /// The hardness number it was derived from (Tabor, `Y = H/3`), if any.
+    pub from_hardness: Option<f64>,
+}
+
+/// A dimensional contact: bodies, materials, load and the Hertz solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Dimensional {
+    pub body1: Body,
+    pub body2: Body,
+    pub gears: Option<SpurGearPair>,
+    pub hertz: Hertz,
+}
+
+/// The physical size of a contact: half-width and peak pressure.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scale {
+    pub half_width_m: f64,
+    pub p0_pa: f64,
+}
+
+/// The validated contact of a scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact {
+    pub kind: ContactKind,
+    /// Coefficient of sliding friction: `q = mu p` acts on body 1 in +x.
+    pub friction: f64,
+    /// Poisson ratio of body 1, the body whose stresses are computed.
+    pub poisson: f64,
+    /// Half-width and peak pressure in SI; `None` for a normalised scene (a = 1, p0 = 1).
+    pub scale: Option<Scale>,
+    /// Bodies, materials and load, when the scene gives them (then `scale` follows from them).
+    pub dimensional: Option<Dimensional>,
+    pub yield_strength: Option<YieldStrength>,
+    /// Semi-axis along y over that along x: 1 for a sphere, b/a for an elliptical contact.
+    pub aspect: f64,
+    /// Cattaneo-Mindlin partial slip of a sphere: the tangential force over mu P, in (0, 1].
+    pub tangential: Option<f64>,
+}
+
+impl Contact {
+    /// Contact half-width in m (1 for a normalised scene, where lengths are in units of a).
+    pub fn half_width_m(&self) -> f64 {
+        self.scale.map_or(1.0, |s| s.half_width_m)
+    }
+
+    /// Peak pressure in Pa (1 for a normalised scene).
+    pub fn p0_pa(&self) -> f64 {
+        self.scale.map_or(1.0, |s| s.p0_pa)
+    }
+    /// Whether the contact has a closed-form solution (not an elliptical contact, partial
+    /// slip, or tractions from a file).
+    pub fn has_closed_form(&self) -> bool {
+        match self.kind {
+            ContactKind::Line => true,
+            ContactKind::Point => self.tangential.is_none(),
+            ContactKind::Elliptical | ContactKind::Tractions => false,
+        }
+    }
+}
+
+/// How a panel's stresses are computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    /// The exact closed form (McEwen for a line contact, Hamilton for a sphere).
+    ClosedForm,
+    /// Numerical integration of the tractions discretised on the scene's `[numerical]` grid.
+    Numerical,
+    /// Numerical minus closed form: where the discretisation error sits.
+    Difference,
+}
+
+impl Method {
+    pub(crate) fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "closed_form" => Some(Self::ClosedForm),
+            "numerical" => Some(Self::Numerical),
+            "difference" => Some(Self::Difference),
+            _ => None,
+        }
+    }
+
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::ClosedForm => "closed_form",
+            Self::Numerical => "numerical",
+            Self::Difference => "difference",
+        }
+    }
+}
+
+/// The discretisation of the numerical method.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Numerical {
+    /// Cells per side of the square traction grid (point contact), or uniform strips across
+    /// the contact (line contact).
+    pub cells: usize,
+    /// The traction grid covers `extent` semi-axes each way: `[-e a, e a] x [-e b, e b]`
+    /// (point and elliptical contacts; `b = a` for a sphere).
+    pub extent_over_a: f64,
+}
+
+/// Unit of lengths on a figure (and of `figure.x`, `figure.y`, `figure.z` and `figure.at`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LengthUnit {
+    HalfWidth,
+    Metre,
+    Millimetre,
+    Micrometre,
+}
+
+impl LengthUnit {
+    pub(crate) fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "a" => Some(Self::HalfWidth),
+            "m" => Some(Self::Metre),
+            "mm" => Some(Self::Millimetre),
+            "um" | "µm" => Some(Self::Micrometre),
+            _ => None,
+        }
+    }
+
+    /// Size of one unit in m, given the half-width.
+    pub fn metres(self, half_width_m: f64) -> f64 {
+        match self {
+            Self::HalfWidth => half_width_m,
+            Self::Metre => 1.0,
+            Self::Millimetre => 1e-3,
+            Self::Micrometre => 1e-6,
+        }
+    }
+
+    /// The unit after a number: `a`, ` m`, ` mm`, ` µm`.
+    pub fn suffix(self) -> &'static str {
+        match self {
+            Self::HalfWidth => "a",
+            Self::Metre => " m",
+            Self::Millimetre => " mm",
+            Self::Micrometre => " µm",
+        }
+    }
+
+    /// Axis label for a coordinate, e.g. `x/a` or `x (mm)`.
+    pub fn axis_label(self, coordinate: &str) -> String {
+        match self {
+            Self::HalfWidth => format!("{coordinate}/a"),
+            Self::Metre => format!("{coordinate} (m)"),
+            Self::Millimetre => format!("{coordinate} (mm)"),
+            Self::Micrometre => format!("{coordinate} (µm)"),
+        }
+    }
+}
+
+/// Unit of stresses on a figure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StressUnit {
+    PeakPressure,
+    Pascal,
+    MegaPascal,
+    GigaPascal,
+}
+
+impl StressUnit {
+    pub(crate) fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "p0" => Some(Self::PeakPressure),
+            "Pa" => Some(Self::Pascal),
+            "MPa" => Some(Self::MegaPascal),
+            "GPa" => Some(Self::GigaPascal),
+            _ => None,
+        }
+    }
+
+    /// Size of one unit in Pa, given the peak pressure.
+    pub fn pascals(self, p0_pa: f64) -> f64 {
+        match self {
+            Self::PeakPressure => p0_pa,
+            Self::Pascal => 1.0,
+            Self::MegaPascal => 1e6,
+            Self::GigaPascal => 1e9,
+        }
+    }
+
+    /// Label of a value with this unit, e.g. `τ1 / p0` or `τ1 (MPa)`.
+    pub fn label(self, symbol: &str) -> String {
+        match self {
+            Self::PeakPressure => format!("{symbol} / p0"),
+            Self::Pascal => format!("{symbol} (Pa)"),
+            Self::MegaPascal => format!("{symbol} (MPa)"),
+            Self::GigaPascal => format!("{symbol} (GPa)"),
+        }
+    }
+}
+
+/// Which plane a figure cuts through the body.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SectionKind {
+    /// x horizontal, depth z downwards, at a given y.
+    Xz,
+    /// y horizontal, depth z downwards, at a given x.
+    Yz,
+    /// x horizontal, y upwards, at a given depth z (the surface at z = 0).
+    Xy,
+}
+
+impl SectionKind {
+    pub(crate) fn from_key(key: &str) -> Option<Self> {
+        match key {
+            "xz" => Some(Self::Xz),
+            "yz" => Some(Self::Yz),
+            "xy" => Some(Self::Xy),
+            _ => None,
+        }
+    }
+
+    /// Names of the horizontal, vertical and normal coordinates.
+    pub fn coordinates(self) -> (&'static str, &'static str, &'static str) {
+        match self {
+            Self::Xz => ("x", "z", "y"),
+            Self::Yz => ("y", "z", "x"),
+            Self::Xy => ("x", "y", "z"),
+        }
+    }
+
+    /// Whether the vertical axis is the depth (drawn downwards).
+    pub fn vertical_is_depth(self) -> bool {
+        self != Self::Xy
+    }
+
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Xz => "xz",
+            Self::Yz => "yz",
+            Self::Xy => "xy",
+        }
+    }
+}
+
+/// What the figure shows and how.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FigureSpec {
+    pub quantity: Quantity,
+    pub section: SectionKind,
+    /// Range along the horizontal axis (x, or y for a yz section), in `length_unit`.
+    pub horizontal: (f64, f64),
+    /// Range along the vertical axis (depth z, or y for an xy section), in `length_unit`.
+    pub vertical: (f64, f64),
+    pub length_unit: LengthUnit,
+    pub stress_unit: StressUnit,
+    /// Samples along the horizontal axis; the vertical one follows with the same spacing.
+    pub resolution: usize,
+    pub levels: Levels,
+    pub colormap: ColorMap,
+    /// Which extremes to mark; `None` chooses from the data (see `figure::auto_mark`).
+    pub mark: Option<Mark>,
+    pub width_px: u32,
+    pub svg: bool,
+}
+
+/// One panel: the contact with its own friction and Poisson ratio, cut at its own position.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PanelSpec {
+    pub method: Method,
+    pub friction: f64,
+    pub poisson: f64,
+    /// Position of the section along its normal (y for xz, x for yz, depth z for xy), in the
+    /// figure's `length_unit`.
+    pub at: f64,
+    pub subtitle: Option<String>,
+}

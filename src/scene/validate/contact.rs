@@ -1,0 +1,340 @@
+//! The `[contact]` table: kind, friction, scale or load, yield strength, spur gears.
+
+#[allow(clippy::wildcard_imports)]
+use super::*;
+
+impl Validator<'_> {
+    pub(super) fn contact(&self, raw: &RawContact) -> Result<Contact, SceneError> {
+        let kind = match raw.kind.as_str() {
+            "line" => ContactKind::Line,
+            "point" => ContactKind::Point,
+            "elliptical" => ContactKind::Elliptical,
+            "tractions" => ContactKind::Tractions,
+            other => {
+                return Err(self.error(
+                    "contact.kind",
+                    format!("unknown contact kind `{other}`"),
+                    Some("use \"line\" (cylinders, plane strain), \"point\" (spheres) or \"elliptical\" (two principal radii per body)"),
+                ))
+            }
+        };
+        let tangential = match (raw.tangential, kind) {
+            (None, _) => None,
+            (Some(_), ContactKind::Line | ContactKind::Elliptical | ContactKind::Tractions) => {
+                return Err(self.error(
+                    "contact.tangential",
+                    "partial slip (Cattaneo-Mindlin) is available for a sphere only",
+                    Some("use kind = \"point\", or remove it for full sliding (q = mu p)"),
+                ))
+            }
+            (Some(ratio), ContactKind::Point) if ratio > 0.0 && ratio <= 1.0 => Some(ratio),
+            (Some(ratio), ContactKind::Point) => {
+                return Err(self.error(
+                    "contact.tangential",
+                    format!("the tangential force over mu P must lie in (0, 1], got {ratio}"),
+                    Some("1 is full sliding; 0.5 leaves a stick circle of radius 0.79a"),
+                ))
+            }
+        };
+        if tangential.is_some() && raw.friction.is_none_or(|mu| mu <= 0.0) {
+            return Err(self.error(
+                "contact.friction",
+                "partial slip needs a friction coefficient > 0",
+                Some("add e.g. friction = 0.5"),
+            ));
+        }
+        if kind == ContactKind::Tractions {
+            if raw.friction.is_some() {
+                return Err(self.error(
+                    "contact.friction",
+                    "the tangential tractions of a traction scene come from the file",
+                    Some("remove it; give qx (and qy) columns in the CSV file instead"),
+                ));
+            }
+            let key = [
+                ("contact.load", raw.load.is_some()),
+                ("contact.body1", raw.body1.is_some()),
+                ("contact.body2", raw.body2.is_some()),
+                ("contact.gears", raw.gears.is_some()),
+            ]
+            .into_iter()
+            .find_map(|(key, given)| given.then_some(key));
+            if let Some(key) = key {
+                return Err(self.error(
+                    key,
+                    "a traction scene has no bodies or load: the file gives the tractions",
+                    Some("remove it; contact.a and contact.p0 set the figures' units"),
+                ));
+            }
+        }
+        if kind != ContactKind::Line && raw.gears.is_some() {
+            return Err(self.error(
+                "contact.gears",
+                "spur gears make a line contact",
+                Some("use kind = \"line\" with [contact.gears], or give sphere radii in [contact.body1] and [contact.body2]"),
+            ));
+        }
+        let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
+        let mut aspect = match (raw.aspect, kind) {
+            (None, _) => 1.0,
+            (Some(_), ContactKind::Line | ContactKind::Point | ContactKind::Tractions) => {
+                return Err(self.error(
+                    "contact.aspect",
+                    "the aspect ratio b/a is for an elliptical contact",
+                    Some("use kind = \"elliptical\", or remove it"),
+                ))
+            }
+            (Some(ratio), ContactKind::Elliptical) if (0.01..=100.0).contains(&ratio) => ratio,
+            (Some(ratio), ContactKind::Elliptical) => {
+                return Err(self.error(
+                    "contact.aspect",
+                    format!("the semi-axis ratio b/a must lie in 0.01..=100, got {ratio}"),
+                    Some("b is the semi-axis along y, a along x (the sliding direction)"),
+                ))
+            }
+        };
+        let dimensional_keys =
+            raw.load.is_some() || raw.body1.is_some() || raw.body2.is_some() || raw.gears.is_some();
+        let yield_strength = self.yield_strength(raw)?;
+        let scale = self.scale(raw)?;
+        if !dimensional_keys && scale.is_none() && yield_strength.is_some() {
+            let key = if raw.hardness.is_some() {
+                "contact.hardness"
+            } else {
+                "contact.yield_strength"
+            };
+            return Err(self.error(
+                key,
+                "a yield check needs a dimensional contact; this scene is normalised (a = 1, p0 = 1)",
+                Some("give a and p0 with units, or load and bodies; `stressfield hertz` reports p0 at first yield in units of Y anyway"),
+            ));
+        }
+        if !dimensional_keys {
+            if kind == ContactKind::Elliptical && raw.aspect.is_none() {
+                return Err(self.error(
+                    "contact.aspect",
+                    "a normalised elliptical contact needs its semi-axis ratio b/a",
+                    Some("add e.g. aspect = 0.3 (b along y over a along x), or give load and bodies with radius_x and radius_y"),
+                ));
+            }
+            let poisson = self.poisson("contact.poisson", raw.poisson.unwrap_or(0.3))?;
+            return Ok(Contact {
+                kind,
+                friction,
+                poisson,
+                scale,
+                dimensional: None,
+                yield_strength,
+                aspect,
+                tangential,
+            });
+        }
+        if raw.aspect.is_some() {
+            return Err(self.error(
+                "contact.aspect",
+                "the semi-axis ratio follows from the load and the bodies",
+                Some("remove it, or remove the load and bodies for a normalised scene"),
+            ));
+        }
+        if raw.a.is_some() || raw.p0.is_some() {
+            let key = if raw.a.is_some() {
+                "contact.a"
+            } else {
+                "contact.p0"
+            };
+            return Err(self.error(
+                key,
+                "a and p0 follow from the load and the bodies",
+                Some("give either a and p0, or load with [contact.body1] and [contact.body2]"),
+            ));
+        }
+        if raw.poisson.is_some() {
+            return Err(self.error(
+                "contact.poisson",
+                "a dimensional scene takes Poisson's ratio from each body",
+                Some("move it to [contact.body1] and [contact.body2] (or use a material preset)"),
+            ));
+        }
+        let (load_dimension, load_hint) = match kind {
+            ContactKind::Line => (
+                Dimension::ForcePerLength,
+                "add e.g. load = \"40 kN/m\" (force per unit length for a line contact)",
+            ),
+            ContactKind::Point | ContactKind::Elliptical | ContactKind::Tractions => (
+                Dimension::Force,
+                "add e.g. load = \"500 N\" (the total force for a point contact)",
+            ),
+        };
+        let load_text = raw.load.as_deref().ok_or_else(|| {
+            self.error(
+                "contact.load",
+                "a dimensional scene needs the load",
+                Some(load_hint),
+            )
+        })?;
+        let load = self.positive("contact.load", load_text, load_dimension)?;
+        let gears = raw.gears.as_ref().map(|g| self.gears(g)).transpose()?;
+        let empty = RawBody::default();
+        let elliptical = kind == ContactKind::Elliptical;
+        let raw1 = raw.body1.as_ref().unwrap_or(&empty);
+        let raw2 = raw.body2.as_ref().unwrap_or(&empty);
+        let mut body1 = self.body("contact.body1", raw1, gears.is_some(), elliptical)?;
+        let mut body2 = self.body("contact.body2", raw2, gears.is_some(), elliptical)?;
+        if let Some(pair) = gears {
+            body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
+            body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
+        }
+        let radius_error = |e: crate::contact::ContactError| {
+            self.error("contact.body2.radius", e.to_string(), Some("a flat is radius = \"flat\"; a concave body has a negative radius larger in size than the convex one's"))
+        };
+        let hertz = match kind {
+            ContactKind::Line => {
+                Hertz::Line(LineContact::new(&body1, &body2, load).map_err(radius_error)?)
+            }
+            ContactKind::Point => {
+                Hertz::Point(PointContact::new(&body1, &body2, load).map_err(radius_error)?)
+            }
+            ContactKind::Elliptical => {
+                let curved = |radii, body: &Body| CurvedBody {
+                    radii,
+                    material: body.material,
+                };
+                let first = curved(self.principal_radii("contact.body1", raw1)?, &body1);
+                let second = curved(self.principal_radii("contact.body2", raw2)?, &body2);
+                let ellipse = EllipticalContact::new(&first, &second, 0.0, load).map_err(|e| {
+                    self.error("contact.body2.radius_y", e.to_string(), Some("each principal relative curvature must be positive: a concave radius must be larger in size than the convex one's in the same plane"))
+                })?;
+                aspect = ellipse.semi_axis_y_m / ellipse.semi_axis_x_m;
+                Hertz::Elliptical(ellipse)
+            }
+            ContactKind::Tractions => {
+                return Err(self.error(
+                    "contact.load",
+                    "a traction scene has no bodies or load",
+                    None,
+                ))
+            }
+        };
+        Ok(Contact {
+            kind,
+            friction,
+            poisson: body1.material.poisson,
+            scale: Some(Scale {
+                half_width_m: hertz.half_width_m(),
+                p0_pa: hertz.p0_pa(),
+            }),
+            dimensional: Some(Dimensional {
+                body1,
+                body2,
+                gears,
+                hertz,
+            }),
+            yield_strength,
+            aspect,
+            tangential,
+        })
+    }
+
+    /// `a` and `p0` given directly: both bare 1 (normalised, the default) or both with units.
+    pub(super) fn scale(&self, raw: &RawContact) -> Result<Option<Scale>, SceneError> {
+        let value = |key: &str, value: &NumberOrText, dimension: Dimension| match value {
+            NumberOrText::Number(n) if *n == 1.0 => Ok(None),
+            NumberOrText::Number(n) => Err(self.error(
+                key,
+                format!("a bare number means normalised units and must be 1, got {n}"),
+                Some(&format!(
+                    "write it with a unit for a dimensional scale, e.g. {}",
+                    dimension.example()
+                )),
+            )),
+            NumberOrText::Text(text) => self.positive(key, text, dimension).map(Some),
+        };
+        let a = raw
+            .a
+            .as_ref()
+            .map(|v| value("contact.a", v, Dimension::Length))
+            .transpose()?
+            .flatten();
+        let p0 = raw
+            .p0
+            .as_ref()
+            .map(|v| value("contact.p0", v, Dimension::Pressure))
+            .transpose()?
+            .flatten();
+        match (a, p0) {
+            (Some(half_width_m), Some(p0_pa)) => Ok(Some(Scale {
+                half_width_m,
+                p0_pa,
+            })),
+            (None, None) => Ok(None),
+            (Some(_), None) => Err(self.error(
+                "contact.p0",
+                "a dimensional half-width needs a dimensional peak pressure",
+                Some("add e.g. p0 = \"1.2 GPa\""),
+            )),
+            (None, Some(_)) => Err(self.error(
+                "contact.a",
+                "a dimensional peak pressure needs a dimensional half-width",
+                Some("add e.g. a = \"0.2 mm\""),
+            )),
+        }
+    }
+
+    pub(super) fn yield_strength(
+        &self,
+        raw: &RawContact,
+    ) -> Result<Option<YieldStrength>, SceneError> {
+        match (&raw.yield_strength, &raw.hardness) {
+            (Some(_), Some(_)) => Err(self.error(
+                "contact.hardness",
+                "give either yield_strength or hardness, not both",
+                None,
+            )),
+            (Some(text), None) => Ok(Some(YieldStrength {
+                pa: self.positive("contact.yield_strength", text, Dimension::Pressure)?,
+                from_hardness: None,
+            })),
+            (None, Some(text)) => {
+                let number = self.positive("contact.hardness", text, Dimension::Hardness)?;
+                Ok(Some(YieldStrength {
+                    pa: yield_strength_from_hardness_pa(number),
+                    from_hardness: Some(number),
+                }))
+            }
+            (None, None) => Ok(None),
+        }
+    }
+
+    pub(super) fn gears(&self, raw: &raw::RawGears) -> Result<SpurGearPair, SceneError> {
+        let module_m = self.positive("contact.gears.module", &raw.module, Dimension::Length)?;
+        let angle = units::parse(&raw.pressure_angle, Dimension::Angle)
+            .map_err(|m| self.error("contact.gears.pressure_angle", m, None))?;
+        if !(angle > 0.0 && angle < std::f64::consts::FRAC_PI_2) {
+            return Err(self.error(
+                "contact.gears.pressure_angle",
+                format!(
+                    "must lie between 0 and 90 deg, got `{}`",
+                    raw.pressure_angle
+                ),
+                Some("20 deg is standard"),
+            ));
+        }
+        let teeth: [u32; 2] = match raw.teeth.as_slice() {
+            [a, b] if *a >= 6 && *b >= 6 && *a <= 100_000 && *b <= 100_000 => {
+                [*a as u32, *b as u32]
+            }
+            _ => {
+                return Err(self.error(
+                    "contact.gears.teeth",
+                    format!("needs two tooth counts of at least 6, got {:?}", raw.teeth),
+                    Some("e.g. teeth = [20, 40] (pinion = body1, gear = body2)"),
+                ))
+            }
+        };
+        Ok(SpurGearPair {
+            module_m,
+            teeth,
+            pressure_angle_rad: angle,
+        })
+    }
+}

@@ -1,0 +1,262 @@
+//! The `[figure]` table and the position of each `[[panel]]`'s section.
+
+#[allow(clippy::wildcard_imports)]
+use super::*;
+
+impl Validator<'_> {
+    /// The position of a section along its normal: any y or x, a depth z >= 0; only 0 for a
+    /// line contact (its field does not depend on y).
+    pub(super) fn section_position(
+        &self,
+        key: &str,
+        value: Option<f64>,
+        contact: &Contact,
+        figure: &FigureSpec,
+    ) -> Result<f64, SceneError> {
+        let Some(at) = value else {
+            return Ok(0.0);
+        };
+        let (_, _, normal) = figure.section.coordinates();
+        if !at.is_finite() {
+            return Err(self.error(key, format!("must be a finite {normal}, got {at}"), None));
+        }
+        if contact.kind == ContactKind::Line && at != 0.0 {
+            return Err(self.error(
+                key,
+                "a line contact is the same in every xz plane (plane strain)",
+                Some("remove it; sections at other y are for point contacts"),
+            ));
+        }
+        if figure.section == SectionKind::Xy && at < 0.0 {
+            return Err(self.error(
+                key,
+                format!(
+                    "the depth of an xy section must be >= 0 (z points into the body), got {at}"
+                ),
+                Some("0 is the surface"),
+            ));
+        }
+        Ok(at)
+    }
+
+    pub(super) fn figure(
+        &self,
+        raw: &RawFigure,
+        contact: &Contact,
+    ) -> Result<FigureSpec, SceneError> {
+        let quantity = match &raw.quantity {
+            Some(key) => Quantity::from_key(key).ok_or_else(|| {
+                let keys: Vec<_> = Quantity::ALL.iter().map(|q| q.key()).collect();
+                self.error(
+                    "figure.quantity",
+                    format!("unknown quantity `{key}`"),
+                    Some(&format!("use one of: {}", keys.join(", "))),
+                )
+            })?,
+            None => Quantity::VonMises,
+        };
+        let dimensional = contact.scale.is_some();
+        let length_unit = match &raw.length_unit {
+            Some(key) => LengthUnit::from_key(key).ok_or_else(|| {
+                self.error(
+                    "figure.length_unit",
+                    format!("unknown length unit `{key}`"),
+                    Some("use \"a\", \"mm\", \"um\" or \"m\""),
+                )
+            })?,
+            None if dimensional => LengthUnit::Millimetre,
+            None => LengthUnit::HalfWidth,
+        };
+        let stress_unit = match &raw.stress_unit {
+            Some(key) => StressUnit::from_key(key).ok_or_else(|| {
+                self.error(
+                    "figure.stress_unit",
+                    format!("unknown stress unit `{key}`"),
+                    Some("use \"p0\", \"MPa\", \"GPa\" or \"Pa\""),
+                )
+            })?,
+            None if dimensional => StressUnit::MegaPascal,
+            None => StressUnit::PeakPressure,
+        };
+        if !dimensional && length_unit != LengthUnit::HalfWidth {
+            return Err(self.error(
+                "figure.length_unit",
+                "a normalised scene (no load or bodies) is drawn in units of a",
+                Some("use length_unit = \"a\", or give contact.load and the bodies"),
+            ));
+        }
+        if !dimensional && stress_unit != StressUnit::PeakPressure {
+            return Err(self.error(
+                "figure.stress_unit",
+                "a normalised scene (no load or bodies) is drawn in units of p0",
+                Some("use stress_unit = \"p0\", or give contact.load and the bodies"),
+            ));
+        }
+        let section = match &raw.section {
+            Some(key) => SectionKind::from_key(key).ok_or_else(|| {
+                self.error(
+                    "figure.section",
+                    format!("unknown section `{key}`"),
+                    Some("use \"xz\" (depth below the sliding direction), \"yz\" (depth across it) or \"xy\" (a plane at a depth, 0 for the surface)"),
+                )
+            })?,
+            None => SectionKind::Xz,
+        };
+        if contact.kind == ContactKind::Line && section != SectionKind::Xz {
+            return Err(self.error(
+                "figure.section",
+                format!(
+                    "a line contact is plane strain: its {} sections only repeat the xz field",
+                    section.key()
+                ),
+                Some("use section = \"xz\" (the default), or kind = \"point\""),
+            ));
+        }
+        let (horizontal_name, vertical_name, normal_name) = section.coordinates();
+        let ranges = [
+            ("x", raw.x.as_ref()),
+            ("y", raw.y.as_ref()),
+            ("z", raw.z.as_ref()),
+        ];
+        for (name, range) in ranges {
+            if range.is_some() && name == normal_name {
+                return Err(self.error(
+                    &format!("figure.{name}"),
+                    format!("an {} section has no {name} range: {name} is fixed by figure.at", section.key()),
+                    Some(&format!("give figure.{horizontal_name} and figure.{vertical_name}, and the section's {normal_name} as figure.at")),
+                ));
+            }
+        }
+        let range_of = |name: &str| {
+            ranges
+                .iter()
+                .find(|(n, _)| *n == name)
+                .and_then(|(_, range)| *range)
+        };
+        let a_in_unit = contact.half_width_m() / length_unit.metres(contact.half_width_m());
+        let default_horizontal = match (contact.kind, section) {
+            (ContactKind::Line, _) => 2.5,
+            (ContactKind::Point | ContactKind::Tractions, _) => 2.0,
+            // Twice the semi-axis along the horizontal axis (b = aspect a along y).
+            (ContactKind::Elliptical, SectionKind::Yz) => 2.0 * contact.aspect,
+            (ContactKind::Elliptical, _) => 2.0,
+        };
+        let horizontal = self.range(
+            &format!("figure.{horizontal_name}"),
+            range_of(horizontal_name),
+            (
+                -default_horizontal * a_in_unit,
+                default_horizontal * a_in_unit,
+            ),
+        )?;
+        let default_vertical = if section.vertical_is_depth() {
+            (0.0, 2.0 * a_in_unit * contact.aspect.min(1.0))
+        } else {
+            let b = 2.0 * a_in_unit * contact.aspect;
+            (-b, b)
+        };
+        let vertical = self.range(
+            &format!("figure.{vertical_name}"),
+            range_of(vertical_name),
+            default_vertical,
+        )?;
+        if section.vertical_is_depth() && vertical.0 < 0.0 {
+            return Err(self.error(
+                "figure.z",
+                format!(
+                    "depth must be >= 0 (z points into the body), got {}",
+                    vertical.0
+                ),
+                Some("start the range at 0 for the surface"),
+            ));
+        }
+        let resolution = match raw.resolution {
+            None => 801,
+            Some(n) if (16..=20_000).contains(&n) => n as usize,
+            Some(n) => {
+                return Err(self.error(
+                    "figure.resolution",
+                    format!("must lie in 16..=20000 samples along x, got {n}"),
+                    Some("600 to 1200 is plenty for a figure"),
+                ))
+            }
+        };
+        let levels = match (raw.contours, &raw.levels) {
+            (Some(_), Some(_)) => {
+                return Err(self.error(
+                    "figure.levels",
+                    "give either contours (a count) or levels (values), not both",
+                    None,
+                ))
+            }
+            (Some(n), None) if (0..=100).contains(&n) => Levels::Count(n as usize),
+            (Some(n), None) => {
+                return Err(self.error(
+                    "figure.contours",
+                    format!("must lie in 0..=100, got {n}"),
+                    None,
+                ))
+            }
+            (None, Some(values)) if values.iter().all(|v| v.is_finite()) => {
+                Levels::Values(values.clone())
+            }
+            (None, Some(_)) => {
+                return Err(self.error("figure.levels", "levels must be finite numbers", None))
+            }
+            (None, None) => Levels::Count(10),
+        };
+        let colormap = match &raw.colormap {
+            Some(key) => ColorMap::from_key(key).ok_or_else(|| {
+                let keys: Vec<_> = ColorMap::ALL.iter().map(|c| c.key()).collect();
+                self.error(
+                    "figure.colormap",
+                    format!("unknown colour map `{key}`"),
+                    Some(&format!("use one of: {}", keys.join(", "))),
+                )
+            })?,
+            None => match quantity.kind() {
+                QuantityKind::NonNegative => ColorMap::Viridis,
+                QuantityKind::Signed => ColorMap::Diverging,
+            },
+        };
+        let mark = match raw.mark.as_deref() {
+            None | Some("auto") => None,
+            Some("max") => Some(Mark::Max),
+            Some("min") => Some(Mark::Min),
+            Some("both") => Some(Mark::Both),
+            Some("none") => Some(Mark::None),
+            Some(other) => {
+                return Err(self.error(
+                    "figure.mark",
+                    format!("unknown mark `{other}`"),
+                    Some("use \"auto\", \"max\", \"min\", \"both\" or \"none\""),
+                ))
+            }
+        };
+        let width_px = match raw.width {
+            None => 560,
+            Some(w) if (200..=4000).contains(&w) => w as u32,
+            Some(w) => {
+                return Err(self.error(
+                    "figure.width",
+                    format!("panel width must lie in 200..=4000 px, got {w}"),
+                    None,
+                ))
+            }
+        };
+        Ok(FigureSpec {
+            quantity,
+            section,
+            horizontal,
+            vertical,
+            length_unit,
+            stress_unit,
+            resolution,
+            levels,
+            colormap,
+            mark,
+            width_px,
+            svg: raw.svg.unwrap_or(false),
+        })
+    }
+}

@@ -1,0 +1,241 @@
+//! Validation of a parsed scene into the typed scene, one file per table; the shared helpers
+//! (errors with the key, numbers with units, ranges, friction and Poisson's ratio) are here.
+
+mod bodies;
+mod contact;
+mod figure;
+mod numerical;
+mod sweep;
+mod tractions;
+mod volume;
+
+use super::raw::{
+    self, NumberOrText, RawBody, RawContact, RawFigure, RawScene, RawSweep, RawVolume,
+};
+use super::spec::{
+    Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
+    Scale, SectionKind, StressUnit, YieldStrength,
+};
+use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
+use super::traction_csv;
+use super::units::{self, Dimension};
+use super::{Scene, SceneError, FORMAT};
+use crate::contact::elliptic::{CurvedBody, EllipticalContact, PrincipalRadii};
+use crate::contact::gear::SpurGearPair;
+use crate::contact::material::{self, yield_strength_from_hardness_pa, Material};
+use crate::contact::{Body, LineContact, PointContact};
+use crate::render::{ColorMap, Levels, Mark};
+use crate::solution::dcfft::TractionGrid;
+use crate::stress::{Quantity, QuantityKind};
+use crate::study::grid_rows;
+
+pub(super) struct Validator<'a> {
+    pub(super) file: &'a str,
+}
+
+impl Validator<'_> {
+    fn error(&self, key: &str, message: impl Into<String>, hint: Option<&str>) -> SceneError {
+        SceneError {
+            file: self.file.into(),
+            key: Some(key.into()),
+            line_column: None,
+            message: message.into(),
+            hint: hint.map(Into::into),
+        }
+    }
+
+    pub(super) fn scene(&self, raw: RawScene, name: &str) -> Result<Scene, SceneError> {
+        if raw.format != FORMAT {
+            return Err(self.error(
+                "format",
+                format!(
+                    "this build reads scene format {FORMAT}, the scene says {}",
+                    raw.format
+                ),
+                Some("set `format = 1`"),
+            ));
+        }
+        let contact = self.contact(&raw.contact)?;
+        let figure = self.figure(&raw.figure, &contact)?;
+        let method = self.method("contact.method", raw.contact.method.as_deref())?;
+        let numerical = self.numerical(raw.numerical.as_ref(), &contact)?;
+        let tractions = self.tractions(&raw, &contact)?;
+        let at = self.section_position("figure.at", raw.figure.at, &contact, &figure)?;
+        let mut panels = Vec::new();
+        for (i, panel) in raw.panels.iter().enumerate() {
+            let key = format!("panel[{i}]");
+            let method = match panel.method.as_deref() {
+                Some(text) => self.method(&format!("{key}.method"), Some(text))?,
+                None => method,
+            };
+            let at = match panel.at {
+                Some(value) => {
+                    self.section_position(&format!("{key}.at"), Some(value), &contact, &figure)?
+                }
+                None => at,
+            };
+            let friction = match panel.friction {
+                Some(mu) => self.friction(&format!("{key}.friction"), mu)?,
+                None => contact.friction,
+            };
+            let poisson = match panel.poisson {
+                Some(nu) => self.poisson(&format!("{key}.poisson"), nu)?,
+                None => contact.poisson,
+            };
+            panels.push(PanelSpec {
+                method,
+                friction,
+                poisson,
+                at,
+                subtitle: panel.subtitle.clone(),
+            });
+        }
+        if panels.is_empty() {
+            panels.push(PanelSpec {
+                method,
+                friction: contact.friction,
+                poisson: contact.poisson,
+                at,
+                subtitle: None,
+            });
+        }
+        if !contact.has_closed_form() {
+            let key = raw
+                .panels
+                .iter()
+                .position(|p| p.method.is_some())
+                .map_or_else(
+                    || "contact.method".to_string(),
+                    |i| format!("panel[{i}].method"),
+                );
+            if let Some(panel) = panels.iter().find(|p| p.method != Method::Numerical) {
+                let what = match contact.kind {
+                    ContactKind::Elliptical => "an elliptical contact",
+                    ContactKind::Tractions => "a traction grid from a file",
+                    _ => "partial slip",
+                };
+                return Err(self.error(
+                    &key,
+                    format!(
+                        "{what} has no closed form here, so `{}` cannot be drawn",
+                        panel.method.key()
+                    ),
+                    Some("use method = \"numerical\""),
+                ));
+            }
+        }
+        if panels.len() > 6 {
+            return Err(self.error(
+                "panel",
+                format!("{} panels is too many for one figure", panels.len()),
+                Some("use at most 6 [[panel]] tables; split the rest into another scene"),
+            ));
+        }
+        let plane_points = figure.resolution
+            * grid_rows(
+                figure.resolution,
+                figure.horizontal.1 - figure.horizontal.0,
+                figure.vertical.1 - figure.vertical.0,
+            );
+        let bytes = plane_points.saturating_mul(panels.len()).saturating_mul(8);
+        if bytes > crate::field::MAX_FIELD_BYTES {
+            return Err(self.error(
+                "figure.resolution",
+                format!(
+                    "{} points per panel x {} panels need about {} MiB, more than the {} MiB allowed",
+                    plane_points,
+                    panels.len(),
+                    bytes >> 20,
+                    crate::field::MAX_FIELD_BYTES >> 20
+                ),
+                Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),
+            ));
+        }
+        let mut scene = Scene {
+            name: name.into(),
+            title: raw.title,
+            contact,
+            figure,
+            panels,
+            numerical,
+            tractions,
+            sweep: None,
+            volume: None,
+            load_centre_over_a: 0.0,
+        };
+        if let Some(sweep) = &raw.sweep {
+            scene.sweep = Some(self.sweep(sweep, &scene)?);
+        }
+        if let Some(volume) = &raw.volume {
+            scene.volume = Some(self.volume(volume, &scene.contact, &scene.figure)?);
+        }
+        Ok(scene)
+    }
+
+    fn method(&self, key: &str, value: Option<&str>) -> Result<Method, SceneError> {
+        match value {
+            None => Ok(Method::ClosedForm),
+            Some(text) => Method::from_key(text).ok_or_else(|| {
+                self.error(
+                    key,
+                    format!("unknown method `{text}`"),
+                    Some("use \"closed_form\" (exact), \"numerical\" (integrated tractions) or \"difference\" (numerical minus closed form)"),
+                )
+            }),
+        }
+    }
+
+    fn friction(&self, key: &str, mu: f64) -> Result<f64, SceneError> {
+        if !(mu.is_finite() && mu >= 0.0) {
+            return Err(self.error(
+                key,
+                format!("friction coefficient must be >= 0 and finite, got {mu}"),
+                Some("typical values are 0 to 0.5"),
+            ));
+        }
+        Ok(mu)
+    }
+
+    fn poisson(&self, key: &str, nu: f64) -> Result<f64, SceneError> {
+        if !(nu > -1.0 && nu <= 0.5) {
+            return Err(self.error(
+                key,
+                format!("Poisson's ratio must lie in (-1, 0.5], got {nu}"),
+                Some("steel is about 0.3"),
+            ));
+        }
+        Ok(nu)
+    }
+
+    fn positive(&self, key: &str, text: &str, dimension: Dimension) -> Result<f64, SceneError> {
+        let value = units::parse(text, dimension).map_err(|m| self.error(key, m, None))?;
+        if !(value.is_finite() && value > 0.0) {
+            return Err(self.error(
+                key,
+                format!("must be positive and finite, got `{text}`"),
+                None,
+            ));
+        }
+        Ok(value)
+    }
+
+    fn range(
+        &self,
+        key: &str,
+        values: Option<&Vec<f64>>,
+        default: (f64, f64),
+    ) -> Result<(f64, f64), SceneError> {
+        let Some(values) = values else {
+            return Ok(default);
+        };
+        match values.as_slice() {
+            [lo, hi] if lo.is_finite() && hi.is_finite() && lo < hi => Ok((*lo, *hi)),
+            [lo, hi] if lo >= hi => Err(self.error(
+                key,
+                format!("range [{lo}, {hi}] is empty or inverted"),
+                Some("write [min, max] with min < max"),
+            )),
+            _ => Err(self.error(key, format!("needs [min, max], got {values:?}"), None)),
+        }
+    }
+}

@@ -1,0 +1,197 @@
+//! The `[sweep]` table of a recording scene.
+
+#[allow(clippy::wildcard_imports)]
+use super::*;
+
+impl Validator<'_> {
+    pub(super) fn sweep(&self, raw: &RawSweep, scene: &Scene) -> Result<Sweep, SceneError> {
+        let parameter = SweepParameter::from_key(&raw.parameter).ok_or_else(|| {
+            self.error(
+                "sweep.parameter",
+                format!("unknown sweep parameter `{}`", raw.parameter),
+                Some("use \"friction\", \"load\" or \"position\""),
+            )
+        })?;
+        let contact = &scene.contact;
+        let values: Vec<f64> = match (&raw.values, raw.from, raw.to, raw.steps) {
+            (Some(values), None, None, None) => {
+                let mut numbers = Vec::with_capacity(values.len());
+                for (i, value) in values.iter().enumerate() {
+                    let key = format!("sweep.values[{i}]");
+                    numbers.push(match (value, parameter) {
+                        (NumberOrText::Number(v), _) => *v,
+                        (NumberOrText::Text(text), SweepParameter::Load) => {
+                            let dimension = if contact.kind == ContactKind::Line {
+                                Dimension::ForcePerLength
+                            } else {
+                                Dimension::Force
+                            };
+                            units::parse(text, dimension).map_err(|m| self.error(&key, m, None))?
+                        }
+                        (NumberOrText::Text(text), _) => {
+                            return Err(self.error(
+                                &key,
+                                format!("expected a number, got `{text}`"),
+                                Some("friction and position values are plain numbers"),
+                            ))
+                        }
+                    });
+                }
+                numbers
+            }
+            (None, Some(from), Some(to), Some(steps)) => {
+                if !(2..=MAX_STEPS as i64).contains(&steps) {
+                    return Err(self.error(
+                        "sweep.steps",
+                        format!("must lie in 2..={MAX_STEPS}, got {steps}"),
+                        None,
+                    ));
+                }
+                let n = steps as usize;
+                (0..n)
+                    .map(|k| from + (to - from) * k as f64 / (n - 1) as f64)
+                    .collect()
+            }
+            _ => {
+                return Err(self.error(
+                    "sweep",
+                    "give either `values` or all of `from`, `to` and `steps`",
+                    Some("e.g. values = [0.0, 0.1, 0.2] or from = 0.0, to = 0.5, steps = 11"),
+                ))
+            }
+        };
+        if values.is_empty() || values.len() > MAX_STEPS {
+            return Err(self.error(
+                "sweep.values",
+                format!("needs 1 to {MAX_STEPS} values, got {}", values.len()),
+                None,
+            ));
+        }
+        for (i, &value) in values.iter().enumerate() {
+            let key = format!("sweep.values[{i}]");
+            match parameter {
+                SweepParameter::Friction => {
+                    self.friction(&key, value)?;
+                }
+                SweepParameter::Load if !(value.is_finite() && value > 0.0) => {
+                    return Err(self.error(
+                        &key,
+                        format!("a load must be positive and finite, got {value}"),
+                        None,
+                    ));
+                }
+                SweepParameter::Load | SweepParameter::Position if !value.is_finite() => {
+                    return Err(self.error(&key, format!("must be finite, got {value}"), None));
+                }
+                _ => {}
+            }
+        }
+        match parameter {
+            SweepParameter::Friction if contact.kind == ContactKind::Tractions => {
+                return Err(self.error(
+                    "sweep.parameter",
+                    "tractions from a file carry their own shear: there is no friction to sweep",
+                    None,
+                ))
+            }
+            SweepParameter::Friction if contact.tangential.is_some() => {
+                return Err(self.error(
+                    "sweep.parameter",
+                    "a friction sweep of partial slip is not supported",
+                    Some("sweep the friction of a sliding contact (no contact.tangential)"),
+                ))
+            }
+            SweepParameter::Load if contact.dimensional.is_none() => {
+                return Err(self.error(
+                    "sweep.parameter",
+                    "a load sweep needs a dimensional contact (bodies, materials and a load)",
+                    Some("give contact.load and [contact.body1], [contact.body2]"),
+                ))
+            }
+            SweepParameter::Load if scene.figure.length_unit == LengthUnit::HalfWidth => {
+                return Err(self.error(
+                    "figure.length_unit",
+                    "in units of a and p0 every step of a load sweep shows the same field",
+                    Some("draw it in physical units: figure.length_unit = \"mm\" and figure.stress_unit = \"MPa\""),
+                ))
+            }
+            SweepParameter::Position => {
+                let numerical_point = contact.kind != ContactKind::Line
+                    && scene.panels.iter().any(|p: &PanelSpec| {
+                        p.method != Method::ClosedForm
+                            || !contact.has_closed_form()
+                    });
+                if numerical_point {
+                    return Err(self.error(
+                        "sweep.parameter",
+                        "a moving load is recorded with the closed form only for point contacts (numerical panels off the traction grid would need direct summation at every point)",
+                        Some("use method = \"closed_form\" for a moving sphere"),
+                    ));
+                }
+            }
+            _ => {}
+        }
+        // A recording holds every step's sections (to give each panel one colour range).
+        let plane_bytes: usize = scene
+            .panels
+            .iter()
+            .map(|p| {
+                let plane = crate::study::plane(scene, p);
+                plane.u.count * plane.v.count * 8
+            })
+            .sum();
+        let bytes = plane_bytes.saturating_mul(values.len());
+        let limit = crate::field::memory_limit_bytes();
+        if bytes > limit {
+            return Err(self.error(
+                "sweep",
+                format!(
+                    "{} steps of {} MiB of sections need {} MiB, more than the {} MiB this machine allows",
+                    values.len(),
+                    plane_bytes >> 20,
+                    bytes >> 20,
+                    limit >> 20
+                ),
+                Some("use fewer steps or a lower figure.resolution"),
+            ));
+        }
+        let mut material_points = Vec::new();
+        if let Some(points) = &raw.material_points {
+            if parameter != SweepParameter::Position {
+                return Err(self.error(
+                    "sweep.material_points",
+                    "material points follow a moving load: they need parameter = \"position\"",
+                    None,
+                ));
+            }
+            for (i, point) in points.iter().enumerate() {
+                match point.as_slice() {
+                    [x, z] if x.is_finite() && z.is_finite() && *z >= 0.0 => {
+                        material_points.push((*x, *z))
+                    }
+                    _ => {
+                        return Err(self.error(
+                            &format!("sweep.material_points[{i}]"),
+                            format!(
+                            "needs [x, z] with z >= 0 (in the figure's length unit), got {point:?}"
+                        ),
+                            None,
+                        ))
+                    }
+                }
+            }
+            if scene.figure.section != super::SectionKind::Xz {
+                return Err(self.error(
+                    "sweep.material_points",
+                    "material points (x, z) lie in an xz section",
+                    Some("use figure.section = \"xz\""),
+                ));
+            }
+        }
+        Ok(Sweep {
+            parameter,
+            values,
+            material_points,
+        })
+    }
+}

@@ -5,6 +5,8 @@
 //! highest point touches first. A map is indexed `[row, column] = [y, x]`; sample `[j, i]` sits
 //! at `(i dx, j dy)`.
 
+pub mod generate;
+
 use ndarray::Array2;
 
 /// Why a height map cannot be built.

@@ -9,4 +9,5 @@ mod patch;
 mod point_contact;
 #[cfg(feature = "rerun")]
 mod record;
+mod rough_contact;
 mod scenes;

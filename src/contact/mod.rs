@@ -8,6 +8,7 @@ pub mod elliptic;
 pub mod gear;
 pub mod material;
 pub mod partial_slip;
+pub mod rough;
 
 pub use material::Material;
 

@@ -1,0 +1,576 @@
+//! Rough contact: the pressure between a rough surface and a flat (or two rough surfaces),
+//! solved on the grid of the heights by the conjugate-gradient method of Polonsky & Keer
+//! (1999), with the elastic integral operator of [`crate::solution::elastic`] (non-periodic
+//! DC-FFT or periodic).
+//!
+//! ## The problem
+//! Heights `h` (m) point out of body 1 towards the counter-surface; for two rough bodies `h`
+//! is the sum of both maps, acting on an equivalent body of combined modulus `E*`. The
+//! separation of the undeformed surfaces when the highest point touches is `s = max h - h`.
+//! Pressed together by the rigid approach `δ`, the surfaces open a gap
+//! `g = s - δ + u(p)` with `u = K * p` the combined normal displacement. The solution has
+//! `p >= 0`, `g >= 0` and `p g = 0` everywhere, and either its load `Σ p dx dy` or its
+//! approach `δ` is given. With a hardness `H` the pressure is capped at `H` (perfectly
+//! plastic asperities): cells at the cap may penetrate (the plastic flow absorbs it).
+//!
+//! ## The iteration (Polonsky & Keer 1999)
+//! Load control: on the set `S` of loaded cells the gap's mean over `S` is the approach
+//! (`g` is measured from it, so that it has zero mean over `S`), a conjugate direction `t` of
+//! the gap on `S` and its response `r = K t` (also centred on `S`) give the step
+//! `τ = Σ g t / Σ r t`; `p -= τ t` on `S`, negative pressures become zero, cells outside `S`
+//! that penetrate (`g < 0`) are loaded by `-τ g` and restart the conjugation, and the pressure
+//! is scaled to the load. Approach control: the same without centring and without scaling,
+//! with `g = s - δ + u`.
+//!
+//! ## Convergence
+//! After each iteration two relative measures are formed: the change of pressure
+//! `Σ |p_k - p_(k-1)| / Σ p_k`, and the complementarity `Σ p |g| / (Σ p · Sq(s))` (the gap left
+//! where pressure acts, relative to the rms of the separation). The solution has converged
+//! when both are below the tolerance (default 1e-8); the residual reported is the larger.
+//! Reaching the iteration cap first is an error that gives the residual reached.
+//!
+//! ## References
+//! - I. A. Polonsky, L. M. Keer, A numerical method for solving rough contact problems based
+//!   on the multi-level multi-summation and conjugate gradient techniques, *Wear* 231 (1999)
+//!   206–219.
+//! - V. Rey, G. Anciaux, J.-F. Molinari, Normal adhesive contact on rough surfaces: efficient
+//!   algorithm for FFT-based BEM resolution, *Comput. Mech.* 60 (2017) 69–81 (the same
+//!   iteration with FFT, as Tamaas implements it).
+
+use ndarray::{Array2, ArrayView2, Zip};
+
+use crate::solution::elastic::{ElasticOperator, Periodicity};
+use crate::transform::TransformError;
+
+/// What fixes the solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Control {
+    /// The total normal load, N.
+    Load { newtons: f64 },
+    /// The load over the nominal area of the grid, Pa.
+    MeanPressure { pa: f64 },
+    /// The rigid-body approach from first contact, m (see [`RoughSolution::approach_m`]).
+    Approach { m: f64 },
+}
+
+/// A rough contact problem on a grid.
+#[derive(Clone, Debug)]
+pub struct RoughContactProblem<'a> {
+    /// Combined heights (m), `[ny, nx]`, row = y, out of body 1.
+    pub heights_m: ArrayView2<'a, f64>,
+    /// `[dx, dy]`, m.
+    pub spacing_m: [f64; 2],
+    /// Combined modulus `E*`, Pa.
+    pub e_star_pa: f64,
+    pub periodicity: Periodicity,
+    pub control: Control,
+    /// Pressure cap (perfect plasticity), Pa.
+    pub hardness_pa: Option<f64>,
+    /// Relative tolerance of both convergence measures.
+    pub tolerance: f64,
+    pub max_iterations: usize,
+    /// The most memory the solve may take (estimated before anything is allocated).
+    pub memory_limit_bytes: usize,
+}
+
+/// Default relative tolerance.
+pub const DEFAULT_TOLERANCE: f64 = 1e-8;
+/// Default cap on iterations.
+pub const DEFAULT_MAX_ITERATIONS: usize = 5000;
+
+/// Why a rough contact has no solution here.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum RoughContactError {
+    #[error("{name} {requirement}, got {value}")]
+    Parameter {
+        name: &'static str,
+        requirement: &'static str,
+        value: f64,
+    },
+    #[error("the height at row {row}, column {column} is not finite ({value})")]
+    NotFinite {
+        row: usize,
+        column: usize,
+        value: f64,
+    },
+    #[error("a rough contact needs at least 2 x 2 cells, got {0} x {1}")]
+    TooSmall(usize, usize),
+    #[error("the surfaces are in contact everywhere (full contact): {what}; the gap is closed, so rough contact theory has nothing to solve")]
+    FullContact { what: String },
+    #[error("the solution did not converge in {iterations} iterations: residual {residual:.3e} > tolerance {tolerance:.1e}")]
+    NotConverged {
+        iterations: usize,
+        residual: f64,
+        tolerance: f64,
+    },
+    #[error("the pressure reaches the edge of the domain (row {row}, column {column}): an isolated contact must lie inside its grid; enlarge the domain (or solve it as a periodic surface)")]
+    PressureAtEdge { row: usize, column: usize },
+    #[error("a {ny} x {nx} contact needs about {needed_mib} MiB, more than the {limit_mib} MiB allowed")]
+    TooLarge {
+        ny: usize,
+        nx: usize,
+        needed_mib: usize,
+        limit_mib: usize,
+    },
+    #[error("the hardness {hardness_pa:.4e} Pa cannot carry the mean pressure {mean_pa:.4e} Pa even with every cell at the cap")]
+    HardnessTooLow { hardness_pa: f64, mean_pa: f64 },
+    #[error("the approach {approach_m:.4e} m does not bring the surfaces into contact: it must be positive")]
+    NoContact { approach_m: f64 },
+    #[error(transparent)]
+    Transform(#[from] TransformError),
+}
+
+/// The solved contact.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RoughSolution {
+    /// Contact pressure, Pa, `[ny, nx]`.
+    pub pressure_pa: Array2<f64>,
+    /// Gap `s - δ + u` (m), zero in contact.
+    pub gap_m: Array2<f64>,
+    pub spacing_m: [f64; 2],
+    pub periodicity: Periodicity,
+    /// Rigid-body approach from first contact (m). Non-periodic: the displacement of the far
+    /// field of one body relative to the other. Periodic: relative to the mean plane of the
+    /// deformed surface (the operator's mean displacement is zero).
+    pub approach_m: f64,
+    /// `Σ p dx dy`, N.
+    pub load_n: f64,
+    /// Load over the nominal area `nx dx ny dy`, Pa.
+    pub mean_pressure_pa: f64,
+    pub max_pressure_pa: f64,
+    /// Cells with `p > 0` over all cells.
+    pub contact_fraction: f64,
+    /// Connected contact spots (4-connected cells; across the period's edges when periodic).
+    pub spots: usize,
+    /// Cells at the hardness cap.
+    pub plastic_cells: usize,
+    /// Mean of the gap over the grid, m.
+    pub mean_gap_m: f64,
+    pub iterations: usize,
+    /// The larger of the two convergence measures at the end.
+    pub residual: f64,
+}
+
+impl RoughContactProblem<'_> {
+    /// Bytes a solve of this size takes (the operator and seven grids).
+    pub fn memory_bytes(shape: [usize; 2], periodicity: Periodicity) -> usize {
+        ElasticOperator::memory_bytes(shape, periodicity) + 7 * 8 * shape[0] * shape[1]
+    }
+}
+
+fn parameter(name: &'static str, requirement: &'static str, value: f64) -> RoughContactError {
+    RoughContactError::Parameter {
+        name,
+        requirement,
+        value,
+    }
+}
+
+/// Solves the problem. `progress(iteration, residual)` is called after every iteration.
+pub fn solve(
+    problem: &RoughContactProblem,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<RoughSolution, RoughContactError> {
+    let (ny, nx) = problem.heights_m.dim();
+    if nx < 2 || ny < 2 {
+        return Err(RoughContactError::TooSmall(ny, nx));
+    }
+    let [dx, dy] = problem.spacing_m;
+    if !(dx > 0.0 && dy > 0.0 && dx.is_finite() && dy.is_finite()) {
+        return Err(parameter("the spacing", "must be positive and finite", dx.min(dy)));
+    }
+    if !(problem.e_star_pa > 0.0 && problem.e_star_pa.is_finite()) {
+        return Err(parameter("E*", "must be positive and finite", problem.e_star_pa));
+    }
+    if !(problem.tolerance > 0.0 && problem.tolerance < 1.0) {
+        return Err(parameter("the tolerance", "must lie in (0, 1)", problem.tolerance));
+    }
+    if let Some(((row, column), &value)) = problem
+        .heights_m
+        .indexed_iter()
+        .find(|(_, v)| !v.is_finite())
+    {
+        return Err(RoughContactError::NotFinite { row, column, value });
+    }
+    let needed = RoughContactProblem::memory_bytes([ny, nx], problem.periodicity);
+    if needed > problem.memory_limit_bytes {
+        return Err(RoughContactError::TooLarge {
+            ny,
+            nx,
+            needed_mib: needed >> 20,
+            limit_mib: problem.memory_limit_bytes >> 20,
+        });
+    }
+    let cells = (nx * ny) as f64;
+    let cell_area = dx * dy;
+    let hardness = match problem.hardness_pa {
+        Some(h) if h > 0.0 && h.is_finite() => h,
+        Some(h) => return Err(parameter("the hardness", "must be positive and finite", h)),
+        None => f64::INFINITY,
+    };
+    let target_mean = match problem.control {
+        Control::Load { newtons } => Some(newtons / (cells * cell_area)),
+        Control::MeanPressure { pa } => Some(pa),
+        Control::Approach { .. } => None,
+    };
+    if let Some(mean) = target_mean {
+        if !(mean > 0.0 && mean.is_finite()) {
+            let name = match problem.control {
+                Control::Load { .. } => "the load",
+                _ => "the mean pressure",
+            };
+            let value = match problem.control {
+                Control::Load { newtons } => newtons,
+                _ => mean,
+            };
+            return Err(parameter(name, "must be positive and finite", value));
+        }
+        if mean >= hardness {
+            return Err(RoughContactError::HardnessTooLow {
+                hardness_pa: hardness,
+                mean_pa: mean,
+            });
+        }
+    }
+
+    let top = problem
+        .heights_m
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, &v| m.max(v));
+    let separation = problem.heights_m.mapv(|h| top - h);
+    let separation_mean = separation.sum() / cells;
+    let roughness = (separation
+        .iter()
+        .map(|s| (s - separation_mean).powi(2))
+        .sum::<f64>()
+        / cells)
+        .sqrt();
+    // A flat surface has no roughness scale: measure the gap against the cell size instead.
+    let gap_scale = if roughness > 0.0 { roughness } else { dx.min(dy) };
+
+    let mut operator = ElasticOperator::new(
+        [ny, nx],
+        problem.spacing_m,
+        problem.e_star_pa,
+        problem.periodicity,
+    )?;
+    // Local stiffness: a cell's own displacement per unit pressure (Love's centre value).
+    let own_compliance = crate::solution::elastic::uniform_patch_displacement(
+        0.0,
+        0.0,
+        dx / 2.0,
+        dy / 2.0,
+    ) / (std::f64::consts::PI * problem.e_star_pa);
+
+    let approach_given = match problem.control {
+        Control::Approach { m } => Some(m),
+        _ => None,
+    };
+    // Start: the mean pressure everywhere, or, under a given approach, each cell pressed by
+    // its own interference alone.
+    let mut pressure = match (target_mean, approach_given) {
+        (Some(mean), _) => Array2::from_elem((ny, nx), mean),
+        (None, approach) => {
+            let approach = approach.unwrap_or(0.0);
+            if !(approach > 0.0 && approach.is_finite()) {
+                return Err(RoughContactError::NoContact {
+                    approach_m: approach,
+                });
+            }
+            separation.mapv(|s| ((approach - s) / own_compliance).clamp(0.0, hardness))
+        }
+    };
+
+    let mut gap = Array2::zeros((ny, nx));
+    let mut direction = Array2::<f64>::zeros((ny, nx));
+    let mut response = Array2::<f64>::zeros((ny, nx));
+    let mut previous = Array2::<f64>::zeros((ny, nx));
+    let mut conjugate = false;
+    let mut gap_norm_old = 1.0;
+    let mut iterations = 0;
+    let mut residual = f64::INFINITY;
+    // A cell takes part in the conjugate-gradient step when loaded below the cap, or at the
+    // cap but opening (then it may unload).
+    let active = |p: f64, g: f64| p > 0.0 && (p < hardness || g > 0.0);
+
+    while iterations < problem.max_iterations {
+        iterations += 1;
+        operator.apply(pressure.view(), gap.view_mut())?;
+        Zip::from(&mut gap).and(&separation).for_each(|g, &s| *g += s);
+        if let Some(approach) = approach_given {
+            gap.mapv_inplace(|g| g - approach);
+        } else {
+            let (sum, count) = sum_active(&pressure, &gap, &active);
+            if count == 0 {
+                break;
+            }
+            let mean = sum / count as f64;
+            gap.mapv_inplace(|g| g - mean);
+        }
+        // Complementarity of the current pressure and its gap.
+        // (At the cap a cell may penetrate: only an opening gap counts there.)
+        let (pg, p_sum) = Zip::from(&pressure).and(&gap).fold((0.0, 0.0), |(a, b), &p, &g| {
+            let open = if p >= hardness { g.max(0.0) } else { g.abs() };
+            (a + p * open, b + p)
+        });
+        let complementarity = if p_sum > 0.0 {
+            pg / (p_sum * gap_scale)
+        } else {
+            f64::INFINITY
+        };
+
+        let gap_norm = Zip::from(&pressure)
+            .and(&gap)
+            .fold(0.0, |acc, &p, &g| if active(p, g) { acc + g * g } else { acc });
+        let ratio = if conjugate {
+            gap_norm / gap_norm_old
+        } else {
+            0.0
+        };
+        Zip::from(&mut direction)
+            .and(&pressure)
+            .and(&gap)
+            .for_each(|t, &p, &g| *t = if active(p, g) { g + ratio * *t } else { 0.0 });
+        gap_norm_old = gap_norm;
+        operator.apply(direction.view(), response.view_mut())?;
+        if approach_given.is_none() {
+            // Centred on the same set as the gap.
+            let (sum, count) = Zip::from(&pressure).and(&gap).and(&response).fold(
+                (0.0, 0usize),
+                |(s, c), &p, &g, &r| if active(p, g) { (s + r, c + 1) } else { (s, c) },
+            );
+            if count > 0 {
+                let mean = sum / count as f64;
+                response.mapv_inplace(|r| r - mean);
+            }
+        }
+        let (numerator, denominator) = Zip::from(&pressure)
+            .and(&gap)
+            .and(&direction)
+            .and(&response)
+            .fold((0.0, 0.0), |(a, b), &p, &g, &t, &r| {
+                if active(p, g) {
+                    (a + g * t, b + r * t)
+                } else {
+                    (a, b)
+                }
+            });
+        let step = if denominator != 0.0 {
+            numerator / denominator
+        } else {
+            0.0
+        };
+        previous.assign(&pressure);
+        let mut overlap = false;
+        Zip::from(&mut pressure)
+            .and(&gap)
+            .and(&direction)
+            .for_each(|p, &g, &t| {
+                if active(*p, g) {
+                    *p -= step * t;
+                }
+                if *p <= 0.0 {
+                    *p = 0.0;
+                }
+            });
+        // Cells out of contact that penetrate are loaded, and the conjugation restarts.
+        Zip::from(&mut pressure).and(&gap).for_each(|p, &g| {
+                if *p == 0.0 && g < 0.0 {
+                    *p = -step.abs() * g;
+                    overlap = true;
+                }
+                if *p > hardness {
+                    *p = hardness;
+                }
+            });
+        conjugate = !overlap;
+        if let Some(mean) = target_mean {
+            scale_to_mean(&mut pressure, mean * cells, hardness);
+        }
+        let change = Zip::from(&pressure)
+            .and(&previous)
+            .fold(0.0, |acc, &p, &old| acc + (p - old).abs());
+        let total = pressure.sum();
+        let pressure_change = if total > 0.0 {
+            change / total
+        } else {
+            f64::INFINITY
+        };
+        residual = pressure_change.max(complementarity);
+        progress(iterations, residual);
+        if residual < problem.tolerance {
+            break;
+        }
+        if total == 0.0 && approach_given.is_some() {
+            break;
+        }
+    }
+
+    // The gap of the final pressure, and the approach it implies.
+    operator.apply(pressure.view(), gap.view_mut())?;
+    Zip::from(&mut gap).and(&separation).for_each(|g, &s| *g += s);
+    let approach_m = match approach_given {
+        Some(approach) => approach,
+        None => {
+            let (sum, count) = sum_active(&pressure, &gap, &|p, _| p > 0.0 && p < hardness);
+            let (sum, count) = if count > 0 {
+                (sum, count)
+            } else {
+                sum_active(&pressure, &gap, &|p, _| p > 0.0)
+            };
+            sum / count.max(1) as f64
+        }
+    };
+    gap.mapv_inplace(|g| g - approach_m);
+    // In contact the gap is zero by definition (its rounding is the tolerance).
+    Zip::from(&mut gap)
+        .and(&pressure)
+        .for_each(|g, &p| if p > 0.0 { *g = 0.0 });
+
+    if residual >= problem.tolerance {
+        return Err(RoughContactError::NotConverged {
+            iterations,
+            residual,
+            tolerance: problem.tolerance,
+        });
+    }
+    let loaded = pressure.iter().filter(|&&p| p > 0.0).count();
+    if loaded == 0 {
+        return Err(RoughContactError::NoContact {
+            approach_m: approach_given.unwrap_or(0.0),
+        });
+    }
+    if loaded == nx * ny {
+        let what = match problem.control {
+            Control::Approach { m } => format!("an approach of {m:.4e} m closes the whole gap"),
+            Control::Load { newtons } => format!("a load of {newtons:.4e} N flattens the whole surface"),
+            Control::MeanPressure { pa } => {
+                format!("a mean pressure of {pa:.4e} Pa flattens the whole surface")
+            }
+        };
+        return Err(RoughContactError::FullContact { what });
+    }
+    if problem.periodicity == Periodicity::NonPeriodic {
+        if let Some((row, column)) = edge_contact(&pressure) {
+            return Err(RoughContactError::PressureAtEdge { row, column });
+        }
+    }
+    let load_n = pressure.sum() * cell_area;
+    let plastic_cells = pressure.iter().filter(|&&p| p >= hardness).count();
+    Ok(RoughSolution {
+        max_pressure_pa: pressure.iter().fold(0.0f64, |m, &p| m.max(p)),
+        contact_fraction: loaded as f64 / cells,
+        spots: count_spots(&pressure, problem.periodicity == Periodicity::Periodic),
+        mean_gap_m: gap.sum() / cells,
+        mean_pressure_pa: load_n / (cells * cell_area),
+        load_n,
+        pressure_pa: pressure,
+        gap_m: gap,
+        spacing_m: problem.spacing_m,
+        periodicity: problem.periodicity,
+        approach_m,
+        plastic_cells,
+        iterations,
+        residual,
+    })
+}
+
+/// `Σ values` and the count over the cells where `select(p, g)` holds (`g` = `values`).
+fn sum_active(
+    pressure: &Array2<f64>,
+    values: &Array2<f64>,
+    select: &dyn Fn(f64, f64) -> bool,
+) -> (f64, usize) {
+    Zip::from(pressure)
+        .and(values)
+        .fold((0.0, 0usize), |(s, c), &p, &v| {
+            if select(p, v) {
+                (s + v, c + 1)
+            } else {
+                (s, c)
+            }
+        })
+}
+
+/// Scales the pressures below the cap so that the sum is `total` (cells at the cap stay).
+fn scale_to_mean(pressure: &mut Array2<f64>, total: f64, hardness: f64) {
+    let (capped, free) = pressure.iter().fold((0.0, 0.0), |(c, f), &p| {
+        if p >= hardness {
+            (c + p, f)
+        } else {
+            (c, f + p)
+        }
+    });
+    if free > 0.0 {
+        let factor = ((total - capped) / free).max(0.0);
+        pressure.mapv_inplace(|p| if p < hardness { (p * factor).min(hardness) } else { p });
+    }
+}
+
+/// A loaded cell on the border of the grid, if any.
+fn edge_contact(pressure: &Array2<f64>) -> Option<(usize, usize)> {
+    let (ny, nx) = pressure.dim();
+    pressure
+        .indexed_iter()
+        .find(|&((j, i), &p)| p > 0.0 && (j == 0 || i == 0 || j + 1 == ny || i + 1 == nx))
+        .map(|(at, _)| at)
+}
+
+/// Connected groups of loaded cells (4-neighbours; wrapping around when `periodic`).
+pub fn count_spots(pressure: &Array2<f64>, periodic: bool) -> usize {
+    let (ny, nx) = pressure.dim();
+    let mut seen = Array2::from_elem((ny, nx), false);
+    let mut stack = Vec::new();
+    let mut spots = 0;
+    for ((j, i), &p) in pressure.indexed_iter() {
+        if p <= 0.0 || seen[[j, i]] {
+            continue;
+        }
+        spots += 1;
+        seen[[j, i]] = true;
+        stack.push((j, i));
+        while let Some((b, a)) = stack.pop() {
+            let neighbours = [
+                (b as i64 - 1, a as i64),
+                (b as i64 + 1, a as i64),
+                (b as i64, a as i64 - 1),
+                (b as i64, a as i64 + 1),
+            ];
+            for (y, x) in neighbours {
+                let (y, x) = if periodic {
+                    (y.rem_euclid(ny as i64), x.rem_euclid(nx as i64))
+                } else if y < 0 || x < 0 || y >= ny as i64 || x >= nx as i64 {
+                    continue;
+                } else {
+                    (y, x)
+                };
+                let (y, x) = (y as usize, x as usize);
+                if pressure[[y, x]] > 0.0 && !seen[[y, x]] {
+                    seen[[y, x]] = true;
+                    stack.push((y, x));
+                }
+            }
+        }
+    }
+    spots
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spots_are_4_connected_and_wrap_when_periodic() {
+        let mut p = Array2::zeros((5, 6));
+        for at in [[0, 0], [0, 1], [1, 1], [3, 3], [4, 4], [2, 5]] {
+            p[at] = 1.0;
+        }
+        // {00, 01, 11}, {33}, {44}, {25}: four; periodic: 25 touches 20? no (0 at [2,0]);
+        // 44 wraps to 04? no; 00 wraps to 05 and 40: not loaded. Still four.
+        assert_eq!(count_spots(&p, false), 4);
+        assert_eq!(count_spots(&p, true), 4);
+        p[[2, 0]] = 1.0;
+        assert_eq!(count_spots(&p, false), 5);
+        assert_eq!(count_spots(&p, true), 4, "[2, 0] joins [2, 5] across the edge");
+    }
+}

@@ -1,0 +1,272 @@
+//! Rough contact solver: the Hertz limit, Westergaard's wavy surface, load against approach
+//! control, the plastic cap, grid convergence and bad input.
+
+use std::f64::consts::PI;
+
+use ndarray::Array2;
+use stressfield::assess::{self, grid_maxima};
+use stressfield::contact::rough::{
+    solve, Control, RoughContactError, RoughContactProblem, RoughSolution, DEFAULT_TOLERANCE,
+};
+use stressfield::solution::dcfft::TractionGrid;
+use stressfield::solution::elastic::Periodicity;
+use stressfield::solution::point_numerical::PointTractions;
+use stressfield::solution::Solution;
+use stressfield::stress::Quantity;
+
+const E_STAR: f64 = 1e11;
+const RADIUS: f64 = 0.01;
+const LOAD: f64 = 100.0;
+
+/// Hertz (Johnson 1985, §4.2): contact radius and peak pressure of a sphere on a flat.
+fn hertz() -> (f64, f64) {
+    let a = (3.0 * LOAD * RADIUS / (4.0 * E_STAR)).cbrt();
+    (a, 3.0 * LOAD / (2.0 * PI * a * a))
+}
+
+fn problem(heights: &Array2<f64>, spacing: f64, periodicity: Periodicity, control: Control) -> RoughContactProblem<'_> {
+    RoughContactProblem {
+        heights_m: heights.view(),
+        spacing_m: [spacing, spacing],
+        e_star_pa: E_STAR,
+        periodicity,
+        control,
+        hardness_pa: None,
+        tolerance: DEFAULT_TOLERANCE,
+        max_iterations: 2000,
+        memory_limit_bytes: 1 << 30,
+    }
+}
+
+/// A sampled paraboloid of radius R over ±extent a, `cells` per side (odd: a centre cell).
+fn paraboloid(cells: usize, extent_over_a: f64) -> (Array2<f64>, f64) {
+    let (a, _) = hertz();
+    let spacing = 2.0 * extent_over_a * a / cells as f64;
+    let centre = (cells - 1) as f64 / 2.0;
+    let heights = Array2::from_shape_fn((cells, cells), |(j, i)| {
+        let (x, y) = ((i as f64 - centre) * spacing, (j as f64 - centre) * spacing);
+        -(x * x + y * y) / (2.0 * RADIUS)
+    });
+    (heights, spacing)
+}
+
+fn solve_hertz(cells: usize) -> (RoughSolution, f64) {
+    let (heights, spacing) = paraboloid(cells, 1.6);
+    let solution = solve(
+        &problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &mut |_, _| {},
+    )
+    .expect("solves");
+    (solution, spacing)
+}
+
+#[test]
+fn hertz_limit_pressure_radius_load_and_subsurface_maximum() {
+    let (a, p0) = hertz();
+    let (solution, spacing) = solve_hertz(127);
+    // The load is the integral of the pressure, to rounding.
+    let integral = solution.pressure_pa.sum() * spacing * spacing;
+    assert!((integral / LOAD - 1.0).abs() < 1e-9, "{integral}");
+    assert!((solution.load_n / LOAD - 1.0).abs() < 1e-9);
+    // Peak pressure within 0.5 %, contact radius within one cell.
+    let peak_error = solution.max_pressure_pa / p0 - 1.0;
+    let cells = solution.pressure_pa.iter().filter(|&&p| p > 0.0).count();
+    let radius = (cells as f64 * spacing * spacing / PI).sqrt();
+    eprintln!(
+        "Hertz 127²: p0 {:.5e} vs {p0:.5e} ({:+.3} %), a {:.5e} vs {a:.5e} ({:+.2} cells), {} iterations, residual {:.1e}",
+        solution.max_pressure_pa,
+        100.0 * peak_error,
+        radius,
+        (radius - a) / spacing,
+        solution.iterations,
+        solution.residual
+    );
+    assert!(peak_error.abs() < 0.005, "p0 off by {peak_error}");
+    assert!((radius - a).abs() < spacing, "a = {radius} vs {a}");
+    // Approach δ = a²/R.
+    let approach = a * a / RADIUS;
+    assert!((solution.approach_m / approach - 1.0).abs() < 0.01, "{} vs {approach}", solution.approach_m);
+    // No tension, no penetration.
+    assert!(solution.pressure_pa.iter().all(|&p| p >= 0.0));
+    let scale = approach;
+    assert!(solution.gap_m.iter().all(|&g| g >= -1e-8 * scale), "penetration");
+    assert_eq!(solution.spots, 1);
+
+    // The subsurface von Mises maximum under the solved pressure (DC-FFT layers, ν = 0.3)
+    // against the closed form's (Huber: 0.62 p0 near 0.48a).
+    let [ny, nx] = [solution.pressure_pa.nrows(), solution.pressure_pa.ncols()];
+    let cell = spacing / a;
+    let origin = [-(nx as f64) * cell / 2.0, -(ny as f64) * cell / 2.0];
+    let grid = TractionGrid::new(origin, [cell, cell], Some(solution.pressure_pa.mapv(|p| p / p0)), None, None)
+        .expect("grid");
+    let tractions = PointTractions::new(grid, 0.3).expect("tractions");
+    let maxima = grid_maxima(&tractions).expect("layers");
+    let exact = assess::maximum(
+        &Solution::SphereHertz {
+            friction: 0.0,
+            poisson: 0.3,
+        },
+        Quantity::VonMises,
+        false,
+    );
+    eprintln!(
+        "von Mises max {:.4} p0 at z = {:.3}a; closed form {:.4} p0 at {:.3}a",
+        maxima.von_mises.value_over_p0, maxima.von_mises.z_over_a, exact.value_over_p0, exact.z_over_a
+    );
+    assert!((maxima.von_mises.value_over_p0 / exact.value_over_p0 - 1.0).abs() < 0.01);
+    assert!((maxima.von_mises.z_over_a - exact.z_over_a).abs() < 0.02 + cell);
+    assert!((exact.value_over_p0 - 0.62).abs() < 0.005 && (exact.z_over_a - 0.48).abs() < 0.01);
+}
+
+#[test]
+fn the_pressure_converges_with_the_grid() {
+    let (a, p0) = hertz();
+    eprintln!("cells  a/dx   p_max/p0 - 1   a_num/a - 1   iterations");
+    let mut errors = Vec::new();
+    for cells in [31, 63, 127] {
+        let (solution, spacing) = solve_hertz(cells);
+        let count = solution.pressure_pa.iter().filter(|&&p| p > 0.0).count();
+        let radius = (count as f64 * spacing * spacing / PI).sqrt();
+        // The mean of |p - p_Hertz| at the cell centres, relative to p0.
+        let centre = (cells - 1) as f64 / 2.0;
+        let mut sum = 0.0;
+        for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
+            let r2 = ((i as f64 - centre).powi(2) + (j as f64 - centre).powi(2)) * spacing * spacing;
+            let exact = p0 * (1.0 - r2 / (a * a)).max(0.0).sqrt();
+            sum += (p - exact).abs();
+        }
+        let l1 = sum / (cells * cells) as f64 / p0;
+        eprintln!(
+            "{cells:5}  {:5.1}  {:+.2e}      {:+.2e}     {}   mean |p - p_H| {l1:.2e} p0",
+            a / spacing,
+            solution.max_pressure_pa / p0 - 1.0,
+            radius / a - 1.0,
+            solution.iterations
+        );
+        errors.push(l1);
+    }
+    assert!(errors[1] < errors[0] && errors[2] < errors[1], "{errors:?}");
+}
+
+/// Westergaard (Johnson 1985, §13.2): a periodic wavy surface `Δ cos(2πx/λ)` pressed on a flat
+/// touches over `|x| < a` with `p̄ = p* sin²(πa/λ)`, `p* = π E* Δ / λ`, and peak pressure
+/// `2 p̄ / sin(πa/λ)`.
+#[test]
+fn westergaard_wavy_surface() {
+    let (nx, ny, wavelength, amplitude) = (256, 4, 1e-3, 1e-6);
+    let spacing = wavelength / nx as f64;
+    let heights = Array2::from_shape_fn((ny, nx), |(_, i)| {
+        amplitude * (2.0 * PI * (i as f64 + 0.5) * spacing / wavelength).cos()
+    });
+    let p_star = PI * E_STAR * amplitude / wavelength;
+    for ratio in [0.1, 0.25, 0.5] {
+        let mean = ratio * p_star;
+        let solution = solve(
+            &problem(&heights, spacing, Periodicity::Periodic, Control::MeanPressure { pa: mean }),
+            &mut |_, _| {},
+        )
+        .expect("solves");
+        let half_width = ratio.sqrt().asin() * wavelength / PI;
+        let fraction = 2.0 * half_width / wavelength;
+        let peak = 2.0 * mean / ratio.sqrt();
+        eprintln!(
+            "Westergaard p/p* = {ratio}: contact {:.4} vs {fraction:.4}, peak {:.4e} vs {peak:.4e}, {} iterations",
+            solution.contact_fraction, solution.max_pressure_pa, solution.iterations
+        );
+        assert!((solution.contact_fraction - fraction).abs() <= 2.0 / nx as f64 + 1e-12);
+        assert!((solution.max_pressure_pa / peak - 1.0).abs() < 0.01);
+        assert!((solution.mean_pressure_pa / mean - 1.0).abs() < 1e-9);
+        assert_eq!(solution.spots, 1, "one band, joined across y");
+    }
+}
+
+#[test]
+fn approach_control_reproduces_load_control() {
+    let (heights, spacing) = paraboloid(63, 1.6);
+    let by_load = solve(
+        &problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &mut |_, _| {},
+    )
+    .expect("load");
+    let by_approach = solve(
+        &problem(
+            &heights,
+            spacing,
+            Periodicity::NonPeriodic,
+            Control::Approach {
+                m: by_load.approach_m,
+            },
+        ),
+        &mut |_, _| {},
+    )
+    .expect("approach");
+    assert!((by_approach.load_n / LOAD - 1.0).abs() < 1e-6, "{}", by_approach.load_n);
+    let difference = (&by_load.pressure_pa - &by_approach.pressure_pa)
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    assert!(difference < 1e-5 * by_load.max_pressure_pa, "{difference}");
+}
+
+#[test]
+fn the_plastic_cap_limits_the_pressure_and_keeps_the_load() {
+    let (_, p0) = hertz();
+    let (heights, spacing) = paraboloid(63, 1.6);
+    let mut capped = problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD });
+    capped.hardness_pa = Some(0.8 * p0);
+    let solution = solve(&capped, &mut |_, _| {}).expect("solves");
+    assert!(solution.max_pressure_pa <= 0.8 * p0 * (1.0 + 1e-12));
+    assert!(solution.plastic_cells > 0);
+    assert!((solution.load_n / LOAD - 1.0).abs() < 1e-9);
+    // Capped, the same load spreads wider than in the elastic solution.
+    let elastic = solve(
+        &problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &mut |_, _| {},
+    )
+    .expect("elastic");
+    assert!(solution.contact_fraction > elastic.contact_fraction);
+}
+
+#[test]
+fn bad_input_is_refused_with_the_reason() {
+    let (heights, spacing) = paraboloid(31, 1.6);
+    let run = |control| solve(&problem(&heights, spacing, Periodicity::NonPeriodic, control), &mut |_, _| {});
+    assert!(matches!(run(Control::Load { newtons: 0.0 }), Err(RoughContactError::Parameter { .. })));
+    assert!(matches!(run(Control::Load { newtons: -1.0 }), Err(RoughContactError::Parameter { .. })));
+    assert!(matches!(run(Control::Approach { m: -1e-6 }), Err(RoughContactError::NoContact { .. })));
+    // A domain too small: ±0.8a cannot hold the contact.
+    let (small, small_spacing) = paraboloid(31, 0.8);
+    let error = solve(
+        &problem(&small, small_spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &mut |_, _| {},
+    )
+    .expect_err("edge");
+    assert!(matches!(error, RoughContactError::PressureAtEdge { .. }), "{error}");
+    assert!(error.to_string().contains("enlarge the domain"));
+    // Full contact: a wavy surface pressed beyond p*.
+    let wavy = Array2::from_shape_fn((4, 32), |(_, i)| 1e-6 * (2.0 * PI * i as f64 / 32.0).cos());
+    let error = solve(
+        &problem(&wavy, 1e-5, Periodicity::Periodic, Control::MeanPressure { pa: 2.0 * PI * E_STAR * 1e-6 / 3.2e-4 }),
+        &mut |_, _| {},
+    )
+    .expect_err("full");
+    assert!(error.to_string().contains("full contact"), "{error}");
+    // Non-finite heights, named by row and column.
+    let mut broken = heights.clone();
+    broken[[3, 4]] = f64::NAN;
+    let error = solve(
+        &problem(&broken, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &mut |_, _| {},
+    )
+    .expect_err("nan");
+    assert!(matches!(error, RoughContactError::NotFinite { row: 3, column: 4, .. }));
+    assert!(error.to_string().contains("row 3, column 4"), "{error}");
+    // Too large for the memory allowed: an estimate, before allocating.
+    let mut limited = problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD });
+    limited.memory_limit_bytes = 1000;
+    assert!(matches!(solve(&limited, &mut |_, _| {}), Err(RoughContactError::TooLarge { .. })));
+    // Too few iterations: an error with the residual, never a result.
+    let mut hurried = problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD });
+    hurried.max_iterations = 2;
+    let error = solve(&hurried, &mut |_, _| {}).expect_err("not converged");
+    assert!(matches!(error, RoughContactError::NotConverged { iterations: 2, .. }), "{error}");
+}

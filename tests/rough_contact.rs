@@ -24,7 +24,12 @@ fn hertz() -> (f64, f64) {
     (a, 3.0 * LOAD / (2.0 * PI * a * a))
 }
 
-fn problem(heights: &Array2<f64>, spacing: f64, periodicity: Periodicity, control: Control) -> RoughContactProblem<'_> {
+fn problem(
+    heights: &Array2<f64>,
+    spacing: f64,
+    periodicity: Periodicity,
+    control: Control,
+) -> RoughContactProblem<'_> {
     RoughContactProblem {
         heights_m: heights.view(),
         spacing_m: [spacing, spacing],
@@ -53,7 +58,12 @@ fn paraboloid(cells: usize, extent_over_a: f64) -> (Array2<f64>, f64) {
 fn solve_hertz(cells: usize) -> (RoughSolution, f64) {
     let (heights, spacing) = paraboloid(cells, 1.6);
     let solution = solve(
-        &problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &problem(
+            &heights,
+            spacing,
+            Periodicity::NonPeriodic,
+            Control::Load { newtons: LOAD },
+        ),
         &mut |_, _| {},
     )
     .expect("solves");
@@ -85,11 +95,18 @@ fn hertz_limit_pressure_radius_load_and_subsurface_maximum() {
     assert!((radius - a).abs() < spacing, "a = {radius} vs {a}");
     // Approach δ = a²/R.
     let approach = a * a / RADIUS;
-    assert!((solution.approach_m / approach - 1.0).abs() < 0.01, "{} vs {approach}", solution.approach_m);
+    assert!(
+        (solution.approach_m / approach - 1.0).abs() < 0.01,
+        "{} vs {approach}",
+        solution.approach_m
+    );
     // No tension, no penetration.
     assert!(solution.pressure_pa.iter().all(|&p| p >= 0.0));
     let scale = approach;
-    assert!(solution.gap_m.iter().all(|&g| g >= -1e-8 * scale), "penetration");
+    assert!(
+        solution.gap_m.iter().all(|&g| g >= -1e-8 * scale),
+        "penetration"
+    );
     assert_eq!(solution.spots, 1);
 
     // The subsurface von Mises maximum under the solved pressure (DC-FFT layers, ν = 0.3)
@@ -97,8 +114,14 @@ fn hertz_limit_pressure_radius_load_and_subsurface_maximum() {
     let [ny, nx] = [solution.pressure_pa.nrows(), solution.pressure_pa.ncols()];
     let cell = spacing / a;
     let origin = [-(nx as f64) * cell / 2.0, -(ny as f64) * cell / 2.0];
-    let grid = TractionGrid::new(origin, [cell, cell], Some(solution.pressure_pa.mapv(|p| p / p0)), None, None)
-        .expect("grid");
+    let grid = TractionGrid::new(
+        origin,
+        [cell, cell],
+        Some(solution.pressure_pa.mapv(|p| p / p0)),
+        None,
+        None,
+    )
+    .expect("grid");
     let tractions = PointTractions::new(grid, 0.3).expect("tractions");
     let maxima = grid_maxima(&tractions).expect("layers");
     let exact = assess::maximum(
@@ -111,7 +134,10 @@ fn hertz_limit_pressure_radius_load_and_subsurface_maximum() {
     );
     eprintln!(
         "von Mises max {:.4} p0 at z = {:.3}a; closed form {:.4} p0 at {:.3}a",
-        maxima.von_mises.value_over_p0, maxima.von_mises.z_over_a, exact.value_over_p0, exact.z_over_a
+        maxima.von_mises.value_over_p0,
+        maxima.von_mises.z_over_a,
+        exact.value_over_p0,
+        exact.z_over_a
     );
     assert!((maxima.von_mises.value_over_p0 / exact.value_over_p0 - 1.0).abs() < 0.01);
     assert!((maxima.von_mises.z_over_a - exact.z_over_a).abs() < 0.02 + cell);
@@ -131,7 +157,8 @@ fn the_pressure_converges_with_the_grid() {
         let centre = (cells - 1) as f64 / 2.0;
         let mut sum = 0.0;
         for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
-            let r2 = ((i as f64 - centre).powi(2) + (j as f64 - centre).powi(2)) * spacing * spacing;
+            let r2 =
+                ((i as f64 - centre).powi(2) + (j as f64 - centre).powi(2)) * spacing * spacing;
             let exact = p0 * (1.0 - r2 / (a * a)).max(0.0).sqrt();
             sum += (p - exact).abs();
         }
@@ -162,7 +189,12 @@ fn westergaard_wavy_surface() {
     for ratio in [0.1, 0.25, 0.5] {
         let mean = ratio * p_star;
         let solution = solve(
-            &problem(&heights, spacing, Periodicity::Periodic, Control::MeanPressure { pa: mean }),
+            &problem(
+                &heights,
+                spacing,
+                Periodicity::Periodic,
+                Control::MeanPressure { pa: mean },
+            ),
             &mut |_, _| {},
         )
         .expect("solves");
@@ -184,7 +216,12 @@ fn westergaard_wavy_surface() {
 fn approach_control_reproduces_load_control() {
     let (heights, spacing) = paraboloid(63, 1.6);
     let by_load = solve(
-        &problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &problem(
+            &heights,
+            spacing,
+            Periodicity::NonPeriodic,
+            Control::Load { newtons: LOAD },
+        ),
         &mut |_, _| {},
     )
     .expect("load");
@@ -200,7 +237,11 @@ fn approach_control_reproduces_load_control() {
         &mut |_, _| {},
     )
     .expect("approach");
-    assert!((by_approach.load_n / LOAD - 1.0).abs() < 1e-6, "{}", by_approach.load_n);
+    assert!(
+        (by_approach.load_n / LOAD - 1.0).abs() < 1e-6,
+        "{}",
+        by_approach.load_n
+    );
     let difference = (&by_load.pressure_pa - &by_approach.pressure_pa)
         .iter()
         .fold(0.0f64, |m, v| m.max(v.abs()));
@@ -211,15 +252,35 @@ fn approach_control_reproduces_load_control() {
 fn the_plastic_cap_limits_the_pressure_and_keeps_the_load() {
     let (_, p0) = hertz();
     let (heights, spacing) = paraboloid(63, 1.6);
-    let mut capped = problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD });
+    let mut capped = problem(
+        &heights,
+        spacing,
+        Periodicity::NonPeriodic,
+        Control::Load { newtons: LOAD },
+    );
     capped.hardness_pa = Some(0.8 * p0);
     let solution = solve(&capped, &mut |_, _| {}).expect("solves");
     assert!(solution.max_pressure_pa <= 0.8 * p0 * (1.0 + 1e-12));
     assert!(solution.plastic_cells > 0);
-    assert!((solution.load_n / LOAD - 1.0).abs() < 1e-9);
+    // Capped, the load is met by the approach to the tolerance (1e-8), and the reported load
+    // is the integral of the pressure.
+    eprintln!(
+        "capped at 0.8 p0: {} plastic cells, load {:+.2e}, {} iterations",
+        solution.plastic_cells,
+        solution.load_n / LOAD - 1.0,
+        solution.iterations
+    );
+    assert!((solution.load_n / LOAD - 1.0).abs() < 1e-8);
+    let integral = solution.pressure_pa.sum() * spacing * spacing;
+    assert!((integral / solution.load_n - 1.0).abs() < 1e-12);
     // Capped, the same load spreads wider than in the elastic solution.
     let elastic = solve(
-        &problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &problem(
+            &heights,
+            spacing,
+            Periodicity::NonPeriodic,
+            Control::Load { newtons: LOAD },
+        ),
         &mut |_, _| {},
     )
     .expect("elastic");
@@ -229,23 +290,52 @@ fn the_plastic_cap_limits_the_pressure_and_keeps_the_load() {
 #[test]
 fn bad_input_is_refused_with_the_reason() {
     let (heights, spacing) = paraboloid(31, 1.6);
-    let run = |control| solve(&problem(&heights, spacing, Periodicity::NonPeriodic, control), &mut |_, _| {});
-    assert!(matches!(run(Control::Load { newtons: 0.0 }), Err(RoughContactError::Parameter { .. })));
-    assert!(matches!(run(Control::Load { newtons: -1.0 }), Err(RoughContactError::Parameter { .. })));
-    assert!(matches!(run(Control::Approach { m: -1e-6 }), Err(RoughContactError::NoContact { .. })));
+    let run = |control| {
+        solve(
+            &problem(&heights, spacing, Periodicity::NonPeriodic, control),
+            &mut |_, _| {},
+        )
+    };
+    assert!(matches!(
+        run(Control::Load { newtons: 0.0 }),
+        Err(RoughContactError::Parameter { .. })
+    ));
+    assert!(matches!(
+        run(Control::Load { newtons: -1.0 }),
+        Err(RoughContactError::Parameter { .. })
+    ));
+    assert!(matches!(
+        run(Control::Approach { m: -1e-6 }),
+        Err(RoughContactError::NoContact { .. })
+    ));
     // A domain too small: ±0.8a cannot hold the contact.
     let (small, small_spacing) = paraboloid(31, 0.8);
     let error = solve(
-        &problem(&small, small_spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &problem(
+            &small,
+            small_spacing,
+            Periodicity::NonPeriodic,
+            Control::Load { newtons: LOAD },
+        ),
         &mut |_, _| {},
     )
     .expect_err("edge");
-    assert!(matches!(error, RoughContactError::PressureAtEdge { .. }), "{error}");
+    assert!(
+        matches!(error, RoughContactError::PressureAtEdge { .. }),
+        "{error}"
+    );
     assert!(error.to_string().contains("enlarge the domain"));
     // Full contact: a wavy surface pressed beyond p*.
     let wavy = Array2::from_shape_fn((4, 32), |(_, i)| 1e-6 * (2.0 * PI * i as f64 / 32.0).cos());
     let error = solve(
-        &problem(&wavy, 1e-5, Periodicity::Periodic, Control::MeanPressure { pa: 2.0 * PI * E_STAR * 1e-6 / 3.2e-4 }),
+        &problem(
+            &wavy,
+            1e-5,
+            Periodicity::Periodic,
+            Control::MeanPressure {
+                pa: 2.0 * PI * E_STAR * 1e-6 / 3.2e-4,
+            },
+        ),
         &mut |_, _| {},
     )
     .expect_err("full");
@@ -254,19 +344,47 @@ fn bad_input_is_refused_with_the_reason() {
     let mut broken = heights.clone();
     broken[[3, 4]] = f64::NAN;
     let error = solve(
-        &problem(&broken, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD }),
+        &problem(
+            &broken,
+            spacing,
+            Periodicity::NonPeriodic,
+            Control::Load { newtons: LOAD },
+        ),
         &mut |_, _| {},
     )
     .expect_err("nan");
-    assert!(matches!(error, RoughContactError::NotFinite { row: 3, column: 4, .. }));
+    assert!(matches!(
+        error,
+        RoughContactError::NotFinite {
+            row: 3,
+            column: 4,
+            ..
+        }
+    ));
     assert!(error.to_string().contains("row 3, column 4"), "{error}");
     // Too large for the memory allowed: an estimate, before allocating.
-    let mut limited = problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD });
+    let mut limited = problem(
+        &heights,
+        spacing,
+        Periodicity::NonPeriodic,
+        Control::Load { newtons: LOAD },
+    );
     limited.memory_limit_bytes = 1000;
-    assert!(matches!(solve(&limited, &mut |_, _| {}), Err(RoughContactError::TooLarge { .. })));
+    assert!(matches!(
+        solve(&limited, &mut |_, _| {}),
+        Err(RoughContactError::TooLarge { .. })
+    ));
     // Too few iterations: an error with the residual, never a result.
-    let mut hurried = problem(&heights, spacing, Periodicity::NonPeriodic, Control::Load { newtons: LOAD });
+    let mut hurried = problem(
+        &heights,
+        spacing,
+        Periodicity::NonPeriodic,
+        Control::Load { newtons: LOAD },
+    );
     hurried.max_iterations = 2;
     let error = solve(&hurried, &mut |_, _| {}).expect_err("not converged");
-    assert!(matches!(error, RoughContactError::NotConverged { iterations: 2, .. }), "{error}");
+    assert!(
+        matches!(error, RoughContactError::NotConverged { iterations: 2, .. }),
+        "{error}"
+    );
 }

@@ -105,7 +105,9 @@ pub enum RoughContactError {
     },
     #[error("the pressure reaches the edge of the domain (row {row}, column {column}): an isolated contact must lie inside its grid; enlarge the domain (or solve it as a periodic surface)")]
     PressureAtEdge { row: usize, column: usize },
-    #[error("a {ny} x {nx} contact needs about {needed_mib} MiB, more than the {limit_mib} MiB allowed")]
+    #[error(
+        "a {ny} x {nx} contact needs about {needed_mib} MiB, more than the {limit_mib} MiB allowed"
+    )]
     TooLarge {
         ny: usize,
         nx: usize,
@@ -177,13 +179,25 @@ pub fn solve(
     }
     let [dx, dy] = problem.spacing_m;
     if !(dx > 0.0 && dy > 0.0 && dx.is_finite() && dy.is_finite()) {
-        return Err(parameter("the spacing", "must be positive and finite", dx.min(dy)));
+        return Err(parameter(
+            "the spacing",
+            "must be positive and finite",
+            dx.min(dy),
+        ));
     }
     if !(problem.e_star_pa > 0.0 && problem.e_star_pa.is_finite()) {
-        return Err(parameter("E*", "must be positive and finite", problem.e_star_pa));
+        return Err(parameter(
+            "E*",
+            "must be positive and finite",
+            problem.e_star_pa,
+        ));
     }
     if !(problem.tolerance > 0.0 && problem.tolerance < 1.0) {
-        return Err(parameter("the tolerance", "must lie in (0, 1)", problem.tolerance));
+        return Err(parameter(
+            "the tolerance",
+            "must lie in (0, 1)",
+            problem.tolerance,
+        ));
     }
     if let Some(((row, column), &value)) = problem
         .heights_m
@@ -246,7 +260,11 @@ pub fn solve(
         / cells)
         .sqrt();
     // A flat surface has no roughness scale: measure the gap against the cell size instead.
-    let gap_scale = if roughness > 0.0 { roughness } else { dx.min(dy) };
+    let gap_scale = if roughness > 0.0 {
+        roughness
+    } else {
+        dx.min(dy)
+    };
 
     let mut operator = ElasticOperator::new(
         [ny, nx],
@@ -255,12 +273,9 @@ pub fn solve(
         problem.periodicity,
     )?;
     // Local stiffness: a cell's own displacement per unit pressure (Love's centre value).
-    let own_compliance = crate::solution::elastic::uniform_patch_displacement(
-        0.0,
-        0.0,
-        dx / 2.0,
-        dy / 2.0,
-    ) / (std::f64::consts::PI * problem.e_star_pa);
+    let own_compliance =
+        crate::solution::elastic::uniform_patch_displacement(0.0, 0.0, dx / 2.0, dy / 2.0)
+            / (std::f64::consts::PI * problem.e_star_pa);
 
     let approach_given = match problem.control {
         Control::Approach { m } => Some(m),
@@ -281,134 +296,51 @@ pub fn solve(
         }
     };
 
-    let mut gap = Array2::zeros((ny, nx));
-    let mut direction = Array2::<f64>::zeros((ny, nx));
-    let mut response = Array2::<f64>::zeros((ny, nx));
-    let mut previous = Array2::<f64>::zeros((ny, nx));
-    let mut conjugate = false;
-    let mut gap_norm_old = 1.0;
-    let mut iterations = 0;
-    let mut residual = f64::INFINITY;
-    // A cell takes part in the conjugate-gradient step when loaded below the cap, or at the
-    // cap but opening (then it may unload).
-    let active = |p: f64, g: f64| p > 0.0 && (p < hardness || g > 0.0);
-
-    while iterations < problem.max_iterations {
-        iterations += 1;
-        operator.apply(pressure.view(), gap.view_mut())?;
-        Zip::from(&mut gap).and(&separation).for_each(|g, &s| *g += s);
-        if let Some(approach) = approach_given {
-            gap.mapv_inplace(|g| g - approach);
-        } else {
-            let (sum, count) = sum_active(&pressure, &gap, &active);
-            if count == 0 {
-                break;
-            }
-            let mean = sum / count as f64;
-            gap.mapv_inplace(|g| g - mean);
-        }
-        // Complementarity of the current pressure and its gap.
-        // (At the cap a cell may penetrate: only an opening gap counts there.)
-        let (pg, p_sum) = Zip::from(&pressure).and(&gap).fold((0.0, 0.0), |(a, b), &p, &g| {
-            let open = if p >= hardness { g.max(0.0) } else { g.abs() };
-            (a + p * open, b + p)
-        });
-        let complementarity = if p_sum > 0.0 {
-            pg / (p_sum * gap_scale)
-        } else {
-            f64::INFINITY
-        };
-
-        let gap_norm = Zip::from(&pressure)
-            .and(&gap)
-            .fold(0.0, |acc, &p, &g| if active(p, g) { acc + g * g } else { acc });
-        let ratio = if conjugate {
-            gap_norm / gap_norm_old
-        } else {
-            0.0
-        };
-        Zip::from(&mut direction)
-            .and(&pressure)
-            .and(&gap)
-            .for_each(|t, &p, &g| *t = if active(p, g) { g + ratio * *t } else { 0.0 });
-        gap_norm_old = gap_norm;
-        operator.apply(direction.view(), response.view_mut())?;
-        if approach_given.is_none() {
-            // Centred on the same set as the gap.
-            let (sum, count) = Zip::from(&pressure).and(&gap).and(&response).fold(
-                (0.0, 0usize),
-                |(s, c), &p, &g, &r| if active(p, g) { (s + r, c + 1) } else { (s, c) },
-            );
-            if count > 0 {
-                let mean = sum / count as f64;
-                response.mapv_inplace(|r| r - mean);
-            }
-        }
-        let (numerator, denominator) = Zip::from(&pressure)
-            .and(&gap)
-            .and(&direction)
-            .and(&response)
-            .fold((0.0, 0.0), |(a, b), &p, &g, &t, &r| {
-                if active(p, g) {
-                    (a + g * t, b + r * t)
-                } else {
-                    (a, b)
-                }
-            });
-        let step = if denominator != 0.0 {
-            numerator / denominator
-        } else {
-            0.0
-        };
-        previous.assign(&pressure);
-        let mut overlap = false;
-        Zip::from(&mut pressure)
-            .and(&gap)
-            .and(&direction)
-            .for_each(|p, &g, &t| {
-                if active(*p, g) {
-                    *p -= step * t;
-                }
-                if *p <= 0.0 {
-                    *p = 0.0;
-                }
-            });
-        // Cells out of contact that penetrate are loaded, and the conjugation restarts.
-        Zip::from(&mut pressure).and(&gap).for_each(|p, &g| {
-                if *p == 0.0 && g < 0.0 {
-                    *p = -step.abs() * g;
-                    overlap = true;
-                }
-                if *p > hardness {
-                    *p = hardness;
-                }
-            });
-        conjugate = !overlap;
-        if let Some(mean) = target_mean {
-            scale_to_mean(&mut pressure, mean * cells, hardness);
-        }
-        let change = Zip::from(&pressure)
-            .and(&previous)
-            .fold(0.0, |acc, &p, &old| acc + (p - old).abs());
-        let total = pressure.sum();
-        let pressure_change = if total > 0.0 {
-            change / total
-        } else {
-            f64::INFINITY
-        };
-        residual = pressure_change.max(complementarity);
-        progress(iterations, residual);
-        if residual < problem.tolerance {
-            break;
-        }
-        if total == 0.0 && approach_given.is_some() {
-            break;
-        }
-    }
-
+    let mut state = State::new([ny, nx]);
+    let settings = Settings {
+        hardness,
+        gap_scale,
+        tolerance: problem.tolerance,
+        max_iterations: problem.max_iterations,
+    };
+    let (iterations, residual) = match (target_mean, approach_given) {
+        // Elastic, or capped under a given approach: one iteration.
+        (Some(mean), _) if hardness.is_infinite() => iterate(
+            &mut operator,
+            &separation,
+            &mut pressure,
+            &mut state,
+            Target::MeanPressure(mean),
+            &settings,
+            progress,
+        )?,
+        (None, Some(approach)) => iterate(
+            &mut operator,
+            &separation,
+            &mut pressure,
+            &mut state,
+            Target::Approach(approach),
+            &settings,
+            progress,
+        )?,
+        // Capped under a given load: the approach that carries it, by bracketing.
+        (Some(mean), _) => capped_under_load(
+            &mut operator,
+            &separation,
+            &mut pressure,
+            &mut state,
+            mean,
+            &settings,
+            progress,
+        )?,
+        (None, None) => (0, f64::INFINITY),
+    };
+    let mut gap = state.gap;
     // The gap of the final pressure, and the approach it implies.
     operator.apply(pressure.view(), gap.view_mut())?;
-    Zip::from(&mut gap).and(&separation).for_each(|g, &s| *g += s);
+    Zip::from(&mut gap)
+        .and(&separation)
+        .for_each(|g, &s| *g += s);
     let approach_m = match approach_given {
         Some(approach) => approach,
         None => {
@@ -423,9 +355,11 @@ pub fn solve(
     };
     gap.mapv_inplace(|g| g - approach_m);
     // In contact the gap is zero by definition (its rounding is the tolerance).
-    Zip::from(&mut gap)
-        .and(&pressure)
-        .for_each(|g, &p| if p > 0.0 { *g = 0.0 });
+    Zip::from(&mut gap).and(&pressure).for_each(|g, &p| {
+        if p > 0.0 {
+            *g = 0.0
+        }
+    });
 
     if residual >= problem.tolerance {
         return Err(RoughContactError::NotConverged {
@@ -443,7 +377,9 @@ pub fn solve(
     if loaded == nx * ny {
         let what = match problem.control {
             Control::Approach { m } => format!("an approach of {m:.4e} m closes the whole gap"),
-            Control::Load { newtons } => format!("a load of {newtons:.4e} N flattens the whole surface"),
+            Control::Load { newtons } => {
+                format!("a load of {newtons:.4e} N flattens the whole surface")
+            }
             Control::MeanPressure { pa } => {
                 format!("a mean pressure of {pa:.4e} Pa flattens the whole surface")
             }
@@ -475,6 +411,317 @@ pub fn solve(
     })
 }
 
+/// Work arrays of the iteration.
+struct State {
+    gap: Array2<f64>,
+    direction: Array2<f64>,
+    response: Array2<f64>,
+    previous: Array2<f64>,
+}
+
+impl State {
+    fn new([ny, nx]: [usize; 2]) -> Self {
+        Self {
+            gap: Array2::zeros((ny, nx)),
+            direction: Array2::zeros((ny, nx)),
+            response: Array2::zeros((ny, nx)),
+            previous: Array2::zeros((ny, nx)),
+        }
+    }
+}
+
+#[derive(Clone, Copy)]
+struct Settings {
+    hardness: f64,
+    gap_scale: f64,
+    tolerance: f64,
+    max_iterations: usize,
+}
+
+/// What one run of the iteration holds fixed.
+#[derive(Clone, Copy)]
+enum Target {
+    Approach(f64),
+    MeanPressure(f64),
+}
+
+/// Polonsky & Keer's iteration from the given pressure until converged or the cap is
+/// reached: returns the iterations made and the residual (module doc).
+fn iterate(
+    operator: &mut ElasticOperator,
+    separation: &Array2<f64>,
+    pressure: &mut Array2<f64>,
+    state: &mut State,
+    target: Target,
+    settings: &Settings,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<(usize, f64), RoughContactError> {
+    let State {
+        gap,
+        direction,
+        response,
+        previous,
+    } = state;
+    let Settings {
+        hardness,
+        gap_scale,
+        tolerance,
+        max_iterations,
+    } = *settings;
+    let (approach_given, target_mean) = match target {
+        Target::Approach(m) => (Some(m), None),
+        Target::MeanPressure(pa) => (None, Some(pa)),
+    };
+    let cells = pressure.len() as f64;
+    let mut conjugate = false;
+    let mut gap_norm_old = 1.0;
+    let mut iterations = 0;
+    let mut residual = f64::INFINITY;
+    // A cell takes part in the conjugate-gradient step when loaded below the cap, or at the
+    // cap but opening (then it may unload).
+    let active = |p: f64, g: f64| p > 0.0 && (p < hardness || g > 0.0);
+
+    while iterations < max_iterations {
+        iterations += 1;
+        operator.apply(pressure.view(), gap.view_mut())?;
+        Zip::from(&mut *gap)
+            .and(separation)
+            .for_each(|g, &s| *g += s);
+        if let Some(approach) = approach_given {
+            gap.mapv_inplace(|g| g - approach);
+        } else {
+            let (sum, count) = sum_active(pressure, gap, &active);
+            if count == 0 {
+                break;
+            }
+            let mean = sum / count as f64;
+            gap.mapv_inplace(|g| g - mean);
+        }
+        // Complementarity of the current pressure and its gap.
+        // (At the cap a cell may penetrate: only an opening gap counts there.)
+        let (pg, p_sum) = Zip::from(&*pressure)
+            .and(&*gap)
+            .fold((0.0, 0.0), |(a, b), &p, &g| {
+                let open = if p >= hardness { g.max(0.0) } else { g.abs() };
+                (a + p * open, b + p)
+            });
+        let complementarity = if p_sum > 0.0 {
+            pg / (p_sum * gap_scale)
+        } else {
+            f64::INFINITY
+        };
+
+        let gap_norm = Zip::from(&*pressure).and(&*gap).fold(0.0, |acc, &p, &g| {
+            if active(p, g) {
+                acc + g * g
+            } else {
+                acc
+            }
+        });
+        let ratio = if conjugate {
+            gap_norm / gap_norm_old
+        } else {
+            0.0
+        };
+        Zip::from(&mut *direction)
+            .and(&*pressure)
+            .and(&*gap)
+            .for_each(|t, &p, &g| *t = if active(p, g) { g + ratio * *t } else { 0.0 });
+        gap_norm_old = gap_norm;
+        operator.apply(direction.view(), response.view_mut())?;
+        if approach_given.is_none() {
+            // Centred on the same set as the gap.
+            let (sum, count) = Zip::from(&*pressure).and(&*gap).and(&*response).fold(
+                (0.0, 0usize),
+                |(s, c), &p, &g, &r| if active(p, g) { (s + r, c + 1) } else { (s, c) },
+            );
+            if count > 0 {
+                let mean = sum / count as f64;
+                response.mapv_inplace(|r| r - mean);
+            }
+        }
+        let (numerator, denominator) = Zip::from(&*pressure)
+            .and(&*gap)
+            .and(&*direction)
+            .and(&*response)
+            .fold((0.0, 0.0), |(a, b), &p, &g, &t, &r| {
+                if active(p, g) {
+                    (a + g * t, b + r * t)
+                } else {
+                    (a, b)
+                }
+            });
+        let step = if denominator != 0.0 {
+            numerator / denominator
+        } else {
+            0.0
+        };
+        previous.assign(&*pressure);
+        let mut overlap = false;
+        Zip::from(&mut *pressure)
+            .and(&*gap)
+            .and(&*direction)
+            .for_each(|p, &g, &t| {
+                if active(*p, g) {
+                    *p -= step * t;
+                }
+                if *p <= 0.0 {
+                    *p = 0.0;
+                }
+            });
+        // Cells out of contact that penetrate are loaded, and the conjugation restarts.
+        // Cells reaching or leaving the cap change the set too.
+        let mut cap_changed = false;
+        Zip::from(&mut *pressure)
+            .and(&*previous)
+            .and(&*gap)
+            .for_each(|p, &old, &g| {
+                if *p == 0.0 && g < 0.0 {
+                    *p = -step.abs() * g;
+                    overlap = true;
+                }
+                if *p > hardness {
+                    *p = hardness;
+                }
+                if (*p >= hardness) != (old >= hardness) {
+                    cap_changed = true;
+                }
+            });
+        conjugate = !overlap && !cap_changed;
+        if let Some(mean) = target_mean {
+            scale_to_mean(pressure, mean * cells, hardness);
+        }
+        let change = Zip::from(&*pressure)
+            .and(&*previous)
+            .fold(0.0, |acc, &p, &old| acc + (p - old).abs());
+        let total = pressure.sum();
+        let pressure_change = if total > 0.0 {
+            change / total
+        } else {
+            f64::INFINITY
+        };
+        residual = pressure_change.max(complementarity);
+        progress(iterations, residual);
+        if residual < tolerance {
+            break;
+        }
+        if total == 0.0 && approach_given.is_some() {
+            break;
+        }
+    }
+    Ok((iterations, residual))
+}
+
+/// A load-controlled contact under a pressure cap: the approach that carries the load, found
+/// by regula falsi (Illinois) on the load of approach-controlled solutions, each started from
+/// the last pressure. The mean pressure is reached to the tolerance.
+fn capped_under_load(
+    operator: &mut ElasticOperator,
+    separation: &Array2<f64>,
+    pressure: &mut Array2<f64>,
+    state: &mut State,
+    mean: f64,
+    settings: &Settings,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<(usize, f64), RoughContactError> {
+    let cells = pressure.len() as f64;
+    let total_iterations = std::cell::Cell::new(0usize);
+    // The elastic solution's approach carries the load without the cap; capped, the surfaces
+    // must come closer: a lower bound. Double the interference until the load is carried.
+    let mut elastic = pressure.clone();
+    let uncapped = Settings {
+        hardness: f64::INFINITY,
+        ..*settings
+    };
+    let (iterations, _) = iterate(
+        operator,
+        separation,
+        &mut elastic,
+        state,
+        Target::MeanPressure(mean),
+        &uncapped,
+        progress,
+    )?;
+    total_iterations.set(total_iterations.get() + iterations);
+    let mut low = elastic_approach(operator, separation, &elastic, state)?;
+    pressure.assign(&elastic.mapv(|p| p.min(settings.hardness)));
+    let mut run = |approach: f64, pressure: &mut Array2<f64>, state: &mut State| {
+        let (iterations, residual) = iterate(
+            operator,
+            separation,
+            pressure,
+            state,
+            Target::Approach(approach),
+            settings,
+            progress,
+        )?;
+        total_iterations.set(total_iterations.get() + iterations);
+        if residual >= settings.tolerance {
+            return Err(RoughContactError::NotConverged {
+                iterations: total_iterations.get(),
+                residual,
+                tolerance: settings.tolerance,
+            });
+        }
+        Ok::<f64, RoughContactError>(pressure.sum() / cells - mean)
+    };
+    let mut f_low = run(low, pressure, state)?;
+    let mut high = low;
+    let mut f_high = f_low;
+    while f_high < 0.0 {
+        high *= 2.0;
+        f_high = run(high, pressure, state)?;
+    }
+    let mut side = 0i8;
+    let mut residual = (f_high / mean).abs();
+    while residual >= settings.tolerance {
+        if total_iterations.get() >= settings.max_iterations {
+            return Err(RoughContactError::NotConverged {
+                iterations: total_iterations.get(),
+                residual,
+                tolerance: settings.tolerance,
+            });
+        }
+        let approach = (low * f_high - high * f_low) / (f_high - f_low);
+        let f = run(approach, pressure, state)?;
+        residual = (f / mean).abs();
+        if f < 0.0 {
+            low = approach;
+            f_low = f;
+            if side == -1 {
+                f_high /= 2.0;
+            }
+            side = -1;
+        } else {
+            high = approach;
+            f_high = f;
+            if side == 1 {
+                f_low /= 2.0;
+            }
+            side = 1;
+        }
+        if (high - low).abs() <= 1e-15 * high.abs() {
+            break;
+        }
+    }
+    Ok((total_iterations.get(), residual))
+}
+
+/// The approach of a converged load-controlled pressure: the mean gap over the loaded cells.
+fn elastic_approach(
+    operator: &mut ElasticOperator,
+    separation: &Array2<f64>,
+    pressure: &Array2<f64>,
+    state: &mut State,
+) -> Result<f64, RoughContactError> {
+    operator.apply(pressure.view(), state.gap.view_mut())?;
+    Zip::from(&mut state.gap)
+        .and(separation)
+        .for_each(|g, &s| *g += s);
+    let (sum, count) = sum_active(pressure, &state.gap, &|p, _| p > 0.0);
+    Ok(sum / count.max(1) as f64)
+}
+
 /// `Σ values` and the count over the cells where `select(p, g)` holds (`g` = `values`).
 fn sum_active(
     pressure: &Array2<f64>,
@@ -503,7 +750,13 @@ fn scale_to_mean(pressure: &mut Array2<f64>, total: f64, hardness: f64) {
     });
     if free > 0.0 {
         let factor = ((total - capped) / free).max(0.0);
-        pressure.mapv_inplace(|p| if p < hardness { (p * factor).min(hardness) } else { p });
+        pressure.mapv_inplace(|p| {
+            if p < hardness {
+                (p * factor).min(hardness)
+            } else {
+                p
+            }
+        });
     }
 }
 
@@ -571,6 +824,10 @@ mod tests {
         assert_eq!(count_spots(&p, true), 4);
         p[[2, 0]] = 1.0;
         assert_eq!(count_spots(&p, false), 5);
-        assert_eq!(count_spots(&p, true), 4, "[2, 0] joins [2, 5] across the edge");
+        assert_eq!(
+            count_spots(&p, true),
+            4,
+            "[2, 0] joins [2, 5] across the edge"
+        );
     }
 }

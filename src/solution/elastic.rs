@@ -68,26 +68,31 @@ use crate::transform::{Fft2Work, RealFft2, TransformError};
 /// `g(X, Y) = X asinh(Y/|X|) + Y asinh(X/|Y|)`, a term 0 where its factor is 0.
 #[inline]
 fn love_corner(x: f64, y: f64) -> f64 {
-    let first = if x == 0.0 { 0.0 } else { x * (y / x.abs()).asinh() };
-    let second = if y == 0.0 { 0.0 } else { y * (x / y.abs()).asinh() };
+    let first = if x == 0.0 {
+        0.0
+    } else {
+        x * (y / x.abs()).asinh()
+    };
+    let second = if y == 0.0 {
+        0.0
+    } else {
+        y * (x / y.abs()).asinh()
+    };
     first + second
 }
 
 /// Normal surface displacement, times `π E* / p`, at `(x, y)` from a pressure `p` uniform on
 /// the rectangle `|x| <= half_x`, `|y| <= half_y` (metres in, metres out; see the module doc).
 pub fn uniform_patch_displacement(x: f64, y: f64, half_x: f64, half_y: f64) -> f64 {
-    love_corner(x + half_x, y + half_y) - love_corner(x + half_x, y - half_y)
+    love_corner(x + half_x, y + half_y)
+        - love_corner(x + half_x, y - half_y)
         - love_corner(x - half_x, y + half_y)
         + love_corner(x - half_x, y - half_y)
 }
 
 /// `K(i, j) π E*` for the offsets `first_x <= i < first_x + count_x` (and the same in y) of
 /// cells `dx x dy`, from one row of corner terms to the next: `[count_y, count_x]`.
-fn coefficients(
-    spacing_m: [f64; 2],
-    first: [i64; 2],
-    count: [usize; 2],
-) -> Array2<f64> {
+fn coefficients(spacing_m: [f64; 2], first: [i64; 2], count: [usize; 2]) -> Array2<f64> {
     let [dx, dy] = spacing_m;
     let [first_x, first_y] = first;
     let [count_x, count_y] = count;
@@ -220,7 +225,10 @@ fn periodic_kernel(shape: [usize; 2], spacing_m: [f64; 2]) -> Array2<f64> {
     // Images out to 1.5 times the longer period each way, so that the images left to the
     // continuum lie outside a nearly square region (a long, narrow period would otherwise
     // leave rows of nearby images to it).
-    let (lx, ly) = (shape[1] as f64 * spacing_m[0], shape[0] as f64 * spacing_m[1]);
+    let (lx, ly) = (
+        shape[1] as f64 * spacing_m[0],
+        shape[0] as f64 * spacing_m[1],
+    );
     let reach = 1.5 * lx.max(ly);
     let images = |period: f64| (reach / period - 0.5).ceil().max(1.0) as usize;
     periodic_kernel_with_images(shape, spacing_m, [images(lx), images(ly)], true)
@@ -253,7 +261,10 @@ fn periodic_kernel_with_images(
         // Signed offset of this coefficient, folded into one period.
         let ox = first[0] + i as i64;
         let oy = first[1] + l as i64;
-        let (fi, fj) = (ox.rem_euclid(nx as i64) as usize, oy.rem_euclid(ny as i64) as usize);
+        let (fi, fj) = (
+            ox.rem_euclid(nx as i64) as usize,
+            oy.rem_euclid(ny as i64) as usize,
+        );
         kernel[[fj, fi]] += k;
     }
     if corrected {
@@ -304,7 +315,9 @@ mod tests {
         let mut operator =
             ElasticOperator::new(shape, spacing, e_star, Periodicity::NonPeriodic).expect("plan");
         let mut u = Array2::zeros((5, 7));
-        operator.apply(pressure.view(), u.view_mut()).expect("apply");
+        operator
+            .apply(pressure.view(), u.view_mut())
+            .expect("apply");
         for ((j, i), &got) in u.indexed_iter() {
             let mut sum = 0.0;
             for ((l, k), &p) in pressure.indexed_iter() {
@@ -315,7 +328,10 @@ mod tests {
                 sum += p * uniform_patch_displacement(ox, oy, 0.5e-6, 0.75e-6);
             }
             sum /= PI * e_star;
-            assert!((got - sum).abs() < 1e-12 * sum.abs(), "({j}, {i}): {got} vs {sum}");
+            assert!(
+                (got - sum).abs() < 1e-12 * sum.abs(),
+                "({j}, {i}): {got} vs {sum}"
+            );
         }
     }
 
@@ -339,10 +355,15 @@ mod tests {
                 / scale
         };
         assert!(error(&c) < 2e-4, "corrected: {}", error(&c));
-        assert!(error(&p) > 10.0 * error(&c), "the correction matters: {}", error(&p));
+        assert!(
+            error(&p) > 10.0 * error(&c),
+            "the correction matters: {}",
+            error(&p)
+        );
         // Near the loaded cell, the periodic kernel differs from Love's by a smooth function:
         // differences of neighbours agree to well below the kernel's own variation.
-        let love = |i: i64, j: i64| uniform_patch_displacement(i as f64, 1.25 * j as f64, 0.5, 0.625);
+        let love =
+            |i: i64, j: i64| uniform_patch_displacement(i as f64, 1.25 * j as f64, 0.5, 0.625);
         let at = |i: i64, j: i64| reference[[j.rem_euclid(32) as usize, i.rem_euclid(48) as usize]];
         for (i, j) in [(1, 0), (0, 1), (2, 2), (-3, 1)] {
             let periodic = at(i, j) - at(0, 0);
@@ -366,12 +387,17 @@ mod tests {
         let mut operator =
             ElasticOperator::new([ny, nx], [dx, dx], e_star, Periodicity::Periodic).expect("plan");
         let mut u = Array2::zeros((ny, nx));
-        operator.apply(pressure.view(), u.view_mut()).expect("apply");
+        operator
+            .apply(pressure.view(), u.view_mut())
+            .expect("apply");
         let q = 2.0 * PI / period;
         let amplitude = 2.0 / (e_star * q);
         for ((_, i), &value) in u.indexed_iter() {
             let expected = amplitude * pressure[[0, i]];
-            assert!((value - expected).abs() < 0.01 * amplitude, "{i}: {value} vs {expected}");
+            assert!(
+                (value - expected).abs() < 0.01 * amplitude,
+                "{i}: {value} vs {expected}"
+            );
         }
         // Uniform in y and exactly proportional to the pressure (one mode).
         let ratio = u[[3, 0]] / pressure[[3, 0]];

@@ -73,9 +73,13 @@ pub enum Amplitude {
 pub enum Form {
     None,
     /// A sphere of this radius about the map's centre: `sqrt(R² - r²) - R` (a rough ball).
-    Sphere { radius_m: f64 },
+    Sphere {
+        radius_m: f64,
+    },
     /// A cylinder with its axis along y through the map's centre: `sqrt(R² - x²) - R`.
-    Cylinder { radius_m: f64 },
+    Cylinder {
+        radius_m: f64,
+    },
 }
 
 /// What to generate.
@@ -104,7 +108,9 @@ pub enum GenerateError {
     TooSmall(usize, usize),
     #[error("no wavelength of the spectrum fits between the cutoff and the map's size: the surface would be flat")]
     Empty,
-    #[error("the sphere or cylinder radius {radius_m} m is smaller than half the map ({half_m} m)")]
+    #[error(
+        "the sphere or cylinder radius {radius_m} m is smaller than half the map ({half_m} m)"
+    )]
     FormTooSmall { radius_m: f64, half_m: f64 },
     #[error(transparent)]
     Surface(#[from] SurfaceError),
@@ -167,7 +173,10 @@ impl Spectrum {
                 rolloff_wavelength_m,
                 cutoff_wavelength_m,
             } => {
-                let (qr, qs) = (2.0 * PI / rolloff_wavelength_m, 2.0 * PI / cutoff_wavelength_m);
+                let (qr, qs) = (
+                    2.0 * PI / rolloff_wavelength_m,
+                    2.0 * PI / cutoff_wavelength_m,
+                );
                 if q > qs * (1.0 + 1e-12) {
                     0.0
                 } else if q <= qr {
@@ -214,12 +223,7 @@ impl Normal {
 
 /// The wavenumbers `(qx, qy)` (rad/m) of the stored spectrum entry `[kx, ky]`, or `None` on a
 /// Nyquist row or column (an even count's `n/2`), whose direction is ambiguous.
-fn wavenumbers(
-    kx: usize,
-    ky: usize,
-    shape: [usize; 2],
-    period_m: [f64; 2],
-) -> Option<(f64, f64)> {
+fn wavenumbers(kx: usize, ky: usize, shape: [usize; 2], period_m: [f64; 2]) -> Option<(f64, f64)> {
     let [ny, nx] = shape;
     let nyquist = |k: usize, n: usize| n % 2 == 0 && k == n / 2;
     if nyquist(kx, nx) || nyquist(ky, ny) {
@@ -291,7 +295,12 @@ pub fn generate(generator: &Generator) -> Result<HeightMap, GenerateError> {
         Form::Sphere { radius_m } | Form::Cylinder { radius_m } => {
             positive("form radius", radius_m)?;
             let along_y = matches!(generator.form, Form::Sphere { .. });
-            let half_m = 0.5 * if along_y { period_m[0].hypot(period_m[1]) } else { period_m[0] };
+            let half_m = 0.5
+                * if along_y {
+                    period_m[0].hypot(period_m[1])
+                } else {
+                    period_m[0]
+                };
             if radius_m <= half_m {
                 return Err(GenerateError::FormTooSmall { radius_m, half_m });
             }
@@ -447,12 +456,11 @@ mod tests {
             .map(|k| ((k as f64).ln(), (bins[k].0 / bins[k].1 as f64).ln()))
             .collect();
         let m = points.len() as f64;
-        let (sx, sy) = points.iter().fold((0.0, 0.0), |(a, b), p| (a + p.0, b + p.1));
-        let (mx, my) = (sx / m, sy / m);
-        let slope = points
+        let (sx, sy) = points
             .iter()
-            .map(|p| (p.0 - mx) * (p.1 - my))
-            .sum::<f64>()
+            .fold((0.0, 0.0), |(a, b), p| (a + p.0, b + p.1));
+        let (mx, my) = (sx / m, sy / m);
+        let slope = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
             / points.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
         assert!((slope + 3.6).abs() < 0.15, "slope {slope}");
         // Nothing beyond the cutoff (k = 64), but rounding of a few energies near it.
@@ -496,9 +504,11 @@ mod tests {
         generator.form = Form::Sphere { radius_m: 1e-3 };
         let map = generate(&generator).expect("ok");
         let h = map.heights_m();
-        let (max_at, _) = h
-            .indexed_iter()
-            .fold(((0, 0), f64::MIN), |best, (at, &v)| if v > best.1 { (at, v) } else { best });
+        let (max_at, _) =
+            h.indexed_iter().fold(
+                ((0, 0), f64::MIN),
+                |best, (at, &v)| if v > best.1 { (at, v) } else { best },
+            );
         assert!(
             max_at.0.abs_diff(31) <= 1 && max_at.1.abs_diff(31) <= 1,
             "top at {max_at:?}"

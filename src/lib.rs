@@ -43,6 +43,7 @@ pub mod contact;
 pub mod field;
 pub mod field_file;
 pub mod figure;
+pub mod grid_table;
 pub mod output;
 pub mod probe;
 #[cfg(feature = "rerun")]

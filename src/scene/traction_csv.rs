@@ -83,61 +83,23 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
         }
         rows.push(row);
     }
-    let axis = |k: usize, name: &str| -> Result<(f64, f64, usize), String> {
-        let mut values: Vec<f64> = rows.iter().map(|r| r[k]).collect();
-        values.sort_by(f64::total_cmp);
-        values.dedup();
-        if values.len() < 2 {
-            return Err(format!(
-                "the grid needs at least two distinct {name} values, got {}",
-                values.len()
-            ));
-        }
-        let step = (values[values.len() - 1] - values[0]) / (values.len() - 1) as f64;
-        let tolerance = 1e-6 * step;
-        if let Some(w) = values
-            .windows(2)
-            .find(|w| (w[1] - w[0] - step).abs() > tolerance)
-        {
-            return Err(format!(
-                "the {name} values are not evenly spaced: {} follows {} (step {step}); give the tractions at the centres of a regular grid",
-                w[1], w[0]
-            ));
-        }
-        Ok((values[0], step, values.len()))
-    };
-    let (x0, dx, nx) = axis(0, "x")?;
-    let (y0, dy, ny) = axis(1, "y")?;
-    if rows.len() != nx * ny {
-        return Err(format!(
-            "{} rows for a grid of {nx} x {ny} = {} nodes: every node must appear exactly once",
-            rows.len(),
-            nx * ny
-        ));
-    }
-    let mut seen = Array2::from_elem((ny, nx), false);
+    let points: Vec<[f64; 2]> = rows.iter().map(|r| [r[0], r[1]]).collect();
+    let grid = crate::grid_table::assemble(&points)?;
+    let [ny, nx] = grid.shape;
     let mut arrays = [
         Array2::zeros((ny, nx)),
         Array2::zeros((ny, nx)),
         Array2::zeros((ny, nx)),
     ];
-    for row in &rows {
-        let i = ((row[0] - x0) / dx).round() as usize;
-        let j = ((row[1] - y0) / dy).round() as usize;
-        if std::mem::replace(&mut seen[[j, i]], true) {
-            return Err(format!(
-                "the node ({}, {}) appears twice; every node must appear exactly once",
-                row[0], row[1]
-            ));
-        }
+    for (row, [j, i]) in rows.iter().zip(&grid.nodes) {
         for (array, value) in arrays.iter_mut().zip(&row[2..]) {
-            array[[j, i]] = *value;
+            array[[*j, *i]] = *value;
         }
     }
     let [pressure, shear_x, shear_y] = arrays;
     Ok(TractionTable {
-        first_centre: [x0, y0],
-        cell: [dx, dy],
+        first_centre: grid.first,
+        cell: grid.step,
         pressure,
         shear_x: iqx.map(|_| shear_x),
         shear_y: iqy.map(|_| shear_y),

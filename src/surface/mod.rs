@@ -6,6 +6,8 @@
 //! at `(i dx, j dy)`.
 
 pub mod generate;
+pub mod read;
+pub mod x3p;
 
 use ndarray::Array2;
 

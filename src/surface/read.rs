@@ -1,0 +1,580 @@
+//! Reading measured surfaces: an ASCII height matrix, XYZ rows on a regular grid, or an
+//! ISO 25178-72 `.x3p` file ([`super::x3p`]), chosen by the file's extension.
+//!
+//! ## ASCII height matrix (`.asc`, `.txt`, `.dat`, `.csv`, anything else)
+//! One line per row of samples (row = y), values separated by spaces, tabs or commas. Lines
+//! starting with `#` are comments, except the header lines of Gwyddion's "ASCII data matrix"
+//! export, which give the size and the height unit:
+//!
+//! ```text
+//! # Width: 100 um          (the map's extent along x, nx dx)
+//! # Height: 100 um         (along y, ny dy)
+//! # Value units: um        (the unit of the heights)
+//! ```
+//!
+//! Without them the caller gives the spacing and the height unit ([`ReadOptions`]); given
+//! both, they must agree.
+//!
+//! ## XYZ (`.xyz`)
+//! Three numbers per line, x, y and z, the nodes of a regular grid in any order (as the
+//! traction CSV reader takes them, [`crate::grid_table`]); x and y in the length unit and z in
+//! the height unit of [`ReadOptions`] (both default to metres).
+//!
+//! ## Missing points
+//! `NaN` (or any non-finite value) is refused with its row and column, unless the caller asks
+//! for [`Fill::Interpolate`]: each missing height becomes the mean of its valid neighbours,
+//! repeated (Gauss–Seidel relaxation of Laplace's equation with the valid heights fixed) until
+//! the largest change is below 1e-9 of the height range.
+
+use std::path::Path;
+
+use ndarray::Array2;
+
+use super::{HeightMap, SurfaceError};
+
+/// What to do with missing points.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Fill {
+    /// Refuse the file, naming the first missing point.
+    #[default]
+    Refuse,
+    /// Harmonic interpolation from the valid neighbours.
+    Interpolate,
+}
+
+/// What the file may not say itself.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct ReadOptions {
+    /// `[dx, dy]` in m (ASCII without a size header); the unit of x and y of an XYZ file is
+    /// taken as metres unless `xyz_length_unit_m` says otherwise.
+    pub spacing_m: Option<[f64; 2]>,
+    /// The unit of the heights in m (1e-6 for um), unless the file says it.
+    pub height_unit_m: Option<f64>,
+    /// XYZ files: the unit of x and y in m.
+    pub xyz_length_unit_m: Option<f64>,
+    pub fill: Fill,
+}
+
+/// Why a surface file cannot be used.
+#[derive(Debug, thiserror::Error)]
+pub enum ReadError {
+    #[error("cannot read {path}: {source}")]
+    Io {
+        path: String,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error("{path}: {message}")]
+    Format { path: String, message: String },
+    #[error("{path}: line {line}, column {column}: {message}")]
+    At {
+        path: String,
+        line: usize,
+        column: usize,
+        message: String,
+    },
+    #[error("{path}: {size_mib} MiB is more than the {limit_mib} MiB a surface file may have here (its heights would need about {needed_mib} MiB)")]
+    TooLarge {
+        path: String,
+        size_mib: u64,
+        limit_mib: u64,
+        needed_mib: u64,
+    },
+    #[error("{path}: {source}")]
+    Surface {
+        path: String,
+        #[source]
+        source: SurfaceError,
+    },
+}
+
+/// Units of length accepted for sizes and heights, with their size in m.
+pub const LENGTH_UNITS: [(&str, f64); 7] = [
+    ("m", 1.0),
+    ("mm", 1e-3),
+    ("um", 1e-6),
+    ("µm", 1e-6),
+    ("μm", 1e-6),
+    ("nm", 1e-9),
+    ("pm", 1e-12),
+];
+
+/// The size in m of a length unit (`m`, `mm`, `um`, `µm`, `nm`, `pm`).
+pub fn length_unit_m(unit: &str) -> Option<f64> {
+    LENGTH_UNITS
+        .iter()
+        .find(|(name, _)| *name == unit.trim())
+        .map(|(_, size)| *size)
+}
+
+/// A number followed by a length unit, e.g. `100 um` or `1.5e-3 mm`.
+fn length(text: &str) -> Option<f64> {
+    let text = text.trim();
+    let split = text
+        .find(|c: char| c.is_alphabetic() || c == 'µ' || c == 'μ')
+        .unwrap_or(text.len());
+    let value: f64 = text[..split].trim().parse().ok()?;
+    let unit = length_unit_m(&text[split..])?;
+    Some(value * unit)
+}
+
+/// The largest file read, in bytes: a quarter of the memory this machine allows for fields,
+/// at most 2 GiB (every 4 bytes of text may be one height of 8 bytes, plus the text itself).
+pub fn file_size_limit() -> u64 {
+    (crate::field::memory_limit_bytes() as u64 / 4).min(2 << 30)
+}
+
+fn read_text(path: &Path) -> Result<String, ReadError> {
+    let name = path.display().to_string();
+    let io = |source| ReadError::Io {
+        path: name.clone(),
+        source,
+    };
+    let size = std::fs::metadata(path).map_err(io)?.len();
+    let limit = file_size_limit();
+    if size > limit {
+        return Err(ReadError::TooLarge {
+            path: name,
+            size_mib: size >> 20,
+            limit_mib: limit >> 20,
+            needed_mib: (size + size * 2) >> 20,
+        });
+    }
+    std::fs::read_to_string(path).map_err(io)
+}
+
+/// Reads a surface file (see the module doc for the formats).
+pub fn read_surface(path: &Path, options: &ReadOptions) -> Result<HeightMap, ReadError> {
+    let name = path.display().to_string();
+    let extension = path
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .unwrap_or_default();
+    match extension.as_str() {
+        "x3p" => {
+            let size_limit = file_size_limit();
+            super::x3p::read(path, size_limit, options.fill)
+        }
+        "xyz" => parse_xyz(&read_text(path)?, &name, options),
+        _ => parse_ascii(&read_text(path)?, &name, options),
+    }
+}
+
+/// A field of a line: its text and its column (1-based, in characters).
+fn fields(line: &str) -> impl Iterator<Item = (usize, &str)> {
+    let mut start = None;
+    let mut out = Vec::new();
+    for (offset, c) in line.char_indices() {
+        let separator = c == ',' || c == ';' || c.is_whitespace();
+        match (separator, start) {
+            (false, None) => start = Some(offset),
+            (true, Some(s)) => {
+                out.push((s, &line[s..offset]));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        out.push((s, &line[s..]));
+    }
+    out.into_iter()
+        .map(move |(s, text)| (line[..s].chars().count() + 1, text))
+}
+
+/// Parses an ASCII height matrix.
+pub fn parse_ascii(text: &str, path: &str, options: &ReadOptions) -> Result<HeightMap, ReadError> {
+    let at = |line: usize, column: usize, message: String| ReadError::At {
+        path: path.to_string(),
+        line,
+        column,
+        message,
+    };
+    let format = |message: String| ReadError::Format {
+        path: path.to_string(),
+        message,
+    };
+    let (mut width, mut height, mut unit) = (None, None, None);
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    // (line, column) of each missing value, in order.
+    let mut missing: Vec<(usize, usize, usize, usize)> = Vec::new();
+    let mut first_line = 0;
+    for (index, line) in text.lines().enumerate() {
+        let number = index + 1;
+        let trimmed = line.trim();
+        if trimmed.is_empty() {
+            continue;
+        }
+        if let Some(comment) = trimmed.strip_prefix('#') {
+            if let Some((key, value)) = comment.split_once(':') {
+                let key = key.trim().to_ascii_lowercase();
+                let header = |what: &str| {
+                    at(
+                        number,
+                        1,
+                        format!(
+                            "cannot read the {what} `{}`; write e.g. `# {}: 100 um`",
+                            value.trim(),
+                            key
+                        ),
+                    )
+                };
+                match key.as_str() {
+                    "width" => width = Some(length(value).ok_or_else(|| header("width"))?),
+                    "height" => height = Some(length(value).ok_or_else(|| header("height"))?),
+                    "value units" => {
+                        unit = Some(length_unit_m(value).ok_or_else(|| {
+                            at(
+                                number,
+                                1,
+                                format!(
+                                    "unknown height unit `{}`; use m, mm, um, nm or pm",
+                                    value.trim()
+                                ),
+                            )
+                        })?)
+                    }
+                    _ => {}
+                }
+            }
+            continue;
+        }
+        let mut row = Vec::new();
+        for (column, field) in fields(line) {
+            let value: f64 = field.parse().map_err(|_| {
+                let shown: String = field.chars().take(40).collect();
+                at(number, column, format!("`{shown}` is not a number"))
+            })?;
+            if !value.is_finite() {
+                missing.push((number, column, rows.len(), row.len()));
+            }
+            row.push(value);
+        }
+        if let Some(first) = rows.first() {
+            if row.len() != first.len() {
+                return Err(at(
+                    number,
+                    1,
+                    format!(
+                        "this row has {} values, the first (line {first_line}) has {}: every row of the matrix needs the same number",
+                        row.len(),
+                        first.len()
+                    ),
+                ));
+            }
+        } else {
+            first_line = number;
+        }
+        rows.push(row);
+    }
+    let (ny, nx) = (rows.len(), rows.first().map_or(0, Vec::len));
+    if ny < 2 || nx < 2 {
+        return Err(format(format!(
+            "a height map needs at least 2 rows of 2 values, got {ny} row(s) of {nx}"
+        )));
+    }
+    let from_header = match (width, height) {
+        (Some(w), Some(h)) => Some([w / nx as f64, h / ny as f64]),
+        (Some(w), None) => Some([w / nx as f64, w / nx as f64]),
+        (None, Some(h)) => Some([h / ny as f64, h / ny as f64]),
+        (None, None) => None,
+    };
+    let spacing = match (from_header, options.spacing_m) {
+        (Some(header), Some(given)) => {
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-6 * a.abs().max(b.abs());
+            if !(close(header[0], given[0]) && close(header[1], given[1])) {
+                return Err(format(format!(
+                    "the header's size gives a spacing of {:.6e} x {:.6e} m, but {:.6e} x {:.6e} m was given; remove one of them",
+                    header[0], header[1], given[0], given[1]
+                )));
+            }
+            header
+        }
+        (Some(header), None) => header,
+        (None, Some(given)) => given,
+        (None, None) => {
+            return Err(format(
+                "the file does not say its sample spacing: give it (--spacing 1um, or spacing = \"1 um\" in the scene), or add a header line `# Width: 100 um`".to_string(),
+            ))
+        }
+    };
+    let unit = match (unit, options.height_unit_m) {
+        (Some(header), Some(given)) if (header - given).abs() > 1e-12 * header => {
+            return Err(format(format!(
+                "the header says the heights are in units of {header:e} m, but {given:e} m was given; remove one of them"
+            )))
+        }
+        (Some(u), _) | (None, Some(u)) => u,
+        (None, None) => {
+            return Err(format(
+                "the file does not say the unit of its heights: give it (--height-unit um, or height_unit = \"um\"), or add a header line `# Value units: um`".to_string(),
+            ))
+        }
+    };
+    let mut heights = Array2::from_shape_fn((ny, nx), |(j, i)| rows[j][i] * unit);
+    if let Some(&(line, column, row, col)) = missing.first() {
+        match options.fill {
+            Fill::Refuse => {
+                return Err(at(
+                    line,
+                    column,
+                    format!(
+                        "row {row}, column {col} is missing ({} missing point(s) in all); fill them with fill = \"interpolate\" (--fill interpolate) or repair the file",
+                        missing.len()
+                    ),
+                ))
+            }
+            Fill::Interpolate => interpolate_missing(&mut heights).map_err(format)?,
+        }
+    }
+    HeightMap::new(heights, spacing).map_err(|source| ReadError::Surface {
+        path: path.to_string(),
+        source,
+    })
+}
+
+/// Parses XYZ rows.
+pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<HeightMap, ReadError> {
+    let at = |line: usize, column: usize, message: String| ReadError::At {
+        path: path.to_string(),
+        line,
+        column,
+        message,
+    };
+    let format = |message: String| ReadError::Format {
+        path: path.to_string(),
+        message,
+    };
+    let mut points = Vec::new();
+    let mut values = Vec::new();
+    let mut missing = None;
+    for (index, line) in text.lines().enumerate() {
+        let number = index + 1;
+        let trimmed = line.trim();
+        if trimmed.is_empty() || trimmed.starts_with('#') {
+            continue;
+        }
+        let row: Vec<(usize, &str)> = fields(line).collect();
+        if row.len() != 3 {
+            return Err(at(
+                number,
+                1,
+                format!("expected three values x, y, z, got {}", row.len()),
+            ));
+        }
+        let mut xyz = [0.0f64; 3];
+        for (k, (column, field)) in row.iter().enumerate() {
+            xyz[k] = field.parse().map_err(|_| {
+                let shown: String = field.chars().take(40).collect();
+                at(number, *column, format!("`{shown}` is not a number"))
+            })?;
+            if !xyz[k].is_finite() && (k < 2 || missing.is_none()) {
+                if k < 2 {
+                    return Err(at(number, *column, "x and y must be finite".to_string()));
+                }
+                missing = Some((number, *column));
+            }
+        }
+        points.push([xyz[0], xyz[1]]);
+        values.push(xyz[2]);
+    }
+    let grid = crate::grid_table::assemble(&points).map_err(|m| {
+        format(m.replace(
+            "give the tractions at the centres of a regular grid",
+            "give the heights on a regular grid",
+        ))
+    })?;
+    let length = options.xyz_length_unit_m.unwrap_or(1.0);
+    let unit = options.height_unit_m.unwrap_or(1.0);
+    let [ny, nx] = grid.shape;
+    let mut heights = Array2::zeros((ny, nx));
+    for (value, [j, i]) in values.iter().zip(&grid.nodes) {
+        heights[[*j, *i]] = value * unit;
+    }
+    if let Some((line, column)) = missing {
+        match options.fill {
+            Fill::Refuse => {
+                return Err(at(
+                    line,
+                    column,
+                    "the height is missing; fill missing points with fill = \"interpolate\" (--fill interpolate) or repair the file".to_string(),
+                ))
+            }
+            Fill::Interpolate => interpolate_missing(&mut heights).map_err(format)?,
+        }
+    }
+    HeightMap::new(heights, [grid.step[0] * length, grid.step[1] * length]).map_err(|source| {
+        ReadError::Surface {
+            path: path.to_string(),
+            source,
+        }
+    })
+}
+
+/// Fills non-finite heights by harmonic interpolation from the finite ones (module doc).
+pub fn interpolate_missing(heights: &mut Array2<f64>) -> Result<(), String> {
+    let (ny, nx) = heights.dim();
+    let missing: Vec<(usize, usize)> = heights
+        .indexed_iter()
+        .filter(|(_, v)| !v.is_finite())
+        .map(|(at, _)| at)
+        .collect();
+    if missing.len() == heights.len() {
+        return Err("every height is missing: there is nothing to interpolate from".to_string());
+    }
+    let (low, high) = heights
+        .iter()
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        });
+    let mean = heights.iter().filter(|v| v.is_finite()).sum::<f64>()
+        / (heights.len() - missing.len()) as f64;
+    for &at in &missing {
+        heights[at] = mean;
+    }
+    let tolerance = 1e-9 * (high - low).max(f64::MIN_POSITIVE);
+    for _ in 0..100_000 {
+        let mut change = 0.0f64;
+        for &(j, i) in &missing {
+            let mut sum = 0.0;
+            let mut count = 0;
+            for (dj, di) in [(-1i64, 0i64), (1, 0), (0, -1), (0, 1)] {
+                let (y, x) = (j as i64 + dj, i as i64 + di);
+                if y >= 0 && x >= 0 && (y as usize) < ny && (x as usize) < nx {
+                    sum += heights[[y as usize, x as usize]];
+                    count += 1;
+                }
+            }
+            let value = sum / count as f64;
+            change = change.max((value - heights[[j, i]]).abs());
+            heights[[j, i]] = value;
+        }
+        if change <= tolerance {
+            return Ok(());
+        }
+    }
+    Err("the interpolation of the missing points did not settle".to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ascii(text: &str, options: ReadOptions) -> Result<HeightMap, ReadError> {
+        parse_ascii(text, "s.asc", &options)
+    }
+
+    #[test]
+    fn reads_a_gwyddion_matrix_with_its_header() {
+        let text =
+            "# Channel: Height\n# Width: 3 um\n# Height: 1 um\n# Value units: nm\n1 2\t3\n4,5,6\n";
+        let map = ascii(text, ReadOptions::default()).expect("valid");
+        assert_eq!(map.shape(), [2, 3]);
+        let [dx, dy] = map.spacing_m();
+        assert!((dx - 1e-6).abs() < 1e-18 && (dy - 0.5e-6).abs() < 1e-18);
+        assert!((map.heights_m()[[1, 2]] - 6e-9).abs() < 1e-21);
+        // Without a header, from the options; the header and options must agree.
+        let bare = "1 2\n3 4\n";
+        let options = ReadOptions {
+            spacing_m: Some([2e-6, 2e-6]),
+            height_unit_m: Some(1e-6),
+            ..ReadOptions::default()
+        };
+        let map = ascii(bare, options).expect("valid");
+        assert_eq!(map.heights_m()[[1, 0]], 3e-6);
+        let error = ascii(text, options).expect_err("conflict");
+        assert!(error.to_string().contains("remove one"), "{error}");
+    }
+
+    #[test]
+    fn bad_matrices_name_the_line_and_column() {
+        let options = ReadOptions {
+            spacing_m: Some([1e-6, 1e-6]),
+            height_unit_m: Some(1e-6),
+            ..ReadOptions::default()
+        };
+        let cases = [
+            ("1 2 3\n4 5\n", "line 2, column 1", "same number"),
+            ("1 2\n3 x4\n", "line 2, column 3", "`x4` is not a number"),
+            (
+                "1 2\n3 NaN\n",
+                "line 2, column 3",
+                "row 1, column 1 is missing",
+            ),
+            ("1 2 3\n", "", "at least 2 rows"),
+            (
+                "# Width: 10 furlongs\n1 2\n3 4\n",
+                "line 1",
+                "cannot read the width",
+            ),
+        ];
+        for (text, place, fragment) in cases {
+            let error = ascii(text, options).expect_err(text).to_string();
+            assert!(
+                error.contains(place) && error.contains(fragment),
+                "{text:?}: {error}"
+            );
+        }
+        let no_spacing = ReadOptions {
+            height_unit_m: Some(1e-6),
+            ..ReadOptions::default()
+        };
+        assert!(ascii("1 2\n3 4\n", no_spacing)
+            .expect_err("spacing")
+            .to_string()
+            .contains("--spacing"));
+        let zero = ReadOptions {
+            spacing_m: Some([0.0, 1e-6]),
+            ..options
+        };
+        assert!(ascii("1 2\n3 4\n", zero)
+            .expect_err("zero")
+            .to_string()
+            .contains("spacing must be positive"));
+    }
+
+    #[test]
+    fn missing_points_are_interpolated_on_request() {
+        let options = ReadOptions {
+            spacing_m: Some([1e-6, 1e-6]),
+            height_unit_m: Some(1.0),
+            fill: Fill::Interpolate,
+            ..ReadOptions::default()
+        };
+        // A plane z = x + 2y with two holes: harmonic interpolation restores it exactly.
+        let text = "0 1 2 3\n2 nan 4 5\n4 5 NaN 7\n6 7 8 9\n";
+        let map = ascii(text, options).expect("filled");
+        assert!((map.heights_m()[[1, 1]] - 3.0).abs() < 1e-7);
+        assert!((map.heights_m()[[2, 2]] - 6.0).abs() < 1e-7);
+        let all = ReadOptions { ..options };
+        assert!(ascii("nan nan\nnan nan\n", all).is_err());
+    }
+
+    #[test]
+    fn xyz_rows_in_any_order() {
+        let text = "# x y z\n1e-6 0 3\n0 0 1\n0 2e-6 5\n1e-6 2e-6 7\n";
+        let options = ReadOptions {
+            height_unit_m: Some(1e-9),
+            ..ReadOptions::default()
+        };
+        let map = parse_xyz(text, "s.xyz", &options).expect("valid");
+        assert_eq!(map.shape(), [2, 2]);
+        assert_eq!(map.spacing_m(), [1e-6, 2e-6]);
+        assert!((map.heights_m()[[1, 1]] - 7e-9).abs() < 1e-20);
+        let error = parse_xyz("0 0 1\n1 0 2\n0 1 3\n0 1 4\n", "s.xyz", &options)
+            .expect_err("twice")
+            .to_string();
+        assert!(
+            error.contains("appears twice") || error.contains("every node"),
+            "{error}"
+        );
+        let error = parse_xyz("0 0 1\n1 0\n", "s.xyz", &options)
+            .expect_err("short")
+            .to_string();
+        assert!(
+            error.contains("line 2") && error.contains("three values"),
+            "{error}"
+        );
+    }
+}

@@ -11,3 +11,4 @@ mod point_contact;
 mod record;
 mod rough_contact;
 mod scenes;
+mod surfaces;

@@ -6,7 +6,9 @@
 //! at `(i dx, j dy)`.
 
 pub mod generate;
+pub mod gw;
 pub mod read;
+pub mod stats;
 pub mod x3p;
 
 use ndarray::Array2;

@@ -90,11 +90,19 @@ pub fn maximum(solution: &Solution, quantity: Quantity, surface_only: bool) -> E
 /// Where a maximum lies off `y = 0` and the mirrored cell centre holds the same value (to
 /// 1e-12 of it), the one at `y > 0` is reported, marked [`Extreme::mirrored_in_y`].
 pub fn grid_maxima(tractions: &PointTractions) -> Result<StressMaxima, DcFftError> {
+    grid_maxima_to_depth(tractions, f64::INFINITY)
+}
+
+/// [`grid_maxima`] searched no deeper than `max_depth` (units of a) either.
+pub fn grid_maxima_to_depth(
+    tractions: &PointTractions,
+    max_depth: f64,
+) -> Result<StressMaxima, DcFftError> {
     let grid = tractions.grid();
     let [ny, nx] = grid.shape();
     let cell = grid.cell();
     let dz = cell[0].min(cell[1]);
-    let depth = 0.5 * (nx as f64 * cell[0]).min(ny as f64 * cell[1]);
+    let depth = (0.5 * (nx as f64 * cell[0]).min(ny as f64 * cell[1])).min(max_depth.max(dz));
     let layers = (depth / dz).floor() as usize + 1;
     let depths: Vec<f64> = (0..layers).map(|k| k as f64 * dz).collect();
     // Per layer: (von Mises, max shear) maxima as (value, row, column).

@@ -66,6 +66,21 @@ pub enum Command {
     },
     /// Print stresses at points read as CSV rows x,y,z (units of a) as CSV (units of p0).
     Probe(ProbeArgs),
+    /// Solve a rough contact scene (kind = "rough") and report it: real area, spots, pressures,
+    /// approach, gap, the subsurface maxima.
+    Contact {
+        scene: PathBuf,
+        /// Print one JSON object (SI units) instead of the table.
+        #[arg(long)]
+        json: bool,
+        /// Also write the pressure field (Pa, float64, [rows, columns] of the height matrix,
+        /// row = y) as a NumPy .npy file.
+        #[arg(long, value_name = "FILE.npy")]
+        pressure: Option<PathBuf>,
+    },
+    /// Characterise a rough surface: a height file (ASCII matrix, XYZ, x3p) or a surface/rough
+    /// scene. Prints ISO 25178 parameters, spectra, summits and the Greenwood-Williamson values.
+    Surface(SurfaceArgs),
 }
 
 /// Options of `probe`.
@@ -100,6 +115,41 @@ pub struct ProbeArgs {
     /// CSV file of points, or - for standard input.
     #[arg(long, value_name = "FILE|-")]
     pub points: PathBuf,
+}
+
+/// Options of `surface`.
+#[derive(Debug, clap::Args)]
+pub struct SurfaceArgs {
+    /// A height file (.asc/.txt/.csv matrix, .xyz, .x3p) or a scene (.toml).
+    pub input: PathBuf,
+    /// Sample spacing of a file that does not say it, e.g. 1um, or 1um,2um for dx,dy.
+    #[arg(long)]
+    pub spacing: Option<String>,
+    /// Unit of the heights of a file that does not say it: m, mm, um, nm.
+    #[arg(long)]
+    pub height_unit: Option<String>,
+    /// Unit of x and y of an XYZ file (default m).
+    #[arg(long)]
+    pub length_unit: Option<String>,
+    /// Missing points: refuse (default) or interpolate.
+    #[arg(long, default_value = "refuse")]
+    pub fill: String,
+    /// Form removed besides the mean plane: plane (none more) or quadratic.
+    #[arg(long, default_value = "plane")]
+    pub form: String,
+    /// Wavelength band of the Hurst fit, e.g. 4um,100um.
+    #[arg(long)]
+    pub band: Option<String>,
+    /// Combined modulus E* for the Greenwood-Williamson load and the homework's Hertz
+    /// pressure, e.g. 115GPa (a scene takes it from its bodies).
+    #[arg(long)]
+    pub e_star: Option<String>,
+    /// Hardness for the plasticity index, e.g. 3GPa or 300HV.
+    #[arg(long)]
+    pub hardness: Option<String>,
+    /// Print one JSON object (SI units) instead of the table.
+    #[arg(long)]
+    pub json: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

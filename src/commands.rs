@@ -57,13 +57,33 @@ pub fn run(command: Command) -> Result<()> {
             }
             record_all(&scenes, &out_dir, output.as_deref())
         }
-        Command::Hertz { scene } => {
-            let scene = Scene::load(&scene)?;
-            print!("{}", report::hertz(&scene));
-            Ok(())
+        Command::Hertz { scene: scene_path } => {
+            let scene = Scene::load(&scene_path)?;
+            match scene.contact.kind {
+                ContactKind::Rough => crate::surface_commands::contact(&scene_path, false, None),
+                ContactKind::Surface => crate::surface_commands::surface_of_scene(&scene_path),
+                _ => print_out(&report::hertz(&scene)),
+            }
         }
         Command::Check { scenes } => check(&scenes),
         Command::Probe(args) => probe_command(&args),
+        Command::Contact {
+            scene,
+            json,
+            pressure,
+        } => crate::surface_commands::contact(&scene, json, pressure.as_deref()),
+        Command::Surface(args) => crate::surface_commands::surface(&args),
+    }
+}
+
+/// Writes `text` to standard output. A closed pipe (`| head`) ends quietly; any other failure
+/// (a full disk) is an error naming standard output.
+pub(crate) fn print_out(text: &str) -> Result<()> {
+    let mut out = std::io::stdout().lock();
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        Err(e) => Err(e).context("cannot write to standard output"),
     }
 }
 
@@ -86,7 +106,7 @@ fn scene_paths(named: Vec<PathBuf>, scenes_dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(paths)
 }
 
-fn progress_bar(total: u64) -> ProgressBar {
+pub(crate) fn progress_bar(total: u64) -> ProgressBar {
     let quiet = !std::io::stderr().is_terminal() || std::env::var_os("CI").is_some();
     if quiet {
         return ProgressBar::hidden();
@@ -318,6 +338,26 @@ fn render_scene(
     bar: &ProgressBar,
 ) -> Result<image::RgbImage> {
     let on_row = || bar.inc(1);
+    let sheet = match scene.contact.kind {
+        ContactKind::Rough => Some(stressfield::rough_figure::rough_sheet(scene, &on_row)?.0),
+        ContactKind::Surface => Some(stressfield::rough_figure::surface_sheet(scene)?),
+        _ => None,
+    };
+    if let Some(sheet) = sheet {
+        let image = render::chart::sheet_png(&sheet)?;
+        write_atomic(
+            &out_dir.join(format!("{}.png", scene.name)),
+            &render::encode_png(&image)?,
+        )?;
+        if svg || scene.figure.svg {
+            let text = render::chart::sheet_svg(&sheet)?;
+            write_atomic(
+                &out_dir.join(format!("{}.svg", scene.name)),
+                text.as_bytes(),
+            )?;
+        }
+        return Ok(image);
+    }
     let figure = figure::build(scene, &on_row)?;
     let image = render::render_png(&figure)?;
     let png = render::encode_png(&image)?;
@@ -371,13 +411,11 @@ fn check(paths: &[PathBuf]) -> Result<()> {
     let mut failed = 0;
     for path in paths {
         match Scene::load(path) {
-            Ok(scene) => println!(
-                "ok {} ({} panel(s), {} x {} points each)",
+            Ok(scene) => print_out(&format!(
+                "ok {} ({})\n",
                 path.display(),
-                scene.panels.len(),
-                study::plane(&scene, &scene.panels[0]).u.count,
-                study::plane(&scene, &scene.panels[0]).v.count
-            ),
+                check_summary(&scene)
+            ))?,
             Err(e) => {
                 eprintln!("error: {e}");
                 failed += 1;
@@ -388,6 +426,31 @@ fn check(paths: &[PathBuf]) -> Result<()> {
         bail!("{failed} of {} scenes are invalid", paths.len());
     }
     Ok(())
+}
+
+/// What `check` says of a valid scene: its panels and grid, or its surface.
+fn check_summary(scene: &Scene) -> String {
+    match (&scene.surface, scene.panels.first()) {
+        (Some(surface), _) => {
+            let [ny, nx] = surface.heights.shape();
+            let kind = if scene.contact.kind == ContactKind::Rough {
+                "rough contact"
+            } else {
+                "surface"
+            };
+            format!("{kind}, {nx} x {ny} samples")
+        }
+        (None, Some(panel)) => {
+            let plane = study::plane(scene, panel);
+            format!(
+                "{} panel(s), {} x {} points each",
+                scene.panels.len(),
+                plane.u.count,
+                plane.v.count
+            )
+        }
+        (None, None) => "no panels".into(),
+    }
 }
 
 fn probe_command(args: &ProbeArgs) -> Result<()> {
@@ -418,6 +481,11 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
             ContactKind::Point | ContactKind::Elliptical | ContactKind::Tractions => {
                 ContactArg::Point
             }
+            ContactKind::Rough | ContactKind::Surface => bail!(
+                "probe takes Hertz and traction scenes; {} is a rough or surface scene\nhint: `stressfield contact {}` solves it and writes its pressure; `render` draws the stresses under it",
+                path.display(),
+                path.display()
+            ),
         };
         if let Some(given) = contact.filter(|c| *c != kind) {
             bail!(

@@ -51,8 +51,8 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         let aspect = scene.contact.aspect;
         let chord = |offset: f64, along_y: bool| match scene.contact.kind {
             ContactKind::Line => 1.0,
-            // Tractions from a file: no contact outline is known.
-            ContactKind::Tractions => 0.0,
+            // Tractions from a file, solved rough contact: no single contact outline.
+            ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => 0.0,
             // The ellipse x² + (y/aspect)² = 1 (a circle for a sphere) cut at y or at x.
             ContactKind::Point | ContactKind::Elliptical if along_y => {
                 aspect * (1.0 - offset * offset).max(0.0).sqrt()
@@ -217,7 +217,9 @@ fn contact_outline(kind: ContactKind, aspect: f64) -> Vec<(f64, f64)> {
             })
             .collect(),
         // A line contact has only xz sections; a traction file has no known outline.
-        ContactKind::Line | ContactKind::Tractions => Vec::new(),
+        ContactKind::Line | ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => {
+            Vec::new()
+        }
     }
 }
 
@@ -271,6 +273,8 @@ fn title(scene: &Scene) -> String {
         ContactKind::Point => title.push_str(" — Hertz point contact (sphere)"),
         ContactKind::Elliptical => title.push_str(" — elliptical Hertz contact"),
         ContactKind::Tractions => title.push_str(" — surface tractions from a file"),
+        ContactKind::Rough => title.push_str(" — rough contact"),
+        ContactKind::Surface => title.push_str(" — rough surface"),
     }
     title
 }
@@ -290,6 +294,9 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
         (Method::Numerical, ContactKind::Line) => parts.push(format!("numerical, {cells} strips")),
         (Method::Numerical, ContactKind::Point | ContactKind::Elliptical) => {
             parts.push(format!("numerical, {cells}² cells"))
+        }
+        (Method::Numerical, ContactKind::Rough | ContactKind::Surface) => {
+            parts.push("numerical, on the surface's grid".into())
         }
         (Method::Numerical, ContactKind::Tractions) => {
             if let Some(grid) = &scene.tractions {

@@ -98,6 +98,8 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             "elliptical (two principal radii per body; semi-axes a along x, b along y)"
         }
         ContactKind::Line => "line (two cylinders, plane strain)",
+        ContactKind::Rough => "rough (a rough surface pressed on a flat, pressure solved)",
+        ContactKind::Surface => "a rough surface (no contact solved)",
         ContactKind::Tractions => "surface tractions read from a CSV grid ([tractions])",
     };
     if contact.kind == ContactKind::Tractions {

@@ -144,6 +144,8 @@ pub struct RoughSolution {
     pub contact_fraction: f64,
     /// Connected contact spots (4-connected cells; across the period's edges when periodic).
     pub spots: usize,
+    /// Cells of the largest spot.
+    pub largest_spot_cells: usize,
     /// Cells at the hardness cap.
     pub plastic_cells: usize,
     /// Mean of the gap over the grid, m.
@@ -393,10 +395,12 @@ pub fn solve(
     }
     let load_n = pressure.sum() * cell_area;
     let plastic_cells = pressure.iter().filter(|&&p| p >= hardness).count();
+    let sizes = spot_sizes(&pressure, problem.periodicity == Periodicity::Periodic);
     Ok(RoughSolution {
         max_pressure_pa: pressure.iter().fold(0.0f64, |m, &p| m.max(p)),
         contact_fraction: loaded as f64 / cells,
-        spots: count_spots(&pressure, problem.periodicity == Periodicity::Periodic),
+        spots: sizes.len(),
+        largest_spot_cells: sizes.iter().copied().max().unwrap_or(0),
         mean_gap_m: gap.sum() / cells,
         mean_pressure_pa: load_n / (cells * cell_area),
         load_n,
@@ -771,18 +775,24 @@ fn edge_contact(pressure: &Array2<f64>) -> Option<(usize, usize)> {
 
 /// Connected groups of loaded cells (4-neighbours; wrapping around when `periodic`).
 pub fn count_spots(pressure: &Array2<f64>, periodic: bool) -> usize {
+    spot_sizes(pressure, periodic).len()
+}
+
+/// The number of cells of each contact spot (4-connected; wrapping when `periodic`).
+pub fn spot_sizes(pressure: &Array2<f64>, periodic: bool) -> Vec<usize> {
     let (ny, nx) = pressure.dim();
     let mut seen = Array2::from_elem((ny, nx), false);
     let mut stack = Vec::new();
-    let mut spots = 0;
+    let mut sizes = Vec::new();
     for ((j, i), &p) in pressure.indexed_iter() {
         if p <= 0.0 || seen[[j, i]] {
             continue;
         }
-        spots += 1;
+        let mut size = 0;
         seen[[j, i]] = true;
         stack.push((j, i));
         while let Some((b, a)) = stack.pop() {
+            size += 1;
             let neighbours = [
                 (b as i64 - 1, a as i64),
                 (b as i64 + 1, a as i64),
@@ -804,8 +814,9 @@ pub fn count_spots(pressure: &Array2<f64>, periodic: bool) -> usize {
                 }
             }
         }
+        sizes.push(size);
     }
-    spots
+    sizes
 }
 
 #[cfg(test)]

@@ -5,6 +5,7 @@
 //! Everything here is in display units: the caller has already converted coordinates (x/a or
 //! mm) and values (multiples of p0, or MPa).
 
+pub mod chart;
 pub(crate) mod colormap;
 mod contour;
 mod draw;
@@ -212,6 +213,28 @@ pub fn render_svg(figure: &Figure) -> Result<String, RenderError> {
         backend.present().map_err(draw_error)?;
     }
     svg::finish(&text, &plan.images, size)
+}
+
+/// Isolines of `values` (`[rows, columns]` over the axes `x` (columns) and `z` (rows)) at
+/// `level`, as polylines in the axes' coordinates (closed ones end where they start).
+pub fn contour_lines(
+    values: ndarray::ArrayView2<'_, f64>,
+    x: &Axis,
+    z: &Axis,
+    level: f64,
+) -> Vec<Vec<(f64, f64)>> {
+    contour::isolines_on(values, x, z, level)
+        .into_iter()
+        .map(|line| {
+            let mut points: Vec<(f64, f64)> = line.points.iter().map(|p| (p[0], p[1])).collect();
+            if line.closed {
+                if let Some(&first) = points.first() {
+                    points.push(first);
+                }
+            }
+            points
+        })
+        .collect()
 }
 
 /// Encodes an image as PNG bytes, in memory.

@@ -20,7 +20,7 @@ use raw::RawScene;
 
 pub use spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
-    Scale, SectionKind, StressUnit, YieldStrength,
+    RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
 };
 pub use sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
 
@@ -74,6 +74,8 @@ pub struct Scene {
     pub volume: Option<VolumeSpec>,
     /// The x position of the contact's centre on the body (units of a; a moving load's step).
     pub load_centre_over_a: f64,
+    /// The heights of a rough or surface scene.
+    pub surface: Option<SurfaceSpec>,
 }
 
 impl Scene {

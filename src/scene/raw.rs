@@ -16,6 +16,65 @@ pub struct RawScene {
     pub panels: Vec<RawPanel>,
     pub sweep: Option<RawSweep>,
     pub volume: Option<RawVolume>,
+    /// The roughness of body 1 (rough and surface scenes).
+    pub surface: Option<RawSurface>,
+    /// The roughness of body 2, added to body 1's (rough scenes).
+    pub counter_surface: Option<RawSurface>,
+}
+
+/// `[surface]`: a height map read from a file or generated.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSurface {
+    /// ASCII matrix, XYZ or x3p file, relative to the scene file.
+    pub file: Option<String>,
+    /// Sample spacing: one length, or [dx, dy].
+    pub spacing: Option<TextOrList>,
+    /// Unit of the heights (ASCII, XYZ): "m", "mm", "um", "nm".
+    pub height_unit: Option<String>,
+    /// Unit of x and y of an XYZ file.
+    pub length_unit: Option<String>,
+    /// Missing points: "refuse" (default) or "interpolate".
+    pub fill: Option<String>,
+    /// Form removed before the statistics: "plane" (default) or "quadratic".
+    pub form: Option<String>,
+    /// Wavelength band of the Hurst fit: ["4 um", "100 um"].
+    pub band: Option<Vec<String>>,
+    pub generate: Option<RawGenerate>,
+}
+
+/// `[surface.generate]`: a Gaussian random surface.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawGenerate {
+    /// Samples along x and y: one count, or [nx, ny].
+    pub samples: Option<CountOrList>,
+    pub spacing: Option<TextOrList>,
+    pub hurst: Option<f64>,
+    pub rolloff: Option<String>,
+    pub cutoff: Option<String>,
+    pub correlation_length: Option<String>,
+    pub rms_height: Option<String>,
+    pub rms_slope: Option<f64>,
+    pub seed: Option<i64>,
+    pub sphere_radius: Option<String>,
+    pub cylinder_radius: Option<String>,
+}
+
+/// One text, or a list of texts.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum TextOrList {
+    Text(String),
+    List(Vec<String>),
+}
+
+/// One count, or a list of counts.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum CountOrList {
+    Count(i64),
+    List(Vec<i64>),
 }
 
 /// `[sweep]`: one time point of a recording per value.
@@ -66,6 +125,11 @@ pub struct RawContact {
     pub aspect: Option<f64>,
     /// Partial slip of a sphere: the tangential force as a fraction of mu P.
     pub tangential: Option<f64>,
+    /// Rough contact: the load over the nominal area, or the rigid approach, instead of load.
+    pub mean_pressure: Option<String>,
+    pub approach: Option<String>,
+    /// Rough contact: the surface is periodic.
+    pub periodic: Option<bool>,
 }
 
 #[derive(Debug, Default, Deserialize)]
@@ -127,6 +191,9 @@ pub struct RawNumerical {
     pub cells: Option<i64>,
     /// Half-size of the traction grid in semi-axes (point and elliptical contacts).
     pub extent: Option<f64>,
+    /// Rough contact: relative tolerance and iteration cap of the solver.
+    pub tolerance: Option<f64>,
+    pub max_iterations: Option<i64>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -1,11 +1,16 @@
 //! The typed scene: plain data in SI units, as validated from `scenes/*.toml` (the contact,
 //! the figure and its panels, the numerical grid, display units).
 
+use std::sync::Arc;
+
 use crate::contact::elliptic::EllipticalContact;
 use crate::contact::gear::SpurGearPair;
+use crate::contact::rough::Control;
 use crate::contact::{Body, LineContact, PointContact};
 use crate::render::{ColorMap, Levels, Mark};
 use crate::stress::Quantity;
+use crate::surface::stats::FormRemoval;
+use crate::surface::HeightMap;
 
 /// Contact geometry kind.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -19,6 +24,11 @@ pub enum ContactKind {
     Elliptical,
     /// Surface tractions read from a CSV grid (`[tractions]`). Numerical method only.
     Tractions,
+    /// A rough surface (`[surface]`) pressed on a flat or a second rough surface: the pressure
+    /// is solved for (conjugate gradients), then the stresses under it drawn.
+    Rough,
+    /// A rough surface characterised: topography, statistics, spectra, Greenwood–Williamson.
+    Surface,
 }
 
 /// The Hertz solution of a dimensional contact.
@@ -99,6 +109,41 @@ pub struct Contact {
     pub aspect: f64,
     /// Cattaneo-Mindlin partial slip of a sphere: the tangential force over mu P, in (0, 1].
     pub tangential: Option<f64>,
+    /// Rough and surface scenes: control, materials and solver settings.
+    pub rough: Option<RoughSpec>,
+}
+
+/// The contact of a rough or surface scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoughSpec {
+    /// Load, mean pressure or approach (rough scenes; `None` for a surface scene).
+    pub control: Option<Control>,
+    pub periodic: bool,
+    /// Combined modulus of the two bodies (a rigid body adds nothing), when bodies are given.
+    pub e_star_pa: Option<f64>,
+    /// Indentation hardness of the rough surface (Pa): the pressure cap, and the plasticity
+    /// index. From `hardness` (HB/HV number times 9.80665 MPa) or `yield_strength` (3 Y).
+    pub hardness_pa: Option<f64>,
+    pub tolerance: f64,
+    pub max_iterations: usize,
+}
+
+/// The height map of a rough or surface scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceSpec {
+    /// The heights acting on the contact: body 1's, plus body 2's when it is rough.
+    pub heights: Arc<HeightMap>,
+    /// Body 1's heights alone.
+    pub body1: Arc<HeightMap>,
+    /// Body 2's, when rough.
+    pub counter: Option<Arc<HeightMap>>,
+    /// Where the heights come from, e.g. "worn.asc" or "generated (self-affine, H = 0.8, seed 1)".
+    pub source: String,
+    /// Generated (periodic by construction): spectra need no window.
+    pub generated: bool,
+    pub form: FormRemoval,
+    /// The Hurst fit's band of wavelengths (m).
+    pub band_m: Option<(f64, f64)>,
 }
 
 impl Contact {
@@ -117,7 +162,10 @@ impl Contact {
         match self.kind {
             ContactKind::Line => true,
             ContactKind::Point => self.tangential.is_none(),
-            ContactKind::Elliptical | ContactKind::Tractions => false,
+            ContactKind::Elliptical
+            | ContactKind::Tractions
+            | ContactKind::Rough
+            | ContactKind::Surface => false,
         }
     }
 }

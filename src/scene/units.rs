@@ -22,6 +22,7 @@ impl Dimension {
                 ("mm", 1e-3),
                 ("um", 1e-6),
                 ("µm", 1e-6),
+                ("nm", 1e-9),
                 ("in", 0.0254),
             ],
             Dimension::Pressure => &[

@@ -9,6 +9,7 @@
 //! if it is drawn on its own grid, to [`plane`].
 
 mod grid;
+pub mod rough;
 
 use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::ContactError;
@@ -75,7 +76,10 @@ pub fn closed_form_solution(contact: &Contact, friction: f64, poisson: f64) -> O
     match contact.kind {
         ContactKind::Line => Some(Solution::LineHertz { friction, poisson }),
         ContactKind::Point => Some(Solution::SphereHertz { friction, poisson }),
-        ContactKind::Elliptical | ContactKind::Tractions => None,
+        ContactKind::Elliptical
+        | ContactKind::Tractions
+        | ContactKind::Rough
+        | ContactKind::Surface => None,
     }
 }
 
@@ -111,6 +115,10 @@ fn centred_solution(scene: &Scene, panel: &PanelSpec) -> Result<Solution, Numeri
             Some(grid) => PointTractions::new(grid.as_ref().clone(), nu)?,
             None => return Err(NumericalError::MissingTractions),
         },
+        // The tractions of a rough contact are solved for (study::rough), once per figure.
+        (ContactKind::Rough | ContactKind::Surface, _) => {
+            return Err(NumericalError::MissingTractions)
+        }
     };
     Ok(Solution::PointNumerical {
         tractions: std::sync::Arc::new(tractions),

@@ -169,14 +169,18 @@ pub fn plasticity_index(
     radius_m: f64,
 ) -> (f64, &'static str) {
     let psi = e_star_pa / hardness_pa * (height_std_m / radius_m).sqrt();
-    let reading = if psi < 0.6 {
+    (psi, plasticity_reading(psi))
+}
+
+/// The reading of a plasticity index (Greenwood & Williamson 1966).
+pub fn plasticity_reading(psi: f64) -> &'static str {
+    if psi < 0.6 {
         "elastic: the asperities deform elastically under any practical load (ψ < 0.6)"
     } else if psi > 1.0 {
         "plastic: most asperity contacts flow plastically even under light loads (ψ > 1)"
     } else {
         "mixed: elastic or plastic depending on the load (0.6 <= ψ <= 1)"
-    };
-    (psi, reading)
+    }
 }
 
 #[cfg(test)]

@@ -750,11 +750,13 @@ fn histogram(z: &Array2<f64>, sq: f64) -> Vec<(f64, f64)> {
 fn highest_asperity(z: &Array2<f64>, spacing: [f64; 2]) -> Asperity {
     let (ny, nx) = z.dim();
     let [dx, dy] = spacing;
+    // Off the border, so that both finite differences exist.
     let (at, height) = z
         .indexed_iter()
-        .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &v)| {
-            if v > best.1 {
-                (at, v)
+        .fold(((0, 0), f64::NEG_INFINITY), |best, ((j, i), &v)| {
+            let interior = j > 0 && i > 0 && j + 1 < ny && i + 1 < nx;
+            if interior && v > best.1 {
+                ((j, i), v)
             } else {
                 best
             }

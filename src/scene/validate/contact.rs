@@ -10,17 +10,39 @@ impl Validator<'_> {
             "point" => ContactKind::Point,
             "elliptical" => ContactKind::Elliptical,
             "tractions" => ContactKind::Tractions,
+            "rough" => return self.rough_contact(raw, ContactKind::Rough),
+            "surface" => return self.rough_contact(raw, ContactKind::Surface),
             other => {
                 return Err(self.error(
                     "contact.kind",
                     format!("unknown contact kind `{other}`"),
-                    Some("use \"line\" (cylinders, plane strain), \"point\" (spheres) or \"elliptical\" (two principal radii per body)"),
+                    Some("use \"line\" (cylinders, plane strain), \"point\" (spheres), \"elliptical\" (two principal radii per body), \"tractions\" (from a file), \"rough\" (a rough surface pressed on a flat) or \"surface\" (a rough surface characterised)"),
                 ))
             }
         };
+        for (key, given) in [
+            ("contact.mean_pressure", raw.mean_pressure.is_some()),
+            ("contact.approach", raw.approach.is_some()),
+            ("contact.periodic", raw.periodic.is_some()),
+        ] {
+            if given {
+                return Err(self.error(
+                    key,
+                    "only a rough contact is pressed by a mean pressure or an approach, or is periodic",
+                    Some("use kind = \"rough\", or give load"),
+                ));
+            }
+        }
         let tangential = match (raw.tangential, kind) {
             (None, _) => None,
-            (Some(_), ContactKind::Line | ContactKind::Elliptical | ContactKind::Tractions) => {
+            (
+                Some(_),
+                ContactKind::Line
+                | ContactKind::Elliptical
+                | ContactKind::Tractions
+                | ContactKind::Rough
+                | ContactKind::Surface,
+            ) => {
                 return Err(self.error(
                     "contact.tangential",
                     "partial slip (Cattaneo-Mindlin) is available for a sphere only",
@@ -77,7 +99,14 @@ impl Validator<'_> {
         let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
         let mut aspect = match (raw.aspect, kind) {
             (None, _) => 1.0,
-            (Some(_), ContactKind::Line | ContactKind::Point | ContactKind::Tractions) => {
+            (
+                Some(_),
+                ContactKind::Line
+                | ContactKind::Point
+                | ContactKind::Tractions
+                | ContactKind::Rough
+                | ContactKind::Surface,
+            ) => {
                 return Err(self.error(
                     "contact.aspect",
                     "the aspect ratio b/a is for an elliptical contact",
@@ -127,6 +156,7 @@ impl Validator<'_> {
                 yield_strength,
                 aspect,
                 tangential,
+                rough: None,
             });
         }
         if raw.aspect.is_some() {
@@ -160,7 +190,11 @@ impl Validator<'_> {
                 Dimension::ForcePerLength,
                 "add e.g. load = \"40 kN/m\" (force per unit length for a line contact)",
             ),
-            ContactKind::Point | ContactKind::Elliptical | ContactKind::Tractions => (
+            ContactKind::Point
+            | ContactKind::Elliptical
+            | ContactKind::Tractions
+            | ContactKind::Rough
+            | ContactKind::Surface => (
                 Dimension::Force,
                 "add e.g. load = \"500 N\" (the total force for a point contact)",
             ),
@@ -207,7 +241,7 @@ impl Validator<'_> {
                 aspect = ellipse.semi_axis_y_m / ellipse.semi_axis_x_m;
                 Hertz::Elliptical(ellipse)
             }
-            ContactKind::Tractions => {
+            ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => {
                 return Err(self.error(
                     "contact.load",
                     "a traction scene has no bodies or load",
@@ -232,6 +266,7 @@ impl Validator<'_> {
             yield_strength,
             aspect,
             tangential,
+            rough: None,
         })
     }
 

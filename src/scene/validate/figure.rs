@@ -64,6 +64,9 @@ impl Validator<'_> {
                     Some("use \"a\", \"mm\", \"um\" or \"m\""),
                 )
             })?,
+            None if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) => {
+                LengthUnit::Micrometre
+            }
             None if dimensional => LengthUnit::Millimetre,
             None => LengthUnit::HalfWidth,
         };
@@ -136,7 +139,13 @@ impl Validator<'_> {
         let a_in_unit = contact.half_width_m() / length_unit.metres(contact.half_width_m());
         let default_horizontal = match (contact.kind, section) {
             (ContactKind::Line, _) => 2.5,
-            (ContactKind::Point | ContactKind::Tractions, _) => 2.0,
+            (
+                ContactKind::Point
+                | ContactKind::Tractions
+                | ContactKind::Rough
+                | ContactKind::Surface,
+                _,
+            ) => 2.0,
             // Twice the semi-axis along the horizontal axis (b = aspect a along y).
             (ContactKind::Elliptical, SectionKind::Yz) => 2.0 * contact.aspect,
             (ContactKind::Elliptical, _) => 2.0,

@@ -5,16 +5,20 @@ mod bodies;
 mod contact;
 mod figure;
 mod numerical;
+mod surface;
 mod sweep;
 mod tractions;
 mod volume;
 
+use std::path::Path;
+
 use super::raw::{
-    self, NumberOrText, RawBody, RawContact, RawFigure, RawScene, RawSweep, RawVolume,
+    self, CountOrList, NumberOrText, RawBody, RawContact, RawFigure, RawGenerate, RawScene,
+    RawSurface, RawSweep, RawVolume, TextOrList,
 };
 use super::spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
-    Scale, SectionKind, StressUnit, YieldStrength,
+    RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
 };
 use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
 use super::traction_csv;
@@ -56,6 +60,21 @@ impl Validator<'_> {
             ));
         }
         let contact = self.contact(&raw.contact)?;
+        if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
+            return self.rough_scene(raw, name, contact);
+        }
+        for (key, given) in [
+            ("surface", raw.surface.is_some()),
+            ("counter_surface", raw.counter_surface.is_some()),
+        ] {
+            if given {
+                return Err(self.error(
+                    key,
+                    "a height map belongs to a rough or surface scene",
+                    Some("use contact.kind = \"rough\" (press it on a flat) or \"surface\" (characterise it)"),
+                ));
+            }
+        }
         let figure = self.figure(&raw.figure, &contact)?;
         let method = self.method("contact.method", raw.contact.method.as_deref())?;
         let numerical = self.numerical(raw.numerical.as_ref(), &contact)?;
@@ -162,6 +181,7 @@ impl Validator<'_> {
             sweep: None,
             volume: None,
             load_centre_over_a: 0.0,
+            surface: None,
         };
         if let Some(sweep) = &raw.sweep {
             scene.sweep = Some(self.sweep(sweep, &scene)?);

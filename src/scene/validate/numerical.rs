@@ -17,7 +17,11 @@ impl Validator<'_> {
                 8..=100_000,
                 "strips across the contact: 400 is accurate to about 1e-4 p0 at z >= 0.1a",
             ),
-            ContactKind::Point | ContactKind::Elliptical | ContactKind::Tractions => (
+            ContactKind::Point
+            | ContactKind::Elliptical
+            | ContactKind::Tractions
+            | ContactKind::Rough
+            | ContactKind::Surface => (
                 255,
                 8..=2048,
                 "cells per side of the traction grid: 255 over ±2a is accurate to about 0.2 % p0",

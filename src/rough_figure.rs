@@ -1,0 +1,626 @@
+//! The figures of surface and rough scenes, as sheets of maps and charts.
+//!
+//! A **surface** scene: the topography (um, the highest asperity marked), the profile along x
+//! through the highest asperity with its finite-difference tip circle, the height histogram
+//! against the Gaussian of the same Sq, the power spectra with the Hurst fit and its band, the
+//! autocorrelation along x and y with the 0.2 threshold, and the Greenwood–Williamson curves.
+//!
+//! A **rough** scene: the topography with the contact spots outlined, the pressure map, the
+//! chosen stress quantity in the xz section through the highest pressure (the pressure and
+//! traction profile along that line above it), the xy section at the depth of the subsurface
+//! maximum, and the real area against load: solved at several loads, beside the GW prediction
+//! and the linear law `A/A0 = κ p / (E* h'rms)` with `κ = sqrt(8/π)` (Persson 2001; h'rms =
+//! Sdq here).
+//!
+//! ## References
+//! - B. N. J. Persson, Theory of rubber friction and contact mechanics, *J. Chem. Phys.* 115
+//!   (2001) 3840 (the linear area-load law and its κ).
+//! - J. A. Greenwood, J. B. P. Williamson (1966), see [`crate::surface::gw`].
+
+use std::f64::consts::PI;
+
+use ndarray::Array2;
+
+use crate::contact::rough::{self, Control, RoughSolution};
+use crate::field::{self, Axis, FieldError, Plane, Section};
+use crate::render::chart::{Cell, Chart, Scale as ChartScale, Series, Sheet, Style, PALETTE};
+use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
+use crate::rough_report::search_depth_m;
+use crate::scene::{ContactKind, Scene};
+use crate::study::rough::{self as rough_study, RoughStudyError, REFERENCE_LENGTH_M};
+use crate::surface::gw::GreenwoodWilliamson;
+use crate::surface::stats::{self, Characterisation, Options, StatsError};
+use crate::surface::HeightMap;
+
+/// What can go wrong building these figures.
+#[derive(Debug, thiserror::Error)]
+pub enum SheetError {
+    #[error(transparent)]
+    Study(#[from] RoughStudyError),
+    #[error(transparent)]
+    Stats(#[from] StatsError),
+    #[error(transparent)]
+    Field(#[from] FieldError),
+    #[error("this scene has no surface")]
+    NoSurface,
+}
+
+const MAP_WIDTH: u32 = 420;
+
+/// The statistics of a scene's surface (body 1's heights), as its options say.
+pub fn characterise(scene: &Scene) -> Result<Characterisation, SheetError> {
+    let surface = scene.surface.as_ref().ok_or(SheetError::NoSurface)?;
+    Ok(stats::characterise(
+        &surface.body1,
+        &Options {
+            form: surface.form,
+            band_m: surface.band_m,
+            window: !surface.generated,
+        },
+    )?)
+}
+
+/// A map of `values` (`[ny, nx]`, display units) over the surface's plane in um.
+fn xy_map(
+    title: &str,
+    subtitle: &str,
+    map: &HeightMap,
+    values: Array2<f64>,
+    value_label: &str,
+    colormap: ColorMap,
+    outlines: Vec<Vec<(f64, f64)>>,
+) -> Figure {
+    let [ny, nx] = map.shape();
+    let [dx, dy] = map.spacing_m();
+    let x = Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx);
+    let z = Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny);
+    let finite = values.iter().filter(|v| v.is_finite());
+    let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+        (a.min(v), b.max(v))
+    });
+    Figure {
+        title: title.into(),
+        panels: vec![Panel {
+            subtitle: subtitle.into(),
+            x,
+            z,
+            values,
+            traction: Vec::new(),
+            half_width: 0.0,
+            outlines,
+            scale: Some(PanelScale {
+                value_label: value_label.into(),
+                colormap,
+                levels: Levels::Count(0),
+                range: Some((lo, hi)),
+            }),
+        }],
+        value_label: value_label.into(),
+        x_label: "x (µm)".into(),
+        z_label: "y (µm)".into(),
+        vertical_is_depth: false,
+        traction_label: String::new(),
+        colormap,
+        levels: Levels::Count(0),
+        mark: Mark::Max,
+        panel_width_px: MAP_WIDTH,
+    }
+}
+
+/// The surface scene's sheet.
+pub fn surface_sheet(scene: &Scene) -> Result<Sheet, SheetError> {
+    let surface = scene.surface.as_ref().ok_or(SheetError::NoSurface)?;
+    let c = characterise(scene)?;
+    let (levelled, _) = stats::level(&surface.body1, c.options.form);
+    // The highest asperity circled (the homework's; border samples are left out).
+    let [row, column] = c.asperity.at;
+    let (cx, cy) = (
+        (column as f64 + 0.5) * c.spacing_m[0] * 1e6,
+        (row as f64 + 0.5) * c.spacing_m[1] * 1e6,
+    );
+    let ring = 3.0 * c.spacing_m[0].max(c.spacing_m[1]) * 1e6;
+    let circle = (0..=48)
+        .map(|k| {
+            let t = 2.0 * PI * k as f64 / 48.0;
+            (cx + ring * t.cos(), cy + ring * t.sin())
+        })
+        .collect();
+    let mut topography = xy_map(
+        "Topography",
+        &format!(
+            "{}; {}; circle: highest asperity",
+            surface.source,
+            c.options.form.describe()
+        ),
+        &surface.body1,
+        levelled.mapv(|h| h * 1e6),
+        "height (µm)",
+        ColorMap::Viridis,
+        vec![circle],
+    );
+    topography.mark = Mark::None;
+    let um = 1e6;
+    // Profile through the highest asperity, with the tip circle of radius R (drawn exactly,
+    // in the exaggerated vertical scale of the chart).
+    let mut profile = Chart::new(
+        &format!(
+            "Profile along x through the highest asperity (row {})",
+            c.asperity.at[0]
+        ),
+        "x (µm)",
+        "height (µm)",
+    );
+    profile.series.push(Series {
+        label: "profile".into(),
+        points: c
+            .asperity
+            .profile_x
+            .iter()
+            .map(|&(x, z)| (x * um, z * um))
+            .collect(),
+        style: Style::Line,
+        colour: PALETTE[0],
+    });
+    if let Some(radius) = c.asperity.radius_x_m {
+        let x0 = c.asperity.at[1] as f64 * c.spacing_m[0];
+        let z0 = c.asperity.height_m - radius;
+        let reach = (radius * 0.999).min(12.0 * c.spacing_m[0]);
+        let circle = (0..=80)
+            .map(|k| {
+                let x = -reach + 2.0 * reach * k as f64 / 80.0;
+                ((x0 + x) * um, (z0 + (radius * radius - x * x).sqrt()) * um)
+            })
+            .collect();
+        profile.series.push(Series {
+            label: format!("tip circle R = {:.1} µm", radius * um),
+            points: circle,
+            style: Style::Dashed,
+            colour: PALETTE[1],
+        });
+    }
+    let mut histogram = Chart::new(
+        "Height distribution",
+        "height (µm)",
+        "probability density (1/µm)",
+    );
+    histogram.series.push(Series {
+        label: "measured".into(),
+        points: c.histogram.iter().map(|&(h, d)| (h * um, d / um)).collect(),
+        style: Style::Bars,
+        colour: PALETTE[0],
+    });
+    let sq = c.height.sq;
+    histogram.series.push(Series {
+        label: format!("Gaussian, Sq = {:.3} µm", sq * um),
+        points: (0..=120)
+            .map(|k| {
+                let h = -4.0 * sq + 8.0 * sq * k as f64 / 120.0;
+                (
+                    h * um,
+                    (-0.5 * (h / sq).powi(2)).exp() / (sq * (2.0 * PI).sqrt()) / um,
+                )
+            })
+            .collect(),
+        style: Style::Line,
+        colour: PALETTE[1],
+    });
+    let mut psd = Chart::new(
+        "Power spectral density",
+        "wavenumber q (rad/µm)",
+        "C (µm⁴), C1D (µm³)",
+    );
+    psd.x_scale = ChartScale::Log;
+    psd.y_scale = ChartScale::Log;
+    psd.series.push(Series {
+        label: "radially averaged 2-D".into(),
+        points: c
+            .spectra
+            .radial
+            .iter()
+            .map(|&(q, v)| (q / um, v * um.powi(4)))
+            .collect(),
+        style: Style::Markers,
+        colour: PALETTE[0],
+    });
+    psd.series.push(Series {
+        label: "1-D along x".into(),
+        points: c
+            .spectra
+            .profile
+            .iter()
+            .map(|&(q, v)| (q / um, v * um.powi(3)))
+            .collect(),
+        style: Style::Line,
+        colour: PALETTE[2],
+    });
+    let (q0, q1) = c.spectra.band_q;
+    if let Some(hurst) = c.spectra.hurst {
+        let line = |q: f64| 10f64.powf(c.spectra.fit_intercept + c.spectra.fit_slope * q.log10());
+        psd.series.push(Series {
+            label: format!("fit C ∝ q^(−2(1+H)), H = {hurst:.3}"),
+            points: vec![
+                (q0 / um, line(q0) * um.powi(4)),
+                (q1 / um, line(q1) * um.powi(4)),
+            ],
+            style: Style::Dashed,
+            colour: PALETTE[1],
+        });
+    }
+    psd.x_band = Some((q0 / um, q1 / um));
+    let mut acf = Chart::new("Autocorrelation", "lag (µm)", "ACF");
+    acf.series.push(Series {
+        label: "along x".into(),
+        points: c.acf_x.iter().map(|&(l, v)| (l * um, v)).collect(),
+        style: Style::Line,
+        colour: PALETTE[0],
+    });
+    acf.series.push(Series {
+        label: "along y".into(),
+        points: c.acf_y.iter().map(|&(l, v)| (l * um, v)).collect(),
+        style: Style::Dashed,
+        colour: PALETTE[2],
+    });
+    acf.hlines.push((
+        0.2,
+        format!(
+            "0.2: Sal = {}",
+            c.spatial
+                .sal_m
+                .map_or("n/a".into(), |s| format!("{:.2} µm", s * um))
+        ),
+    ));
+    let mut rows = vec![
+        vec![Cell::Map(topography), Cell::Chart(profile)],
+        vec![Cell::Chart(histogram), Cell::Chart(psd), Cell::Chart(acf)],
+    ];
+    if let Some(e_star) = scene.contact.rough.and_then(|r| r.e_star_pa) {
+        let gw = gw_model(&c, e_star);
+        let curves = gw.curves(60);
+        let mut separation = Chart::new(
+            "Greenwood–Williamson model",
+            "separation d / σs",
+            "A/A0, n/N, p/E*",
+        );
+        separation.y_scale = ChartScale::Log;
+        let s = gw.height_std_m;
+        let x = |d: f64| d / s;
+        separation.series.push(Series {
+            label: "real area A/A0".into(),
+            points: curves
+                .iter()
+                .map(|p| (x(p.separation_m), p.area_fraction))
+                .collect(),
+            style: Style::Line,
+            colour: PALETTE[0],
+        });
+        separation.series.push(Series {
+            label: "contacts n/N".into(),
+            points: curves
+                .iter()
+                .map(|p| (x(p.separation_m), p.contacts_per_m2 / gw.density_per_m2))
+                .collect(),
+            style: Style::Dashed,
+            colour: PALETTE[2],
+        });
+        separation.series.push(Series {
+            label: "load p/E*".into(),
+            points: curves
+                .iter()
+                .map(|p| (x(p.separation_m), p.pressure_pa / e_star))
+                .collect(),
+            style: Style::Line,
+            colour: PALETTE[1],
+        });
+        let mut area = Chart::new(
+            "Real area against load (GW)",
+            "mean pressure p / E*",
+            "real area A/A0",
+        );
+        area.x_scale = ChartScale::Log;
+        area.y_scale = ChartScale::Log;
+        area.series.push(Series {
+            label: "Greenwood–Williamson".into(),
+            points: curves
+                .iter()
+                .map(|p| (p.pressure_pa / e_star, p.area_fraction))
+                .collect(),
+            style: Style::Line,
+            colour: PALETTE[0],
+        });
+        let kappa = (8.0 / PI).sqrt();
+        area.series.push(Series {
+            label: format!("κ p/(E* h'rms), κ = {kappa:.2}"),
+            points: curves
+                .iter()
+                .map(|p| {
+                    (
+                        p.pressure_pa / e_star,
+                        kappa * p.pressure_pa / (e_star * c.sdq),
+                    )
+                })
+                .filter(|p| p.1 < 1.0)
+                .collect(),
+            style: Style::Dashed,
+            colour: PALETTE[1],
+        });
+        rows.push(vec![Cell::Chart(separation), Cell::Chart(area)]);
+    }
+    Ok(Sheet {
+        title: scene
+            .title
+            .clone()
+            .unwrap_or_else(|| format!("Rough surface: {}", surface.source)),
+        rows,
+    })
+}
+
+/// The GW model of a characterised surface with measured summits.
+pub fn gw_model(c: &Characterisation, e_star_pa: f64) -> GreenwoodWilliamson {
+    GreenwoodWilliamson {
+        density_per_m2: c.summits.density_per_m2,
+        radius_m: c.summits.radius_m,
+        height_std_m: c.summits.height_std_m,
+        mean_height_m: c.summits.mean_height_m,
+        e_star_pa,
+    }
+}
+
+/// The outlines of the contact spots: isolines of the loaded-cell indicator at 1/2, in um.
+fn spot_outlines(solution: &RoughSolution) -> Vec<Vec<(f64, f64)>> {
+    let indicator = solution
+        .pressure_pa
+        .mapv(|p| if p > 0.0 { 1.0 } else { 0.0 });
+    let (ny, nx) = indicator.dim();
+    let [dx, dy] = solution.spacing_m;
+    let x = Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx);
+    let y = Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny);
+    crate::render::contour_lines(indicator.view(), &x, &y, 0.5)
+}
+
+/// The rough scene's sheet and the solved contact. `on_row` is called per evaluated grid row.
+pub fn rough_sheet(
+    scene: &Scene,
+    on_row: &(dyn Fn() + Sync),
+) -> Result<(Sheet, RoughSolution), SheetError> {
+    if scene.contact.kind != ContactKind::Rough {
+        return Err(SheetError::NoSurface);
+    }
+    let surface = scene.surface.as_ref().ok_or(SheetError::NoSurface)?;
+    let solution = rough_study::solve(scene, &mut |_, _| {})?;
+    let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
+    let unit = scene.figure.stress_unit.label("");
+    let unit = unit.trim();
+    let outlines = spot_outlines(&solution);
+    let [ny, nx] = surface.heights.shape();
+    let [dx, dy] = surface.heights.spacing_m();
+    let top = surface
+        .heights
+        .heights_m()
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, &h| m.max(h));
+    let topography = xy_map(
+        "Topography and contact spots",
+        &format!(
+            "{} spots, {:.2} % of the area in contact",
+            solution.spots,
+            100.0 * solution.contact_fraction
+        ),
+        &surface.heights,
+        surface.heights.heights_m().mapv(|h| (h - top) * 1e6),
+        "height below the top (µm)",
+        ColorMap::Viridis,
+        outlines.clone(),
+    );
+    let mut topography = topography;
+    topography.mark = Mark::None;
+    let pressure = xy_map(
+        "Contact pressure",
+        &format!(
+            "mean {:.1} MPa, max {:.0} MPa",
+            solution.mean_pressure_pa * 1e-6,
+            solution.max_pressure_pa * 1e-6
+        ),
+        &surface.heights,
+        solution.pressure_pa.mapv(|p| p * stress_per_pa),
+        &format!("p {unit}"),
+        ColorMap::Inferno,
+        Vec::new(),
+    );
+
+    // The stress field under the solved tractions, in the reference units (1 um, 1 MPa).
+    let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
+    let stresses = rough_study::stress_solution(&solution, friction, poisson)
+        .map_err(|e| FieldError::Numerical(e.to_string()))?;
+    let quantity = scene.figure.quantity;
+    let ((peak_row, _), _) =
+        solution
+            .pressure_pa
+            .indexed_iter()
+            .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &p)| {
+                if p > best.1 {
+                    (at, p)
+                } else {
+                    best
+                }
+            });
+    let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
+    let cell = ax.min(ay);
+    let depth_m = (2.0 * search_depth_m(&solution)).min(0.5 * (nx as f64 * dx).min(ny as f64 * dy));
+    let layers = ((depth_m / REFERENCE_LENGTH_M) / cell).ceil().max(4.0) as usize + 1;
+    let centres_x = Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx);
+    let xz = Plane {
+        section: Section::Xz {
+            y: (peak_row as f64 + 0.5) * ay,
+        },
+        u: centres_x,
+        v: Axis::new(0.0, (layers - 1) as f64 * cell, layers),
+    };
+    let field_xz = field::evaluate(&stresses, &xz, &[quantity], on_row)?;
+    let values_xz = field_xz
+        .values
+        .index_axis(ndarray::Axis(1), 0)
+        .mapv(|v| v * 1e6 * stress_per_pa);
+    // Depth of the largest value in the section: the xy section is taken there.
+    let ((deepest_row, _), _) =
+        values_xz
+            .indexed_iter()
+            .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &v)| {
+                if v > best.1 {
+                    (at, v)
+                } else {
+                    best
+                }
+            });
+    let max_depth = xz.v.value(deepest_row);
+    let traction: Vec<TractionSample> = (0..nx)
+        .map(|i| {
+            let p = solution.pressure_pa[[peak_row, i]] * stress_per_pa;
+            TractionSample {
+                x: (i as f64 + 0.5) * dx * 1e6,
+                p,
+                q: friction * p,
+            }
+        })
+        .collect();
+    let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
+    let section_map = Figure {
+        title: format!(
+            "{} in the xz section through the highest pressure",
+            quantity.description()
+        ),
+        panels: vec![Panel {
+            subtitle: format!(
+                "y = {:.1} µm; μ = {friction}, ν = {poisson}",
+                (peak_row as f64 + 0.5) * dy * 1e6
+            ),
+            x: Axis::new(xz.u.min, xz.u.max, xz.u.count),
+            z: Axis::new(0.0, xz.v.max, xz.v.count),
+            values: values_xz,
+            traction,
+            half_width: 0.0,
+            outlines: Vec::new(),
+            scale: None,
+        }],
+        value_label: quantity_label.clone(),
+        x_label: "x (µm)".into(),
+        z_label: "z (µm)".into(),
+        vertical_is_depth: true,
+        traction_label: scene
+            .figure
+            .stress_unit
+            .label(if friction > 0.0 { "p, q" } else { "p" }),
+        colormap: scene.figure.colormap,
+        levels: scene.figure.levels.clone(),
+        mark: scene.figure.mark.unwrap_or(Mark::Max),
+        panel_width_px: 2 * MAP_WIDTH,
+    };
+    let xy = Plane {
+        section: Section::Xy { z: max_depth },
+        u: centres_x,
+        v: Axis::new(0.5 * ay, (ny as f64 - 0.5) * ay, ny),
+    };
+    let field_xy = field::evaluate(&stresses, &xy, &[quantity], on_row)?;
+    let values_xy = field_xy
+        .values
+        .index_axis(ndarray::Axis(1), 0)
+        .mapv(|v| v * 1e6 * stress_per_pa);
+    let mut depth_map = xy_map(
+        &format!(
+            "{} at the depth of the section's maximum",
+            quantity.description()
+        ),
+        &format!("z = {:.2} µm; spots outlined", max_depth),
+        &surface.heights,
+        values_xy,
+        &quantity_label,
+        scene.figure.colormap,
+        outlines,
+    );
+    depth_map.levels = scene.figure.levels.clone();
+    if let Some(scale) = depth_map.panels[0].scale.as_mut() {
+        scale.levels = scene.figure.levels.clone();
+    }
+
+    let area_chart = area_against_load(scene, &solution)?;
+    let sheet = Sheet {
+        title: scene
+            .title
+            .clone()
+            .unwrap_or_else(|| format!("Rough contact: {}", surface.source)),
+        rows: vec![
+            vec![Cell::Map(topography), Cell::Map(pressure)],
+            vec![Cell::Map(section_map)],
+            vec![Cell::Map(depth_map), Cell::Chart(area_chart)],
+        ],
+    };
+    Ok((sheet, solution))
+}
+
+/// Real area against mean pressure: the solver at fractions and multiples of the scene's mean
+/// pressure, the GW prediction and the linear law.
+fn area_against_load(scene: &Scene, solution: &RoughSolution) -> Result<Chart, SheetError> {
+    let problem = rough_study::problem(scene).ok_or(SheetError::NoSurface)?;
+    let e_star = problem.e_star_pa;
+    let mut solved = Vec::new();
+    for factor in [0.25, 0.5, 2.0, 4.0] {
+        let mut scaled = problem.clone();
+        scaled.control = Control::MeanPressure {
+            pa: factor * solution.mean_pressure_pa,
+        };
+        // Full contact or a spot reaching the edge ends the series there; others are errors.
+        match rough::solve(&scaled, &mut |_, _| {}) {
+            Ok(s) => solved.push((s.mean_pressure_pa / e_star, s.contact_fraction)),
+            Err(
+                rough::RoughContactError::FullContact { .. }
+                | rough::RoughContactError::PressureAtEdge { .. }
+                | rough::RoughContactError::HardnessTooLow { .. },
+            ) => {}
+            Err(e) => return Err(RoughStudyError::from(e).into()),
+        }
+    }
+    solved.push((
+        solution.mean_pressure_pa / e_star,
+        solution.contact_fraction,
+    ));
+    solved.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut chart = Chart::new(
+        "Real area against load",
+        "mean pressure p / E*",
+        "real area A/A0",
+    );
+    chart.x_scale = ChartScale::Log;
+    chart.y_scale = ChartScale::Log;
+    chart.series.push(Series {
+        label: "solved (this surface)".into(),
+        points: solved.clone(),
+        style: Style::Markers,
+        colour: PALETTE[0],
+    });
+    let c = characterise(scene)?;
+    let gw = gw_model(&c, e_star);
+    let (lo, hi) = (solved[0].0 / 2.0, solved[solved.len() - 1].0 * 2.0);
+    let pressures: Vec<f64> = (0..=30)
+        .map(|k| lo * (hi / lo).powf(k as f64 / 30.0))
+        .collect();
+    chart.series.push(Series {
+        label: "Greenwood–Williamson".into(),
+        points: pressures
+            .iter()
+            .map(|&p| (p, gw.area_at_pressure(p * e_star).area_fraction))
+            .collect(),
+        style: Style::Line,
+        colour: PALETTE[2],
+    });
+    let kappa = (8.0 / PI).sqrt();
+    chart.series.push(Series {
+        label: format!("κ p/(E* h'rms), κ = {kappa:.2}, h'rms = Sdq = {:.3}", c.sdq),
+        points: pressures
+            .iter()
+            .map(|&p| (p, kappa * p / c.sdq))
+            .filter(|p| p.1 < 1.0)
+            .collect(),
+        style: Style::Dashed,
+        colour: PALETTE[1],
+    });
+    Ok(chart)
+}

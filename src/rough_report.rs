@@ -1,0 +1,264 @@
+//! The report of a solved rough contact (`stressfield contact`, and `hertz` of a rough scene):
+//! a readable table or one JSON object with SI values.
+//!
+//! JSON keys (the output contract, all SI): `contact_fraction`, `spots`, `load_n`,
+//! `mean_pressure_pa`, `max_pressure_pa`, `approach_m`, `mean_gap_m`, `iterations`, `residual`,
+//! `von_mises_max_pa`, `von_mises_max_depth_m`, and also `largest_spot_cells`,
+//! `max_shear_max_pa`, `max_shear_max_depth_m`, `plastic_cells`, `plasticity_index` (null
+//! without a hardness), `e_star_pa`, `hardness_pa`, `friction`, `poisson`, `periodic`,
+//! `rows`, `columns`, `spacing_m`, `tolerance`, `search_depth_m`.
+
+use std::f64::consts::PI;
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use crate::assess::{grid_maxima_to_depth, StressMaxima};
+use crate::contact::rough::RoughSolution;
+use crate::scene::Scene;
+use crate::solution::point_numerical::{NumericalError, PointTractions};
+use crate::study::rough::{traction_grid, REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
+use crate::surface::stats::{self, FormRemoval, Options};
+
+/// What the report says.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ContactReport {
+    pub contact_fraction: f64,
+    pub spots: usize,
+    pub largest_spot_cells: usize,
+    pub load_n: f64,
+    pub mean_pressure_pa: f64,
+    pub max_pressure_pa: f64,
+    pub approach_m: f64,
+    pub mean_gap_m: f64,
+    pub iterations: usize,
+    pub residual: f64,
+    pub tolerance: f64,
+    pub von_mises_max_pa: f64,
+    pub von_mises_max_depth_m: f64,
+    pub max_shear_max_pa: f64,
+    pub max_shear_max_depth_m: f64,
+    /// How deep the maxima were searched.
+    pub search_depth_m: f64,
+    pub plastic_cells: usize,
+    pub plasticity_index: Option<f64>,
+    pub e_star_pa: f64,
+    pub hardness_pa: Option<f64>,
+    pub friction: f64,
+    pub poisson: f64,
+    pub periodic: bool,
+    pub rows: usize,
+    pub columns: usize,
+    pub spacing_m: [f64; 2],
+}
+
+/// How deep to search the maxima (m): the subsurface maximum under a spot of radius `r` lies
+/// near `0.5 r` (Hertz: 0.48a), under a cluster of spots forming one macro-contact near half
+/// its radius. The search goes to 2.5 times the radius of the largest spot, and for an
+/// isolated contact also to the radius of the loaded cells' bounding box; never beyond half
+/// the grid.
+pub fn search_depth_m(solution: &RoughSolution) -> f64 {
+    let [dx, dy] = solution.spacing_m;
+    let spot_radius = (solution.largest_spot_cells as f64 * dx * dy / PI).sqrt();
+    let mut depth = 2.5 * spot_radius;
+    if solution.periodicity == crate::solution::elastic::Periodicity::NonPeriodic {
+        let (mut x0, mut x1, mut y0, mut y1) = (usize::MAX, 0, usize::MAX, 0);
+        for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
+            if p > 0.0 {
+                (x0, x1, y0, y1) = (x0.min(i), x1.max(i), y0.min(j), y1.max(j));
+            }
+        }
+        if x0 <= x1 {
+            let extent = ((x1 - x0 + 1) as f64 * dx).max((y1 - y0 + 1) as f64 * dy);
+            depth = depth.max(0.5 * extent);
+        }
+    }
+    let (ny, nx) = solution.pressure_pa.dim();
+    depth
+        .min(0.5 * (nx as f64 * dx).min(ny as f64 * dy))
+        .max(dx.min(dy))
+}
+
+/// The subsurface maxima under the solved pressure (and `q = μ p`), from DC-FFT layers at the
+/// cell centres, one cell apart, down to [`search_depth_m`].
+pub fn subsurface_maxima(
+    solution: &RoughSolution,
+    friction: f64,
+    poisson: f64,
+) -> Result<(StressMaxima, f64), NumericalError> {
+    let tractions = PointTractions::new(traction_grid(solution, friction)?, poisson)?;
+    let depth_m = search_depth_m(solution);
+    let maxima = grid_maxima_to_depth(&tractions, depth_m / REFERENCE_LENGTH_M)?;
+    Ok((maxima, depth_m))
+}
+
+impl ContactReport {
+    /// The report of `solution`, the scene's solved contact.
+    pub fn new(scene: &Scene, solution: &RoughSolution) -> Result<Self, NumericalError> {
+        let spec = scene.contact.rough.unwrap_or(crate::scene::RoughSpec {
+            control: None,
+            periodic: false,
+            e_star_pa: None,
+            hardness_pa: None,
+            tolerance: crate::contact::rough::DEFAULT_TOLERANCE,
+            max_iterations: crate::contact::rough::DEFAULT_MAX_ITERATIONS,
+        });
+        let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
+        let (maxima, search_depth_m) = subsurface_maxima(solution, friction, poisson)?;
+        let e_star_pa = spec.e_star_pa.unwrap_or(f64::NAN);
+        let plasticity_index = match (spec.hardness_pa, scene.surface.as_ref()) {
+            (Some(hardness), Some(surface)) => {
+                let options = Options {
+                    form: FormRemoval::Plane,
+                    band_m: None,
+                    window: !surface.generated,
+                };
+                stats::characterise(&surface.heights, &options)
+                    .ok()
+                    .map(|c| {
+                        crate::surface::gw::plasticity_index(
+                            e_star_pa,
+                            hardness,
+                            c.summits.height_std_m,
+                            c.summits.radius_m,
+                        )
+                        .0
+                    })
+            }
+            _ => None,
+        };
+        let (rows, columns) = solution.pressure_pa.dim();
+        Ok(Self {
+            contact_fraction: solution.contact_fraction,
+            spots: solution.spots,
+            largest_spot_cells: solution.largest_spot_cells,
+            load_n: solution.load_n,
+            mean_pressure_pa: solution.mean_pressure_pa,
+            max_pressure_pa: solution.max_pressure_pa,
+            approach_m: solution.approach_m,
+            mean_gap_m: solution.mean_gap_m,
+            iterations: solution.iterations,
+            residual: solution.residual,
+            tolerance: spec.tolerance,
+            von_mises_max_pa: maxima.von_mises.value_over_p0 * REFERENCE_PRESSURE_PA,
+            von_mises_max_depth_m: maxima.von_mises.z_over_a * REFERENCE_LENGTH_M,
+            max_shear_max_pa: maxima.max_shear.value_over_p0 * REFERENCE_PRESSURE_PA,
+            max_shear_max_depth_m: maxima.max_shear.z_over_a * REFERENCE_LENGTH_M,
+            search_depth_m,
+            plastic_cells: solution.plastic_cells,
+            plasticity_index,
+            e_star_pa,
+            hardness_pa: spec.hardness_pa,
+            friction,
+            poisson,
+            periodic: spec.periodic,
+            rows,
+            columns,
+            spacing_m: solution.spacing_m,
+        })
+    }
+
+    /// One JSON object.
+    pub fn json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The readable table.
+    pub fn text(&self, scene: &Scene) -> String {
+        let mut out = String::new();
+        let _ = self.write_text(&mut out, scene);
+        out
+    }
+
+    fn write_text(&self, out: &mut String, scene: &Scene) -> std::fmt::Result {
+        let um = |m: f64| m * 1e6;
+        let mpa = |pa: f64| pa * 1e-6;
+        writeln!(out, "scene {}", scene.name)?;
+        if let Some(surface) = &scene.surface {
+            let [ny, nx] = surface.heights.shape();
+            let [dx, dy] = surface.heights.spacing_m();
+            writeln!(
+                out,
+                "surface: {} ({nx} x {ny} samples, {:.4} x {:.4} um each{})",
+                surface.source,
+                um(dx),
+                um(dy),
+                if surface.counter.is_some() {
+                    "; both bodies rough, heights summed"
+                } else {
+                    ""
+                }
+            )?;
+        }
+        writeln!(
+            out,
+            "contact: {}, E* = {:.2} GPa, friction {}, body 1 Poisson ratio {}",
+            if self.periodic {
+                "periodic"
+            } else {
+                "isolated (non-periodic, DC-FFT)"
+            },
+            self.e_star_pa * 1e-9,
+            self.friction,
+            self.poisson
+        )?;
+        writeln!(
+            out,
+            "solver: Polonsky-Keer conjugate gradients, {} iterations, residual {:.2e} (tolerance {:.0e})",
+            self.iterations, self.residual, self.tolerance
+        )?;
+        writeln!(out)?;
+        writeln!(out, "  load                 {:.6e} N", self.load_n)?;
+        writeln!(
+            out,
+            "  mean pressure        {:.4} MPa (over the nominal area)",
+            mpa(self.mean_pressure_pa)
+        )?;
+        writeln!(
+            out,
+            "  max pressure         {:.4} MPa",
+            mpa(self.max_pressure_pa)
+        )?;
+        writeln!(
+            out,
+            "  real contact area    {:.4} % of the nominal area",
+            100.0 * self.contact_fraction
+        )?;
+        writeln!(
+            out,
+            "  contact spots        {} (largest {} cells)",
+            self.spots, self.largest_spot_cells
+        )?;
+        writeln!(out, "  approach             {:.5} um", um(self.approach_m))?;
+        writeln!(out, "  mean gap             {:.5} um", um(self.mean_gap_m))?;
+        if let Some(h) = self.hardness_pa {
+            writeln!(
+                out,
+                "  hardness cap         {:.1} MPa, {} cells at the cap",
+                mpa(h),
+                self.plastic_cells
+            )?;
+        }
+        if let Some(psi) = self.plasticity_index {
+            let reading = crate::surface::gw::plasticity_reading(psi);
+            writeln!(out, "  plasticity index     {psi:.3} ({reading})")?;
+        }
+        writeln!(
+            out,
+            "  von Mises max        {:.4} MPa at depth {:.4} um",
+            mpa(self.von_mises_max_pa),
+            um(self.von_mises_max_depth_m)
+        )?;
+        writeln!(
+            out,
+            "  max shear (Tresca)   {:.4} MPa at depth {:.4} um",
+            mpa(self.max_shear_max_pa),
+            um(self.max_shear_max_depth_m)
+        )?;
+        writeln!(
+            out,
+            "  (maxima at cell centres of DC-FFT layers one cell apart, searched to {:.3} um)",
+            um(self.search_depth_m)
+        )
+    }
+}

@@ -1,0 +1,677 @@
+//! Rough and surface scenes: the `[surface]` and `[counter_surface]` tables (a height map read
+//! or generated), the `[contact]` of `kind = "rough"` or `"surface"` (control, bodies that may
+//! be rigid, hardness), and what their `[figure]` and `[numerical]` may say.
+
+use std::sync::Arc;
+
+#[allow(clippy::wildcard_imports)]
+use super::*;
+use crate::contact::rough::{Control, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE};
+use crate::surface::generate::{self, Amplitude, Form, Generator, Spectrum};
+use crate::surface::read::{self, Fill, ReadOptions};
+use crate::surface::stats::FormRemoval;
+use crate::surface::HeightMap;
+
+/// The reference units of rough and surface scenes: lengths in units of 1 um and pressures
+/// in units of 1 MPa (their figures are drawn in um and MPa).
+pub(super) const ROUGH_SCALE: Scale = Scale {
+    half_width_m: 1e-6,
+    p0_pa: 1e6,
+};
+
+impl Validator<'_> {
+    /// The `[contact]` of a rough (`rough = true`) or surface scene.
+    pub(super) fn rough_contact(
+        &self,
+        raw: &RawContact,
+        kind: ContactKind,
+    ) -> Result<Contact, SceneError> {
+        let rough = kind == ContactKind::Rough;
+        let what = if rough {
+            "a rough contact"
+        } else {
+            "a surface scene"
+        };
+        let forbidden = [
+            (
+                "contact.a",
+                raw.a.is_some(),
+                "the scale follows from the surface",
+            ),
+            ("contact.p0", raw.p0.is_some(), "the pressure is solved for"),
+            (
+                "contact.aspect",
+                raw.aspect.is_some(),
+                "the geometry is the surface's",
+            ),
+            (
+                "contact.tangential",
+                raw.tangential.is_some(),
+                "the traction is q = mu p on the solved pressure",
+            ),
+            (
+                "contact.gears",
+                raw.gears.is_some(),
+                "the geometry is the surface's",
+            ),
+            (
+                "contact.method",
+                raw.method.is_some(),
+                "the stresses are integrated numerically",
+            ),
+            (
+                "contact.poisson",
+                raw.poisson.is_some(),
+                "Poisson's ratio is body 1's: give [contact.body1]",
+            ),
+        ];
+        if let Some((key, _, why)) = forbidden.iter().find(|(_, given, _)| *given) {
+            return Err(self.error(
+                key,
+                format!("{what} has no {key}: {why}"),
+                Some("remove it"),
+            ));
+        }
+        if !rough {
+            let given = [
+                ("contact.load", raw.load.is_some()),
+                ("contact.mean_pressure", raw.mean_pressure.is_some()),
+                ("contact.approach", raw.approach.is_some()),
+                ("contact.friction", raw.friction.is_some()),
+                ("contact.periodic", raw.periodic.is_some()),
+            ];
+            if let Some((key, _)) = given.iter().find(|(_, g)| *g) {
+                return Err(self.error(
+                    key,
+                    "a surface scene characterises the surface; it solves no contact",
+                    Some("use kind = \"rough\" to press it on a flat"),
+                ));
+            }
+        }
+        let controls = [
+            ("contact.load", &raw.load),
+            ("contact.mean_pressure", &raw.mean_pressure),
+            ("contact.approach", &raw.approach),
+        ];
+        let given: Vec<_> = controls.iter().filter(|(_, v)| v.is_some()).collect();
+        let control = if rough {
+            match given.as_slice() {
+                [] => {
+                    return Err(self.error(
+                        "contact.load",
+                        "a rough contact needs what presses the surfaces together",
+                        Some("give one of load = \"2 N\", mean_pressure = \"10 MPa\" or approach = \"0.5 um\""),
+                    ))
+                }
+                [(key, Some(text))] => Some(match *key {
+                    "contact.load" => Control::Load {
+                        newtons: self.positive(key, text, Dimension::Force)?,
+                    },
+                    "contact.mean_pressure" => Control::MeanPressure {
+                        pa: self.positive(key, text, Dimension::Pressure)?,
+                    },
+                    _ => Control::Approach {
+                        m: self.positive(key, text, Dimension::Length)?,
+                    },
+                }),
+                _ => {
+                    return Err(self.error(
+                        given[1].0,
+                        "give one of load, mean_pressure and approach, not several",
+                        None,
+                    ))
+                }
+            }
+        } else {
+            None
+        };
+        let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
+        let bodies = match (&raw.body1, &raw.body2) {
+            (Some(b1), Some(b2)) => Some((
+                self.rough_body("contact.body1", b1)?,
+                self.rough_body("contact.body2", b2)?,
+            )),
+            (None, None) if !rough => None,
+            (None, _) => {
+                return Err(self.error(
+                    "contact.body1",
+                    "the materials of both bodies are needed",
+                    Some("add [contact.body1] and [contact.body2] with material = \"steel\" (or \"rigid\"), or modulus and poisson"),
+                ))
+            }
+            (Some(_), None) => {
+                return Err(self.error(
+                    "contact.body2",
+                    "the materials of both bodies are needed",
+                    Some("add [contact.body2] with material = \"steel\" or \"rigid\""),
+                ))
+            }
+        };
+        let e_star_pa = match bodies {
+            Some((m1, m2)) => {
+                if m1.modulus_pa.is_infinite() && m2.modulus_pa.is_infinite() {
+                    return Err(self.error(
+                        "contact.body2.material",
+                        "both bodies are rigid: nothing deforms",
+                        Some("make one of them elastic, e.g. material = \"steel\""),
+                    ));
+                }
+                Some(crate::contact::effective_modulus(&m1, &m2))
+            }
+            None => None,
+        };
+        let yield_strength = self.yield_strength(raw)?;
+        let hardness_pa = yield_strength.map(|y| match y.from_hardness {
+            Some(number) => number * 9.80665e6,
+            None => 3.0 * y.pa,
+        });
+        Ok(Contact {
+            kind,
+            friction,
+            poisson: bodies.map_or(0.3, |(m1, _)| m1.poisson),
+            scale: Some(ROUGH_SCALE),
+            dimensional: None,
+            yield_strength,
+            aspect: 1.0,
+            tangential: None,
+            rough: Some(RoughSpec {
+                control,
+                periodic: raw.periodic.unwrap_or(false),
+                e_star_pa,
+                hardness_pa,
+                tolerance: DEFAULT_TOLERANCE,
+                max_iterations: DEFAULT_MAX_ITERATIONS,
+            }),
+        })
+    }
+
+    /// A body of a rough contact: its material only (`"rigid"` allowed); its shape is the
+    /// surface's.
+    fn rough_body(&self, key: &str, raw: &RawBody) -> Result<Material, SceneError> {
+        if let Some((name, _)) = [
+            ("radius", &raw.radius),
+            ("radius_x", &raw.radius_x),
+            ("radius_y", &raw.radius_y),
+        ]
+        .iter()
+        .find(|(_, v)| v.is_some())
+        {
+            return Err(self.error(
+                &format!("{key}.{name}"),
+                "the bodies of a rough contact take their shape from the surface",
+                Some("remove it; a rough ball is [surface.generate] sphere_radius = \"5 mm\""),
+            ));
+        }
+        let rigid = raw.material.as_deref() == Some("rigid");
+        if rigid {
+            if raw.modulus.is_some() {
+                return Err(self.error(
+                    &format!("{key}.modulus"),
+                    "a rigid body has no modulus",
+                    Some("remove it"),
+                ));
+            }
+            let poisson = match raw.poisson {
+                Some(nu) => self.poisson(&format!("{key}.poisson"), nu)?,
+                None => 0.3,
+            };
+            return Ok(Material {
+                modulus_pa: f64::INFINITY,
+                poisson,
+            });
+        }
+        // The material keys as for any body, with a radius that is not used.
+        let mut with_radius = RawBody {
+            radius: Some("flat".into()),
+            material: raw.material.clone(),
+            modulus: raw.modulus.clone(),
+            poisson: raw.poisson,
+            ..RawBody::default()
+        };
+        with_radius.radius_x = None;
+        Ok(self.body(key, &with_radius, false, false)?.material)
+    }
+
+    /// `[surface]` (and `[counter_surface]`) of a rough or surface scene.
+    pub(super) fn surface_spec(
+        &self,
+        raw: &RawScene,
+        kind: ContactKind,
+    ) -> Result<SurfaceSpec, SceneError> {
+        let Some(table) = &raw.surface else {
+            return Err(self.error(
+                "surface",
+                "a rough or surface scene needs its [surface] table",
+                Some("add [surface] with file = \"surfaces/worn.asc\" (spacing, height_unit), or [surface.generate]"),
+            ));
+        };
+        let (body1, source, generated) = self.height_map("surface", table)?;
+        let counter = match (&raw.counter_surface, kind) {
+            (None, _) => None,
+            (Some(_), ContactKind::Surface) => {
+                return Err(self.error(
+                    "counter_surface",
+                    "a surface scene characterises one surface",
+                    Some("remove it, or use kind = \"rough\" to press two rough surfaces together"),
+                ))
+            }
+            (Some(table), _) => {
+                let (map, _, _) = self.height_map("counter_surface", table)?;
+                if map.shape() != body1.shape()
+                    || map
+                        .spacing_m()
+                        .iter()
+                        .zip(body1.spacing_m())
+                        .any(|(a, b)| (a - b).abs() > 1e-9 * b)
+                {
+                    return Err(self.error(
+                        "counter_surface",
+                        format!(
+                            "its {:?} samples spaced {:?} m differ from [surface]'s {:?} spaced {:?} m",
+                            map.shape(),
+                            map.spacing_m(),
+                            body1.shape(),
+                            body1.spacing_m()
+                        ),
+                        Some("give both surfaces on the same grid"),
+                    ));
+                }
+                Some(Arc::new(map))
+            }
+        };
+        let heights = match &counter {
+            Some(second) => Arc::new(
+                HeightMap::new(body1.heights_m() + second.heights_m(), body1.spacing_m())
+                    .map_err(|e| self.error("counter_surface", e.to_string(), None))?,
+            ),
+            None => Arc::new(body1.clone()),
+        };
+        let form = match table.form.as_deref() {
+            None | Some("plane") => FormRemoval::Plane,
+            Some("quadratic") => FormRemoval::Quadratic,
+            Some(other) => {
+                return Err(self.error(
+                    "surface.form",
+                    format!("unknown form `{other}`"),
+                    Some("use \"plane\" (the mean plane, always removed) or \"quadratic\" (also a second-order form, e.g. a ball's)"),
+                ))
+            }
+        };
+        let band_m = match &table.band {
+            None => None,
+            Some(values) => match values.as_slice() {
+                [a, b] => {
+                    let a = self.positive("surface.band", a, Dimension::Length)?;
+                    let b = self.positive("surface.band", b, Dimension::Length)?;
+                    if a >= b {
+                        return Err(self.error(
+                            "surface.band",
+                            "give [shortest, longest] wavelength",
+                            Some("e.g. band = [\"4 um\", \"100 um\"]"),
+                        ));
+                    }
+                    Some((a, b))
+                }
+                _ => {
+                    return Err(self.error(
+                        "surface.band",
+                        "needs two wavelengths",
+                        Some("e.g. band = [\"4 um\", \"100 um\"]"),
+                    ))
+                }
+            },
+        };
+        Ok(SurfaceSpec {
+            heights,
+            body1: Arc::new(body1),
+            counter,
+            source,
+            generated,
+            form,
+            band_m,
+        })
+    }
+
+    /// One `[surface]`-like table: the map, a description of its source, whether generated.
+    fn height_map(
+        &self,
+        key: &str,
+        table: &RawSurface,
+    ) -> Result<(HeightMap, String, bool), SceneError> {
+        match (&table.file, &table.generate) {
+            (Some(_), Some(_)) | (None, None) => Err(self.error(
+                key,
+                "give either file (a measured surface) or [generate] (a random one)",
+                Some("e.g. file = \"surfaces/worn.asc\", or a [surface.generate] table"),
+            )),
+            (Some(file), None) => {
+                let spacing_m = table
+                    .spacing
+                    .as_ref()
+                    .map(|s| self.spacing(&format!("{key}.spacing"), s))
+                    .transpose()?;
+                let unit =
+                    |name: &str, value: &Option<String>| -> Result<Option<f64>, SceneError> {
+                        value
+                            .as_deref()
+                            .map(|text| {
+                                read::length_unit_m(text).ok_or_else(|| {
+                                    self.error(
+                                        &format!("{key}.{name}"),
+                                        format!("unknown unit `{text}`"),
+                                        Some("use m, mm, um, nm or pm"),
+                                    )
+                                })
+                            })
+                            .transpose()
+                    };
+                let fill = match table.fill.as_deref() {
+                    None | Some("refuse") => Fill::Refuse,
+                    Some("interpolate") => Fill::Interpolate,
+                    Some(other) => {
+                        return Err(self.error(
+                            &format!("{key}.fill"),
+                            format!("unknown fill `{other}`"),
+                            Some("use \"refuse\" (the default) or \"interpolate\""),
+                        ))
+                    }
+                };
+                let options = ReadOptions {
+                    spacing_m,
+                    height_unit_m: unit("height_unit", &table.height_unit)?,
+                    xyz_length_unit_m: unit("length_unit", &table.length_unit)?,
+                    fill,
+                };
+                let path = Path::new(self.file)
+                    .parent()
+                    .unwrap_or_else(|| Path::new(""))
+                    .join(file);
+                let map = read::read_surface(&path, &options).map_err(|e| {
+                    self.error(
+                        &format!("{key}.file"),
+                        e.to_string(),
+                        Some("the path is relative to the scene file"),
+                    )
+                })?;
+                Ok((map, file.clone(), false))
+            }
+            (None, Some(generate)) => {
+                for (name, given) in [
+                    ("spacing", table.spacing.is_some()),
+                    ("height_unit", table.height_unit.is_some()),
+                    ("fill", table.fill.is_some()),
+                    ("length_unit", table.length_unit.is_some()),
+                ] {
+                    if given {
+                        return Err(self.error(
+                            &format!("{key}.{name}"),
+                            "a generated surface takes its grid from [generate]",
+                            Some("move spacing into the [generate] table; remove the others"),
+                        ));
+                    }
+                }
+                let (generator, description) =
+                    self.generator(&format!("{key}.generate"), generate)?;
+                let map = generate::generate(&generator)
+                    .map_err(|e| self.error(&format!("{key}.generate"), e.to_string(), None))?;
+                Ok((map, description, true))
+            }
+        }
+    }
+
+    fn spacing(&self, key: &str, value: &TextOrList) -> Result<[f64; 2], SceneError> {
+        match value {
+            TextOrList::Text(text) => {
+                let d = self.positive(key, text, Dimension::Length)?;
+                Ok([d, d])
+            }
+            TextOrList::List(list) => match list.as_slice() {
+                [x, y] => Ok([
+                    self.positive(key, x, Dimension::Length)?,
+                    self.positive(key, y, Dimension::Length)?,
+                ]),
+                _ => Err(self.error(
+                    key,
+                    "give one spacing or [dx, dy]",
+                    Some("e.g. spacing = \"1 um\""),
+                )),
+            },
+        }
+    }
+
+    /// `[surface.generate]` into a generator and a description.
+    fn generator(&self, key: &str, raw: &RawGenerate) -> Result<(Generator, String), SceneError> {
+        let samples = match &raw.samples {
+            None => {
+                return Err(self.error(
+                    &format!("{key}.samples"),
+                    "how many samples?",
+                    Some("e.g. samples = 256, or [nx, ny]"),
+                ))
+            }
+            Some(CountOrList::Count(n)) => [*n, *n],
+            Some(CountOrList::List(list)) => match list.as_slice() {
+                [nx, ny] => [*nx, *ny],
+                _ => {
+                    return Err(self.error(
+                        &format!("{key}.samples"),
+                        "give one count or [nx, ny]",
+                        None,
+                    ))
+                }
+            },
+        };
+        if samples.iter().any(|&n| !(8..=8192).contains(&n)) {
+            return Err(self.error(
+                &format!("{key}.samples"),
+                format!("each count must lie in 8..=8192, got {samples:?}"),
+                Some("256 to 1024 is usual"),
+            ));
+        }
+        let spacing_m = match &raw.spacing {
+            Some(s) => self.spacing(&format!("{key}.spacing"), s)?,
+            None => {
+                return Err(self.error(
+                    &format!("{key}.spacing"),
+                    "the sample spacing is needed",
+                    Some("e.g. spacing = \"1 um\""),
+                ))
+            }
+        };
+        let length = |name: &str, value: &Option<String>| {
+            value
+                .as_deref()
+                .map(|text| self.positive(&format!("{key}.{name}"), text, Dimension::Length))
+                .transpose()
+        };
+        let (nx, ny) = (samples[0] as usize, samples[1] as usize);
+        let size = (nx as f64 * spacing_m[0]).min(ny as f64 * spacing_m[1]);
+        let (spectrum, description) = match (raw.hurst, length("correlation_length", &raw.correlation_length)?) {
+            (Some(hurst), None) => {
+                let rolloff = length("rolloff", &raw.rolloff)?.unwrap_or(size / 4.0);
+                let cutoff = length("cutoff", &raw.cutoff)?.unwrap_or(4.0 * spacing_m[0].max(spacing_m[1]));
+                (
+                    Spectrum::SelfAffine {
+                        hurst,
+                        rolloff_wavelength_m: rolloff,
+                        cutoff_wavelength_m: cutoff,
+                    },
+                    format!("self-affine, H = {hurst}, roll-off {:.4} um, cutoff {:.4} um", rolloff * 1e6, cutoff * 1e6),
+                )
+            }
+            (None, Some(length)) => {
+                if raw.rolloff.is_some() || raw.cutoff.is_some() {
+                    return Err(self.error(&format!("{key}.rolloff"), "roll-off and cutoff belong to a self-affine spectrum (hurst)", Some("remove them")));
+                }
+                (
+                    Spectrum::Gaussian {
+                        correlation_length_m: length,
+                    },
+                    format!("Gaussian autocorrelation, correlation length {:.4} um", length * 1e6),
+                )
+            }
+            (Some(_), Some(_)) => {
+                return Err(self.error(
+                    &format!("{key}.correlation_length"),
+                    "give hurst (a self-affine spectrum) or correlation_length (a Gaussian autocorrelation), not both",
+                    None,
+                ))
+            }
+            (None, None) => {
+                return Err(self.error(
+                    &format!("{key}.hurst"),
+                    "which spectrum?",
+                    Some("give hurst = 0.8 (self-affine; rolloff and cutoff wavelengths optional) or correlation_length = \"10 um\""),
+                ))
+            }
+        };
+        let amplitude = match (&raw.rms_height, raw.rms_slope) {
+            (Some(text), None) => Amplitude::RmsHeight(self.positive(
+                &format!("{key}.rms_height"),
+                text,
+                Dimension::Length,
+            )?),
+            (None, Some(slope)) if slope > 0.0 && slope.is_finite() => Amplitude::RmsSlope(slope),
+            (None, Some(slope)) => {
+                return Err(self.error(
+                    &format!("{key}.rms_slope"),
+                    format!("must be positive and finite, got {slope}"),
+                    None,
+                ))
+            }
+            _ => {
+                return Err(self.error(
+                    &format!("{key}.rms_height"),
+                    "give one of rms_height and rms_slope",
+                    Some("e.g. rms_height = \"0.2 um\" or rms_slope = 0.1"),
+                ))
+            }
+        };
+        let form = match (
+            length("sphere_radius", &raw.sphere_radius)?,
+            length("cylinder_radius", &raw.cylinder_radius)?,
+        ) {
+            (None, None) => Form::None,
+            (Some(radius_m), None) => Form::Sphere { radius_m },
+            (None, Some(radius_m)) => Form::Cylinder { radius_m },
+            (Some(_), Some(_)) => {
+                return Err(self.error(
+                    &format!("{key}.cylinder_radius"),
+                    "give a sphere or a cylinder, not both",
+                    None,
+                ))
+            }
+        };
+        let seed = match raw.seed {
+            None => 1,
+            Some(s) if s >= 0 => s as u64,
+            Some(s) => {
+                return Err(self.error(
+                    &format!("{key}.seed"),
+                    format!("must be >= 0, got {s}"),
+                    None,
+                ))
+            }
+        };
+        Ok((
+            Generator {
+                shape: [ny, nx],
+                spacing_m,
+                spectrum,
+                amplitude,
+                form,
+                seed,
+            },
+            format!("generated ({description}, seed {seed})"),
+        ))
+    }
+
+    /// A rough or surface scene: its tables beyond `[contact]`.
+    pub(super) fn rough_scene(
+        &self,
+        raw: RawScene,
+        name: &str,
+        mut contact: Contact,
+    ) -> Result<Scene, SceneError> {
+        let surface = self.surface_spec(&raw, contact.kind)?;
+        for (key, given) in [
+            ("panel", !raw.panels.is_empty()),
+            ("tractions", raw.tractions.is_some()),
+            (
+                "sweep",
+                raw.sweep.is_some() && contact.kind == ContactKind::Surface,
+            ),
+            ("volume", raw.volume.is_some()),
+            ("figure.section", raw.figure.section.is_some()),
+            ("figure.at", raw.figure.at.is_some()),
+            ("figure.x", raw.figure.x.is_some()),
+            ("figure.y", raw.figure.y.is_some()),
+            ("figure.z", raw.figure.z.is_some()),
+            ("figure.resolution", raw.figure.resolution.is_some()),
+        ] {
+            if given {
+                return Err(self.error(
+                    key,
+                    "a rough or surface scene draws its own set of panels (topography, pressure, sections through the peak; or the surface's statistics)",
+                    Some("remove it; see the README's rough contact section"),
+                ));
+            }
+        }
+        if let (Some(numerical), Some(rough)) = (&raw.numerical, contact.rough.as_mut()) {
+            if numerical.cells.is_some() || numerical.extent.is_some() {
+                let key = if numerical.cells.is_some() {
+                    "numerical.cells"
+                } else {
+                    "numerical.extent"
+                };
+                return Err(self.error(
+                    key,
+                    "the grid of a rough contact is the surface's",
+                    Some("remove it; numerical takes tolerance and max_iterations here"),
+                ));
+            }
+            if let Some(t) = numerical.tolerance {
+                if !(t > 0.0 && t < 1e-2) {
+                    return Err(self.error(
+                        "numerical.tolerance",
+                        format!("must lie in (0, 0.01), got {t}"),
+                        Some("the default is 1e-8"),
+                    ));
+                }
+                rough.tolerance = t;
+            }
+            if let Some(n) = numerical.max_iterations {
+                if !(10..=1_000_000).contains(&n) {
+                    return Err(self.error(
+                        "numerical.max_iterations",
+                        format!("must lie in 10..=1000000, got {n}"),
+                        None,
+                    ));
+                }
+                rough.max_iterations = n as usize;
+            }
+        }
+        let figure = self.figure(&raw.figure, &contact)?;
+        let [ny, nx] = surface.heights.shape();
+        let mut scene = Scene {
+            name: name.into(),
+            title: raw.title,
+            contact,
+            figure,
+            panels: Vec::new(),
+            numerical: Numerical {
+                cells: nx.max(ny),
+                extent_over_a: 1.0,
+            },
+            tractions: None,
+            sweep: None,
+            volume: None,
+            load_centre_over_a: 0.0,
+            surface: Some(surface),
+        };
+        if let Some(sweep) = &raw.sweep {
+            scene.sweep = Some(self.sweep(sweep, &scene)?);
+        }
+        Ok(scene)
+    }
+}

@@ -1,0 +1,254 @@
+//! `contact` and `surface`: a rough contact solved and reported, a surface characterised.
+
+use std::path::Path;
+
+use anyhow::{bail, Context, Result};
+use indicatif::ProgressBar;
+
+use crate::cli::SurfaceArgs;
+use crate::commands::{print_out, progress_bar};
+use stressfield::output::write_atomic;
+use stressfield::rough_report::ContactReport;
+use stressfield::scene::{ContactKind, Scene};
+use stressfield::study;
+use stressfield::surface::read::{self, Fill, ReadOptions};
+use stressfield::surface::stats::{self, FormRemoval, Options};
+use stressfield::surface_report::SurfaceReport;
+
+/// A solver progress bar: iterations as they come (the total is not known).
+fn solver_bar() -> ProgressBar {
+    let bar = progress_bar(0);
+    if !bar.is_hidden() {
+        if let Ok(style) = indicatif::ProgressStyle::with_template(
+            "{spinner} solving: iteration {pos}, {msg} {elapsed}",
+        ) {
+            bar.set_style(style);
+        }
+    }
+    bar
+}
+
+/// `contact SCENE [--json] [--pressure FILE.npy]`.
+pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()> {
+    let scene = Scene::load(scene_path)?;
+    if scene.contact.kind != ContactKind::Rough {
+        bail!(
+            "{} is not a rough contact scene (contact.kind = \"rough\")\nhint: `stressfield hertz {}` reports Hertz contacts",
+            scene_path.display(),
+            scene_path.display()
+        );
+    }
+    if let Some(path) = pressure {
+        if path.extension().is_none_or(|e| e != "npy") {
+            bail!(
+                "--pressure writes a NumPy file: give a path ending in .npy, got {}",
+                path.display()
+            );
+        }
+    }
+    let bar = solver_bar();
+    let solution = study::rough::solve(&scene, &mut |iteration, residual| {
+        bar.set_position(iteration as u64);
+        bar.set_message(format!("residual {residual:.1e}"));
+    });
+    bar.finish_and_clear();
+    let solution = solution.with_context(|| format!("scene {}", scene.name))?;
+    let report = ContactReport::new(&scene, &solution)?;
+    if let Some(path) = pressure {
+        let mut bytes = Vec::new();
+        ndarray_npy::WriteNpyExt::write_npy(&solution.pressure_pa, &mut bytes)
+            .context("encoding the pressure as .npy")?;
+        write_atomic(path, &bytes)?;
+    }
+    if json {
+        print_out(&format!("{}\n", report.json()))
+    } else {
+        let mut text = report.text(&scene);
+        if let Some(path) = pressure {
+            text.push_str(&format!(
+                "pressure written to {} (Pa, float64, [rows, columns], row = y)\n",
+                path.display()
+            ));
+        }
+        print_out(&text)
+    }
+}
+
+fn length(flag: &str, text: &str) -> Result<f64> {
+    let text = text.trim();
+    let split = text
+        .find(|c: char| c.is_alphabetic() || c == 'µ')
+        .unwrap_or(text.len());
+    let value: f64 = text[..split]
+        .trim()
+        .parse()
+        .with_context(|| format!("{flag} {text}: not a number followed by a unit (e.g. 1um)"))?;
+    let unit = read::length_unit_m(&text[split..])
+        .with_context(|| format!("{flag} {text}: unknown unit; use m, mm, um, nm or pm"))?;
+    let metres = value * unit;
+    if !(metres > 0.0 && metres.is_finite()) {
+        bail!("{flag} must be positive and finite, got {text}");
+    }
+    Ok(metres)
+}
+
+/// A pressure like `115GPa`, `3 GPa`, or a hardness number `300HV` (kgf/mm², times 9.80665 MPa).
+fn pressure_pa(flag: &str, text: &str) -> Result<f64> {
+    let t = text.trim();
+    let split = t.find(|c: char| c.is_alphabetic()).unwrap_or(t.len());
+    let value: f64 = t[..split]
+        .trim()
+        .parse()
+        .with_context(|| format!("{flag} {text}: not a number followed by a unit (e.g. 3GPa)"))?;
+    let factor = match t[split..].trim() {
+        "Pa" => 1.0,
+        "kPa" => 1e3,
+        "MPa" => 1e6,
+        "GPa" => 1e9,
+        "HV" | "HB" | "BHN" => 9.80665e6,
+        other => bail!("{flag} {text}: unknown unit `{other}`; use Pa, MPa, GPa, or HV/HB"),
+    };
+    let pa = value * factor;
+    if !(pa > 0.0 && pa.is_finite()) {
+        bail!("{flag} must be positive and finite, got {text}");
+    }
+    Ok(pa)
+}
+
+/// `hertz` of a surface scene: its characterisation as a table.
+pub fn surface_of_scene(path: &Path) -> Result<()> {
+    surface(&SurfaceArgs {
+        input: path.to_path_buf(),
+        spacing: None,
+        height_unit: None,
+        length_unit: None,
+        fill: "refuse".into(),
+        form: "plane".into(),
+        band: None,
+        e_star: None,
+        hardness: None,
+        json: false,
+    })
+}
+
+/// `surface FILE|SCENE`.
+pub fn surface(args: &SurfaceArgs) -> Result<()> {
+    let form = match args.form.as_str() {
+        "plane" => FormRemoval::Plane,
+        "quadratic" => FormRemoval::Quadratic,
+        other => bail!("--form {other}: use plane or quadratic"),
+    };
+    let band_m = args
+        .band
+        .as_deref()
+        .map(|text| -> Result<(f64, f64)> {
+            let (a, b) = text
+                .split_once(',')
+                .context("--band takes two wavelengths, e.g. 4um,100um")?;
+            let (a, b) = (length("--band", a)?, length("--band", b)?);
+            if a >= b {
+                bail!("--band: give the shorter wavelength first, got {text}");
+            }
+            Ok((a, b))
+        })
+        .transpose()?;
+    let is_scene = args.input.extension().is_some_and(|e| e == "toml");
+    let (map, source, generated, mut e_star, mut hardness, scene_form, scene_band) = if is_scene {
+        for (flag, given) in [
+            ("--spacing", args.spacing.is_some()),
+            ("--height-unit", args.height_unit.is_some()),
+            ("--length-unit", args.length_unit.is_some()),
+        ] {
+            if given {
+                bail!(
+                    "{flag} is for a height file; the scene {} gives its own",
+                    args.input.display()
+                );
+            }
+        }
+        let scene = Scene::load(&args.input)?;
+        let Some(surface) = &scene.surface else {
+            bail!(
+                "{} has no [surface]: characterise a surface scene (kind = \"surface\" or \"rough\") or a height file",
+                args.input.display()
+            );
+        };
+        let rough = scene.contact.rough;
+        (
+            surface.body1.as_ref().clone(),
+            surface.source.clone(),
+            surface.generated,
+            rough.and_then(|r| r.e_star_pa),
+            rough.and_then(|r| r.hardness_pa),
+            Some(surface.form),
+            surface.band_m,
+        )
+    } else {
+        let spacing_m = args
+            .spacing
+            .as_deref()
+            .map(|text| -> Result<[f64; 2]> {
+                match text.split_once(',') {
+                    Some((x, y)) => Ok([length("--spacing", x)?, length("--spacing", y)?]),
+                    None => {
+                        let d = length("--spacing", text)?;
+                        Ok([d, d])
+                    }
+                }
+            })
+            .transpose()?;
+        let unit = |flag: &str, value: &Option<String>| -> Result<Option<f64>> {
+            value
+                .as_deref()
+                .map(|text| {
+                    read::length_unit_m(text)
+                        .with_context(|| format!("{flag} {text}: use m, mm, um, nm or pm"))
+                })
+                .transpose()
+        };
+        let fill = match args.fill.as_str() {
+            "refuse" => Fill::Refuse,
+            "interpolate" => Fill::Interpolate,
+            other => bail!("--fill {other}: use refuse or interpolate"),
+        };
+        let options = ReadOptions {
+            spacing_m,
+            height_unit_m: unit("--height-unit", &args.height_unit)?,
+            xyz_length_unit_m: unit("--length-unit", &args.length_unit)?,
+            fill,
+        };
+        let map = read::read_surface(&args.input, &options)?;
+        (
+            map,
+            args.input.display().to_string(),
+            false,
+            None,
+            None,
+            None,
+            None,
+        )
+    };
+    if let Some(text) = &args.e_star {
+        e_star = Some(pressure_pa("--e-star", text)?);
+    }
+    if let Some(text) = &args.hardness {
+        hardness = Some(pressure_pa("--hardness", text)?);
+    }
+    let options = Options {
+        form: if args.form == "plane" {
+            scene_form.unwrap_or(form)
+        } else {
+            form
+        },
+        band_m: band_m.or(scene_band),
+        window: !generated,
+    };
+    let characterisation =
+        stats::characterise(&map, &options).with_context(|| format!("characterising {source}"))?;
+    let report = SurfaceReport::new(&characterisation, e_star, hardness);
+    if args.json {
+        print_out(&format!("{}\n", report.json()))
+    } else {
+        print_out(&report.text(&characterisation, &source))
+    }
+}

@@ -1,0 +1,336 @@
+//! The report of a characterised surface (`stressfield surface`, and `hertz` of a surface
+//! scene): a readable table with units, or one JSON object in SI units.
+//!
+//! JSON keys (the output contract; lengths in m, Sdr a fraction): `Sa`, `Sq`, `Ssk`, `Sku`,
+//! `Sp`, `Sv`, `Sz`, `Sdq`, `Sdr`, `Sal`, `Str`, `hurst`, `nayak_alpha`,
+//! `summit_density_per_m2`, `summit_radius_m`, `summit_height_std_m`; and also `Ra`, `Rq`,
+//! `Rsk`, `Rku`, `fractal_dimension`, `hurst_band_m`, `m0`, `m2`, `m4`, `summits`,
+//! `summit_mean_height_m`, the same four from McCool's formulas (`mccool_...`), `levelling`,
+//! `plane`, `rows`, `columns`, `spacing_m`, `str_is_upper_bound`, and, when E* (and a
+//! hardness) are known, `e_star_pa`, `hardness_pa`, `plasticity_index`, and the homework's
+//! highest asperity (`asperity_height_m`, `asperity_radius_m`, `asperity_p0_pa`,
+//! `asperity_contact_radius_m`, `asperity_load_n`). Unknown values are `null`.
+
+use std::f64::consts::PI;
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use crate::surface::gw::{plasticity_index, plasticity_reading};
+use crate::surface::stats::Characterisation;
+
+/// The Hertz sphere-on-flat contact of the highest asperity at an approach of a fifth of its
+/// height (the lecture notes' homework): `a = sqrt(R δ)`, `P = (4/3) E* R^½ δ^(3/2)`,
+/// `p0 = (2E*/π) sqrt(δ/R)` (Johnson 1985, §4.2).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct AsperityContact {
+    pub height_m: f64,
+    pub radius_m: f64,
+    pub approach_m: f64,
+    pub contact_radius_m: f64,
+    pub load_n: f64,
+    pub p0_pa: f64,
+}
+
+impl AsperityContact {
+    pub fn new(height_m: f64, radius_m: f64, e_star_pa: f64) -> Self {
+        let approach_m = height_m / 5.0;
+        Self {
+            height_m,
+            radius_m,
+            approach_m,
+            contact_radius_m: (radius_m * approach_m).sqrt(),
+            load_n: 4.0 / 3.0 * e_star_pa * radius_m.sqrt() * approach_m.powf(1.5),
+            p0_pa: 2.0 * e_star_pa / PI * (approach_m / radius_m).sqrt(),
+        }
+    }
+}
+
+/// The JSON object (see the module doc for the keys).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[allow(non_snake_case)]
+pub struct SurfaceReport {
+    pub Sa: f64,
+    pub Sq: f64,
+    pub Ssk: f64,
+    pub Sku: f64,
+    pub Sp: f64,
+    pub Sv: f64,
+    pub Sz: f64,
+    pub Sdq: f64,
+    pub Sdr: f64,
+    pub Sal: Option<f64>,
+    pub Str: Option<f64>,
+    pub str_is_upper_bound: bool,
+    pub hurst: Option<f64>,
+    pub fractal_dimension: Option<f64>,
+    pub hurst_band_m: [f64; 2],
+    pub nayak_alpha: f64,
+    pub summit_density_per_m2: f64,
+    pub summit_radius_m: f64,
+    pub summit_height_std_m: f64,
+    pub summit_mean_height_m: f64,
+    pub summits: usize,
+    pub mccool_summit_density_per_m2: f64,
+    pub mccool_summit_radius_m: f64,
+    pub mccool_summit_height_std_m: f64,
+    pub mccool_summit_mean_height_m: f64,
+    pub Ra: f64,
+    pub Rq: f64,
+    pub Rsk: f64,
+    pub Rku: f64,
+    pub m0: f64,
+    pub m2: f64,
+    pub m4: f64,
+    pub levelling: String,
+    /// The removed plane `z = c0 + c1 x + c2 y` (m, m/m, m/m).
+    pub plane: [f64; 3],
+    pub rows: usize,
+    pub columns: usize,
+    pub spacing_m: [f64; 2],
+    pub e_star_pa: Option<f64>,
+    pub hardness_pa: Option<f64>,
+    pub plasticity_index: Option<f64>,
+    pub asperity_height_m: f64,
+    pub asperity_radius_m: Option<f64>,
+    pub asperity_p0_pa: Option<f64>,
+    pub asperity_contact_radius_m: Option<f64>,
+    pub asperity_load_n: Option<f64>,
+}
+
+impl SurfaceReport {
+    pub fn new(c: &Characterisation, e_star_pa: Option<f64>, hardness_pa: Option<f64>) -> Self {
+        let asperity = c
+            .asperity
+            .radius_x_m
+            .zip(e_star_pa)
+            .map(|(radius, e)| AsperityContact::new(c.asperity.height_m, radius, e));
+        let (q0, q1) = c.spectra.band_q;
+        Self {
+            Sa: c.height.sa,
+            Sq: c.height.sq,
+            Ssk: c.height.ssk,
+            Sku: c.height.sku,
+            Sp: c.height.sp,
+            Sv: c.height.sv,
+            Sz: c.height.sz,
+            Sdq: c.sdq,
+            Sdr: c.sdr,
+            Sal: c.spatial.sal_m,
+            Str: c.spatial.str_ratio,
+            str_is_upper_bound: c.spatial.str_bounded,
+            hurst: c.spectra.hurst,
+            fractal_dimension: c.spectra.fractal_dimension,
+            hurst_band_m: [2.0 * PI / q1, 2.0 * PI / q0],
+            nayak_alpha: c.moments.nayak_alpha,
+            summit_density_per_m2: c.summits.density_per_m2,
+            summit_radius_m: c.summits.radius_m,
+            summit_height_std_m: c.summits.height_std_m,
+            summit_mean_height_m: c.summits.mean_height_m,
+            summits: c.summits.count,
+            mccool_summit_density_per_m2: c.mccool.density_per_m2,
+            mccool_summit_radius_m: c.mccool.radius_m,
+            mccool_summit_height_std_m: c.mccool.height_std_m,
+            mccool_summit_mean_height_m: c.mccool.mean_height_m,
+            Ra: c.profile.ra,
+            Rq: c.profile.rq,
+            Rsk: c.profile.rsk,
+            Rku: c.profile.rku,
+            m0: c.moments.m0,
+            m2: c.moments.m2,
+            m4: c.moments.m4,
+            levelling: c.options.form.describe().to_string(),
+            plane: c.plane,
+            rows: c.shape[0],
+            columns: c.shape[1],
+            spacing_m: c.spacing_m,
+            e_star_pa,
+            hardness_pa,
+            plasticity_index: e_star_pa
+                .zip(hardness_pa)
+                .map(|(e, h)| plasticity_index(e, h, c.summits.height_std_m, c.summits.radius_m).0),
+            asperity_height_m: c.asperity.height_m,
+            asperity_radius_m: c.asperity.radius_x_m,
+            asperity_p0_pa: asperity.map(|a| a.p0_pa),
+            asperity_contact_radius_m: asperity.map(|a| a.contact_radius_m),
+            asperity_load_n: asperity.map(|a| a.load_n),
+        }
+    }
+
+    pub fn json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The readable table with units.
+    pub fn text(&self, c: &Characterisation, source: &str) -> String {
+        let mut out = String::new();
+        let _ = self.write_text(&mut out, c, source);
+        out
+    }
+
+    fn write_text(&self, out: &mut String, c: &Characterisation, source: &str) -> std::fmt::Result {
+        let um = |m: f64| m * 1e6;
+        let optional =
+            |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or_else(|| "n/a".to_string(), f);
+        writeln!(
+            out,
+            "surface {source}: {} x {} samples, spacing {:.4} x {:.4} um ({:.1} x {:.1} um)",
+            self.columns,
+            self.rows,
+            um(self.spacing_m[0]),
+            um(self.spacing_m[1]),
+            um(self.spacing_m[0] * self.columns as f64),
+            um(self.spacing_m[1] * self.rows as f64)
+        )?;
+        writeln!(
+            out,
+            "levelling: {} (plane z = {:.4e} m {:+.4e} x {:+.4e} y)",
+            self.levelling, self.plane[0], self.plane[1], self.plane[2]
+        )?;
+        writeln!(out)?;
+        writeln!(out, "height (ISO 25178-2)")?;
+        writeln!(
+            out,
+            "  Sa  {:>12.5} um     arithmetic mean height",
+            um(self.Sa)
+        )?;
+        writeln!(
+            out,
+            "  Sq  {:>12.5} um     root mean square height",
+            um(self.Sq)
+        )?;
+        writeln!(out, "  Ssk {:>12.4}        skewness", self.Ssk)?;
+        writeln!(out, "  Sku {:>12.4}        kurtosis", self.Sku)?;
+        writeln!(out, "  Sp  {:>12.5} um     highest peak", um(self.Sp))?;
+        writeln!(out, "  Sv  {:>12.5} um     deepest valley", um(self.Sv))?;
+        writeln!(out, "  Sz  {:>12.5} um     maximum height", um(self.Sz))?;
+        writeln!(out, "hybrid")?;
+        writeln!(
+            out,
+            "  Sdq {:>12.5}        root mean square gradient",
+            self.Sdq
+        )?;
+        writeln!(
+            out,
+            "  Sdr {:>12.5} %      developed interfacial area ratio",
+            100.0 * self.Sdr
+        )?;
+        writeln!(out, "spatial (autocorrelation threshold 0.2)")?;
+        writeln!(
+            out,
+            "  Sal {:>12} um     autocorrelation length",
+            optional(self.Sal, &|v| format!("{:.4}", um(v)))
+        )?;
+        writeln!(
+            out,
+            "  Str {:>12}        texture aspect ratio{}",
+            optional(self.Str, &|v| format!("{v:.4}")),
+            if self.str_is_upper_bound {
+                " (upper bound: the correlation stays above 0.2 within half the map in some direction)"
+            } else {
+                ""
+            }
+        )?;
+        writeln!(
+            out,
+            "profile along x (ISO 4287, each row's mean line removed, mean of rows)"
+        )?;
+        writeln!(
+            out,
+            "  Ra {:.5} um, Rq {:.5} um, Rsk {:.4}, Rku {:.4}",
+            um(self.Ra),
+            um(self.Rq),
+            self.Rsk,
+            self.Rku
+        )?;
+        writeln!(out, "spectrum")?;
+        writeln!(
+            out,
+            "  Hurst exponent H {}   fractal dimension D = 3 - H {}   (fit over wavelengths {:.3} .. {:.3} um)",
+            optional(self.hurst, &|v| format!("{v:.4}")),
+            optional(self.fractal_dimension, &|v| format!("{v:.4}")),
+            um(self.hurst_band_m[0]),
+            um(self.hurst_band_m[1])
+        )?;
+        writeln!(
+            out,
+            "  moments m0 {:.4e} m², m2 {:.4e}, m4 {:.4e} 1/m²; Nayak's alpha {:.3}",
+            self.m0, self.m2, self.m4, self.nayak_alpha
+        )?;
+        writeln!(
+            out,
+            "summits (8 neighbours)           measured        McCool (spectral)"
+        )?;
+        writeln!(
+            out,
+            "  density (1/mm²)             {:>12.2}    {:>12.2}",
+            self.summit_density_per_m2 * 1e-6,
+            self.mccool_summit_density_per_m2 * 1e-6
+        )?;
+        writeln!(
+            out,
+            "  mean tip radius (um)        {:>12.3}    {:>12.3}",
+            um(self.summit_radius_m),
+            um(self.mccool_summit_radius_m)
+        )?;
+        writeln!(
+            out,
+            "  summit height std (um)      {:>12.5}    {:>12.5}",
+            um(self.summit_height_std_m),
+            um(self.mccool_summit_height_std_m)
+        )?;
+        writeln!(
+            out,
+            "  mean summit height (um)     {:>12.5}    {:>12.5}",
+            um(self.summit_mean_height_m),
+            um(self.mccool_summit_mean_height_m)
+        )?;
+        writeln!(out, "  ({} summits)", self.summits)?;
+        if let Some(psi) = self.plasticity_index {
+            writeln!(
+                out,
+                "plasticity index psi = (E*/H) sqrt(sigma_s/beta) = {psi:.3}: {}",
+                plasticity_reading(psi)
+            )?;
+        }
+        let [row, column] = c.asperity.at;
+        writeln!(
+            out,
+            "highest asperity: row {row}, column {column}, {:.4} um above the mean plane; tip radius {} um along x, {} um along y",
+            um(self.asperity_height_m),
+            optional(c.asperity.radius_x_m, &|v| format!("{:.3}", um(v))),
+            optional(c.asperity.radius_y_m, &|v| format!("{:.3}", um(v)))
+        )?;
+        if let (Some(p0), Some(a), Some(load)) = (
+            self.asperity_p0_pa,
+            self.asperity_contact_radius_m,
+            self.asperity_load_n,
+        ) {
+            writeln!(
+                out,
+                "  as a Hertz sphere on a flat at an approach of h/5 = {:.4} um: p0 = {:.1} MPa, a = {:.4} um, load {:.4e} N",
+                um(self.asperity_height_m / 5.0),
+                p0 * 1e-6,
+                um(a),
+                load
+            )?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn homework_hertz_numbers() {
+        // Johnson §4.2: δ = a²/R, p0 = 3P/(2πa²).
+        let contact = AsperityContact::new(1e-6, 20e-6, 115e9);
+        assert!(
+            (contact.contact_radius_m.powi(2) / 20e-6 / contact.approach_m - 1.0).abs() < 1e-12
+        );
+        let p0 = 3.0 * contact.load_n / (2.0 * PI * contact.contact_radius_m.powi(2));
+        assert!((contact.p0_pa / p0 - 1.0).abs() < 1e-12);
+    }
+}

@@ -338,32 +338,12 @@ fn render_scene(
     bar: &ProgressBar,
 ) -> Result<image::RgbImage> {
     let on_row = || bar.inc(1);
-    let sheet = match scene.contact.kind {
-        ContactKind::Rough => Some(stressfield::rough_figure::rough_sheet(scene, &on_row)?.0),
-        ContactKind::Surface => Some(stressfield::rough_figure::surface_sheet(scene)?),
-        _ => None,
-    };
-    if let Some(sheet) = sheet {
-        let image = render::chart::sheet_png(&sheet)?;
-        write_atomic(
-            &out_dir.join(format!("{}.png", scene.name)),
-            &render::encode_png(&image)?,
-        )?;
-        if svg || scene.figure.svg {
-            let text = render::chart::sheet_svg(&sheet)?;
-            write_atomic(
-                &out_dir.join(format!("{}.svg", scene.name)),
-                text.as_bytes(),
-            )?;
-        }
-        return Ok(image);
-    }
-    let figure = figure::build(scene, &on_row)?;
-    let image = render::render_png(&figure)?;
+    let drawing = figure::draw(scene, &on_row)?;
+    let image = drawing.png()?;
     let png = render::encode_png(&image)?;
     write_atomic(&out_dir.join(format!("{}.png", scene.name)), &png)?;
     if svg || scene.figure.svg {
-        let text = render::render_svg(&figure)?;
+        let text = drawing.svg()?;
         write_atomic(
             &out_dir.join(format!("{}.svg", scene.name)),
             text.as_bytes(),

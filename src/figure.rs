@@ -12,6 +12,48 @@ const TRACTION_SAMPLES: usize = 601;
 /// Number of segments of the contact circle drawn on planes parallel to the surface.
 const OUTLINE_SEGMENTS: usize = 256;
 
+/// What a scene draws: a figure of stress maps, or a sheet of maps and charts (surface and
+/// rough scenes).
+#[derive(Clone, Debug)]
+pub enum Drawing {
+    Figure(Figure),
+    Sheet(crate::render::chart::Sheet),
+}
+
+impl Drawing {
+    pub fn png(&self) -> Result<image::RgbImage, crate::render::RenderError> {
+        match self {
+            Drawing::Figure(figure) => crate::render::render_png(figure),
+            Drawing::Sheet(sheet) => crate::render::chart::sheet_png(sheet),
+        }
+    }
+
+    pub fn svg(&self) -> Result<String, crate::render::RenderError> {
+        match self {
+            Drawing::Figure(figure) => crate::render::render_svg(figure),
+            Drawing::Sheet(sheet) => crate::render::chart::sheet_svg(sheet),
+        }
+    }
+}
+
+/// Why a scene cannot be drawn.
+#[derive(Debug, thiserror::Error)]
+pub enum DrawError {
+    #[error(transparent)]
+    Field(#[from] FieldError),
+    #[error(transparent)]
+    Sheet(#[from] crate::rough_figure::SheetError),
+}
+
+/// Draws any scene: a figure ([`build`]) or the sheet of a surface or rough scene.
+pub fn draw(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Drawing, DrawError> {
+    Ok(match scene.contact.kind {
+        ContactKind::Rough => Drawing::Sheet(crate::rough_figure::rough_sheet(scene, on_row)?.0),
+        ContactKind::Surface => Drawing::Sheet(crate::rough_figure::surface_sheet(scene)?),
+        _ => Drawing::Figure(build(scene, on_row)?),
+    })
+}
+
 /// Evaluates every panel of `scene` (in parallel within each panel) and assembles the figure.
 /// `on_row` is called once per evaluated grid row, for progress reporting.
 pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldError> {

@@ -34,11 +34,13 @@ fn every_shipped_scene_renders() {
     assert!(paths.len() >= 5, "{paths:?}");
     for path in paths {
         let scene = Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
-        let built = figure::build(&scene, &|| {}).expect("evaluates");
-        let image =
-            render::render_png(&built).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let drawing =
+            figure::draw(&scene, &|| {}).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let image = drawing
+            .png()
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert!(image.width() >= scene.figure.width_px * scene.panels.len() as u32);
-        assert!(render::render_svg(&built).expect("svg").len() > 1000);
+        assert!(drawing.svg().expect("svg").len() > 1000);
     }
 }
 

@@ -22,6 +22,8 @@
 //! Steps are time points of a sequence timeline named after the sweep's parameter (`friction`,
 //! `load`, `position`), or `step` (a single point) for a scene without a sweep.
 
+mod rough;
+
 use std::path::{Path, PathBuf};
 
 use rerun::RecordingStream;
@@ -131,6 +133,12 @@ pub fn record_scene(
     stream: &RecordingStream,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Summary, RecordError> {
+    if matches!(
+        scene.contact.kind,
+        ContactKind::Rough | ContactKind::Surface
+    ) {
+        return rough::record(scene, stream, on_row);
+    }
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
     let timeline = timeline(scene);
     stream.log_static(
@@ -287,7 +295,15 @@ fn send_blueprint(
 
 /// The static transform that places panel `k`'s image pixels at the grid samples.
 fn log_placement(stream: &RecordingStream, k: usize, figure: &Figure) -> Result<(), RecordError> {
-    let panel = &figure.panels[k];
+    log_panel_placement(stream, &format!("sections/{k}/field"), &figure.panels[k])
+}
+
+/// The static transform that places a panel's image pixels (entity `path`) at its samples.
+fn log_panel_placement(
+    stream: &RecordingStream,
+    path: &str,
+    panel: &crate::render::Panel,
+) -> Result<(), RecordError> {
     let (du, dv) = (axis_step(&panel.x), axis_step(&panel.z));
     // Pixel (i, j) covers [i, i + 1) x [j, j + 1): its centre i + 1/2 maps to sample i.
     let translation = [
@@ -296,7 +312,7 @@ fn log_placement(stream: &RecordingStream, k: usize, figure: &Figure) -> Result<
         0.0,
     ];
     stream.log_static(
-        format!("sections/{k}/field"),
+        path,
         &rerun::Transform3D::from_translation_scale(translation, [du as f32, dv as f32, 1.0]),
     )?;
     Ok(())

@@ -101,6 +101,16 @@ impl Validator<'_> {
                     Some("sweep the friction of a sliding contact (no contact.tangential)"),
                 ))
             }
+            SweepParameter::Friction | SweepParameter::Position
+                if contact.kind == ContactKind::Rough =>
+            {
+                return Err(self.error(
+                    "sweep.parameter",
+                    "a rough contact records a load sweep (the spots appearing and merging)",
+                    Some("use parameter = \"load\" with values in N"),
+                ))
+            }
+            SweepParameter::Load if contact.kind == ContactKind::Rough => {}
             SweepParameter::Load if contact.dimensional.is_none() => {
                 return Err(self.error(
                     "sweep.parameter",

@@ -117,6 +117,12 @@ pub fn timeline(scene: &Scene) -> &'static str {
 
 /// Grid rows a recording of `scene` evaluates (its sections at every step), for progress.
 pub fn rows(scene: &Scene) -> usize {
+    if matches!(
+        scene.contact.kind,
+        ContactKind::Rough | ContactKind::Surface
+    ) {
+        return 0;
+    }
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
     let rows: usize = scene
         .panels
@@ -137,7 +143,7 @@ pub fn record_scene(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
     ) {
-        return rough::record(scene, stream, on_row);
+        return rough::record(scene, stream);
     }
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
     let timeline = timeline(scene);

@@ -30,12 +30,10 @@ fn rerun_error(e: impl std::fmt::Display) -> RecordError {
     RecordError::Rerun(e.to_string())
 }
 
-/// Records a surface or rough scene (module doc).
-pub fn record(
-    scene: &Scene,
-    stream: &RecordingStream,
-    on_row: &(dyn Fn() + Sync),
-) -> Result<Summary, RecordError> {
+/// Records a surface or rough scene (module doc). Its grid rows are not reported as progress
+/// (how many there are depends on the solved contact); [`super::rows`] counts none.
+pub fn record(scene: &Scene, stream: &RecordingStream) -> Result<Summary, RecordError> {
+    let on_row = &|| {};
     let surface = scene
         .surface
         .as_ref()
@@ -81,7 +79,7 @@ pub fn record(
         })
         .collect();
     for (k, map) in maps.iter().enumerate() {
-        log_map(stream, &format!("maps/{k}"), map, None, true)?;
+        log_map(stream, &format!("maps/{k}"), map, None, true, true)?;
     }
     let mut steps = 1;
     if scene.contact.kind == ContactKind::Rough {
@@ -103,6 +101,7 @@ fn log_map(
     map: &Figure,
     range: Option<(f64, f64)>,
     timeless: bool,
+    place: bool,
 ) -> Result<(), RecordError> {
     let log = |path: String, archetype: &dyn rerun::AsComponents| {
         if timeless {
@@ -127,7 +126,9 @@ fn log_map(
         .with_meter(1.0)
         .with_colormap(rerun_colormap(colormap))
         .with_depth_range(rerun::components::ValueRange::new(lo, hi.max(lo + 1e-12)));
-    log_panel_placement(stream, &format!("{base}/field"), panel)?;
+    if place {
+        log_panel_placement(stream, &format!("{base}/field"), panel)?;
+    }
     log(format!("{base}/field"), &image)?;
     if !panel.outlines.is_empty() {
         let strips: Vec<Vec<[f32; 2]>> = panel
@@ -263,7 +264,14 @@ fn log_load_sweep(stream: &RecordingStream, scene: &Scene) -> Result<usize, Reco
             mark: crate::render::Mark::Max,
             panel_width_px: 400,
         };
-        log_map(stream, "contact", &figure, Some((0.0, highest)), false)?;
+        log_map(
+            stream,
+            "contact",
+            &figure,
+            Some((0.0, highest)),
+            false,
+            k == 0,
+        )?;
         stream.log(
             "log",
             &rerun::TextLog::new(format!("step {k}: {}", figure.panels[0].subtitle)),
@@ -353,7 +361,7 @@ fn log_depth_steps(
             mark: crate::render::Mark::Max,
             panel_width_px: 400,
         };
-        log_map(stream, "depth", &figure, Some((lo, hi)), false)?;
+        log_map(stream, "depth", &figure, Some((lo, hi)), false, k == 0)?;
         stream.log(
             "series/depth_um",
             &rerun::Scalars::new([z * REFERENCE_LENGTH_M * 1e6]),

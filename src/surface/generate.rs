@@ -225,7 +225,7 @@ impl Normal {
 /// Nyquist row or column (an even count's `n/2`), whose direction is ambiguous.
 fn wavenumbers(kx: usize, ky: usize, shape: [usize; 2], period_m: [f64; 2]) -> Option<(f64, f64)> {
     let [ny, nx] = shape;
-    let nyquist = |k: usize, n: usize| n % 2 == 0 && k == n / 2;
+    let nyquist = |k: usize, n: usize| n.is_multiple_of(2) && k == n / 2;
     if nyquist(kx, nx) || nyquist(ky, ny) {
         return None;
     }

@@ -258,11 +258,12 @@ fn least_squares(
         if d == 0.0 {
             continue;
         }
-        for r in 0..k {
+        let pivot_row = a[col].clone();
+        for (r, row) in a.iter_mut().enumerate().take(k) {
             if r != col {
-                let f = a[r][col] / d;
-                for c in col..=k {
-                    a[r][c] -= f * a[col][c];
+                let f = row[col] / d;
+                for (value, &pivot_value) in row.iter_mut().zip(&pivot_row).take(k + 1).skip(col) {
+                    *value -= f * pivot_value;
                 }
             }
         }

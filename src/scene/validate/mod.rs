@@ -5,6 +5,7 @@ mod bodies;
 mod contact;
 mod figure;
 mod numerical;
+mod rough;
 mod surface;
 mod sweep;
 mod tractions;

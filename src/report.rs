@@ -17,10 +17,10 @@ fn write_tractions(out: &mut String, scene: &Scene) -> std::fmt::Result {
             "figure units: lengths in a = {:.3} µm, stresses in p0 = {:.2} MPa; body ν = {}",
             a_m * 1e6,
             p0_pa * 1e-6,
-            scene.contact.poisson
+            crate::text::number(scene.contact.poisson)
         )?;
     } else {
-        writeln!(out, "normalised: the file gives lengths in units of a and tractions in units of p0; body ν = {}", scene.contact.poisson)?;
+        writeln!(out, "normalised: the file gives lengths in units of a and tractions in units of p0; body ν = {}", crate::text::number(scene.contact.poisson))?;
     }
     let Some(grid) = &scene.tractions else {
         return Ok(());
@@ -110,7 +110,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     writeln!(
         out,
         "contact: {geometry}; friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)",
-        contact.friction
+        crate::text::number(contact.friction)
     )?;
     let a_name = if point {
         "contact radius              "
@@ -122,14 +122,14 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             writeln!(
                 out,
                 "normalised contact: lengths in units of a, stresses in units of p0; body 1 ν = {}",
-                contact.poisson
+                crate::text::number(contact.poisson)
             )?;
         }
         (None, Some(scale)) => {
             writeln!(
                 out,
                 "contact given by its size; body 1 ν = {}",
-                contact.poisson
+                crate::text::number(contact.poisson)
             )?;
             let (a, p0) = (scale.half_width_m, scale.p0_pa);
             writeln!(out, "{a_name} a  = {:.3} µm", a * 1e6)?;
@@ -203,7 +203,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                     out,
                     "{name}: radius {radius}, E = {:.1} GPa, ν = {}",
                     body.material.modulus_pa * 1e-9,
-                    body.material.poisson
+                    crate::text::number(body.material.poisson)
                 )?;
             }
             match d.hertz {
@@ -399,7 +399,11 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
     } else {
         "body 1"
     };
-    writeln!(out, "stress maxima in {body} (ν = {}):", contact.poisson)?;
+    writeln!(
+        out,
+        "stress maxima in {body} (ν = {}):",
+        crate::text::number(contact.poisson)
+    )?;
     writeln!(
         out,
         "  von Mises σvM                {}",
@@ -444,7 +448,7 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
         return Ok(());
     };
     match y.from_hardness {
-        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {h} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, h * 9.80665)?,
+        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, crate::text::number(h), h * 9.80665)?,
         None => writeln!(out, "yield strength               Y  = {:.0} MPa", y.pa * 1e-6)?,
     }
     let ratio_vm = vm * p0_pa / y.pa;

@@ -5,6 +5,7 @@ mod cli;
 mod dcfft;
 mod golden;
 mod line_contact;
+mod mutations;
 mod patch;
 mod point_contact;
 #[cfg(feature = "rerun")]

@@ -140,7 +140,20 @@ fn read_text(path: &Path) -> Result<String, ReadError> {
             needed_mib: (size + size * 2) >> 20,
         });
     }
-    std::fs::read_to_string(path).map_err(io)
+    // Counted as read too: a device or a pipe (`/dev/zero`) has no size beforehand.
+    crate::input::read_to_string(path, limit).map_err(|e| match e {
+        crate::input::InputError::Io(source) => io(source),
+        crate::input::InputError::TooLarge { limit } => ReadError::TooLarge {
+            path: name.clone(),
+            size_mib: (limit >> 20) + 1,
+            limit_mib: limit >> 20,
+            needed_mib: (limit * 3) >> 20,
+        },
+        other => ReadError::Format {
+            path: name.clone(),
+            message: other.to_string(),
+        },
+    })
 }
 
 /// Reads a surface file (see the module doc for the formats).

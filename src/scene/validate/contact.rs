@@ -206,7 +206,7 @@ impl Validator<'_> {
                 Some(load_hint),
             )
         })?;
-        let load = self.positive("contact.load", load_text, load_dimension)?;
+        let load = self.bounded("contact.load", load_text, load_dimension, LOAD_BOUNDS)?;
         let gears = raw.gears.as_ref().map(|g| self.gears(g)).transpose()?;
         let empty = RawBody::default();
         let elliptical = kind == ContactKind::Elliptical;
@@ -249,6 +249,7 @@ impl Validator<'_> {
                 ))
             }
         };
+        self.hertz_values(&hertz, yield_strength)?;
         Ok(Contact {
             kind,
             friction,
@@ -270,9 +271,61 @@ impl Validator<'_> {
         })
     }
 
+    /// Every value derived from the load, the radii and the moduli (E*, R, a, b, p0, the mean
+    /// pressure, the approach, and the load at which p0 reaches the yield strength) finite and
+    /// positive: a safety net behind the bounds on each input, which keep them so.
+    pub(super) fn hertz_values(
+        &self,
+        hertz: &Hertz,
+        yield_strength: Option<YieldStrength>,
+    ) -> Result<(), SceneError> {
+        let values: Vec<(&str, f64)> = match hertz {
+            Hertz::Line(line) => vec![
+                ("the effective modulus E* (Pa)", line.effective_modulus_pa),
+                ("the effective radius R (m)", line.effective_radius_m),
+                ("the half-width a (m)", line.half_width_m),
+                ("the peak pressure p0 (Pa)", line.p0_pa),
+                ("the mean pressure (Pa)", line.mean_pressure_pa),
+            ],
+            Hertz::Point(point) => vec![
+                ("the effective modulus E* (Pa)", point.effective_modulus_pa),
+                ("the effective radius R (m)", point.effective_radius_m),
+                ("the contact radius a (m)", point.radius_m),
+                ("the peak pressure p0 (Pa)", point.p0_pa),
+                ("the mean pressure (Pa)", point.mean_pressure_pa),
+                ("the approach (m)", point.approach_m),
+            ],
+            Hertz::Elliptical(ellipse) => vec![
+                ("the effective modulus E* (Pa)", ellipse.effective_modulus_pa),
+                ("the semi-axis a (m)", ellipse.semi_axis_x_m),
+                ("the semi-axis b (m)", ellipse.semi_axis_y_m),
+                ("the peak pressure p0 (Pa)", ellipse.p0_pa),
+                ("the mean pressure (Pa)", ellipse.mean_pressure_pa),
+                ("the approach (m)", ellipse.approach_m),
+            ],
+        };
+        let yield_load = yield_strength.map(|y| hertz.load_for_peak_pressure(y.pa));
+        let values = values
+            .into_iter()
+            .chain(yield_load.map(|load| ("the load at which p0 reaches the yield strength", load)));
+        for (name, value) in values {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(self.error(
+                    "contact.load",
+                    format!(
+                        "with these bodies the load gives {name} = {}: every Hertz value must be finite and positive",
+                        crate::text::number(value)
+                    ),
+                    Some("check the load, the radii and the moduli (and their units)"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// `a` and `p0` given directly: both bare 1 (normalised, the default) or both with units.
     pub(super) fn scale(&self, raw: &RawContact) -> Result<Option<Scale>, SceneError> {
-        let value = |key: &str, value: &NumberOrText, dimension: Dimension| match value {
+        let value = |key: &str, value: &NumberOrText, dimension: Dimension, bounds| match value {
             NumberOrText::Number(n) if *n == 1.0 => Ok(None),
             NumberOrText::Number(n) => Err(self.error(
                 key,
@@ -282,18 +335,18 @@ impl Validator<'_> {
                     dimension.example()
                 )),
             )),
-            NumberOrText::Text(text) => self.positive(key, text, dimension).map(Some),
+            NumberOrText::Text(text) => self.bounded(key, text, dimension, bounds).map(Some),
         };
         let a = raw
             .a
             .as_ref()
-            .map(|v| value("contact.a", v, Dimension::Length))
+            .map(|v| value("contact.a", v, Dimension::Length, HALF_WIDTH_BOUNDS))
             .transpose()?
             .flatten();
         let p0 = raw
             .p0
             .as_ref()
-            .map(|v| value("contact.p0", v, Dimension::Pressure))
+            .map(|v| value("contact.p0", v, Dimension::Pressure, STRESS_BOUNDS))
             .transpose()?
             .flatten();
         match (a, p0) {
@@ -326,11 +379,17 @@ impl Validator<'_> {
                 None,
             )),
             (Some(text), None) => Ok(Some(YieldStrength {
-                pa: self.positive("contact.yield_strength", text, Dimension::Pressure)?,
+                pa: self.bounded(
+                    "contact.yield_strength",
+                    text,
+                    Dimension::Pressure,
+                    STRESS_BOUNDS,
+                )?,
                 from_hardness: None,
             })),
             (None, Some(text)) => {
-                let number = self.positive("contact.hardness", text, Dimension::Hardness)?;
+                let number =
+                    self.bounded("contact.hardness", text, Dimension::Hardness, HARDNESS_BOUNDS)?;
                 Ok(Some(YieldStrength {
                     pa: yield_strength_from_hardness_pa(number),
                     from_hardness: Some(number),
@@ -341,7 +400,12 @@ impl Validator<'_> {
     }
 
     pub(super) fn gears(&self, raw: &raw::RawGears) -> Result<SpurGearPair, SceneError> {
-        let module_m = self.positive("contact.gears.module", &raw.module, Dimension::Length)?;
+        let module_m = self.bounded(
+            "contact.gears.module",
+            &raw.module,
+            Dimension::Length,
+            MODULE_BOUNDS,
+        )?;
         let angle = units::parse(&raw.pressure_angle, Dimension::Angle)
             .map_err(|m| self.error("contact.gears.pressure_angle", m, None))?;
         if !(angle > 0.0 && angle < std::f64::consts::FRAC_PI_2) {

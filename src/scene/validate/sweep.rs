@@ -40,6 +40,26 @@ impl Validator<'_> {
                 numbers
             }
             (None, Some(from), Some(to), Some(steps)) => {
+                for (key, value) in [("sweep.from", from), ("sweep.to", to)] {
+                    if !value.is_finite() {
+                        return Err(self.error(
+                            key,
+                            format!("must be a finite number, got {value}"),
+                            None,
+                        ));
+                    }
+                }
+                if !(to - from).is_finite() {
+                    return Err(self.error(
+                        "sweep.to",
+                        format!(
+                            "the span from {} to {} is beyond double precision",
+                            crate::text::number(from),
+                            crate::text::number(to)
+                        ),
+                        Some("give a sweep of sizes a user could mean"),
+                    ));
+                }
                 if !(2..=MAX_STEPS as i64).contains(&steps) {
                     return Err(self.error(
                         "sweep.steps",
@@ -67,23 +87,55 @@ impl Validator<'_> {
                 None,
             ));
         }
+        // A value generated from `from`, `to` and `steps` is named by those keys.
+        let generated = raw.values.is_none();
         for (i, &value) in values.iter().enumerate() {
-            let key = format!("sweep.values[{i}]");
+            let key = if generated {
+                match i {
+                    0 => "sweep.from".to_string(),
+                    _ => "sweep.to".to_string(),
+                }
+            } else {
+                format!("sweep.values[{i}]")
+            };
+            let written = match raw.values.as_ref().and_then(|v| v.get(i)) {
+                Some(NumberOrText::Text(text)) => text.clone(),
+                _ => crate::text::number(value),
+            };
             match parameter {
                 SweepParameter::Friction => {
                     self.friction(&key, value)?;
                 }
-                SweepParameter::Load if !(value.is_finite() && value > 0.0) => {
-                    return Err(self.error(
-                        &key,
-                        format!("a load must be positive and finite, got {value}"),
-                        None,
-                    ));
+                SweepParameter::Load => {
+                    let (dimension, unit) = if contact.kind == ContactKind::Line {
+                        (Dimension::ForcePerLength, "N/m")
+                    } else {
+                        (Dimension::Force, "N")
+                    };
+                    let written = match raw.values.as_ref().and_then(|v| v.get(i)) {
+                        Some(NumberOrText::Text(_)) => written,
+                        _ => format!("{written} {unit}"),
+                    };
+                    self.within(&key, value, &written, dimension, LOAD_BOUNDS)?;
+                    if contact.dimensional.is_some() {
+                        let stepped = contact
+                            .with_load(value)
+                            .map_err(|e| self.error(&key, e.to_string(), None))?;
+                        if let Some(d) = stepped.dimensional {
+                            self.hertz_values(&d.hertz, contact.yield_strength)
+                                .map_err(|e| SceneError {
+                                    key: Some(key.clone()),
+                                    ..e
+                                })?;
+                        }
+                    }
                 }
-                SweepParameter::Load | SweepParameter::Position if !value.is_finite() => {
-                    return Err(self.error(&key, format!("must be finite, got {value}"), None));
+                SweepParameter::Position => {
+                    // In units of a, like every figure range.
+                    let over_a = value * crate::study::length_unit_over_a(scene);
+                    let written = format!("{written}{}", scene.figure.length_unit.suffix());
+                    self.within_reach(&key, over_a, &written)?;
                 }
-                _ => {}
             }
         }
         match parameter {
@@ -177,7 +229,14 @@ impl Validator<'_> {
             for (i, point) in points.iter().enumerate() {
                 match point.as_slice() {
                     [x, z] if x.is_finite() && z.is_finite() && *z >= 0.0 => {
-                        material_points.push((*x, *z))
+                        let key = format!("sweep.material_points[{i}]");
+                        let unit_over_a = crate::study::length_unit_over_a(scene);
+                        let suffix = scene.figure.length_unit.suffix();
+                        for value in [*x, *z] {
+                            let written = format!("{}{suffix}", crate::text::number(value));
+                            self.within_reach(&key, value * unit_over_a, &written)?;
+                        }
+                        material_points.push((*x, *z));
                     }
                     _ => {
                         return Err(self.error(

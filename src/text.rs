@@ -1,0 +1,114 @@
+//! Text shown to people: numbers as short as they can be written exactly, and long echoes of
+//! their own input cut to a readable length.
+
+/// `value` in its shortest round-trip form: plain decimal ("0.3", "120", "-2.5", "0.0012")
+/// for magnitudes in `[1e-4, 1e16)` and zero, otherwise exponent notation ("5e-324",
+/// "1.5e-7", "1e308"), which is then always shorter. Exact to the last bit either way; the
+/// switch points are those of Rust's `{:?}` for floats. Infinities and NaN print as `inf`,
+/// `-inf` and `NaN`.
+pub fn number(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 || !value.is_finite() || (1e-4..1e16).contains(&magnitude) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
+}
+
+/// A limit or a round value for a message: plain below a million ("0.5", "1", "10000"),
+/// exponent notation beyond ("1e6", "1e12") and below a thousandth ("1e-9").
+pub fn compact(value: f64) -> String {
+    let magnitude = value.abs();
+    if value == 0.0 || !value.is_finite() || (1e-3..1e6).contains(&magnitude) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
+}
+
+/// At most `max_chars` characters of `text`; a longer text is cut and says how long it was,
+/// e.g. `0,0,1aaaa… (10485760 characters)`.
+pub fn cut(text: &str, max_chars: usize) -> String {
+    let mut chars = text.char_indices();
+    match chars.nth(max_chars) {
+        None => text.to_string(),
+        Some((end, _)) => format!(
+            "{}… ({} characters)",
+            &text[..end],
+            text.chars().count()
+        ),
+    }
+}
+
+/// A size in bytes in the largest binary unit that keeps it whole or readable: "64 KiB",
+/// "1 MiB", "2.5 GiB".
+pub fn bytes(size: u64) -> String {
+    const UNITS: [&str; 4] = ["bytes", "KiB", "MiB", "GiB"];
+    let mut value = size as f64;
+    let mut unit = 0;
+    while value >= 1024.0 && unit + 1 < UNITS.len() {
+        value /= 1024.0;
+        unit += 1;
+    }
+    if unit == 0 || value.fract() == 0.0 {
+        format!("{value:.0} {}", UNITS[unit])
+    } else {
+        format!("{value:.1} {}", UNITS[unit])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_short_and_exact() {
+        assert_eq!(number(0.3), "0.3");
+        assert_eq!(number(-2.5), "-2.5");
+        assert_eq!(number(0.0), "0");
+        assert_eq!(number(120.0), "120");
+        assert_eq!(number(0.0001), "0.0001");
+        assert_eq!(number(5e-324), "5e-324");
+        assert_eq!(number(1e308), "1e308");
+        assert_eq!(number(-1.5e-7), "-1.5e-7");
+        assert_eq!(number(1e16), "1e16");
+        assert_eq!(number(f64::INFINITY), "inf");
+        // Round trip, to the bit, on both sides of the switch.
+        for v in [0.1 + 0.2, 1.234_567_890_123_456_7e-5, 9.999_999_999_999_998e15, 5e-324] {
+            assert_eq!(number(v).parse::<f64>().expect("parses"), v);
+        }
+        // Never longer than 24 characters, whatever the value.
+        for v in [f64::MAX, f64::MIN_POSITIVE, -f64::MAX, 1.0 / 3.0] {
+            assert!(number(v).len() <= 24, "{}", number(v));
+        }
+    }
+
+    #[test]
+    fn limits_read_at_a_glance() {
+        assert_eq!(compact(1e12), "1e12");
+        assert_eq!(compact(10000.0), "10000");
+        assert_eq!(compact(1.0), "1");
+        assert_eq!(compact(1e-9), "1e-9");
+        assert_eq!(compact(0.01), "0.01");
+    }
+
+    #[test]
+    fn long_echoes_are_cut() {
+        assert_eq!(cut("short", 10), "short");
+        assert_eq!(cut("exactly10!", 10), "exactly10!");
+        let long = "x".repeat(1000);
+        let shown = cut(&long, 20);
+        assert!(shown.starts_with(&"x".repeat(20)), "{shown}");
+        assert!(shown.ends_with("… (1000 characters)"), "{shown}");
+        // Character boundaries, not bytes.
+        assert_eq!(cut("µµµµ", 2), "µµ… (4 characters)");
+    }
+
+    #[test]
+    fn sizes_read_in_binary_units() {
+        assert_eq!(bytes(512), "512 bytes");
+        assert_eq!(bytes(64 << 10), "64 KiB");
+        assert_eq!(bytes(1 << 20), "1 MiB");
+        assert_eq!(bytes(5 << 29), "2.5 GiB");
+    }
+}

@@ -25,16 +25,7 @@ pub fn run(command: Command) -> Result<()> {
             if args.rrd.is_some() && scenes.len() != 1 {
                 bail!("--rrd FILE records one scene, got {}\nhint: name one scene, or use `stressfield record` for several (one out/<scene>.rrd each)", scenes.len());
             }
-            let compare = CompareOptions::from_args(&args.compare, args.save_field)?;
-            if let Some(compare) = &compare {
-                let same = |a: &Path, b: &Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(a), Ok(b)) if a == b);
-                if same(&args.out_dir, &compare.reference_dir) {
-                    bail!(
-                        "--out-dir and --compare name the same directory {}: the references would be overwritten before they are compared\nhint: render into another directory (--out-dir out); --update rewrites the references that differ",
-                        compare.reference_dir.display()
-                    );
-                }
-            }
+            let compare = CompareOptions::from_args(&args.compare, args.save_field, &args.out_dir)?;
             let options = RenderOptions {
                 svg: args.svg,
                 save_field: args.save_field,

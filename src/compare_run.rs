@@ -36,8 +36,9 @@ pub struct CompareOptions {
 
 impl CompareOptions {
     /// The comparison asked for, if any (clap already refused comparison flags without
-    /// `--compare`). The reference directory must exist, unless `--update` will fill it.
-    pub fn from_args(args: &CompareArgs, save_field: bool) -> Result<Option<Self>> {
+    /// `--compare`). The reference directory must exist, unless `--update` will fill it, and
+    /// must not be the output directory `out_dir`.
+    pub fn from_args(args: &CompareArgs, save_field: bool, out_dir: &Path) -> Result<Option<Self>> {
         let Some(reference_dir) = args.compare.clone() else {
             return Ok(None);
         };
@@ -81,6 +82,12 @@ impl CompareOptions {
                 reference_dir.display()
             );
         }
+        if same_directory(out_dir, &reference_dir) {
+            bail!(
+                "--out-dir and --compare name the same directory {}: the references would be overwritten before they are compared\nhint: render into another directory (--out-dir out); --update rewrites the references that differ",
+                reference_dir.display()
+            );
+        }
         Ok(Some(Self {
             reference_dir,
             measure,
@@ -89,6 +96,14 @@ impl CompareOptions {
             update: args.update,
             save_field,
         }))
+    }
+}
+
+/// Whether both paths exist and name the same directory.
+fn same_directory(a: &Path, b: &Path) -> bool {
+    match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
     }
 }
 

@@ -345,9 +345,14 @@ fn scene_html(html: &mut String, outcome: &SceneOutcome) {
         html.push_str("<details><summary>images</summary>\n");
     }
     html.push_str(r#"<div class="images">"#);
+    // An updated scene's reference is the one it replaced.
+    let (reference, actual) = match outcome.status {
+        Status::Updated => ("previous reference", "actual (now the reference)"),
+        Status::Passed | Status::Failed => ("reference", "actual"),
+    };
     let images = [
-        ("reference", outcome.reference_png.as_deref()),
-        ("actual", Some(outcome.actual_png.as_slice())),
+        (reference, outcome.reference_png.as_deref()),
+        (actual, Some(outcome.actual_png.as_slice())),
         ("difference", outcome.diff_png.as_deref()),
     ];
     for (caption, png) in images {

@@ -288,6 +288,21 @@ fn compare_reports_fails_and_updates_only_what_differs() {
         stderr(&created)
     );
     assert_eq!(read("ref/a.png"), read("out/a.png"));
+    // A scene within tolerance that lacks its field gains it with --update --save-field, its
+    // image untouched.
+    std::fs::remove_file(ws.path("ref/b.npz")).expect("remove");
+    let b_png = read("ref/b.png");
+    let gained = ws.render("out", &["--compare", reference, "--update", "--save-field"]);
+    assert_success(&gained);
+    let lines = lines_starting(&gained, "updated ");
+    assert_eq!(lines.len(), 1, "{}", stderr(&gained));
+    assert!(
+        lines[0].ends_with(&format!("wrote {reference}/b.npz")),
+        "{}",
+        lines[0]
+    );
+    assert_eq!(read("ref/b.png"), b_png);
+    assert_eq!(read("ref/b.npz"), read("out/b.npz"));
 }
 
 #[test]

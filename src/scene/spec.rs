@@ -296,6 +296,16 @@ impl StressUnit {
         }
     }
 
+    /// The unit as written in a scene: `p0`, `Pa`, `MPa` or `GPa`.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Self::PeakPressure => "p0",
+            Self::Pascal => "Pa",
+            Self::MegaPascal => "MPa",
+            Self::GigaPascal => "GPa",
+        }
+    }
+
     /// Label of a value with this unit, e.g. `τ1 / p0` or `τ1 (MPa)`.
     pub fn label(self, symbol: &str) -> String {
         match self {

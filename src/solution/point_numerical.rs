@@ -8,6 +8,7 @@
 use ndarray::Array2;
 
 use super::dcfft::{DcFft, DcFftError, TractionGrid, TractionGridError};
+use super::elastic::Periodicity;
 use crate::stress::Stress;
 
 /// Errors building a numerical point contact.
@@ -58,10 +59,22 @@ impl PartialEq for PointTractions {
 }
 
 impl PointTractions {
-    /// Tractions given on a grid, for a body of Poisson ratio `poisson`.
+    /// Tractions given on a grid (zero beyond it), for a body of Poisson ratio `poisson`.
     pub fn new(grid: TractionGrid, poisson: f64) -> Result<Self, NumericalError> {
         let fft = DcFft::new(&grid, poisson)?;
         Ok(Self { grid, fft, poisson })
+    }
+
+    /// Tractions of which the grid is one period, repeating in x and y (the stress under a
+    /// periodic rough contact; see [`super::dcfft`]).
+    pub fn periodic(grid: TractionGrid, poisson: f64) -> Result<Self, NumericalError> {
+        let fft = DcFft::periodic(&grid, poisson)?;
+        Ok(Self { grid, fft, poisson })
+    }
+
+    /// Whether the grid is one period of repeating tractions.
+    pub fn is_periodic(&self) -> bool {
+        self.fft.periodicity() == Periodicity::Periodic
     }
 
     /// Tractions given as functions of `(x, y)` (units of a and p0) on `cells x cells` cells
@@ -184,11 +197,16 @@ impl PointTractions {
     }
 
     /// Stress (units of p0) at `(x, y, z)` by direct summation over the cells: exact for the
-    /// piecewise-constant tractions; one patch evaluation per loaded cell. On the surface
-    /// exactly on a cell edge some components are infinite (see
-    /// [`super::patch::uniform_patch`] and [`Self::finite_stress_over_p0`]).
+    /// piecewise-constant tractions; one patch evaluation per loaded cell (periodic: per
+    /// cell and image, [`TractionGrid::periodic_stress_at`]). On the surface exactly on a
+    /// cell edge some components are infinite (see [`super::patch::uniform_patch`] and
+    /// [`Self::finite_stress_over_p0`]).
     pub fn stress_over_p0(&self, x: f64, y: f64, z: f64) -> Stress {
-        self.grid.stress_at(x, y, z, self.poisson)
+        if self.is_periodic() {
+            self.grid.periodic_stress_at(x, y, z, self.poisson)
+        } else {
+            self.grid.stress_at(x, y, z, self.poisson)
+        }
     }
 
     /// [`Self::stress_over_p0`], made finite on the surface on the cell edges and corners,
@@ -198,7 +216,7 @@ impl PointTractions {
     /// continuous tractions' value is the limit as the grid is refined. Where the exact value
     /// is finite on an edge it is kept (the mean of the one-sided limits).
     pub fn finite_stress_over_p0(&self, x: f64, y: f64, z: f64) -> Stress {
-        let stress = self.grid.stress_at(x, y, z, self.poisson);
+        let stress = self.stress_over_p0(x, y, z);
         if z > 0.0 || stress.is_finite() {
             return stress;
         }
@@ -224,17 +242,22 @@ impl PointTractions {
         let around: Vec<Stress> = ys
             .iter()
             .flat_map(|&v| xs.iter().map(move |&u| (u, v)))
-            .map(|(u, v)| self.grid.stress_at(u, v, z, self.poisson))
+            .map(|(u, v)| self.stress_over_p0(u, v, z))
             .collect();
         Stress::mean(&around)
     }
 
-    /// The tractions `(p, qx)` of the cell containing `(x, y)` (zero outside the grid).
+    /// The tractions `(p, qx)` of the cell containing `(x, y)` (zero outside an isolated
+    /// grid; a periodic grid repeats).
     pub fn traction_at(&self, x: f64, y: f64) -> (f64, f64) {
         let [ny, nx] = self.grid.shape();
         let [dx, dy] = self.grid.cell();
         let [x0, y0] = self.grid.origin();
-        let (fx, fy) = ((x - x0) / dx, (y - y0) / dy);
+        let (mut fx, mut fy) = ((x - x0) / dx, (y - y0) / dy);
+        if self.is_periodic() && fx.is_finite() && fy.is_finite() {
+            fx = fx.rem_euclid(nx as f64);
+            fy = fy.rem_euclid(ny as f64);
+        }
         if !(fx >= 0.0 && fy >= 0.0 && fx < nx as f64 && fy < ny as f64) {
             return (0.0, 0.0);
         }

@@ -237,7 +237,7 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
     }
     bar.finish_and_clear();
     if let Some(compare) = options.compare {
-        let say = |line: String| eprintln!("{line}");
+        let say = |line: String| print_err(&line);
         return compare_run::finish(&outcomes, compare, out_dir, &failures, recordings, &say);
     }
     fail_if_any(&failures, paths.len())?;

@@ -5,6 +5,7 @@ use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
 use crate::study;
+use crate::text;
 
 /// Number of samples of the traction profile across the figure.
 const TRACTION_SAMPLES: usize = 601;
@@ -419,21 +420,23 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
     // Tractions from a file carry their own shear, and a and p0 are only the figure's units.
     let from_file = scene.contact.kind == ContactKind::Tractions;
     if !from_file {
-        parts.push(format!("μ = {}", crate::text::number(panel.friction)));
+        parts.push(format!("μ = {}", text::number(panel.friction)));
     }
-    parts.push(format!("ν = {}", crate::text::number(panel.poisson)));
+    parts.push(format!("ν = {}", text::number(panel.poisson)));
     if let (Some(scale), false) = (scene.contact.scale, from_file) {
         let a = scale.half_width_m;
         let a_text = match scene.figure.length_unit {
-            LengthUnit::Micrometre | LengthUnit::HalfWidth => format!("a = {:.1} µm", a * 1e6),
-            LengthUnit::Millimetre => format!("a = {:.4} mm", a * 1e3),
+            LengthUnit::Micrometre | LengthUnit::HalfWidth => {
+                format!("a = {} µm", text::fixed(a * 1e6, 1))
+            }
+            LengthUnit::Millimetre => format!("a = {} mm", text::fixed(a * 1e3, 4)),
             LengthUnit::Metre => format!("a = {a:.3e} m"),
         };
         parts.push(a_text);
         let p0 = scale.p0_pa;
         parts.push(match scene.figure.stress_unit {
-            StressUnit::GigaPascal => format!("p0 = {:.3} GPa", p0 * 1e-9),
-            _ => format!("p0 = {:.0} MPa", p0 * 1e-6),
+            StressUnit::GigaPascal => format!("p0 = {} GPa", text::fixed(p0 * 1e-9, 3)),
+            _ => format!("p0 = {} MPa", text::fixed(p0 * 1e-6, 0)),
         });
     }
     parts.join(",  ")

@@ -47,12 +47,23 @@ fn hint_for(limit: u64) -> &'static str {
 /// Reads the whole of `path` as UTF-8 text, failing as soon as more than `limit` bytes come.
 pub fn read_to_string(path: &Path, limit: u64) -> Result<String, InputError> {
     let file = std::fs::File::open(path)?;
-    read_all(file, limit)
+    // A regular file's size, when within the limit, sizes the buffer once (no doubling).
+    let size = file.metadata().map_or(0, |m| m.len());
+    let capacity = if size <= limit { size as usize + 1 } else { 0 };
+    read_all_with_capacity(file, limit, capacity)
 }
 
 /// Reads all of `reader` as UTF-8 text, failing as soon as more than `limit` bytes come.
 pub fn read_all(reader: impl Read, limit: u64) -> Result<String, InputError> {
-    let mut bytes = Vec::new();
+    read_all_with_capacity(reader, limit, 0)
+}
+
+fn read_all_with_capacity(
+    reader: impl Read,
+    limit: u64,
+    capacity: usize,
+) -> Result<String, InputError> {
+    let mut bytes = Vec::with_capacity(capacity);
     reader.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
     if bytes.len() as u64 > limit {
         return Err(InputError::TooLarge { limit });

@@ -15,6 +15,29 @@ pub fn number(value: f64) -> String {
     }
 }
 
+/// `value` to four significant digits, in the form of [`number`]: a derived value in a message
+/// ("3492000", "8.727e-304", "0.1234").
+pub fn approx(value: f64) -> String {
+    if !value.is_finite() {
+        return number(value);
+    }
+    let rounded: f64 = format!("{value:.3e}").parse().unwrap_or(value);
+    number(rounded)
+}
+
+/// `value` with `decimals` decimals ("0.1734", "40.0000") while that shows it, below 1e12;
+/// otherwise in exponent notation with as many decimals ("1.0000e-12", "2.5000e15"), so a
+/// tiny value never reads as zero and a huge one never runs to dozens of digits.
+pub fn fixed(value: f64, decimals: usize) -> String {
+    let magnitude = value.abs();
+    let smallest = 10f64.powi(-(decimals as i32));
+    if value == 0.0 || !value.is_finite() || (smallest..1e12).contains(&magnitude) {
+        format!("{value:.decimals$}")
+    } else {
+        format!("{value:.decimals$e}")
+    }
+}
+
 /// A limit or a round value for a message: plain below a million ("0.5", "1", "10000"),
 /// exponent notation beyond ("1e6", "1e12") and below a thousandth ("1e-9").
 pub fn compact(value: f64) -> String {
@@ -81,6 +104,25 @@ mod tests {
         for v in [f64::MAX, f64::MIN_POSITIVE, -f64::MAX, 1.0 / 3.0] {
             assert!(number(v).len() <= 24, "{}", number(v));
         }
+    }
+
+    #[test]
+    fn fixed_decimals_while_they_show_the_value() {
+        assert_eq!(fixed(40.0, 4), "40.0000");
+        assert_eq!(fixed(0.1734, 4), "0.1734");
+        assert_eq!(fixed(0.0, 1), "0.0");
+        assert_eq!(fixed(1e-12, 4), "1.0000e-12");
+        assert_eq!(fixed(2.5e15, 1), "2.5e15");
+        assert_eq!(fixed(-1e-5, 1), "-1.0e-5");
+    }
+
+    #[test]
+    fn derived_values_keep_four_digits() {
+        assert_eq!(approx(3_492_069.074_625_520_5), "3492000");
+        assert_eq!(approx(8.726_646_259_971_649e-304), "8.727e-304");
+        assert_eq!(approx(0.123_456), "0.1235");
+        assert_eq!(approx(-2.0), "-2");
+        assert_eq!(approx(f64::NAN), "NaN");
     }
 
     #[test]

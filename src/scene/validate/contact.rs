@@ -3,6 +3,10 @@
 #[allow(clippy::wildcard_imports)]
 use super::*;
 
+/// The range of an elliptical contact's semi-axis ratio b/a, given or derived from the radii.
+const MIN_ASPECT: f64 = 0.01;
+const MAX_ASPECT: f64 = 100.0;
+
 impl Validator<'_> {
     pub(super) fn contact(&self, raw: &RawContact) -> Result<Contact, SceneError> {
         let kind = match raw.kind.as_str() {
@@ -113,11 +117,16 @@ impl Validator<'_> {
                     Some("use kind = \"elliptical\", or remove it"),
                 ))
             }
-            (Some(ratio), ContactKind::Elliptical) if (0.01..=100.0).contains(&ratio) => ratio,
+            (Some(ratio), ContactKind::Elliptical) if (MIN_ASPECT..=MAX_ASPECT).contains(&ratio) => {
+                ratio
+            }
             (Some(ratio), ContactKind::Elliptical) => {
                 return Err(self.error(
                     "contact.aspect",
-                    format!("the semi-axis ratio b/a must lie in 0.01..=100, got {ratio}"),
+                    format!(
+                        "the semi-axis ratio b/a must lie in {MIN_ASPECT}..={MAX_ASPECT}, got {}",
+                        crate::text::number(ratio)
+                    ),
                     Some("b is the semi-axis along y, a along x (the sliding direction)"),
                 ))
             }
@@ -217,6 +226,20 @@ impl Validator<'_> {
         if let Some(pair) = gears {
             body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
             body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
+            for (name, radius) in [("pinion", body1.radius_m), ("gear", body2.radius_m)] {
+                if !(RADIUS_BOUNDS.lo..=RADIUS_BOUNDS.hi).contains(&radius.abs()) {
+                    return Err(self.error(
+                        "contact.gears",
+                        format!(
+                            "the {name}'s radius of curvature at the pitch point is {} m, outside {} m to {} m",
+                            crate::text::approx(radius),
+                            crate::text::compact(RADIUS_BOUNDS.lo),
+                            crate::text::compact(RADIUS_BOUNDS.hi)
+                        ),
+                        Some("check module, teeth and pressure_angle (20 deg is standard)"),
+                    ));
+                }
+            }
         }
         let radius_error = |e: crate::contact::ContactError| {
             self.error("contact.body2.radius", e.to_string(), Some("a flat is radius = \"flat\"; a concave body has a negative radius larger in size than the convex one's"))
@@ -239,6 +262,18 @@ impl Validator<'_> {
                     self.error("contact.body2.radius_y", e.to_string(), Some("each principal relative curvature must be positive: a concave radius must be larger in size than the convex one's in the same plane"))
                 })?;
                 aspect = ellipse.semi_axis_y_m / ellipse.semi_axis_x_m;
+                if !(MIN_ASPECT..=MAX_ASPECT).contains(&aspect) {
+                    return Err(self.error(
+                        "contact.body2.radius_y",
+                        format!(
+                            "the radii give an ellipse with b/a = {} (b = {} m along y, a = {} m along x); b/a must lie in {MIN_ASPECT}..={MAX_ASPECT}",
+                            crate::text::approx(aspect),
+                            crate::text::approx(ellipse.semi_axis_y_m),
+                            crate::text::approx(ellipse.semi_axis_x_m)
+                        ),
+                        Some("the relative curvatures in x and y (1/radius_x and 1/radius_y of both bodies, added) must not differ by more than about 1000; a nearly conforming groove gives a very long ellipse: check radius_y"),
+                    ));
+                }
                 Hertz::Elliptical(ellipse)
             }
             ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => {
@@ -314,7 +349,7 @@ impl Validator<'_> {
                     "contact.load",
                     format!(
                         "with these bodies the load gives {name} = {}: every Hertz value must be finite and positive",
-                        crate::text::number(value)
+                        crate::text::approx(value)
                     ),
                     Some("check the load, the radii and the moduli (and their units)"),
                 ));

@@ -88,7 +88,7 @@ impl Validator<'_> {
             return Err(self.error(key, format!("must be a finite {normal}, got {at}"), None));
         }
         let unit_over_a = figure.length_unit.metres(contact.half_width_m()) / contact.half_width_m();
-        let written = format!("{}{}", crate::text::number(at), figure.length_unit.suffix());
+        let written = format!("{}{}", crate::text::number(at), unit_after(figure.length_unit));
         self.within_reach(key, at * unit_over_a, &written)?;
         if contact.kind == ContactKind::Line && at != 0.0 {
             return Err(self.error(
@@ -250,7 +250,7 @@ impl Validator<'_> {
             ));
         }
         let unit_over_a = 1.0 / a_in_unit;
-        let suffix = length_unit.suffix();
+        let suffix = unit_after(length_unit);
         for (name, range) in [
             (horizontal_name, horizontal),
             (vertical_name, vertical),

@@ -86,6 +86,40 @@ pub(super) const MODULE_BOUNDS: Bounds = Bounds {
     why: "from micro-gears to the largest mill gears",
 };
 
+/// Approaches of a rough contact, m.
+pub(super) const APPROACH_BOUNDS: Bounds = Bounds {
+    lo: 1e-12,
+    hi: 0.1,
+    why: "from a picometre to 10 cm (a surface's heights may reach 1 m)",
+};
+/// Sample spacings of a surface, m.
+pub(super) const SPACING_BOUNDS: Bounds = Bounds {
+    lo: crate::surface::MIN_SPACING_M,
+    hi: crate::surface::MAX_SPACING_M,
+    why: "from an atomic spacing (0.1 nm, an AFM scan) to a metre",
+};
+/// Wavelengths and lengths of a surface's spectrum (roll-off, cutoff, correlation length, the
+/// band of the statistics), m.
+pub(super) const WAVELENGTH_BOUNDS: Bounds = Bounds {
+    lo: crate::surface::MIN_SPACING_M,
+    hi: 1e4,
+    why: "from an atomic spacing (0.1 nm) to 10 km (8192 samples a metre apart)",
+};
+/// The rms height of a generated surface, m.
+pub(super) const RMS_HEIGHT_BOUNDS: Bounds = Bounds {
+    lo: 1e-12,
+    hi: 0.1,
+    why: "from a picometre (a polished crystal) to 10 cm (a surface's heights may reach 1 m)",
+};
+
+/// The unit after a length a user wrote, for messages: `" a"`, `" mm"`, ...
+pub(super) fn unit_after(unit: LengthUnit) -> &'static str {
+    match unit {
+        LengthUnit::HalfWidth => " a",
+        other => other.suffix(),
+    }
+}
+
 pub(super) struct Validator<'a> {
     pub(super) file: &'a str,
 }
@@ -274,18 +308,6 @@ impl Validator<'_> {
             ));
         }
         Ok(nu)
-    }
-
-    fn positive(&self, key: &str, text: &str, dimension: Dimension) -> Result<f64, SceneError> {
-        let value = units::parse(text, dimension).map_err(|m| self.error(key, m, None))?;
-        if !(value.is_finite() && value > 0.0) {
-            return Err(self.error(
-                key,
-                format!("must be positive and finite, got `{text}`"),
-                None,
-            ));
-        }
-        Ok(value)
     }
 
     /// A value with its unit within `bounds` (in SI units), named by `key` with the value

@@ -87,24 +87,34 @@ impl Validator<'_> {
                 None,
             ));
         }
-        // A value generated from `from`, `to` and `steps` is named by those keys.
-        let generated = raw.values.is_none();
-        for (i, &value) in values.iter().enumerate() {
-            let key = if generated {
-                match i {
-                    0 => "sweep.from".to_string(),
-                    _ => "sweep.to".to_string(),
-                }
-            } else {
-                format!("sweep.values[{i}]")
-            };
-            let written = match raw.values.as_ref().and_then(|v| v.get(i)) {
-                Some(NumberOrText::Text(text)) => text.clone(),
-                _ => crate::text::number(value),
-            };
+        // Each value as the user wrote it, named by its key. Generated values lie between
+        // `from` and `to` (every bound below is an interval, and a, p0 and the other Hertz
+        // values change monotonically with the load), so those two are checked, by their keys.
+        let checked: Vec<(String, f64, Option<&str>)> = match (&raw.values, raw.from, raw.to) {
+            (Some(written), _, _) => values
+                .iter()
+                .zip(written)
+                .enumerate()
+                .map(|(i, (&value, text))| {
+                    let text = match text {
+                        NumberOrText::Text(text) => Some(text.as_str()),
+                        NumberOrText::Number(_) => None,
+                    };
+                    (format!("sweep.values[{i}]"), value, text)
+                })
+                .collect(),
+            (None, Some(from), Some(to)) => vec![
+                ("sweep.from".to_string(), from, None),
+                ("sweep.to".to_string(), to, None),
+            ],
+            _ => Vec::new(),
+        };
+        for (key, value, text) in checked {
+            let key = key.as_str();
+            let written = text.map_or_else(|| crate::text::number(value), str::to_string);
             match parameter {
                 SweepParameter::Friction => {
-                    self.friction(&key, value)?;
+                    self.friction(key, value)?;
                 }
                 SweepParameter::Load => {
                     let (dimension, unit) = if contact.kind == ContactKind::Line {
@@ -112,19 +122,19 @@ impl Validator<'_> {
                     } else {
                         (Dimension::Force, "N")
                     };
-                    let written = match raw.values.as_ref().and_then(|v| v.get(i)) {
-                        Some(NumberOrText::Text(_)) => written,
-                        _ => format!("{written} {unit}"),
+                    let written = match text {
+                        Some(_) => written,
+                        None => format!("{written} {unit}"),
                     };
-                    self.within(&key, value, &written, dimension, LOAD_BOUNDS)?;
+                    self.within(key, value, &written, dimension, LOAD_BOUNDS)?;
                     if contact.dimensional.is_some() {
                         let stepped = contact
                             .with_load(value)
-                            .map_err(|e| self.error(&key, e.to_string(), None))?;
+                            .map_err(|e| self.error(key, e.to_string(), None))?;
                         if let Some(d) = stepped.dimensional {
                             self.hertz_values(&d.hertz, contact.yield_strength)
                                 .map_err(|e| SceneError {
-                                    key: Some(key.clone()),
+                                    key: Some(key.to_string()),
                                     ..e
                                 })?;
                         }
@@ -133,8 +143,8 @@ impl Validator<'_> {
                 SweepParameter::Position => {
                     // In units of a, like every figure range.
                     let over_a = value * crate::study::length_unit_over_a(scene);
-                    let written = format!("{written}{}", scene.figure.length_unit.suffix());
-                    self.within_reach(&key, over_a, &written)?;
+                    let written = format!("{written}{}", unit_after(scene.figure.length_unit));
+                    self.within_reach(key, over_a, &written)?;
                 }
             }
         }
@@ -231,7 +241,7 @@ impl Validator<'_> {
                     [x, z] if x.is_finite() && z.is_finite() && *z >= 0.0 => {
                         let key = format!("sweep.material_points[{i}]");
                         let unit_over_a = crate::study::length_unit_over_a(scene);
-                        let suffix = scene.figure.length_unit.suffix();
+                        let suffix = unit_after(scene.figure.length_unit);
                         for value in [*x, *z] {
                             let written = format!("{}{suffix}", crate::text::number(value));
                             self.within_reach(&key, value * unit_over_a, &written)?;

@@ -119,7 +119,7 @@ impl Validator<'_> {
         for axis in 0..2 {
             let key = "tractions.file";
             let name = ["x", "y"][axis];
-            let suffix = length_unit.suffix();
+            let suffix = unit_after(length_unit);
             let first = read.first_centre[axis];
             let last = first + (shape[axis] - 1) as f64 * read.cell[axis];
             for node in [first, last] {

@@ -42,7 +42,7 @@ impl Validator<'_> {
         let y = self.range("volume.y", raw.y.as_ref(), (default(-2.0), default(2.0)))?;
         let z = self.range("volume.z", raw.z.as_ref(), (0.0, default(2.0)))?;
         for (key, range) in [("volume.x", x), ("volume.y", y), ("volume.z", z)] {
-            self.range_within_reach(key, range, unit, figure.length_unit.suffix())?;
+            self.range_within_reach(key, range, unit, unit_after(figure.length_unit))?;
         }
         if z.0 < 0.0 {
             return Err(self.error(

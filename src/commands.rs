@@ -15,6 +15,7 @@ use stressfield::probe;
 use stressfield::scene::{ContactKind, Method, PanelSpec, Scene};
 use stressfield::solution::Solution;
 use stressfield::study;
+use stressfield::text;
 use stressfield::{figure, render, report};
 
 pub fn run(command: Command) -> Result<()> {
@@ -507,7 +508,10 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
         bail!("--cells must lie in 8..=2048, got {cells}");
     }
     if !(extent.is_finite() && (1.0..=20.0).contains(&extent)) {
-        bail!("--extent must lie in 1..=20 (units of a; the grid must cover the contact), got {extent}");
+        bail!(
+            "--extent must lie in 1..=20 (units of a; the grid must cover the contact), got {}",
+            text::number(extent)
+        );
     }
     if let Some(f) = friction {
         if let Some(message) = stressfield::scene::friction_requirement(f) {
@@ -520,7 +524,7 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
     }
     if let Some(p) = poisson {
         if !(p > -1.0 && p <= 0.5) {
-            bail!("--poisson must lie in (-1, 0.5], got {p}");
+            bail!("--poisson must lie in (-1, 0.5], got {}", text::number(p));
         }
         nu = p;
     }

@@ -64,7 +64,9 @@ fn read_all_with_capacity(
     capacity: usize,
 ) -> Result<String, InputError> {
     let mut bytes = Vec::with_capacity(capacity);
-    reader.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
+    reader
+        .take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)?;
     if bytes.len() as u64 > limit {
         return Err(InputError::TooLarge { limit });
     }
@@ -110,9 +112,7 @@ impl<R: BufRead> Iterator for Lines<R> {
         let mut buffer = Vec::new();
         // One byte more than a line may have (plus its newline) tells a line that is too long.
         let cap = self.line_limit as u64 + 2;
-        let result = (&mut self.reader)
-            .take(cap)
-            .read_until(b'\n', &mut buffer);
+        let result = (&mut self.reader).take(cap).read_until(b'\n', &mut buffer);
         let error = match result {
             Err(e) => Some(InputError::Io(e)),
             Ok(0) => {
@@ -188,7 +188,10 @@ mod tests {
         let mut long = lines("ok\n123456\nnever\n".as_bytes(), 100, 5);
         assert!(long.next().expect("first").is_ok());
         let error = long.next().expect("second").expect_err("too long");
-        assert!(matches!(error, InputError::LineTooLong { line: 2, .. }), "{error}");
+        assert!(
+            matches!(error, InputError::LineTooLong { line: 2, .. }),
+            "{error}"
+        );
         assert!(long.next().is_none(), "the first error ends the lines");
         // An endless line without a newline ends at the line limit, not the memory.
         let mut zeros = lines(std::io::BufReader::new(std::io::repeat(0)), 1 << 40, 64);

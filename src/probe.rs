@@ -44,11 +44,7 @@ const ECHO_CHARS: usize = 80;
 pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
     let mut points = Vec::new();
     let mut seen_row = false;
-    let lines = crate::input::lines(
-        input,
-        crate::input::POINTS_LIMIT,
-        crate::input::LINE_LIMIT,
-    );
+    let lines = crate::input::lines(input, crate::input::POINTS_LIMIT, crate::input::LINE_LIMIT);
     for line in lines {
         let (line_number, line) = line.map_err(|e| ProbeError::Read(e.to_string()))?;
         let text = line.trim();
@@ -108,9 +104,8 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
 
 /// Writes the header and one row per point ([`Solution::finite_stress_over_p0`]: on a strip
 /// or cell edge at the surface of a numerical solution, the mean of the neighbouring centres),
-/// every value in shortest round-trip form (17
-/// significant digits at most, exact to the last bit; exponent notation below 1e-4 and from
-/// 1e16 on, see [`crate::text::number`]).
+/// every value in shortest round-trip form (17 significant digits at most, exact to the last
+/// bit; exponent notation where it is shorter, see [`crate::text::number`]).
 pub fn write_csv(
     out: &mut impl Write,
     solution: &Solution,
@@ -183,7 +178,10 @@ mod tests {
     fn far_points_and_long_lines_are_refused_with_a_short_echo() {
         assert!(read_points("1e9,0,0\n0,-1e9,1e9\n".as_bytes()).is_ok());
         let error = read_points("0,0,1\n1e79,0,1\n".as_bytes()).expect_err("far");
-        assert!(matches!(error, ProbeError::TooFar { line: 2, .. }), "{error}");
+        assert!(
+            matches!(error, ProbeError::TooFar { line: 2, .. }),
+            "{error}"
+        );
         let text = error.to_string();
         assert!(text.contains("1e79") && text.contains("1e9 a"), "{text}");
         // A bad row of a megabyte is echoed in a few dozen characters.
@@ -206,7 +204,7 @@ mod tests {
         write_csv(&mut out, &solution, &[[1e-5, 0.0, 1e8]]).expect("writes");
         let text = String::from_utf8(out).expect("utf-8");
         let row = text.lines().nth(1).expect("row");
-        assert!(row.starts_with("1e-5,0,100000000,"), "{row}");
+        assert!(row.starts_with("1e-5,0,1e8,"), "{row}");
         for field in row.split(',') {
             assert!(field.len() <= 24, "{field}");
             let value: f64 = field.parse().expect("number");

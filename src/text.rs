@@ -1,17 +1,21 @@
 //! Text shown to people: numbers as short as they can be written exactly, and long echoes of
 //! their own input cut to a readable length.
 
-/// `value` in its shortest round-trip form: plain decimal ("0.3", "120", "-2.5", "0.0012")
-/// for magnitudes in `[1e-4, 1e16)` and zero, otherwise exponent notation ("5e-324",
-/// "1.5e-7", "1e308"), which is then always shorter. Exact to the last bit either way; the
-/// switch points are those of Rust's `{:?}` for floats. Infinities and NaN print as `inf`,
-/// `-inf` and `NaN`.
+/// `value` in its shortest round-trip form (exact to the last bit), in plain decimals ("0.3",
+/// "120", "-2.5", "0.0012", "20000") unless exponent notation is shorter by more than two
+/// characters ("5e-324", "1.5e-7", "1e8", "1e308"), so ordinary numbers read as usual and no
+/// number runs to dozens of digits (at most 24 characters). Infinities and NaN print as
+/// `inf`, `-inf` and `NaN`.
 pub fn number(value: f64) -> String {
-    let magnitude = value.abs();
-    if value == 0.0 || !value.is_finite() || (1e-4..1e16).contains(&magnitude) {
-        format!("{value}")
+    let plain = format!("{value}");
+    if value == 0.0 || !value.is_finite() {
+        return plain;
+    }
+    let exponent = format!("{value:e}");
+    if plain.len() <= exponent.len() + 2 {
+        plain
     } else {
-        format!("{value:e}")
+        exponent
     }
 }
 
@@ -55,11 +59,7 @@ pub fn cut(text: &str, max_chars: usize) -> String {
     let mut chars = text.char_indices();
     match chars.nth(max_chars) {
         None => text.to_string(),
-        Some((end, _)) => format!(
-            "{}… ({} characters)",
-            &text[..end],
-            text.chars().count()
-        ),
+        Some((end, _)) => format!("{}… ({} characters)", &text[..end], text.chars().count()),
     }
 }
 
@@ -95,9 +95,19 @@ mod tests {
         assert_eq!(number(1e308), "1e308");
         assert_eq!(number(-1.5e-7), "-1.5e-7");
         assert_eq!(number(1e16), "1e16");
+        assert_eq!(number(1000.0), "1000");
+        assert_eq!(number(20000.0), "20000");
+        assert_eq!(number(1e8), "1e8");
+        assert_eq!(number(123_456_789.0), "123456789");
+        assert_eq!(number(0.00001), "1e-5");
         assert_eq!(number(f64::INFINITY), "inf");
         // Round trip, to the bit, on both sides of the switch.
-        for v in [0.1 + 0.2, 1.234_567_890_123_456_7e-5, 9.999_999_999_999_998e15, 5e-324] {
+        for v in [
+            0.1 + 0.2,
+            1.234_567_890_123_456_7e-5,
+            9.999_999_999_999_998e15,
+            5e-324,
+        ] {
             assert_eq!(number(v).parse::<f64>().expect("parses"), v);
         }
         // Never longer than 24 characters, whatever the value.

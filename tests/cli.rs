@@ -348,7 +348,131 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     // Case 12: the key the user wrote, not a generated value.
     ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nfrom = inf\nto = 0.5\nsteps = 3\n", "key `sweep.from`", "finite"),
     ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"position\"\nfrom = -1.7e308\nto = 1.7e308\nsteps = 3\n", "key `sweep.to`", "double precision"),
+    // ... the value written, not a generated step (5e299 is the middle of 0 to 1e300).
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nfrom = 0.0\nto = 1e300\nsteps = 3\n", "key `sweep.to`", "got 1e300"),
+    // Case 3: derived values: a gear pair's radii at the pitch point, an ellipse's b/a.
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.gears]\nmodule = \"5 mm\"\nteeth = [20, 40]\npressure_angle = \"1e-300 deg\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n", "key `contact.gears`", "radius of curvature at the pitch point is 8.727e-304 m"),
+    ("format = 1\n[contact]\nkind = \"elliptical\"\nload = \"1 kN\"\n[contact.body1]\nradius_x = \"26.15 mm\"\nradius_y = \"-6.35000000001 mm\"\nmaterial = \"bearing_steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"bearing_steel\"\n", "key `contact.body2.radius_y`", "b/a = 3492000"),
 ];
+
+/// A small rough scene (a 32² generated surface on a steel flat) for [`ROUGH_EXTREMES`].
+const ROUGH_BASE: &str = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\nfriction = 0.1\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 32\nspacing = \"0.5 um\"\nhurst = 0.8\nrolloff = \"8 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\n";
+
+/// Issue 13 in rough scenes: a line of [`ROUGH_BASE`] replaced, the key named in the error
+/// and the limit.
+const ROUGH_EXTREMES: &[(&str, &str, &str, &str)] = &[
+    (
+        "load = \"0.5 N\"",
+        "load = \"5e-324 N\"",
+        "key `contact.load`",
+        "between 1e-12 N and 1e12 N, got `5e-324 N`",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "load = \"1e12 N\"",
+        "key `contact.load`",
+        "more than the combined modulus E*",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "mean_pressure = \"1e300 Pa\"",
+        "key `contact.mean_pressure`",
+        "1e13 Pa",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "mean_pressure = \"1 TPa\"",
+        "key `contact.mean_pressure`",
+        "more than the combined modulus E*",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "approach = \"1 mm\"",
+        "key `contact.approach`",
+        "peak-to-valley",
+    ),
+    (
+        "friction = 0.1",
+        "friction = 1e300",
+        "key `contact.friction`",
+        "0..=10",
+    ),
+    (
+        "spacing = \"0.5 um\"",
+        "spacing = \"1e300 um\"",
+        "key `surface.generate.spacing`",
+        "between 1e-10 m and 1 m",
+    ),
+    (
+        "rms_height = \"0.05 um\"",
+        "rms_height = \"1e300 um\"",
+        "key `surface.generate.rms_height`",
+        "0.1 m",
+    ),
+    (
+        "rms_height = \"0.05 um\"",
+        "rms_slope = 1e300",
+        "key `surface.generate.rms_slope`",
+        "between 1e-6 and 10",
+    ),
+    (
+        "hurst = 0.8",
+        "hurst = 5.0",
+        "key `surface.generate.hurst`",
+        "(0, 1]",
+    ),
+    (
+        "rolloff = \"8 um\"",
+        "rolloff = \"1e300 m\"",
+        "key `surface.generate.rolloff`",
+        "10000 m",
+    ),
+    (
+        "sphere_radius = \"2 mm\"",
+        "sphere_radius = \"1e300 m\"",
+        "key `surface.generate.sphere_radius`",
+        "1e6 m",
+    ),
+];
+
+/// Issue 13: extreme values in rough and surface scenes are refused at `check`, naming the key,
+/// instead of a NaN surface or a solver that never converges.
+#[test]
+fn rough_and_surface_extremes_are_refused() {
+    for (line, replacement, key, fix) in ROUGH_EXTREMES {
+        assert!(ROUGH_BASE.contains(line), "{line}");
+        let (_dir, scene) = scene_file(&ROUGH_BASE.replace(line, replacement));
+        assert_fails_with(&run(&["check", scene.to_str().expect("utf8")]), &[key, fix]);
+    }
+    // A measured surface whose heights are far beyond any roughness (a wrong height unit).
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mut rows = vec![vec!["0.1"; 8]; 8];
+    rows[1][1] = "1e300";
+    let asc: String = rows.iter().map(|r| r.join(" ") + "\n").collect();
+    std::fs::write(dir.path().join("s.asc"), asc).expect("write");
+    let scene = dir.path().join("s.toml");
+    std::fs::write(
+        &scene,
+        "format = 1\n[contact]\nkind = \"surface\"\n[surface]\nfile = \"s.asc\"\nspacing = \"1 um\"\nheight_unit = \"um\"\n",
+    )
+    .expect("write");
+    assert_fails_with(
+        &run(&["check", scene.to_str().expect("utf8")]),
+        &["key `surface.file`", "row 1, column 1", "1e294 m", "1 m"],
+    );
+    let asc = dir.path().join("s.asc");
+    assert_fails_with(
+        &run(&[
+            "surface",
+            asc.to_str().expect("utf8"),
+            "--spacing",
+            "1um",
+            "--height-unit",
+            "um",
+        ]),
+        &["row 1, column 1", "1e294 m"],
+    );
+}
 
 #[test]
 fn bad_scenes_name_the_key_and_the_fix() {
@@ -571,13 +695,28 @@ fn numerical_probe_on_strip_and_cell_edges_is_finite() {
     assert!((line[0][3] + 1.0).abs() < 1e-3, "{:?}", line[0]);
     assert!(line[1][5] < 0.0 && line[1][5] > -0.02, "{:?}", line[1]);
     let sliding = probe_rows(
-        &["probe", "--method", "numerical", "--friction", "0.3", "--points", "-"],
+        &[
+            "probe",
+            "--method",
+            "numerical",
+            "--friction",
+            "0.3",
+            "--points",
+            "-",
+        ],
         "0,0,0\n",
     );
     assert_rows_finite(&sliding);
     let point = probe_rows(
         &[
-            "probe", "--contact", "point", "--method", "numerical", "--cells", "8", "--points",
+            "probe",
+            "--contact",
+            "point",
+            "--method",
+            "numerical",
+            "--cells",
+            "8",
+            "--points",
             "-",
         ],
         "0,0,0\n0.5,0.25,0\n1,1,0\n",
@@ -592,8 +731,15 @@ fn probe_refuses_friction_beyond_a_few() {
     for args in [
         &["probe", "--friction", "1e300", "--points", "-"][..],
         &[
-            "probe", "--contact", "point", "--method", "numerical", "--friction", "1e308",
-            "--points", "-",
+            "probe",
+            "--contact",
+            "point",
+            "--method",
+            "numerical",
+            "--friction",
+            "1e308",
+            "--points",
+            "-",
         ][..],
     ] {
         let output = run_with_stdin(args, "0,0,1\n");
@@ -643,7 +789,7 @@ fn numbers_and_texts_keep_outputs_small() {
     let output = run_with_stdin(&["probe", "--points", "-"], "1e8,0,1e-7\n1e-300,0,1\n");
     assert!(output.status.success(), "{}", stderr(&output));
     let text = stdout(&output);
-    assert!(text.lines().nth(1).expect("row").starts_with("100000000,0,1e-7,"));
+    assert!(text.lines().nth(1).expect("row").starts_with("1e8,0,1e-7,"));
     for field in text.lines().skip(1).flat_map(|l| l.split(',')) {
         assert!(field.len() <= 24, "{field}");
     }
@@ -667,7 +813,14 @@ fn endless_inputs_stop_at_a_limit() {
         &["key `tractions.file`", "256 MiB"],
     );
     assert_fails_with(
-        &run(&["surface", "/dev/zero", "--spacing", "1um", "--height-unit", "um"]),
+        &run(&[
+            "surface",
+            "/dev/zero",
+            "--spacing",
+            "1um",
+            "--height-unit",
+            "um",
+        ]),
         &["/dev/zero"],
     );
     // Standard input too: a megabyte without a newline.
@@ -783,7 +936,10 @@ fn far_probe_points_are_refused_and_near_ones_are_finite() {
             "1e9,0,1\n0,0,1e9\n-1e9,1e9,0\n",
         );
         assert_rows_finite(&rows);
-        assert!(rows.iter().all(|r| r[3..].iter().all(|v| v.abs() < 1e-8)), "{rows:?}");
+        assert!(
+            rows.iter().all(|r| r[3..].iter().all(|v| v.abs() < 1e-8)),
+            "{rows:?}"
+        );
     }
 }
 

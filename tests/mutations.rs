@@ -2,8 +2,8 @@
 //! the text cut short): the scene reader never panics, and either refuses the mutant with a
 //! message that names a key or a line, or accepts it with every derived value finite (the
 //! contact's size and pressure, the figure's ranges, the stresses at a few points of each
-//! panel, the heights of a surface). Rough contacts are not solved here (the solver has its own
-//! tests); their surfaces are checked.
+//! panel, the heights and statistics of a surface). Rough contacts are not solved here (the
+//! solver has its own tests); their surfaces are checked.
 
 use std::path::{Path, PathBuf};
 
@@ -208,6 +208,24 @@ fn check_accepted(scene: &Scene) -> Result<(), String> {
         if !surface.heights.heights_m().iter().all(|h| h.is_finite()) {
             return Err("a height is not finite".into());
         }
+        // The statistics of the surface (a characterisation that fails says why, clearly).
+        let options = stressfield::surface::stats::Options {
+            form: surface.form,
+            band_m: surface.band_m,
+            window: !surface.generated,
+        };
+        if let Ok(c) = stressfield::surface::stats::characterise(&surface.heights, &options) {
+            let rough = contact.rough.as_ref();
+            let report = stressfield::surface_report::SurfaceReport::new(
+                &c,
+                rough.and_then(|r| r.e_star_pa),
+                rough.and_then(|r| r.hardness_pa),
+            )
+            .text(&c, "mutant");
+            if report.contains("NaN") || report.contains(" inf") {
+                return Err(format!("the surface report: {report}"));
+            }
+        }
     }
     if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
         return Ok(());
@@ -222,8 +240,7 @@ fn check_accepted(scene: &Scene) -> Result<(), String> {
         finite("a figure range", v)?;
     }
     // The hertz report of a closed form (cheap); a few points of each panel otherwise.
-    if contact.has_closed_form() && scene.panels.iter().all(|p| p.method.key() == "closed_form")
-    {
+    if contact.has_closed_form() && scene.panels.iter().all(|p| p.method.key() == "closed_form") {
         let report = stressfield::report::hertz(scene);
         if report.contains("NaN") || report.contains(" inf") {
             return Err(format!("the hertz report: {report}"));

@@ -101,17 +101,19 @@ impl Scene {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Self, SceneError> {
         let file = path.display().to_string();
-        let text = crate::input::read_to_string(path, crate::input::SCENE_FILE_LIMIT).map_err(
-            |e| SceneError {
-                file: file.clone(),
-                key: None,
-                line_column: None,
-                message: format!("cannot read the scene: {e}"),
-                hint: Some(
-                    "check the path; scenes are TOML files such as scenes/line_tau1.toml".into(),
-                ),
-            },
-        )?;
+        let text =
+            crate::input::read_to_string(path, crate::input::SCENE_FILE_LIMIT).map_err(|e| {
+                SceneError {
+                    file: file.clone(),
+                    key: None,
+                    line_column: None,
+                    message: format!("cannot read the scene: {e}"),
+                    hint: Some(
+                        "check the path; scenes are TOML files such as scenes/line_tau1.toml"
+                            .into(),
+                    ),
+                }
+            })?;
         let name = path
             .file_stem()
             .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());

@@ -58,10 +58,7 @@ impl StripTractions {
         }
         let n = self.pressure.len() as f64;
         let half = 0.5 * (self.edges[self.pressure.len()] - self.edges[0]) / n;
-        Stress::mean(&[
-            self.summed(x - half, z, nu),
-            self.summed(x + half, z, nu),
-        ])
+        Stress::mean(&[self.summed(x - half, z, nu), self.summed(x + half, z, nu)])
     }
 
     fn summed(&self, x: f64, z: f64, nu: f64) -> Stress {
@@ -115,7 +112,10 @@ mod tests {
                 let left = tractions.stress_over_p0(x - 0.1, 0.0, 0.3);
                 let right = tractions.stress_over_p0(x + 0.1, 0.0, 0.3);
                 let mean = Stress::mean(&[left, right]);
-                assert!((at_edge.xx - mean.xx).abs() < 1e-14, "{at_edge:?} vs {mean:?}");
+                assert!(
+                    (at_edge.xx - mean.xx).abs() < 1e-14,
+                    "{at_edge:?} vs {mean:?}"
+                );
                 // szz = -p on the surface: the mean of the two strips' pressures.
                 let (p_left, _) = tractions.at(x - 0.1);
                 let (p_right, _) = tractions.at(x + 0.1);

@@ -60,9 +60,7 @@ impl Stress {
     /// The mean of several stresses (componentwise).
     #[must_use]
     pub fn mean(stresses: &[Stress]) -> Self {
-        let sum = stresses
-            .iter()
-            .fold(Stress::default(), |sum, s| sum + *s);
+        let sum = stresses.iter().fold(Stress::default(), |sum, s| sum + *s);
         sum.scaled(1.0 / stresses.len().max(1) as f64)
     }
 

@@ -68,8 +68,9 @@ impl HeightMap {
         {
             return Err(SurfaceError::NotFinite { row, column, value });
         }
-        if let Some(((row, column), &value)) =
-            heights_m.indexed_iter().find(|(_, v)| v.abs() > MAX_HEIGHT_M)
+        if let Some(((row, column), &value)) = heights_m
+            .indexed_iter()
+            .find(|(_, v)| v.abs() > MAX_HEIGHT_M)
         {
             return Err(SurfaceError::TooHigh { row, column, value });
         }
@@ -137,7 +138,14 @@ mod tests {
         let mut high = ok.clone();
         high[[0, 1]] = -1e300;
         let error = HeightMap::new(high, [1e-6, 1e-6]).expect_err("too high");
-        assert!(matches!(error, SurfaceError::TooHigh { row: 0, column: 1, .. }));
+        assert!(matches!(
+            error,
+            SurfaceError::TooHigh {
+                row: 0,
+                column: 1,
+                ..
+            }
+        ));
         assert!(error.to_string().contains("-1e300 m"), "{error}");
         let mut bad = ok;
         bad[[1, 2]] = f64::NAN;

@@ -83,14 +83,12 @@ impl Validator<'_> {
             None => None,
         };
         let modulus_pa = match (&raw.modulus, preset) {
-            (Some(text), _) => {
-                self.bounded(
-                    &format!("{key}.modulus"),
-                    text,
-                    Dimension::Pressure,
-                    MODULUS_BOUNDS,
-                )?
-            }
+            (Some(text), _) => self.bounded(
+                &format!("{key}.modulus"),
+                text,
+                Dimension::Pressure,
+                MODULUS_BOUNDS,
+            )?,
             (None, Some(p)) => p.material.modulus_pa,
             (None, None) => {
                 return Err(self.error(

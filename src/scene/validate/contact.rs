@@ -57,7 +57,10 @@ impl Validator<'_> {
             (Some(ratio), ContactKind::Point) => {
                 return Err(self.error(
                     "contact.tangential",
-                    format!("the tangential force over mu P must lie in (0, 1], got {ratio}"),
+                    format!(
+                        "the tangential force over mu P must lie in (0, 1], got {}",
+                        crate::text::number(ratio)
+                    ),
                     Some("1 is full sliding; 0.5 leaves a stick circle of radius 0.79a"),
                 ))
             }
@@ -117,7 +120,9 @@ impl Validator<'_> {
                     Some("use kind = \"elliptical\", or remove it"),
                 ))
             }
-            (Some(ratio), ContactKind::Elliptical) if (MIN_ASPECT..=MAX_ASPECT).contains(&ratio) => {
+            (Some(ratio), ContactKind::Elliptical)
+                if (MIN_ASPECT..=MAX_ASPECT).contains(&ratio) =>
+            {
                 ratio
             }
             (Some(ratio), ContactKind::Elliptical) => {
@@ -331,7 +336,10 @@ impl Validator<'_> {
                 ("the approach (m)", point.approach_m),
             ],
             Hertz::Elliptical(ellipse) => vec![
-                ("the effective modulus E* (Pa)", ellipse.effective_modulus_pa),
+                (
+                    "the effective modulus E* (Pa)",
+                    ellipse.effective_modulus_pa,
+                ),
                 ("the semi-axis a (m)", ellipse.semi_axis_x_m),
                 ("the semi-axis b (m)", ellipse.semi_axis_y_m),
                 ("the peak pressure p0 (Pa)", ellipse.p0_pa),
@@ -340,9 +348,9 @@ impl Validator<'_> {
             ],
         };
         let yield_load = yield_strength.map(|y| hertz.load_for_peak_pressure(y.pa));
-        let values = values
-            .into_iter()
-            .chain(yield_load.map(|load| ("the load at which p0 reaches the yield strength", load)));
+        let values = values.into_iter().chain(
+            yield_load.map(|load| ("the load at which p0 reaches the yield strength", load)),
+        );
         for (name, value) in values {
             if !(value.is_finite() && value > 0.0) {
                 return Err(self.error(
@@ -364,7 +372,10 @@ impl Validator<'_> {
             NumberOrText::Number(n) if *n == 1.0 => Ok(None),
             NumberOrText::Number(n) => Err(self.error(
                 key,
-                format!("a bare number means normalised units and must be 1, got {n}"),
+                format!(
+                    "a bare number means normalised units and must be 1, got {}",
+                    crate::text::number(*n)
+                ),
                 Some(&format!(
                     "write it with a unit for a dimensional scale, e.g. {}",
                     dimension.example()
@@ -423,8 +434,12 @@ impl Validator<'_> {
                 from_hardness: None,
             })),
             (None, Some(text)) => {
-                let number =
-                    self.bounded("contact.hardness", text, Dimension::Hardness, HARDNESS_BOUNDS)?;
+                let number = self.bounded(
+                    "contact.hardness",
+                    text,
+                    Dimension::Hardness,
+                    HARDNESS_BOUNDS,
+                )?;
                 Ok(Some(YieldStrength {
                     pa: yield_strength_from_hardness_pa(number),
                     from_hardness: Some(number),

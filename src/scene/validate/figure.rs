@@ -85,10 +85,19 @@ impl Validator<'_> {
         };
         let (_, _, normal) = figure.section.coordinates();
         if !at.is_finite() {
-            return Err(self.error(key, format!("must be a finite {normal}, got {at}"), None));
+            return Err(self.error(
+                key,
+                format!("must be a finite {normal}, got {}", crate::text::number(at)),
+                None,
+            ));
         }
-        let unit_over_a = figure.length_unit.metres(contact.half_width_m()) / contact.half_width_m();
-        let written = format!("{}{}", crate::text::number(at), unit_after(figure.length_unit));
+        let unit_over_a =
+            figure.length_unit.metres(contact.half_width_m()) / contact.half_width_m();
+        let written = format!(
+            "{}{}",
+            crate::text::number(at),
+            unit_after(figure.length_unit)
+        );
         self.within_reach(key, at * unit_over_a, &written)?;
         if contact.kind == ContactKind::Line && at != 0.0 {
             return Err(self.error(
@@ -101,7 +110,8 @@ impl Validator<'_> {
             return Err(self.error(
                 key,
                 format!(
-                    "the depth of an xy section must be >= 0 (z points into the body), got {at}"
+                    "the depth of an xy section must be >= 0 (z points into the body), got {}",
+                    crate::text::number(at)
                 ),
                 Some("0 is the surface"),
             ));
@@ -244,17 +254,14 @@ impl Validator<'_> {
                 "figure.z",
                 format!(
                     "depth must be >= 0 (z points into the body), got {}",
-                    vertical.0
+                    crate::text::number(vertical.0)
                 ),
                 Some("start the range at 0 for the surface"),
             ));
         }
         let unit_over_a = 1.0 / a_in_unit;
         let suffix = unit_after(length_unit);
-        for (name, range) in [
-            (horizontal_name, horizontal),
-            (vertical_name, vertical),
-        ] {
+        for (name, range) in [(horizontal_name, horizontal), (vertical_name, vertical)] {
             self.range_within_reach(&format!("figure.{name}"), range, unit_over_a, suffix)?;
         }
         // At equal scale: neither a sliver nor a tower.

@@ -303,7 +303,10 @@ impl Validator<'_> {
         if !(nu > -1.0 && nu <= 0.5) {
             return Err(self.error(
                 key,
-                format!("Poisson's ratio must lie in (-1, 0.5], got {nu}"),
+                format!(
+                    "Poisson's ratio must lie in (-1, 0.5], got {}",
+                    crate::text::number(nu)
+                ),
                 Some("steel is about 0.3"),
             ));
         }

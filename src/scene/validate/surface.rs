@@ -5,10 +5,10 @@ use std::sync::Arc;
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::contact::rough::Control;
 use crate::surface::generate::{self, Amplitude, Form, Generator, Spectrum};
 use crate::surface::read::{self, Fill, ReadOptions};
 use crate::surface::stats::FormRemoval;
-use crate::contact::rough::Control;
 use crate::surface::HeightMap;
 
 /// The range of a generated surface's rms slope (a slope of 10 rises 10 m a metre).
@@ -89,8 +89,10 @@ impl Validator<'_> {
             None => None,
             Some(values) => match values.as_slice() {
                 [a, b] => {
-                    let a = self.bounded("surface.band", a, Dimension::Length, WAVELENGTH_BOUNDS)?;
-                    let b = self.bounded("surface.band", b, Dimension::Length, WAVELENGTH_BOUNDS)?;
+                    let a =
+                        self.bounded("surface.band", a, Dimension::Length, WAVELENGTH_BOUNDS)?;
+                    let b =
+                        self.bounded("surface.band", b, Dimension::Length, WAVELENGTH_BOUNDS)?;
                     if a >= b {
                         return Err(self.error(
                             "surface.band",
@@ -177,11 +179,11 @@ impl Validator<'_> {
                     .unwrap_or_else(|| Path::new(""))
                     .join(file);
                 let map = read::read_surface(&path, &options).map_err(|e| {
-                    self.error(
-                        &format!("{key}.file"),
-                        e.to_string(),
-                        Some("the path is relative to the scene file"),
-                    )
+                    let hint = match e {
+                        read::ReadError::Io { .. } => "the path is relative to the scene file",
+                        _ => "check the file and its height_unit and spacing",
+                    };
+                    self.error(&format!("{key}.file"), e.to_string(), Some(hint))
                 })?;
                 Ok((map, file.clone(), None))
             }
@@ -497,7 +499,7 @@ impl Validator<'_> {
                 if !(t > 0.0 && t < 1e-2) {
                     return Err(self.error(
                         "numerical.tolerance",
-                        format!("must lie in (0, 0.01), got {t}"),
+                        format!("must lie in (0, 0.01), got {}", crate::text::number(t)),
                         Some("the default is 1e-8"),
                     ));
                 }

@@ -44,7 +44,10 @@ impl Validator<'_> {
                     if !value.is_finite() {
                         return Err(self.error(
                             key,
-                            format!("must be a finite number, got {value}"),
+                            format!(
+                                "must be a finite number, got {}",
+                                crate::text::number(value)
+                            ),
                             None,
                         ));
                     }

@@ -1,8 +1,8 @@
 //! The `[tractions]` table: a CSV grid of surface tractions.
 
+use super::figure::MIN_SPAN_OVER_A;
 #[allow(clippy::wildcard_imports)]
 use super::*;
-use super::figure::MIN_SPAN_OVER_A;
 
 /// The largest traction, in units of the figures' p0: far beyond any contact (a traction
 /// file in MPa with p0 = 1 Pa stays below it), and far from where sums of millions of cells
@@ -75,14 +75,15 @@ impl Validator<'_> {
             .parent()
             .unwrap_or_else(|| std::path::Path::new(""))
             .join(&table.file);
-        let text = crate::input::read_to_string(&path, crate::input::TRACTION_FILE_LIMIT)
-            .map_err(|e| {
+        let text = crate::input::read_to_string(&path, crate::input::TRACTION_FILE_LIMIT).map_err(
+            |e| {
                 self.error(
                     "tractions.file",
                     format!("cannot read {}: {e}", path.display()),
                     Some("the path is relative to the scene file"),
                 )
-            })?;
+            },
+        )?;
         let read = traction_csv::read(&text)
             .map_err(|m| self.error("tractions.file", format!("{}: {m}", path.display()), None))?;
         let a_m = contact.half_width_m();

@@ -47,7 +47,10 @@ impl Validator<'_> {
         if z.0 < 0.0 {
             return Err(self.error(
                 "volume.z",
-                format!("depths must be >= 0 (z points into the body), got {}", z.0),
+                format!(
+                    "depths must be >= 0 (z points into the body), got {}",
+                    crate::text::number(z.0)
+                ),
                 None,
             ));
         }
@@ -68,7 +71,10 @@ impl Validator<'_> {
             Some(t) => {
                 return Err(self.error(
                     "volume.threshold",
-                    format!("must lie in [0, 1) (a fraction of the largest |value|), got {t}"),
+                    format!(
+                        "must lie in [0, 1) (a fraction of the largest |value|), got {}",
+                        crate::text::number(t)
+                    ),
                     None,
                 ))
             }

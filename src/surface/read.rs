@@ -544,22 +544,22 @@ mod tests {
         assert!(ascii("1 2\n3 4\n", zero)
             .expect_err("zero")
             .to_string()
-            .contains("spacing must be positive"));
+            .contains("spacing must lie between"));
     }
 
     #[test]
     fn missing_points_are_interpolated_on_request() {
         let options = ReadOptions {
             spacing_m: Some([1e-6, 1e-6]),
-            height_unit_m: Some(1.0),
+            height_unit_m: Some(1e-6),
             fill: Fill::Interpolate,
             ..ReadOptions::default()
         };
-        // A plane z = x + 2y with two holes: harmonic interpolation restores it exactly.
+        // A plane z = x + 2y (um) with two holes: harmonic interpolation restores it exactly.
         let text = "0 1 2 3\n2 nan 4 5\n4 5 NaN 7\n6 7 8 9\n";
         let map = ascii(text, options).expect("filled");
-        assert!((map.heights_m()[[1, 1]] - 3.0).abs() < 1e-7);
-        assert!((map.heights_m()[[2, 2]] - 6.0).abs() < 1e-7);
+        assert!((map.heights_m()[[1, 1]] - 3e-6).abs() < 1e-13);
+        assert!((map.heights_m()[[2, 2]] - 6e-6).abs() < 1e-13);
         let all = ReadOptions { ..options };
         assert!(ascii("nan nan\nnan nan\n", all).is_err());
     }

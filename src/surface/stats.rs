@@ -248,7 +248,7 @@ fn least_squares<const K: usize>(
         for (i, &z) in map.row(j).iter().enumerate() {
             let b = basis(i, j);
             for p in 0..K {
-                for q in p..K {
+                for q in 0..K {
                     a[p][q] += b[p] * b[q];
                 }
                 r[p] += b[p] * z;
@@ -258,16 +258,13 @@ fn least_squares<const K: usize>(
     });
     let (mut a, mut r) = ([[0.0; K]; K], [0.0; K]);
     for (row_a, row_r) in &rows {
-        for p in 0..K {
-            for q in p..K {
-                a[p][q] += row_a[p][q];
+        for (sum, row) in a.iter_mut().zip(row_a) {
+            for (sum, value) in sum.iter_mut().zip(row) {
+                *sum += value;
             }
-            r[p] += row_r[p];
         }
-    }
-    for p in 0..K {
-        for q in 0..p {
-            a[p][q] = a[q][p];
+        for (sum, value) in r.iter_mut().zip(row_r) {
+            *sum += value;
         }
     }
     for col in 0..K {

@@ -39,12 +39,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         );
     }
     if let Some(path) = pressure {
-        if path.extension().is_none_or(|e| e != "npy") {
-            bail!(
-                "--pressure writes a NumPy file: give a path ending in .npy, got {}",
-                path.display()
-            );
-        }
+        npy_path("--pressure", path)?;
     }
     let bar = solver_bar();
     let solution = study::rough::solve(&scene, &mut |iteration, residual| {
@@ -55,10 +50,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     let solution = solution.with_context(|| format!("scene {}", scene.name))?;
     let report = ContactReport::new(&scene, &solution)?;
     if let Some(path) = pressure {
-        let mut bytes = Vec::new();
-        ndarray_npy::WriteNpyExt::write_npy(&solution.pressure_pa, &mut bytes)
-            .context("encoding the pressure as .npy")?;
-        write_atomic(path, &bytes)?;
+        write_npy(path, &solution.pressure_pa, "pressure")?;
     }
     if json {
         print_out(&format!("{}\n", report.json()))
@@ -72,6 +64,26 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         }
         print_out(&text)
     }
+}
+
+/// Refuses an output path that does not end in `.npy`.
+fn npy_path(flag: &str, path: &Path) -> Result<()> {
+    if path.extension().is_none_or(|e| e != "npy") {
+        bail!(
+            "{flag} writes a NumPy file: give a path ending in .npy, got {}",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// `array` as a NumPy .npy file at `path`, written atomically.
+fn write_npy(path: &Path, array: &ndarray::Array2<f64>, what: &str) -> Result<()> {
+    let mut bytes = Vec::new();
+    ndarray_npy::WriteNpyExt::write_npy(array, &mut bytes)
+        .with_context(|| format!("encoding the {what} as .npy"))?;
+    write_atomic(path, &bytes)?;
+    Ok(())
 }
 
 fn length(flag: &str, text: &str) -> Result<f64> {
@@ -128,6 +140,7 @@ pub fn surface_of_scene(path: &Path) -> Result<()> {
         e_star: None,
         hardness: None,
         json: false,
+        heights: None,
     })
 }
 
@@ -152,6 +165,9 @@ pub fn surface(args: &SurfaceArgs) -> Result<()> {
             Ok((a, b))
         })
         .transpose()?;
+    if let Some(path) = &args.heights {
+        npy_path("--heights", path)?;
+    }
     let is_scene = args.input.extension().is_some_and(|e| e == "toml");
     let (map, source, generated, mut e_star, mut hardness, scene_form, scene_band) = if is_scene {
         for (flag, given) in [
@@ -246,9 +262,19 @@ pub fn surface(args: &SurfaceArgs) -> Result<()> {
     let characterisation =
         stats::characterise(&map, &options).with_context(|| format!("characterising {source}"))?;
     let report = SurfaceReport::new(&characterisation, e_star, hardness);
+    if let Some(path) = &args.heights {
+        write_npy(path, map.heights_m(), "heights")?;
+    }
     if args.json {
         print_out(&format!("{}\n", report.json()))
     } else {
-        print_out(&report.text(&characterisation, &source))
+        let mut text = report.text(&characterisation, &source);
+        if let Some(path) = &args.heights {
+            text.push_str(&format!(
+                "heights written to {} (m, float64, [rows, columns], row = y, before levelling)\n",
+                path.display()
+            ));
+        }
+        print_out(&text)
     }
 }

@@ -75,7 +75,7 @@ pub fn record(scene: &Scene, stream: &RecordingStream) -> Result<Summary, Record
         .flatten()
         .filter_map(|cell| match cell {
             Cell::Map(figure) => Some(figure),
-            Cell::Chart(_) => None,
+            Cell::Chart(_) | Cell::Table(_) => None,
         })
         .collect();
     for (k, map) in maps.iter().enumerate() {

@@ -85,8 +85,11 @@ impl FormRemoval {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Options {
     pub form: FormRemoval,
-    /// Band of wavelengths `(shortest, longest)` in m for the Hurst fit; `None`: from 8
-    /// samples to an eighth of the map's shorter side.
+    /// Band of wavelengths `(shortest, longest)` in m for the Hurst fit; `None`: from 4
+    /// samples to a quarter of the map's shorter side (a decade or more from 160 samples on;
+    /// the range of a generated surface's power law, whose cutoff is 4 samples and roll-off
+    /// a quarter of the map by default). Set it for measured maps whose shortest wavelengths
+    /// carry the instrument's response.
     pub band_m: Option<(f64, f64)>,
     /// Hann window before the spectra (measured, non-periodic maps).
     pub window: bool,
@@ -668,10 +671,10 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
             )
         })
         .collect();
-    // Default band: 8 samples to an eighth of the map; a small map takes what it resolves.
+    // Default band: 4 samples to a quarter of the map; a small map takes what it resolves.
     let resolved = (2.0 * dx.max(dy), lx.min(ly));
     let (shortest, longest) = options.band_m.unwrap_or_else(|| {
-        let (short, long) = (8.0 * dx.max(dy), lx.min(ly) / 8.0);
+        let (short, long) = (4.0 * dx.max(dy), lx.min(ly) / 4.0);
         if long >= 2.0 * short {
             (short, long)
         } else {

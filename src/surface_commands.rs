@@ -28,6 +28,20 @@ fn solver_bar() -> ProgressBar {
     bar
 }
 
+/// A spinner with a message and the elapsed time, for work of unknown length (hidden where
+/// progress bars are).
+fn spinner(message: &str) -> ProgressBar {
+    let bar = progress_bar(0);
+    if !bar.is_hidden() {
+        if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
+            bar.set_style(style);
+        }
+        bar.set_message(message.to_string());
+        bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    }
+    bar
+}
+
 /// `contact SCENE [--json] [--pressure FILE.npy]`.
 pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()> {
     let scene = Scene::load(scene_path)?;
@@ -48,7 +62,13 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     });
     bar.finish_and_clear();
     let solution = solution.with_context(|| format!("scene {}", scene.name))?;
-    let report = ContactReport::new(&scene, &solution)?;
+    let maxima_bar = spinner(&format!(
+        "subsurface maxima: DC-FFT layers down to {:.1} um",
+        stressfield::rough_report::search_depth_m(&solution) * 1e6
+    ));
+    let report = ContactReport::new(&scene, &solution);
+    maxima_bar.finish_and_clear();
+    let report = report?;
     if let Some(path) = pressure {
         write_npy(path, &solution.pressure_pa, "pressure")?;
     }

@@ -13,6 +13,7 @@ use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;
 use stressfield::surface::read::{self, Fill, ReadOptions};
 use stressfield::surface::stats::{self, FormRemoval, Options};
+use stressfield::surface::MIN_SPACING_M;
 use stressfield::surface_report::SurfaceReport;
 
 /// A solver progress bar: iterations as they come (the total is not known).
@@ -118,8 +119,9 @@ fn length(flag: &str, text: &str) -> Result<f64> {
     let unit = read::length_unit_m(&text[split..])
         .with_context(|| format!("{flag} {text}: unknown unit; use m, mm, um, nm or pm"))?;
     let metres = value * unit;
-    if !(metres > 0.0 && metres.is_finite()) {
-        bail!("{flag} must be positive and finite, got {text}");
+    // The spacings and wavelengths of a surface (as in scenes): from an atomic spacing to 10 km.
+    if !((MIN_SPACING_M..=1e4).contains(&metres)) {
+        bail!("{flag} must lie between 1e-10 m and 10000 m, got {text}");
     }
     Ok(metres)
 }
@@ -141,8 +143,9 @@ fn pressure_pa(flag: &str, text: &str) -> Result<f64> {
         other => bail!("{flag} {text}: unknown unit `{other}`; use Pa, MPa, GPa, or HV/HB"),
     };
     let pa = value * factor;
-    if !(pa > 0.0 && pa.is_finite()) {
-        bail!("{flag} must be positive and finite, got {text}");
+    // As moduli, hardnesses and pressures in scenes: a pascal to ten times diamond's modulus.
+    if !((1.0..=1e13).contains(&pa)) {
+        bail!("{flag} must lie between 1 Pa and 1e13 Pa, got {text}");
     }
     Ok(pa)
 }

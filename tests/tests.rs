@@ -6,6 +6,7 @@ mod contracts;
 mod dcfft;
 mod golden;
 mod line_contact;
+mod mutations;
 mod patch;
 mod point_contact;
 #[cfg(feature = "rerun")]

@@ -57,11 +57,11 @@ impl Sweep {
     pub fn describe(&self, k: usize, scene: &Scene) -> String {
         let value = self.values[k];
         match self.parameter {
-            SweepParameter::Friction => format!("μ = {value}"),
+            SweepParameter::Friction => format!("μ = {}", crate::text::number(value)),
             SweepParameter::Load if scene.contact.kind == ContactKind::Line => {
-                format!("P = {:.4} kN/m", value * 1e-3)
+                format!("P = {} kN/m", crate::text::fixed(value * 1e-3, 4))
             }
-            SweepParameter::Load => format!("W = {value:.4} N"),
+            SweepParameter::Load => format!("W = {} N", crate::text::fixed(value, 4)),
             SweepParameter::Position => {
                 format!("x0 = {value:.4}{}", scene.figure.length_unit.suffix())
             }

@@ -15,6 +15,7 @@
 
 use rerun::RecordingStream;
 
+use super::layout::{Layout, Node, View, ViewKind};
 use super::{grid_maximum, log_panel_placement, rerun_colormap, RecordError, Summary};
 use crate::contact::rough::{self, Control};
 use crate::field::{self, Axis, Plane, Section};
@@ -32,7 +33,11 @@ fn rerun_error(e: impl std::fmt::Display) -> RecordError {
 
 /// Records a surface or rough scene (module doc). Its grid rows are not reported as progress
 /// (how many there are depends on the solved contact); [`super::rows`] counts none.
-pub fn record(scene: &Scene, stream: &RecordingStream) -> Result<Summary, RecordError> {
+pub fn record(
+    scene: &Scene,
+    stream: &RecordingStream,
+    flush: &dyn Fn() -> Result<(), RecordError>,
+) -> Result<Summary, RecordError> {
     let on_row = &|| {};
     let surface = scene
         .surface
@@ -81,16 +86,17 @@ pub fn record(scene: &Scene, stream: &RecordingStream) -> Result<Summary, Record
     for (k, map) in maps.iter().enumerate() {
         log_map(stream, &format!("maps/{k}"), map, None, true, true)?;
     }
+    super::layout::send(stream, &plan_layout(&maps, scene))?;
+    flush()?;
     let mut steps = 1;
     if scene.contact.kind == ContactKind::Rough {
-        steps = log_load_sweep(stream, scene)?.max(1);
-        log_depth_steps(stream, scene, on_row)?;
+        steps = log_load_sweep(stream, scene, flush)?.max(1);
+        log_depth_steps(stream, scene, on_row, flush)?;
     }
-    send_blueprint(stream, &maps, scene)?;
     Ok(Summary {
         steps,
         panels: maps.len(),
-        volume_points: 0,
+        volume_triangles: 0,
     })
 }
 
@@ -208,7 +214,11 @@ fn log_topography(stream: &RecordingStream, map: &HeightMap) -> Result<f64, Reco
 
 /// The load sweep of a rough scene: each load solved, its pressure and spots logged on the
 /// `load` timeline; returns the number of steps.
-fn log_load_sweep(stream: &RecordingStream, scene: &Scene) -> Result<usize, RecordError> {
+fn log_load_sweep(
+    stream: &RecordingStream,
+    scene: &Scene,
+    flush: &dyn Fn() -> Result<(), RecordError>,
+) -> Result<usize, RecordError> {
     let Some(sweep) = &scene.sweep else {
         return Ok(0);
     };
@@ -289,6 +299,7 @@ fn log_load_sweep(stream: &RecordingStream, scene: &Scene) -> Result<usize, Reco
             "series/max_pressure_mpa",
             &rerun::Scalars::new([solution.max_pressure_pa * 1e-6]),
         )?;
+        flush()?;
     }
     Ok(solutions.len())
 }
@@ -299,6 +310,7 @@ fn log_depth_steps(
     stream: &RecordingStream,
     scene: &Scene,
     on_row: &(dyn Fn() + Sync),
+    flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<(), RecordError> {
     let solution = rough_study::solve(scene, &mut |_, _| {}).map_err(rerun_error)?;
     let stresses =
@@ -366,75 +378,67 @@ fn log_depth_steps(
             "series/depth_um",
             &rerun::Scalars::new([z * REFERENCE_LENGTH_M * 1e6]),
         )?;
+        flush()?;
     }
     Ok(())
 }
 
-/// The layout: the sheet image and the 3-D topography first, then the maps; the description
-/// and series beside them.
-fn send_blueprint(
-    stream: &RecordingStream,
-    maps: &[&Figure],
-    scene: &Scene,
-) -> Result<(), RecordError> {
-    use rerun::blueprint::{
-        Blueprint, BlueprintActivation, ContainerLike, Grid, Horizontal, Spatial2DView,
-        Spatial3DView, Tabs, TextDocumentView, TextLogView, TimeSeriesView, Vertical,
-    };
-    let mut views: Vec<ContainerLike> = vec![
-        Spatial2DView::new("figure").with_origin("sheet").into(),
-        Spatial3DView::new("topography (heights exaggerated)")
-            .with_origin("topography")
-            .into(),
-    ];
+/// The layout: the sheet image (the figure, with its colour bars and charts) and the maps
+/// take the window, the 3-D topography and the report in tabs beside them; for a rough load
+/// sweep the pressure against load and the stress through depth come first, with one plot per
+/// series.
+fn plan_layout(maps: &[&Figure], scene: &Scene) -> Layout {
+    let view2d = |name: String, origin: &str| Node::View(View::new(ViewKind::Spatial2D(None), name, origin));
+    let mut main: Vec<Node> = Vec::new();
     let rough = scene.contact.kind == ContactKind::Rough;
-    if rough {
-        if scene.sweep.is_some() {
-            views.push(
-                Spatial2DView::new("pressure against load")
-                    .with_origin("contact")
-                    .into(),
-            );
-        }
-        views.push(
-            Spatial2DView::new("stress stepping through depth")
-                .with_origin("depth")
-                .into(),
-        );
+    if rough && scene.sweep.is_some() {
+        main.push(view2d("pressure (MPa) against load".into(), "contact"));
     }
+    if rough {
+        main.push(view2d(
+            format!(
+                "{} stepping through depth",
+                scene.figure.stress_unit.label(scene.figure.quantity.symbol())
+            ),
+            "depth",
+        ));
+    }
+    main.push(view2d("figure".into(), "sheet"));
     for (k, map) in maps.iter().enumerate() {
-        views.push(
-            Spatial2DView::new(map.title.clone())
-                .with_origin(format!("maps/{k}"))
-                .into(),
-        );
+        main.push(view2d(map.title.clone(), &format!("maps/{k}")));
     }
-    let mut side: Vec<ContainerLike> = vec![Tabs::new(vec![TextDocumentView::new("report")
-        .with_origin("description")
-        .into()])
-    .into()];
-    if rough {
+    let main = Node::Tabs(main, 0);
+    let mut side = vec![Node::View(View::new(
+        ViewKind::TextDocument,
+        "report",
+        "description",
+    ))];
+    side.push(Node::View(View::new(
+        ViewKind::Spatial3D(None),
+        "topography (heights exaggerated)",
+        "topography",
+    )));
+    let mut plots = Vec::new();
+    if rough && scene.sweep.is_some() {
         // One plot per quantity: their units differ.
-        if scene.sweep.is_some() {
-            for (name, path) in [
-                ("real area fraction", "series/contact_fraction"),
-                ("contact spots", "series/spots"),
-                ("max pressure (MPa)", "series/max_pressure_mpa"),
-            ] {
-                side.push(TimeSeriesView::new(name).with_origin(path).into());
-            }
+        for (name, path) in [
+            ("real area fraction", "series/contact_fraction"),
+            ("contact spots", "series/spots"),
+            ("max pressure (MPa)", "series/max_pressure_mpa"),
+        ] {
+            plots.push(Node::View(View::new(ViewKind::TimeSeries, name, path)));
         }
-        if scene.sweep.is_some() {
-            side.push(TextLogView::new("steps").with_origin("log").into());
-        }
+        side.push(Node::View(View::new(ViewKind::TextLog, "steps", "log")));
     }
-    let root = Horizontal::new([Grid::new(views).into(), Vertical::new(side).into()]);
-    Blueprint::new(root).send(
-        stream,
-        BlueprintActivation {
-            make_active: true,
-            make_default: true,
-        },
-    )?;
-    Ok(())
+    let side = if plots.is_empty() {
+        Node::Tabs(side, 0)
+    } else {
+        Node::Vertical(vec![Node::Tabs(plots, 0), Node::Tabs(side, 0)], vec![1.0, 1.0])
+    };
+    Layout {
+        root: Node::Horizontal(vec![main, side], vec![2.6, 1.0]),
+        timeline: rough.then(|| {
+            if scene.sweep.is_some() { "load" } else { "depth" }.to_string()
+        }),
+    }
 }

@@ -317,7 +317,9 @@ fn record_all(paths: &[PathBuf], target: &Target) -> Result<()> {
     for scene in &scenes {
         bar.set_message(scene.name.clone());
         let result = match target {
-            Target::OutDir(dir) => record_scene(scene, &dir.join(format!("{}.rrd", scene.name)), &bar),
+            Target::OutDir(dir) => {
+                record_scene(scene, &dir.join(format!("{}.rrd", scene.name)), &bar)
+            }
             Target::File(path) => record_scene(scene, path, &bar),
             other => stream_scene(scene, other, &bar),
         };

@@ -14,7 +14,9 @@ static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
 fn pending() -> MutexGuard<'static, Vec<PathBuf>> {
     // A panic while the list was held leaves it usable: it is only a list of paths.
-    PENDING.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+    PENDING
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
 /// A temporary file registered for removal on interruption while this guard lives (drop it
@@ -164,7 +166,10 @@ mod tests {
             assert!(pending().contains(&path));
         }
         assert!(!pending().contains(&path));
-        assert_eq!(remove_pending(std::slice::from_ref(&path)), vec![path.clone()]);
+        assert_eq!(
+            remove_pending(std::slice::from_ref(&path)),
+            vec![path.clone()]
+        );
         assert!(!path.exists());
     }
 

@@ -55,7 +55,13 @@ fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
 
 /// The surface where `values` (indexed `[z, y, x]`, sampled at `x[i]`, `y[j]`, `z[k]`) equals
 /// `level`. Cells with a value that is not finite are skipped.
-pub fn isosurface(values: ArrayView3<'_, f32>, x: &[f64], y: &[f64], z: &[f64], level: f64) -> Mesh {
+pub fn isosurface(
+    values: ArrayView3<'_, f32>,
+    x: &[f64],
+    y: &[f64],
+    z: &[f64],
+    level: f64,
+) -> Mesh {
     let (nz, ny, nx) = values.dim();
     assert!(
         x.len() == nx && y.len() == ny && z.len() == nz,
@@ -220,7 +226,10 @@ mod tests {
                 *edges.entry((a.min(b), a.max(b))).or_default() += 1;
             }
         }
-        assert!(edges.values().all(|&n| n == 2), "open or non-manifold edges");
+        assert!(
+            edges.values().all(|&n| n == 2),
+            "open or non-manifold edges"
+        );
         // Enclosed volume by the divergence theorem, against 4/3 pi 0.6^3 (the polyhedron is
         // inscribed, a little smaller).
         let volume: f64 = mesh
@@ -262,8 +271,16 @@ mod tests {
                 .sum()
         };
         let sphere = 4.0 * std::f64::consts::PI * 0.36;
-        assert!((area(&full) - sphere).abs() < 0.02 * sphere, "{}", area(&full));
-        assert!((area(&half) - 0.5 * sphere).abs() < 0.02 * sphere, "{}", area(&half));
+        assert!(
+            (area(&full) - sphere).abs() < 0.02 * sphere,
+            "{}",
+            area(&full)
+        );
+        assert!(
+            (area(&half) - 0.5 * sphere).abs() < 0.02 * sphere,
+            "{}",
+            area(&half)
+        );
         let flat = Array3::from_elem((4, 4, 4), 1.0f32);
         let axis4 = axis(0.0, 1.0, 4);
         assert!(isosurface(flat.view(), &axis4, &axis4, &axis4, 0.5)

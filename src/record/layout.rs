@@ -5,13 +5,13 @@
 //! (with their shares and active tab), views (with their properties), the viewport and the
 //! panels. The viewer reads them from the blueprint store like any other layout.
 
+use rerun::blueprint::components::{
+    ActiveTab, ColumnShare, ContainerKind, Corner2D, IncludedContent, PanelState, QueryExpression,
+    RootContainer, RowShare, TimelineName, ViewClass,
+};
 use rerun::external::re_sdk_types::blueprint::archetypes::{
     ContainerBlueprint, EyeControls3D, PanelBlueprint, PlotLegend, TimePanelBlueprint,
     ViewBlueprint, ViewContents, ViewportBlueprint, VisualBounds2D,
-};
-use rerun::blueprint::components::{
-    ActiveTab, ColumnShare, ContainerKind, Corner2D, IncludedContent, PanelState,
-    QueryExpression, RootContainer, RowShare, TimelineName, ViewClass,
 };
 use rerun::RecordingStream;
 
@@ -176,15 +176,12 @@ fn log_node(stream: &RecordingStream, node: &Node, ids: &mut Ids) -> Result<Stri
                 Node::Vertical(..) => ContainerKind::Vertical,
                 _ => ContainerKind::Tabs,
             };
-            let mut container = ContainerBlueprint::new(kind).with_contents(
-                paths
-                    .iter()
-                    .map(|p| IncludedContent(p.as_str().into())),
-            );
+            let mut container = ContainerBlueprint::new(kind)
+                .with_contents(paths.iter().map(|p| IncludedContent(p.as_str().into())));
             match node {
                 Node::Horizontal(_, shares) if !shares.is_empty() => {
-                    container = container
-                        .with_col_shares(shares.iter().map(|&s| ColumnShare(s.into())));
+                    container =
+                        container.with_col_shares(shares.iter().map(|&s| ColumnShare(s.into())));
                 }
                 Node::Vertical(_, shares) if !shares.is_empty() => {
                     container =
@@ -226,7 +223,8 @@ pub fn send(recording: &RecordingStream, layout: &Layout) -> Result<(), RecordEr
             &ContainerBlueprint::new(ContainerKind::Tabs)
                 .with_contents([IncludedContent(root.as_str().into())]),
         )?;
-        rerun::external::uuid::Uuid::parse_str(&id).map_err(|e| RecordError::Rerun(e.to_string()))?
+        rerun::external::uuid::Uuid::parse_str(&id)
+            .map_err(|e| RecordError::Rerun(e.to_string()))?
     } else {
         root_id
     };
@@ -248,11 +246,16 @@ pub fn send(recording: &RecordingStream, layout: &Layout) -> Result<(), RecordEr
     let time_panel = match &layout.timeline {
         Some(timeline) => TimePanelBlueprint::new()
             .with_state(PanelState::Collapsed)
-            .with_timeline(TimelineName(timeline.as_str().into())),
+            .with_timeline(TimelineName(timeline.as_str().into()))
+            .with_play_state(
+                rerun::external::re_sdk_types::blueprint::components::PlayState::Paused,
+            ),
         None => TimePanelBlueprint::new().with_state(PanelState::Hidden),
     };
     stream.log("time_panel", &time_panel)?;
-    stream.flush_blocking().map_err(|e| RecordError::Rerun(e.to_string()))?;
+    stream
+        .flush_blocking()
+        .map_err(|e| RecordError::Rerun(e.to_string()))?;
     let messages = storage.take();
     let blueprint_id = messages
         .first()

@@ -8,8 +8,8 @@
 //!   unit, so hovering reads them; the viewer calls them "Depth" in "m"), placed in the figure's
 //!   coordinates (horizontal to the right, depth downwards) by a static `Transform3D`; one
 //!   colour range for every step.
-//! - `sections/<k>/colorbar` (the same colour map as an image beside the map), with `ticks`
-//!   and `labels` (tick values and the caption with the unit), static.
+//! - `sections/<k>/colorbar/image` (the same colour map as an image beside the map),
+//!   `.../ticks` and `.../labels` (tick values and the caption with the unit), static.
 //! - `sections/<k>/title`: the step's parameters and the traction legend, as labels above the
 //!   strip; `sections/<k>/tractions/p`, `.../q`: the profiles above the surface (`z < 0`);
 //!   `sections/<k>/surface`; `sections/<k>/outline` (xy sections).
@@ -171,7 +171,11 @@ const SIDE_SHARE: f32 = 1.0;
 /// The size in pixels of each section view in the planned window.
 fn section_view_px(scene: &Scene) -> (f64, f64) {
     let main = WINDOW_PX.0 * f64::from(MAIN_SHARE / (MAIN_SHARE + SIDE_SHARE)) - 20.0;
-    let width = if scene.volume.is_some() { 0.5 * main } else { main };
+    let width = if scene.volume.is_some() {
+        0.5 * main
+    } else {
+        main
+    };
     let chrome = if scene.sweep.is_some() { 130.0 } else { 90.0 };
     let height = (WINDOW_PX.1 - chrome) / scene.panels.len().max(1) as f64;
     (width, height)
@@ -340,12 +344,23 @@ fn record_sections(
             title = format!("step {} of {steps}: {text}", step + 1);
         }
         for (k, panel) in figure.panels.iter().enumerate() {
+            // The step's parameter, then the rest of the panel's subtitle (without repeating it).
             let mut panel_title = title.clone();
-            if !panel.subtitle.is_empty() {
+            let parameter = scene
+                .sweep
+                .as_ref()
+                .map(|s| s.describe(step, scene))
+                .unwrap_or_default();
+            let rest: Vec<&str> = panel
+                .subtitle
+                .split(", ")
+                .filter(|part| !part.is_empty() && *part != parameter)
+                .collect();
+            if !rest.is_empty() {
                 if !panel_title.is_empty() {
-                    panel_title.push_str("  ·  ");
+                    panel_title.push_str(", ");
                 }
-                panel_title.push_str(&panel.subtitle);
+                panel_title.push_str(&rest.join(", "));
             }
             if panel_title.is_empty() {
                 panel_title = figure.title.clone();
@@ -364,7 +379,10 @@ fn record_sections(
             let (largest, smallest) = section::extremes(panel, figure.mark);
             let largest = largest.or_else(|| section::extremes(panel, Mark::Max).0);
             if let Some(e) = largest {
-                stream.log(format!("series/{k}/maximum"), &rerun::Scalars::new([e.value]))?;
+                stream.log(
+                    format!("series/{k}/maximum"),
+                    &rerun::Scalars::new([e.value]),
+                )?;
                 if figure.vertical_is_depth {
                     stream.log(
                         format!("series/{k}/maximum_depth"),
@@ -373,7 +391,10 @@ fn record_sections(
                 }
             }
             if let Some(e) = smallest {
-                stream.log(format!("series/{k}/minimum"), &rerun::Scalars::new([e.value]))?;
+                stream.log(
+                    format!("series/{k}/minimum"),
+                    &rerun::Scalars::new([e.value]),
+                )?;
             }
             if steps > 1 {
                 let value = |e: Option<section::Extreme>| e.map_or(f64::NAN, |e| e.value);
@@ -382,7 +403,15 @@ fn record_sections(
                     value(smallest),
                     largest.map_or(f64::NAN, |e| e.v),
                 ));
-                log_charts(stream, scene, &figure, k, &history[k], ranges[k], &frames[k])?;
+                log_charts(
+                    stream,
+                    scene,
+                    &figure,
+                    k,
+                    &history[k],
+                    ranges[k],
+                    &frames[k],
+                )?;
             }
         }
         log_material_points(stream, &step_scene)?;
@@ -477,11 +506,16 @@ fn log_charts(
     };
     let x_range = xs
         .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| (a.min(x), b.max(x)));
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
     let symbol = scene.figure.quantity.symbol();
     let current = history.len() - 1;
     let mut chart = Chart::new(
-        &format!("extremes of {symbol} against {}", x_label.split(' ').next().unwrap_or("")),
+        &format!(
+            "extremes of {symbol} against {}",
+            x_label.split(' ').next().unwrap_or("")
+        ),
         &x_label,
         &figure.value_label,
     );
@@ -791,6 +825,15 @@ pub fn describe(scene: &Scene) -> String {
         }
     }
     text.push_str("Conventions: z points into the body (depth drawn downwards), tension positive, q = μp acts in +x on the body (trailing edge x = −a).\n\n");
+    text.push_str(&format!(
+        "**Reading the views.** Hovering the map shows `Val`: the value of {} in the unit of the colour bar ({}). The viewer also prints it as a \"Depth\" in m or mm, because the map is stored as a depth image: ignore that line. The colour range is the same at every step (from a coarse preview of all steps, rounded up); the marked extremes and the title row follow the step.",
+        scene.figure.quantity.symbol(),
+        scene.figure.stress_unit.label(scene.figure.quantity.symbol()),
+    ));
+    if scene.volume.is_some() {
+        text.push_str(" The 3-D view shows nested translucent iso-surfaces of the half box y ≥ 0 (the cut face shows how they nest) and the contact patch shaded by the pressure; drag to turn it.");
+    }
+    text.push_str("\n\n");
     text.push_str("## Contact (`stressfield hertz`)\n\n```text\n");
     text.push_str(&crate::report::hertz(scene));
     text.push_str("```\n");

@@ -70,7 +70,7 @@ pub fn record(
         "description",
         &rerun::TextDocument::from_markdown(format!(
             "# {}\n\n```text\n{report}```\n\nThe `topography` mesh shows heights {exaggeration:.0} times exaggerated. \
-             Maps are in µm; hovering a map reads its value in the unit of its title (the viewer calls it \"depth\" and adds \"m\").",
+             Maps are in µm; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m or mm: ignore that line).",
             sheet.title
         )),
     )?;
@@ -388,7 +388,8 @@ fn log_depth_steps(
 /// sweep the pressure against load and the stress through depth come first, with one plot per
 /// series.
 fn plan_layout(maps: &[&Figure], scene: &Scene) -> Layout {
-    let view2d = |name: String, origin: &str| Node::View(View::new(ViewKind::Spatial2D(None), name, origin));
+    let view2d =
+        |name: String, origin: &str| Node::View(View::new(ViewKind::Spatial2D(None), name, origin));
     let mut main: Vec<Node> = Vec::new();
     let rough = scene.contact.kind == ContactKind::Rough;
     if rough && scene.sweep.is_some() {
@@ -398,7 +399,10 @@ fn plan_layout(maps: &[&Figure], scene: &Scene) -> Layout {
         main.push(view2d(
             format!(
                 "{} stepping through depth",
-                scene.figure.stress_unit.label(scene.figure.quantity.symbol())
+                scene
+                    .figure
+                    .stress_unit
+                    .label(scene.figure.quantity.symbol())
             ),
             "depth",
         ));
@@ -433,12 +437,20 @@ fn plan_layout(maps: &[&Figure], scene: &Scene) -> Layout {
     let side = if plots.is_empty() {
         Node::Tabs(side, 0)
     } else {
-        Node::Vertical(vec![Node::Tabs(plots, 0), Node::Tabs(side, 0)], vec![1.0, 1.0])
+        Node::Vertical(
+            vec![Node::Tabs(plots, 0), Node::Tabs(side, 0)],
+            vec![1.0, 1.0],
+        )
     };
     Layout {
         root: Node::Horizontal(vec![main, side], vec![2.6, 1.0]),
         timeline: rough.then(|| {
-            if scene.sweep.is_some() { "load" } else { "depth" }.to_string()
+            if scene.sweep.is_some() {
+                "load"
+            } else {
+                "depth"
+            }
+            .to_string()
         }),
     }
 }

@@ -62,6 +62,9 @@ pub fn stress_text(scene: &Scene, value: f64) -> String {
 
 /// A position in the section with its unit: `(x = −0.45a, z = 0.16a)`.
 pub fn position_text(scene: &Scene, u: f64, v: f64) -> String {
+    // Rounding noise of a grid through zero reads as zero.
+    let snap = |c: f64| if c.abs() < 1e-9 { 0.0 } else { c };
+    let (u, v) = (snap(u), snap(v));
     let (horizontal, vertical, _) = scene.figure.section.coordinates();
     let suffix = scene.figure.length_unit.suffix();
     format!(
@@ -73,6 +76,8 @@ pub fn position_text(scene: &Scene, u: f64, v: f64) -> String {
 
 /// A point of the volume with its unit: `(x = 0a, y = 0a, z = 0.48a)`.
 pub fn position_text_3d(scene: &Scene, [x, y, z]: [f32; 3]) -> String {
+    let snap = |c: f32| if c.abs() < 1e-6 { 0.0 } else { c };
+    let (x, y, z) = (snap(x), snap(y), snap(z));
     let suffix = scene.figure.length_unit.suffix();
     format!(
         "(x = {}{suffix}, y = {}{suffix}, z = {}{suffix})",
@@ -125,7 +130,8 @@ impl Frame {
             };
             let right = bar.1 + gap + (tick_chars as f64 * CHAR_PX + 12.0) / px;
             let bounds = [u.0 - gap, right, title_row - 0.9 * label, v.1 + 2.5 * label];
-            let fit = (view_px.0 / (bounds[1] - bounds[0])).min(view_px.1 / (bounds[3] - bounds[2]));
+            let fit =
+                (view_px.0 / (bounds[1] - bounds[0])).min(view_px.1 / (bounds[3] - bounds[2]));
             frame = Some(Self {
                 u,
                 v,
@@ -249,8 +255,10 @@ pub fn log_static(
         (hi - (hi - lo) * (row as f64 + 0.5) / BAR_ROWS as f64) as f32
     });
     let map = panel_colormap(figure, panel);
+    // The image is a child entity: the ticks and labels beside it are not scaled by its
+    // placement.
     stream.log_static(
-        format!("{base}/colorbar"),
+        format!("{base}/colorbar/image"),
         &rerun::Transform3D::from_translation_scale(
             [frame.bar.0 as f32, frame.v.0 as f32, 0.0],
             [
@@ -261,7 +269,7 @@ pub fn log_static(
         ),
     )?;
     stream.log_static(
-        format!("{base}/colorbar"),
+        format!("{base}/colorbar/image"),
         &rerun::DepthImage::try_from(bar)
             .map_err(|e| RecordError::Rerun(e.to_string()))?
             .with_meter(1.0)
@@ -291,7 +299,8 @@ pub fn log_static(
     )?;
     let texts: Vec<String> = ticks.iter().map(|&t| short(t)).collect();
     let longest = texts.iter().map(|t| t.chars().count()).max().unwrap_or(1);
-    let label_u = frame.bar.1 + tick_length + (3.0 + 0.5 * (longest as f64 * CHAR_PX + 10.0)) / frame.px;
+    let label_u =
+        frame.bar.1 + tick_length + (3.0 + 0.5 * (longest as f64 * CHAR_PX + 10.0)) / frame.px;
     let mut anchors: Vec<[f32; 2]> = ticks
         .iter()
         .map(|&t| frame.anchor(label_u, to_v(t)))
@@ -352,12 +361,7 @@ pub struct Extreme {
 
 /// The extremes the figure marks (its [`Mark`]): the largest and/or the smallest finite value.
 pub fn extremes(panel: &Panel, mark: Mark) -> (Option<Extreme>, Option<Extreme>) {
-    let finite = || {
-        panel
-            .values
-            .indexed_iter()
-            .filter(|(_, v)| v.is_finite())
-    };
+    let finite = || panel.values.indexed_iter().filter(|(_, v)| v.is_finite());
     let at = |((row, column), &value): ((usize, usize), &f64)| Extreme {
         value,
         u: panel.x.value(column),
@@ -432,7 +436,11 @@ pub fn log_step(
             row_anchors.push(frame.anchor(frame.u.0 + 0.25 * width, frame.legend_row));
             row_labels.push(format!("p: peak {}", stress_text(scene, p_peak)));
             row_colours.push(colour(P_COLOUR));
-            let q_size = panel.traction.iter().map(|s| s.q.abs()).fold(0.0f64, f64::max);
+            let q_size = panel
+                .traction
+                .iter()
+                .map(|s| s.q.abs())
+                .fold(0.0f64, f64::max);
             if q_size > 0.0 {
                 stream.log(
                     format!("{base}/tractions/q"),
@@ -503,8 +511,10 @@ pub fn log_step(
     for (j, &(x, z)) in material.iter().enumerate() {
         wanted.push(((x, z + 0.9 * frame.label_height()), format!("point {j}")));
     }
-    let requests: Vec<((f64, f64), &str)> =
-        wanted.iter().map(|(at, text)| (*at, text.as_str())).collect();
+    let requests: Vec<((f64, f64), &str)> = wanted
+        .iter()
+        .map(|(at, text)| (*at, text.as_str()))
+        .collect();
     let centres = place_labels(frame, &requests);
     for name in ["maximum", "minimum"] {
         match marks.iter().position(|(n, _)| *n == name) {
@@ -567,7 +577,11 @@ mod tests {
 
     #[test]
     fn ticks_are_nice_and_inside() {
-        assert_eq!(nice_ticks(0.0, 0.62, 5), vec![0.0, 0.2, 0.4, 0.6]);
+        let ticks = nice_ticks(0.0, 0.62, 5);
+        assert_eq!(ticks.len(), 4);
+        for (t, e) in ticks.iter().zip([0.0, 0.2, 0.4, 0.6]) {
+            assert!((t - e).abs() < 1e-12, "{ticks:?}");
+        }
         let ticks = nice_ticks(-0.3, 0.3, 7);
         assert_eq!(ticks.len(), 7);
         assert!((ticks[0] + 0.3).abs() < 1e-12 && (ticks[6] - 0.3).abs() < 1e-12);

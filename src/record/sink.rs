@@ -71,9 +71,8 @@ fn file_kind(path: &Path) -> Result<FileKind, String> {
     };
     let kind = metadata.file_type();
     if kind.is_symlink() {
-        let target = std::fs::canonicalize(path).map_err(|e| {
-            format!("it is a symbolic link whose target cannot be reached ({e})")
-        })?;
+        let target = std::fs::canonicalize(path)
+            .map_err(|e| format!("it is a symbolic link whose target cannot be reached ({e})"))?;
         return match file_kind(&target)? {
             // The target is a new file or a regular one: replace it, keep the link.
             FileKind::Replace(_) => Ok(FileKind::Replace(target)),
@@ -93,7 +92,9 @@ fn file_kind(path: &Path) -> Result<FileKind, String> {
             return Ok(FileKind::Through(path.to_path_buf()));
         }
         if kind.is_block_device() {
-            return Err("it is a block device (a disk): a recording is never written onto one".into());
+            return Err(
+                "it is a block device (a disk): a recording is never written onto one".into(),
+            );
         }
         if kind.is_socket() {
             return Err("it is a socket".into());
@@ -169,7 +170,9 @@ enum Completion {
     Through,
     Stdout,
     /// A viewer: nothing to complete.
-    Viewer { url: String },
+    Viewer {
+        url: String,
+    },
 }
 
 /// An open recording: its stream, and how to complete it.
@@ -281,12 +284,12 @@ impl Output {
                 })
             }
             Destination::Connect(url) => {
-                let stream = builder(name)
-                    .connect_grpc_opts(url.clone())
-                    .map_err(|e| RecordError::Viewer {
+                let stream = builder(name).connect_grpc_opts(url.clone()).map_err(|e| {
+                    RecordError::Viewer {
                         url: url.clone(),
                         message: e.to_string(),
-                    })?;
+                    }
+                })?;
                 Ok(Self {
                     stream,
                     writer: None,
@@ -381,7 +384,8 @@ impl Output {
                     std::fs::set_permissions(&temp, std::fs::Permissions::from_mode(0o644))
                         .map_err(|e| fail(e.to_string()))?;
                 }
-                temp.persist(&target).map_err(|e| fail(e.error.to_string()))?;
+                temp.persist(&target)
+                    .map_err(|e| fail(e.error.to_string()))?;
                 Ok(())
             }
             Completion::Through | Completion::Stdout | Completion::Viewer { .. } => Ok(()),

@@ -122,11 +122,13 @@ pub fn eye(spec: &VolumeSpec) -> Eye {
         half(spec).0,
         spec.z.0 + 0.3 * depth,
     ];
+    // About 25 degrees above the surface, a little towards the trailing edge, far enough to
+    // see the whole box.
     Eye {
         position: [
             (target[0] - 0.45 * size) as f32,
-            (target[1] - 1.05 * size) as f32,
-            (target[2] - 0.95 * size) as f32,
+            (target[1] - 1.6 * size) as f32,
+            (target[2] - 0.85 * size) as f32,
         ],
         target: target.map(|c| c as f32),
         up: [0.0, 0.0, -1.0],
@@ -138,7 +140,13 @@ pub fn log_static(stream: &RecordingStream, spec: &VolumeSpec) -> Result<(), Rec
     stream.log_static("volume", &rerun::ViewCoordinates::RIGHT_HAND_Z_DOWN())?;
     let (x0, x1) = (spec.x.0 as f32, spec.x.1 as f32);
     let (y0, y1) = (spec.y.0 as f32, spec.y.1 as f32);
-    let top = [[x0, y0, 0.0], [x1, y0, 0.0], [x1, y1, 0.0], [x0, y1, 0.0], [x0, y0, 0.0]];
+    let top = [
+        [x0, y0, 0.0],
+        [x1, y0, 0.0],
+        [x1, y1, 0.0],
+        [x0, y1, 0.0],
+        [x0, y0, 0.0],
+    ];
     stream.log_static(
         "volume/surface",
         &rerun::LineStrips3D::new([top])
@@ -162,7 +170,13 @@ pub fn log_step(
     for (m, &level) in levels.iter().enumerate() {
         // The region beyond a negative level is below it: the surface of the negated field.
         let mesh: Mesh = if level < 0.0 {
-            isosurface(grid.values.mapv(|v| -v).view(), &grid.x, &grid.y, &grid.z, -level)
+            isosurface(
+                grid.values.mapv(|v| -v).view(),
+                &grid.x,
+                &grid.y,
+                &grid.z,
+                -level,
+            )
         } else {
             isosurface(grid.values.view(), &grid.x, &grid.y, &grid.z, level)
         };

@@ -70,7 +70,7 @@ pub struct Scene {
     pub tractions: Option<std::sync::Arc<TractionGrid>>,
     /// A recording scene's sweep: one time point per value.
     pub sweep: Option<Sweep>,
-    /// A recording scene's 3-D point cloud (point contacts).
+    /// A recording scene's 3-D volume, recorded as iso-surfaces (point contacts).
     pub volume: Option<VolumeSpec>,
     /// The x position of the contact's centre on the body (units of a; a moving load's step).
     pub load_centre_over_a: f64,

@@ -1,5 +1,5 @@
 //! Recording scenes: a `[sweep]` of friction, load or the load's position (one step per time
-//! point of a recording), and a `[volume]` recorded as a 3-D point cloud.
+//! point of a recording), and a `[volume]` recorded as 3-D iso-surfaces.
 
 use super::{ContactKind, Scene};
 use crate::contact::{ContactError, LineContact, PointContact};
@@ -69,7 +69,7 @@ impl Sweep {
     }
 }
 
-/// A validated `[volume]`: a box under a point contact recorded as a point cloud.
+/// A validated `[volume]`: a box under a point contact recorded as nested iso-surfaces.
 #[derive(Clone, Debug, PartialEq)]
 pub struct VolumeSpec {
     pub quantity: Quantity,
@@ -79,7 +79,7 @@ pub struct VolumeSpec {
     pub z: (f64, f64),
     /// Samples along the longest side; the others follow with the same spacing.
     pub points: usize,
-    /// Only points whose |value| is at least this fraction of the largest are kept.
+    /// The lowest iso-surface, as a fraction of the largest |value| (the others up to 90 %).
     pub threshold: f64,
 }
 

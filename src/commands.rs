@@ -406,8 +406,18 @@ fn record_scene(scene: &Scene, _path: &Path, _bar: &ProgressBar) -> Result<Strin
 }
 
 #[cfg(not(feature = "rerun"))]
-fn stream_scene(scene: &Scene, _target: &Target, bar: &ProgressBar) -> Result<String> {
-    record_scene(scene, Path::new(""), bar)
+fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<String> {
+    let place = match target {
+        Target::Connect(url) => format!("the viewer at {url}"),
+        Target::Spawn => "a new viewer".to_string(),
+        Target::Stdout => "standard output".to_string(),
+        Target::OutDir(dir) => dir.display().to_string(),
+        Target::File(path) => path.display().to_string(),
+    };
+    bail!(
+        "scene {}: this build has no Rerun support (built with --no-default-features), so it cannot record to {place}\nhint: rebuild with the default features: cargo build --release",
+        scene.name
+    )
 }
 
 /// Renders one scene, writes its PNG (and SVG) atomically, and returns the PNG image.

@@ -547,7 +547,7 @@ fn an_interrupted_record_leaves_no_temporary_file() {
         let (dir, scene) = scene_file(LONG_SWEEP);
         let out = dir.path().join("out");
         std::fs::create_dir(&out).expect("out/");
-        let mut child = stressfield()
+        let child = stressfield()
             .args(["record", scene.to_str().expect("utf8"), "-o"])
             .arg(out.join("long.rrd"))
             .stdout(std::process::Stdio::null())

@@ -216,7 +216,7 @@ pub fn nice_ticks(lo: f64, hi: f64, most: usize) -> Vec<f64> {
     let step = [1.0, 2.0, 5.0, 10.0]
         .into_iter()
         .map(|m| m * magnitude)
-        .find(|s| ((hi - lo) / s).floor() as usize + 1 <= most)
+        .find(|s| (((hi - lo) / s).floor() as usize) < most)
         .unwrap_or(10.0 * magnitude);
     let first = (lo / step - 1e-9).ceil() as i64;
     let last = (hi / step + 1e-9).floor() as i64;

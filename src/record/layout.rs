@@ -10,7 +10,7 @@ use rerun::blueprint::components::{
     RootContainer, RowShare, TimelineName, ViewClass,
 };
 use rerun::external::re_sdk_types::blueprint::archetypes::{
-    ContainerBlueprint, EyeControls3D, PanelBlueprint, PlotLegend, TimePanelBlueprint,
+    ContainerBlueprint, EyeControls3D, LineGrid3D, PanelBlueprint, PlotLegend, TimePanelBlueprint,
     ViewBlueprint, ViewContents, ViewportBlueprint, VisualBounds2D,
 };
 use rerun::RecordingStream;
@@ -148,6 +148,11 @@ fn log_node(stream: &RecordingStream, node: &Node, ids: &mut Ids) -> Result<Stri
                     )?;
                 }
                 ViewKind::Spatial3D(Some(eye)) => {
+                    // No ground grid: it would cut through the body under the surface.
+                    stream.log(
+                        format!("{path}/LineGrid3D"),
+                        &LineGrid3D::new().with_visible(false),
+                    )?;
                     stream.log(
                         format!("{path}/EyeControls3D"),
                         &EyeControls3D::new()

@@ -122,13 +122,13 @@ pub fn eye(spec: &VolumeSpec) -> Eye {
         half(spec).0,
         spec.z.0 + 0.3 * depth,
     ];
-    // About 25 degrees above the surface, a little towards the trailing edge, far enough to
+    // About 20 degrees above the surface, a little towards the trailing edge, far enough to
     // see the whole box.
     Eye {
         position: [
             (target[0] - 0.45 * size) as f32,
-            (target[1] - 1.6 * size) as f32,
-            (target[2] - 0.85 * size) as f32,
+            (target[1] - 1.7 * size) as f32,
+            (target[2] - 0.55 * size) as f32,
         ],
         target: target.map(|c| c as f32),
         up: [0.0, 0.0, -1.0],
@@ -188,7 +188,7 @@ pub fn log_step(
         triangles += mesh.triangles.len();
         // Outer shells more transparent than inner ones.
         let depth_in = (level.abs() / levels.iter().fold(0.0f64, |a, l| a.max(l.abs()))).min(1.0);
-        let alpha = (255.0 * (0.25 + 0.6 * depth_in * depth_in)).round() as u8;
+        let alpha = (255.0 * (0.5 + 0.5 * depth_in * depth_in)).round() as u8;
         let [r, g, b] = scale.rgb(level);
         stream.log(
             path,

@@ -82,10 +82,12 @@ pub fn maximum(solution: &Solution, quantity: Quantity, surface_only: bool) -> E
 
 /// The maxima of von Mises and the maximum shear of tractions on a grid, searched at the cell
 /// centres of DC-FFT layers from the surface down to half the grid's shorter side, one cell
-/// apart (`dz` = the smaller cell side): the values are exact for the piecewise-uniform
-/// tractions at those points and the locations good to half a cell. There is no refinement
-/// between the points, since the field of uniform cells has edge singularities at the surface
-/// that a continuous search would find instead of the maximum of the smooth tractions.
+/// apart (`dz` = the smaller cell side), then, around the best layer of each, at depths `dz/8`
+/// apart between its two neighbours: the values are exact for the piecewise-uniform tractions
+/// at those points, the depths good to `dz/16` and the positions in x and y to half a cell.
+/// There is no refinement in x and y, since the field of uniform cells has edge singularities
+/// at the surface that a continuous search would find instead of the maximum of the smooth
+/// tractions (at the cell centres the field is smooth in depth).
 ///
 /// Where a maximum lies off `y = 0` and the mirrored cell centre holds the same value (to
 /// 1e-12 of it), the one at `y > 0` is reported, marked [`Extreme::mirrored_in_y`].
@@ -93,22 +95,21 @@ pub fn grid_maxima(tractions: &PointTractions) -> Result<StressMaxima, DcFftErro
     grid_maxima_to_depth(tractions, f64::INFINITY)
 }
 
-/// [`grid_maxima`] searched no deeper than `max_depth` (units of a) either.
-pub fn grid_maxima_to_depth(
+/// Per layer: the (von Mises, max shear) maxima as (value, row, column), and whether each has
+/// a mirror image in y of the same value.
+type LayerMaxima = ([(f64, usize, usize); 2], [bool; 2]);
+
+/// The maxima of each layer at `depths` ([`grid_maxima`]).
+fn layer_maxima(
     tractions: &PointTractions,
-    max_depth: f64,
-) -> Result<StressMaxima, DcFftError> {
-    let grid = tractions.grid();
-    let [ny, nx] = grid.shape();
-    let cell = grid.cell();
-    let dz = cell[0].min(cell[1]);
-    let depth = (0.5 * (nx as f64 * cell[0]).min(ny as f64 * cell[1])).min(max_depth.max(dz));
-    let layers = (depth / dz).floor() as usize + 1;
-    let depths: Vec<f64> = (0..layers).map(|k| k as f64 * dz).collect();
-    // Per layer: (von Mises, max shear) maxima as (value, row, column).
-    let found = std::sync::Mutex::new(vec![[(f64::NEG_INFINITY, 0, 0); 2]; layers]);
-    let mirrored = std::sync::Mutex::new(vec![[false; 2]; layers]);
-    field::for_each_dcfft_layer(tractions.dcfft(), &depths, |index, _, layer| {
+    depths: &[f64],
+) -> Result<Vec<LayerMaxima>, DcFftError> {
+    let [ny, nx] = tractions.grid().shape();
+    let found = std::sync::Mutex::new(vec![
+        ([(f64::NEG_INFINITY, 0, 0); 2], [false; 2]);
+        depths.len()
+    ]);
+    field::for_each_dcfft_layer(tractions.dcfft(), depths, |index, _, layer| {
         let stress = |row: usize, column: usize| Stress {
             xx: layer[[0, row, column]],
             yy: layer[[1, row, column]],
@@ -139,28 +140,58 @@ pub fn grid_maxima_to_depth(
             symmetric[k] = twin_row != row && (twin - v).abs() <= 1e-12 * v.abs();
         }
         // A poisoned lock only means another worker panicked; the panic propagates.
-        found.lock().unwrap_or_else(|e| e.into_inner())[index] = best;
-        mirrored.lock().unwrap_or_else(|e| e.into_inner())[index] = symmetric;
+        found.lock().unwrap_or_else(|e| e.into_inner())[index] = (best, symmetric);
     })?;
-    let found = found.into_inner().unwrap_or_else(|e| e.into_inner());
-    let mirrored = mirrored.into_inner().unwrap_or_else(|e| e.into_inner());
-    let extreme = |k: usize, layers: std::ops::Range<usize>| {
-        let index = layers
-            .max_by(|&i, &j| found[i][k].0.total_cmp(&found[j][k].0))
-            .unwrap_or(0);
-        let (value, row, column) = found[index][k];
+    Ok(found.into_inner().unwrap_or_else(|e| e.into_inner()))
+}
+
+/// [`grid_maxima`] searched no deeper than `max_depth` (units of a) either.
+pub fn grid_maxima_to_depth(
+    tractions: &PointTractions,
+    max_depth: f64,
+) -> Result<StressMaxima, DcFftError> {
+    let grid = tractions.grid();
+    let [ny, nx] = grid.shape();
+    let cell = grid.cell();
+    let dz = cell[0].min(cell[1]);
+    let depth = (0.5 * (nx as f64 * cell[0]).min(ny as f64 * cell[1])).min(max_depth.max(dz));
+    let layers = (depth / dz).floor() as usize + 1;
+    let mut depths: Vec<f64> = (0..layers).map(|k| k as f64 * dz).collect();
+    let mut found = layer_maxima(tractions, &depths)?;
+    let best_layer = |k: usize, found: &[LayerMaxima], range: std::ops::Range<usize>| {
+        range
+            .max_by(|&i, &j| found[i].0[k].0.total_cmp(&found[j].0[k].0))
+            .unwrap_or(0)
+    };
+    // Between the neighbours of each quantity's best layer, every dz/8.
+    let mut fine: Vec<f64> = Vec::new();
+    for k in 0..2 {
+        let z = depths[best_layer(k, &found, 0..layers)];
+        for step in -7i32..=7 {
+            let fine_z = z + f64::from(step) * dz / 8.0;
+            if step != 0 && (0.0..=depth).contains(&fine_z) && !fine.contains(&fine_z) {
+                fine.push(fine_z);
+            }
+        }
+    }
+    found.extend(layer_maxima(tractions, &fine)?);
+    depths.extend(fine);
+    let extreme = |k: usize, range: std::ops::Range<usize>| {
+        let index = best_layer(k, &found, range);
+        let ((value, row, column), mirrored) = (found[index].0[k], found[index].1[k]);
         let (x, y) = grid.cell_centre(row, column);
         Extreme {
             value_over_p0: value,
             x_over_a: x,
             y_over_a: y,
             z_over_a: depths[index],
-            mirrored_in_y: mirrored[index][k],
+            mirrored_in_y: mirrored,
         }
     };
+    let all = 0..depths.len();
     Ok(StressMaxima {
-        von_mises: extreme(0, 0..layers),
-        max_shear: extreme(1, 0..layers),
+        von_mises: extreme(0, all.clone()),
+        max_shear: extreme(1, all),
         von_mises_surface: extreme(0, 0..1),
     })
 }

@@ -19,32 +19,8 @@ pub struct Args {
 pub enum Command {
     /// Render scenes to PNG (and SVG): every scene in scenes/ when none is named. Recording
     /// scenes (with a [sweep] or a [volume]) are recorded to out/<scene>.rrd instead.
-    Render {
-        /// Scene files (TOML). Default: every *.toml in --scenes-dir.
-        scenes: Vec<PathBuf>,
-        /// Directory for the images.
-        #[arg(long, default_value = "out")]
-        out_dir: PathBuf,
-        /// Directory searched when no scene is named.
-        #[arg(long, default_value = "scenes")]
-        scenes_dir: PathBuf,
-        /// Also write SVG (in addition to scenes that ask for it).
-        #[arg(long)]
-        svg: bool,
-        /// Compare each PNG with DIR/<scene>.png; write <scene>.diff.png for mismatches and exit
-        /// non-zero if any differs.
-        #[arg(long, value_name = "DIR")]
-        compare: Option<PathBuf>,
-        /// Largest per-channel difference (0-255) that still counts as equal, with --compare.
-        #[arg(long, default_value_t = 16)]
-        tolerance: u8,
-        /// Pixels allowed to differ beyond --tolerance, with --compare.
-        #[arg(long, default_value_t = 0)]
-        max_differing_pixels: usize,
-        /// Also record the (single) scene to this Rerun .rrd file.
-        #[arg(long, value_name = "FILE")]
-        rrd: Option<PathBuf>,
-    },
+    /// A scene's outputs are written all or none.
+    Render(RenderArgs),
     /// Record scenes to Rerun .rrd files (out/<scene>.rrd), or stream them to a Rerun viewer
     /// step by step as they are computed: every scene in scenes/ when none is named. Open them
     /// with the Rerun viewer (see the README for versions).
@@ -94,6 +70,80 @@ pub enum Command {
     /// Characterise a rough surface: a height file (ASCII matrix, XYZ, x3p) or a surface/rough
     /// scene. Prints ISO 25178 parameters, spectra, summits and the Greenwood-Williamson values.
     Surface(SurfaceArgs),
+}
+
+/// Options of `render`.
+#[derive(Debug, clap::Args)]
+pub struct RenderArgs {
+    /// Scene files (TOML). Default: every *.toml in --scenes-dir.
+    pub scenes: Vec<PathBuf>,
+    /// Directory for the images.
+    #[arg(long, default_value = "out")]
+    pub out_dir: PathBuf,
+    /// Directory searched when no scene is named.
+    #[arg(long, default_value = "scenes")]
+    pub scenes_dir: PathBuf,
+    /// Also write SVG (in addition to scenes that ask for it).
+    #[arg(long)]
+    pub svg: bool,
+    /// Also write each figure's values next to its PNG: <scene>.npz with, per panel k,
+    /// values_k [rows, columns] in the figure's stress unit and its axes horizontal_k and
+    /// vertical_k in its length unit (float64; numpy.load reads it).
+    #[arg(long)]
+    pub save_field: bool,
+    /// Also record the (single) scene to this Rerun .rrd file.
+    #[arg(long, value_name = "FILE")]
+    pub rrd: Option<PathBuf>,
+    #[command(flatten)]
+    pub compare: CompareArgs,
+}
+
+/// Options of `render --compare`.
+#[derive(Debug, clap::Args)]
+#[command(next_help_heading = "Regression comparison")]
+pub struct CompareArgs {
+    /// Compare each drawn figure with the references DIR/<scene>.png (and the fields
+    /// DIR/<scene>.npz where they exist); print one line per scene, a summary, and exit
+    /// non-zero if any differs. Differing images get <scene>.diff.png in --out-dir.
+    /// Recording scenes (recorded, not drawn) are not compared.
+    #[arg(long, value_name = "DIR")]
+    pub compare: Option<PathBuf>,
+    /// How images are judged: per-channel tolerance and a budget of differing pixels
+    /// (--tolerance, --max-differing-pixels), or the root mean square difference of all
+    /// channels over the image (--rms-tolerance; matplotlib's and pytest-mpl's measure).
+    #[arg(long, value_enum, default_value_t = MeasureArg::Pixels, requires = "compare")]
+    pub measure: MeasureArg,
+    /// --measure pixels: largest per-channel difference (0-255) that still counts as equal
+    /// [default: 16].
+    #[arg(long, requires = "compare")]
+    pub tolerance: Option<u8>,
+    /// --measure pixels: pixels allowed to differ beyond --tolerance [default: 0].
+    #[arg(long, requires = "compare")]
+    pub max_differing_pixels: Option<usize>,
+    /// --measure rms: largest RMS difference, in levels of 255 [default: 2, pytest-mpl's].
+    #[arg(long, requires = "compare")]
+    pub rms_tolerance: Option<f64>,
+    /// Largest absolute difference of a field value from its reference DIR/<scene>.npz, in
+    /// the figure's stress unit (p0, MPa, ...) [default: 1e-6].
+    #[arg(long, requires = "compare")]
+    pub field_tolerance: Option<f64>,
+    /// Write an HTML report of the comparison to DIR/index.html: one self-contained page,
+    /// reference | actual | difference for every scene, failures first.
+    #[arg(long, value_name = "DIR", requires = "compare")]
+    pub report: Option<PathBuf>,
+    /// Rewrite the references of the scenes that differ, and write missing ones (PNG, and the
+    /// field where the reference had one or --save-field is given); scenes within tolerance are
+    /// left untouched. Updated scenes do not fail the run.
+    #[arg(long, requires = "compare")]
+    pub update: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MeasureArg {
+    /// Per-channel tolerance and a pixel budget.
+    Pixels,
+    /// Root mean square difference over the image.
+    Rms,
 }
 
 /// Options of `probe`.

@@ -7,8 +7,10 @@ use anyhow::{bail, Context, Result};
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::cli::{Command, ContactArg, MethodArg, ProbeArgs};
-use stressfield::compare::{self, Tolerance};
-use stressfield::output::write_atomic;
+use crate::compare_run::{self, CompareOptions, Rendered};
+use figure::Drawing;
+use stressfield::field_file::{self, PanelField};
+use stressfield::output::Staged;
 use stressfield::probe;
 use stressfield::scene::{ContactKind, Method, PanelSpec, Scene};
 use stressfield::solution::Solution;
@@ -17,33 +19,21 @@ use stressfield::{figure, render, report};
 
 pub fn run(command: Command) -> Result<()> {
     match command {
-        Command::Render {
-            scenes,
-            out_dir,
-            scenes_dir,
-            svg,
-            compare,
-            tolerance,
-            max_differing_pixels,
-            rrd,
-        } => {
-            let named = !scenes.is_empty();
-            let scenes = scene_paths(scenes, &scenes_dir)?;
-            if rrd.is_some() && scenes.len() != 1 {
+        Command::Render(args) => {
+            let named = !args.scenes.is_empty();
+            let scenes = scene_paths(args.scenes, &args.scenes_dir)?;
+            if args.rrd.is_some() && scenes.len() != 1 {
                 bail!("--rrd FILE records one scene, got {}\nhint: name one scene, or use `stressfield record` for several (one out/<scene>.rrd each)", scenes.len());
             }
-            let tolerance = Tolerance {
-                per_channel: tolerance,
-                max_differing_pixels,
-            };
+            let compare = CompareOptions::from_args(&args.compare, args.save_field, &args.out_dir)?;
             let options = RenderOptions {
-                svg,
-                compare_dir: compare.as_deref(),
-                tolerance,
-                rrd: rrd.as_deref(),
+                svg: args.svg,
+                save_field: args.save_field,
+                compare: compare.as_ref(),
+                rrd: args.rrd.as_deref(),
                 named,
             };
-            render_all(&scenes, &out_dir, &options)
+            render_all(&scenes, &args.out_dir, &options)
         }
         Command::Record {
             mut scenes,
@@ -150,8 +140,9 @@ fn say(bar: &ProgressBar, line: impl AsRef<str>) {
 /// Options of `render`.
 struct RenderOptions<'a> {
     svg: bool,
-    compare_dir: Option<&'a Path>,
-    tolerance: Tolerance,
+    /// Write `<scene>.npz` beside the PNG.
+    save_field: bool,
+    compare: Option<&'a CompareOptions>,
     /// Record the (single) scene to this file too.
     rrd: Option<&'a Path>,
     /// Scenes were named on the command line (a recording scene is then drawn as a figure
@@ -206,43 +197,39 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
         })
         .sum();
     let bar = progress_bar(total_rows as u64);
-    let mut mismatches = Vec::new();
+    let mut outcomes = Vec::new();
+    let mut recordings = 0;
     for scene in &scenes {
         bar.set_message(scene.name.clone());
-        // The main job (no scenes named): a recording scene is recorded, not drawn.
+        // The main job (no scenes named): a recording scene is recorded, not drawn (nor
+        // compared).
         if is_recording(scene) && !options.named {
             let path = out_dir.join(format!("{}.rrd", scene.name));
             record_reporting(scene, &path, &bar, &mut failures);
+            recordings += 1;
             continue;
         }
-        let rendered = render_scene(scene, out_dir, options.svg, &bar).and_then(|png| {
-            if let Some(path) = options.rrd {
-                let line = record_scene(scene, path, &bar)?;
-                say(&bar, line);
-            }
-            Ok(png)
-        });
-        match rendered {
-            Ok(png) => {
-                say(
-                    &bar,
-                    format!(
-                        "rendered {}",
-                        out_dir.join(format!("{}.png", scene.name)).display()
-                    ),
-                );
-                if let Some(dir) = options.compare_dir {
-                    match compare_with_reference(scene, &png, dir, out_dir, options.tolerance) {
-                        Ok(None) => {}
-                        Ok(Some(message)) => {
-                            say(&bar, message);
-                            mismatches.push(scene.name.clone());
-                        }
-                        Err(e) => {
-                            say(&bar, format!("error: {e:#}"));
-                            mismatches.push(scene.name.clone());
-                        }
-                    }
+        match render_scene(scene, out_dir, options, &bar) {
+            Ok(output) => {
+                for line in &output.lines {
+                    say(&bar, line);
+                }
+                if let Some(compare) = options.compare {
+                    let rendered = Rendered {
+                        name: &scene.name,
+                        image: &output.image,
+                        png: &output.png,
+                        field: output.field.as_deref(),
+                        stress_unit: scene.figure.stress_unit.symbol(),
+                        axes: {
+                            let (horizontal, vertical, _) = scene.figure.section.coordinates();
+                            let unit = scene.figure.length_unit;
+                            [unit.axis_label(horizontal), unit.axis_label(vertical)]
+                        },
+                    };
+                    let outcome = compare_run::check_scene(&rendered, compare, out_dir);
+                    say(&bar, outcome.line());
+                    outcomes.push(outcome);
                 }
             }
             Err(e) => {
@@ -252,18 +239,11 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
         }
     }
     bar.finish_and_clear();
-    fail_if_any(&failures, paths.len())?;
-    if !mismatches.is_empty() {
-        bail!(
-            "{} of {} images differ from the references in {}: {}",
-            mismatches.len(),
-            scenes.len(),
-            options
-                .compare_dir
-                .map_or_else(String::new, |d| d.display().to_string()),
-            mismatches.join(", ")
-        );
+    if let Some(compare) = options.compare {
+        let say = |line: String| eprintln!("{line}");
+        return compare_run::finish(&outcomes, compare, out_dir, &failures, recordings, &say);
     }
+    fail_if_any(&failures, paths.len())?;
     Ok(())
 }
 
@@ -368,12 +348,23 @@ fn summary_text(scene: &Scene, summary: &stressfield::record::Summary) -> String
 
 /// Records one scene to `path` (atomically, or through a device or FIFO); returns the line to
 /// print.
-#[cfg(feature = "rerun")]
 fn record_scene(scene: &Scene, path: &Path, bar: &ProgressBar) -> Result<String> {
-    let summary = stressfield::record::record_to_file(scene, path, &|| bar.inc(1))?;
+    record_scene_as(scene, path, path, bar)
+}
+
+/// Records one scene into `file` (atomically, or through a device or FIFO), saying it was
+/// recorded to `shown` (the final name of a staged file); returns the line to print.
+#[cfg(feature = "rerun")]
+fn record_scene_as(scene: &Scene, file: &Path, shown: &Path, bar: &ProgressBar) -> Result<String> {
+    let summary = stressfield::record::record_to_file(scene, file, &|| bar.inc(1));
+    let summary = if file == shown {
+        summary?
+    } else {
+        summary.with_context(|| format!("cannot record {}", shown.display()))?
+    };
     Ok(format!(
         "recorded {}{}",
-        path.display(),
+        shown.display(),
         summary_text(scene, &summary)
     ))
 }
@@ -398,7 +389,12 @@ fn stream_scene(scene: &Scene, target: &Target, bar: &ProgressBar) -> Result<Str
 }
 
 #[cfg(not(feature = "rerun"))]
-fn record_scene(scene: &Scene, _path: &Path, _bar: &ProgressBar) -> Result<String> {
+fn record_scene_as(
+    scene: &Scene,
+    _file: &Path,
+    _shown: &Path,
+    _bar: &ProgressBar,
+) -> Result<String> {
     bail!(
         "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",
         scene.name
@@ -420,61 +416,75 @@ fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<St
     )
 }
 
-/// Renders one scene, writes its PNG (and SVG) atomically, and returns the PNG image.
+
+/// What `render` made of one scene.
+struct SceneOutput {
+    image: image::RgbImage,
+    /// The PNG as written.
+    png: Vec<u8>,
+    /// The panels' values (a figure; a sheet has none).
+    field: Option<Vec<PanelField>>,
+    /// What to print: the files written.
+    lines: Vec<String>,
+}
+
+/// Renders one scene and writes its outputs, all or none: the PNG, the SVG (`--svg` or the
+/// scene's `svg = true`), the field archive (`--save-field`) and the recording (`--rrd`) are
+/// prepared in temporary files beside their targets and moved into place together once all
+/// of them are complete; a failure leaves every target as it was.
 fn render_scene(
     scene: &Scene,
     out_dir: &Path,
-    svg: bool,
+    options: &RenderOptions,
     bar: &ProgressBar,
-) -> Result<image::RgbImage> {
+) -> Result<SceneOutput> {
+    let mut staged = Staged::new();
+    // The recording's place first: a bad --rrd path fails before any work.
+    let recording = match options.rrd {
+        Some(path) => Some((staged.reserve(path)?, path)),
+        None => None,
+    };
     let on_row = || bar.inc(1);
     let drawing = figure::draw(scene, &on_row)?;
     let image = drawing.png()?;
     let png = render::encode_png(&image)?;
-    write_atomic(&out_dir.join(format!("{}.png", scene.name)), &png)?;
-    if svg || scene.figure.svg {
-        let text = drawing.svg()?;
-        write_atomic(
-            &out_dir.join(format!("{}.svg", scene.name)),
-            text.as_bytes(),
-        )?;
+    let png_path = out_dir.join(format!("{}.png", scene.name));
+    staged.add(&png_path, &png)?;
+    let mut written = vec![png_path.display().to_string()];
+    if options.svg || scene.figure.svg {
+        let svg_path = out_dir.join(format!("{}.svg", scene.name));
+        staged.add(&svg_path, drawing.svg()?.as_bytes())?;
+        written.push(svg_path.display().to_string());
     }
-    Ok(image)
-}
-
-/// `Ok(None)` when the image matches `reference_dir/<name>.png`, `Ok(Some(report))` otherwise
-/// (a diff image is written next to the output).
-fn compare_with_reference(
-    scene: &Scene,
-    actual: &image::RgbImage,
-    reference_dir: &Path,
-    out_dir: &Path,
-    tolerance: Tolerance,
-) -> Result<Option<String>> {
-    let reference_path = reference_dir.join(format!("{}.png", scene.name));
-    let bytes = std::fs::read(&reference_path).with_context(|| {
-        format!(
-            "no reference image {}\nhint: copy the rendered image there to accept it",
-            reference_path.display()
-        )
-    })?;
-    let expected = image::load_from_memory(&bytes)
-        .with_context(|| format!("cannot decode {}", reference_path.display()))?
-        .to_rgb8();
-    let comparison = compare::compare(actual, &expected, tolerance);
-    if comparison.passed() {
-        return Ok(None);
+    let field = match &drawing {
+        Drawing::Figure(figure) => Some(PanelField::of_figure(figure)),
+        Drawing::Sheet(_) => None,
+    };
+    let mut lines = Vec::new();
+    if options.save_field {
+        match &field {
+            Some(panels) => {
+                let field_path = out_dir.join(format!("{}.npz", scene.name));
+                staged.add(&field_path, &field_file::encode(panels)?)?;
+                written.push(field_path.display().to_string());
+            }
+            None => lines.push(format!(
+                "note: {} draws a sheet (a surface or rough contact scene), which has no single field: no .npz written",
+                scene.name
+            )),
+        }
     }
-    let diff_path = out_dir.join(format!("{}.diff.png", scene.name));
-    if actual.dimensions() == expected.dimensions() {
-        let diff = compare::diff_image(actual, &expected, tolerance.per_channel);
-        write_atomic(&diff_path, &render::encode_png(&diff)?)?;
+    lines.insert(0, format!("rendered {}", written.join(", ")));
+    if let Some((file, path)) = recording {
+        lines.push(record_scene_as(scene, &file, path, bar)?);
     }
-    Ok(Some(format!(
-        "mismatch: {}: {comparison}; diff image {}",
-        scene.name,
-        diff_path.display()
-    )))
+    staged.commit()?;
+    Ok(SceneOutput {
+        image,
+        png,
+        field,
+        lines,
+    })
 }
 
 fn check(paths: &[PathBuf]) -> Result<()> {

@@ -104,7 +104,8 @@ pub fn decode(bytes: &[u8]) -> Result<Vec<PanelField>, FieldFileError> {
 }
 
 /// Compares `actual` with `reference` value by value: the largest absolute difference, where it
-/// is, and whether it is within `tolerance` (the figure's stress unit, named `unit`). Grids
+/// is, and whether it is within `tolerance` (the figure's stress unit, named `unit`; `axes`
+/// label the coordinates, e.g. `["x/a", "z/a"]`). Grids
 /// must match (same panel count, shapes, and coordinates to 1e-9 of their span); NaN equals
 /// NaN, and NaN against a number is an infinite difference.
 pub fn compare(
@@ -112,10 +113,12 @@ pub fn compare(
     reference: &[PanelField],
     tolerance: f64,
     unit: &str,
+    axes: [&str; 2],
 ) -> FieldCheck {
     let mut check = FieldCheck {
         tolerance,
         unit: unit.to_string(),
+        axes: axes.map(str::to_string),
         largest: None,
         mismatch: None,
     };
@@ -202,6 +205,8 @@ mod tests {
         }
     }
 
+    const AXES: [&str; 2] = ["x/a", "z/a"];
+
     #[test]
     fn round_trip_through_npz_bytes() {
         let panels = vec![panel(0.0), panel(0.5)];
@@ -214,35 +219,35 @@ mod tests {
     #[test]
     fn finds_a_change_of_1e_3_and_where_it_is() {
         let reference = vec![panel(0.0), panel(0.0)];
-        let same = compare(&reference.clone(), &reference, 1e-4, "p0");
+        let same = compare(&reference.clone(), &reference, 1e-4, "p0", AXES);
         assert!(same.passed(), "{}", same.summary());
         assert_eq!(same.largest.as_ref().map(|d| d.largest), Some(0.0));
         let changed = vec![panel(0.0), panel(1e-3)];
-        let check = compare(&changed, &reference, 1e-4, "p0");
+        let check = compare(&changed, &reference, 1e-4, "p0", AXES);
         assert!(!check.passed());
         let largest = check.largest.expect("largest");
         assert_eq!(largest.panel, 1);
         assert!((largest.largest - 1e-3).abs() < 1e-15);
         assert_eq!(largest.at, (1.0, 0.75));
-        assert!(compare(&changed, &reference, 2e-3, "p0").passed());
+        assert!(compare(&changed, &reference, 2e-3, "p0", AXES).passed());
     }
 
     #[test]
     fn other_grids_are_mismatches_not_differences() {
         let reference = vec![panel(0.0)];
-        let two = compare(&[panel(0.0), panel(0.0)], &reference, 1.0, "p0");
+        let two = compare(&[panel(0.0), panel(0.0)], &reference, 1.0, "p0", AXES);
         assert!(!two.passed() && two.mismatch.is_some());
         let mut moved = panel(0.0);
         moved.horizontal[2] += 0.01;
-        let check = compare(&[moved], &reference, 1.0, "p0");
+        let check = compare(&[moved], &reference, 1.0, "p0", AXES);
         assert!(check
             .mismatch
             .as_deref()
             .is_some_and(|m| m.contains("horizontal")));
         let mut nan = panel(0.0);
         nan.values[[0, 0]] = f64::NAN;
-        assert!(!compare(&[nan.clone()], &reference, 1.0, "p0").passed());
-        assert!(compare(&[nan.clone()], &[nan], 0.0, "p0").passed());
+        assert!(!compare(&[nan.clone()], &reference, 1.0, "p0", AXES).passed());
+        assert!(compare(&[nan.clone()], &[nan], 0.0, "p0", AXES).passed());
     }
 
     #[test]

@@ -2,6 +2,7 @@
 
 mod cli;
 mod commands;
+mod compare_run;
 mod surface_commands;
 
 use std::process::ExitCode;

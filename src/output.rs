@@ -95,37 +95,172 @@ pub fn remove_pending_on_interrupt() -> std::io::Result<()> {
 
 /// An output that could not be written.
 #[derive(Debug, thiserror::Error)]
-#[error("cannot write {path}: {source}\nhint: check that the directory exists and is writable, or choose another with --out-dir")]
+#[error("cannot write {path}: {error}\nhint: check that its directory exists and is writable, or write elsewhere (--out-dir, --rrd, --report)")]
 pub struct OutputError {
     pub path: PathBuf,
-    #[source]
-    pub source: std::io::Error,
+    /// Why (shown in the message, not chained again below it).
+    pub error: std::io::Error,
 }
 
 /// Writes `bytes` to `path` atomically (temporary file in the same directory, then rename).
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
-    let wrap = |source| OutputError {
+    let wrap = |error| OutputError {
         path: path.to_path_buf(),
-        source,
+        error,
     };
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
-    let mut builder = tempfile::Builder::new();
-    // A temporary file is private (0600); the output is an ordinary file, readable by all.
-    #[cfg(unix)]
-    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o644));
-    let mut temp = builder
-        .prefix(".stressfield-")
-        .suffix(".part")
-        .tempfile_in(dir)
-        .map_err(wrap)?;
+    let mut temp = temp_beside(path, ".part").map_err(wrap)?;
     let _pending = Pending::new(temp.path());
     temp.write_all(bytes).map_err(wrap)?;
     temp.as_file().sync_all().map_err(wrap)?;
     temp.persist(path).map_err(|e| wrap(e.error))?;
     Ok(())
+}
+
+/// The directory a file is written in (`.` for a bare file name).
+fn parent_dir(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+/// A new temporary file in the directory of `path`, readable by all once renamed.
+fn temp_beside(path: &Path, suffix: &str) -> std::io::Result<tempfile::NamedTempFile> {
+    let mut builder = tempfile::Builder::new();
+    // A temporary file is private (0600); the output is an ordinary file, readable by all.
+    #[cfg(unix)]
+    builder.permissions(std::os::unix::fs::PermissionsExt::from_mode(0o644));
+    builder
+        .prefix(".stressfield-")
+        .suffix(suffix)
+        .tempfile_in(parent_dir(path))
+}
+
+/// The outputs of one unit of work (a scene's PNG, SVG, field archive and recording) written
+/// all or none: each is prepared in a temporary file beside its target, and only
+/// [`Staged::commit`] moves them into place. Dropped without a commit (an error, a panic), it
+/// removes its temporary files and leaves the targets as they were.
+#[derive(Default)]
+pub struct Staged {
+    files: Vec<(PathBuf, tempfile::TempPath)>,
+    /// The temporary files registered for removal on interruption.
+    pending: Vec<Pending>,
+}
+
+impl Staged {
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Prepares `bytes` for `path`.
+    pub fn add(&mut self, path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+        let wrap = |error| OutputError {
+            path: path.to_path_buf(),
+            error,
+        };
+        let mut temp = temp_beside(path, ".part").map_err(wrap)?;
+        self.pending.push(Pending::new(temp.path()));
+        temp.write_all(bytes).map_err(wrap)?;
+        temp.as_file().sync_all().map_err(wrap)?;
+        self.files.push((path.to_path_buf(), temp.into_temp_path()));
+        Ok(())
+    }
+
+    /// Reserves a temporary file beside `path` for a writer that takes a path (it may write
+    /// it, or replace it by renaming its own file over it); returns that temporary path, which
+    /// [`Staged::commit`] then moves to `path`.
+    pub fn reserve(&mut self, path: &Path) -> Result<PathBuf, OutputError> {
+        let temp = temp_beside(path, ".part")
+            .map_err(|error| OutputError {
+                path: path.to_path_buf(),
+                error,
+            })?
+            .into_temp_path();
+        let reserved = temp.to_path_buf();
+        self.pending.push(Pending::new(&reserved));
+        self.files.push((path.to_path_buf(), temp));
+        Ok(reserved)
+    }
+
+    /// The targets, in the order they were added.
+    pub fn targets(&self) -> impl Iterator<Item = &Path> {
+        self.files.iter().map(|(path, _)| path.as_path())
+    }
+
+    /// Moves every prepared file to its target. Targets that exist must be regular files (a
+    /// directory, link, device or pipe there is refused before anything moves). Existing
+    /// targets are first renamed aside, and put back if any move fails, so a failure leaves
+    /// every target as it was; on success the old versions are deleted.
+    pub fn commit(self) -> Result<(), OutputError> {
+        for (target, _) in &self.files {
+            match std::fs::symlink_metadata(target) {
+                Ok(meta) if !meta.file_type().is_file() => {
+                    return Err(OutputError {
+                        path: target.clone(),
+                        error: std::io::Error::other(
+                            "it exists and is not a regular file (a directory, link, device or pipe); stressfield replaces only regular files",
+                        ),
+                    })
+                }
+                Ok(_) => {}
+                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+                Err(error) => {
+                    return Err(OutputError {
+                        path: target.clone(),
+                        error,
+                    })
+                }
+            }
+        }
+        // Old versions renamed aside: (target, where it is now).
+        let mut aside: Vec<(PathBuf, tempfile::TempPath)> = Vec::new();
+        let restore = |aside: Vec<(PathBuf, tempfile::TempPath)>| {
+            for (target, old) in aside {
+                // Best effort: the error being reported is the first one.
+                let _ = std::fs::rename(&old, &target);
+                // `old` no longer exists: nothing left to delete on drop.
+                let _ = old.keep();
+            }
+        };
+        for (target, _) in &self.files {
+            if !target.exists() {
+                continue;
+            }
+            let moved = temp_beside(target, ".old").and_then(|placeholder| {
+                let placeholder = placeholder.into_temp_path();
+                std::fs::rename(target, &placeholder)?;
+                Ok(placeholder)
+            });
+            match moved {
+                Ok(old) => aside.push((target.clone(), old)),
+                Err(error) => {
+                    restore(aside);
+                    return Err(OutputError {
+                        path: target.clone(),
+                        error,
+                    });
+                }
+            }
+        }
+        let mut placed: Vec<PathBuf> = Vec::new();
+        for (target, temp) in self.files {
+            if let Err(e) = temp.persist(&target) {
+                // `e.path` (the temporary file) is deleted when `e` drops.
+                for done in &placed {
+                    let _ = std::fs::remove_file(done);
+                }
+                restore(aside);
+                return Err(OutputError {
+                    path: target,
+                    error: e.error,
+                });
+            }
+            placed.push(target);
+        }
+        // Dropping the old versions deletes them.
+        drop(aside);
+        Ok(())
+    }
 }
 
 #[cfg(test)]
@@ -154,6 +289,92 @@ mod tests {
             1,
             "no temporary left"
         );
+    }
+
+    fn names(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .expect("list")
+            .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    #[test]
+    fn staged_files_appear_together_on_commit() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let (a, b) = (dir.path().join("a.png"), dir.path().join("b.svg"));
+        std::fs::write(&a, b"old a").expect("write");
+        let mut staged = Staged::new();
+        staged.add(&a, b"new a").expect("stage a");
+        staged.add(&b, b"new b").expect("stage b");
+        // Nothing visible before the commit.
+        assert_eq!(std::fs::read(&a).expect("read"), b"old a");
+        assert!(!b.exists());
+        staged.commit().expect("commit");
+        assert_eq!(std::fs::read(&a).expect("read"), b"new a");
+        assert_eq!(std::fs::read(&b).expect("read"), b"new b");
+        assert_eq!(names(dir.path()), ["a.png", "b.svg"], "no temporary left");
+    }
+
+    #[test]
+    fn staged_files_dropped_without_commit_leave_nothing() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let mut staged = Staged::new();
+        staged.add(&dir.path().join("a.png"), b"a").expect("stage");
+        let reserved = staged.reserve(&dir.path().join("r.rrd")).expect("reserve");
+        assert!(reserved.exists());
+        drop(staged);
+        assert!(names(dir.path()).is_empty(), "{:?}", names(dir.path()));
+    }
+
+    #[test]
+    fn a_target_that_is_a_directory_stops_the_commit_before_anything_moves() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let (a, b) = (dir.path().join("a.png"), dir.path().join("b.svg"));
+        std::fs::write(&a, b"old a").expect("write");
+        std::fs::create_dir(&b).expect("mkdir");
+        let mut staged = Staged::new();
+        staged.add(&a, b"new a").expect("stage a");
+        staged.add(&b, b"new b").expect("stage b");
+        let error = staged.commit().expect_err("b is a directory");
+        assert!(error.to_string().contains("b.svg"), "{error}");
+        assert!(error.to_string().contains("not a regular file"), "{error}");
+        assert_eq!(std::fs::read(&a).expect("read"), b"old a");
+        assert_eq!(names(dir.path()), ["a.png", "b.svg"], "no temporary left");
+    }
+
+    #[test]
+    fn a_move_that_fails_puts_every_old_version_back() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let (a, b, c) = (
+            dir.path().join("a.png"),
+            dir.path().join("b.rrd"),
+            dir.path().join("c.npz"),
+        );
+        std::fs::write(&a, b"old a").expect("write");
+        std::fs::write(&b, b"old b").expect("write");
+        let mut staged = Staged::new();
+        staged.add(&a, b"new a").expect("stage a");
+        staged.add(&c, b"new c").expect("stage c");
+        // A writer given the reserved path that replaces it, then a writer that lost its file:
+        // the move of b fails after a and c were placed.
+        let reserved = staged.reserve(&b).expect("reserve");
+        std::fs::remove_file(&reserved).expect("remove");
+        assert!(staged.commit().is_err());
+        assert_eq!(std::fs::read(&a).expect("read"), b"old a");
+        assert_eq!(std::fs::read(&b).expect("read"), b"old b");
+        assert!(!c.exists(), "a new file is removed again");
+        assert_eq!(names(dir.path()), ["a.png", "b.rrd"], "no temporary left");
+        // A writer that renames its own file over the reserved path.
+        let mut staged = Staged::new();
+        let reserved = staged.reserve(&b).expect("reserve");
+        let own = dir.path().join("writer.tmp");
+        std::fs::write(&own, b"new b").expect("write");
+        std::fs::rename(&own, &reserved).expect("rename");
+        staged.commit().expect("commit");
+        assert_eq!(std::fs::read(&b).expect("read"), b"new b");
+        assert_eq!(names(dir.path()), ["a.png", "b.rrd"]);
     }
 
     #[test]

@@ -95,6 +95,9 @@ pub struct FieldCheck {
     pub tolerance: f64,
     /// The stress unit's label, e.g. "p0" or "MPa".
     pub unit: String,
+    /// The labels of the horizontal and vertical coordinates with their unit, e.g. "x/a" and
+    /// "z/a", or "x (mm)" and "z (mm)".
+    pub axes: [String; 2],
     /// The panel with the largest difference (`None` when shapes or panel counts differ: see
     /// `mismatch`).
     pub largest: Option<FieldDifference>,
@@ -111,18 +114,28 @@ impl FieldCheck {
                 .is_none_or(|d| d.largest <= self.tolerance)
     }
 
-    /// e.g. "field: largest difference 2.1e-3 p0 in panel 1 at (0.52, 0.48) (limit 1e-3)".
+    /// e.g. "field: largest difference 2.1e-3 p0 in panel 1 at x/a = 0.52, z/a = 0.48 (limit
+    /// 1e-3 p0)".
     pub fn summary(&self) -> String {
         if let Some(why) = &self.mismatch {
             return format!("field: {why}");
         }
         match &self.largest {
+            // Nothing differs: no place to name.
+            Some(d) if d.largest == 0.0 => format!(
+                "field: largest difference 0 {} (limit {} {})",
+                self.unit,
+                short(self.tolerance),
+                self.unit
+            ),
             Some(d) => format!(
-                "field: largest difference {} {} in panel {} at ({}, {}) (limit {} {})",
+                "field: largest difference {} {} in panel {} at {} = {}, {} = {} (limit {} {})",
                 short(d.largest),
                 self.unit,
                 d.panel,
+                self.axes[0],
                 short(d.at.0),
+                self.axes[1],
                 short(d.at.1),
                 short(self.tolerance),
                 self.unit
@@ -132,19 +145,36 @@ impl FieldCheck {
     }
 }
 
-/// A number in at most four significant digits, in exponent form when that is shorter.
+/// A number in at most four significant digits, trailing zeros dropped, in exponent form when
+/// that is shorter: 0.0025, 0.48, 1235, 1e-3, 9.999e-4, 3.2e9.
 fn short(value: f64) -> String {
     if value == 0.0 || !value.is_finite() {
         return format!("{value}");
     }
-    let plain = format!("{}", (value * 1e4).round() / 1e4);
-    let exponent = format!("{value:.3e}");
-    let plain_fits = value.abs() >= 1e-3 && value.abs() < 1e6;
-    if plain_fits && plain.len() <= exponent.len() {
-        plain
-    } else {
-        exponent
+    let trim = |digits: &str| -> String {
+        if digits.contains('.') {
+            digits
+                .trim_end_matches('0')
+                .trim_end_matches('.')
+                .to_string()
+        } else {
+            digits.to_string()
+        }
+    };
+    let scientific = format!("{value:.3e}");
+    let exponent = match scientific.split_once('e') {
+        Some((mantissa, power)) => format!("{}e{power}", trim(mantissa)),
+        None => scientific,
+    };
+    let magnitude = value.abs().log10().floor();
+    if (-4.0..6.0).contains(&magnitude) {
+        let decimals = (3.0 - magnitude).max(0.0) as usize;
+        let plain = trim(&format!("{value:.decimals$}"));
+        if plain.len() <= exponent.len() {
+            return plain;
+        }
     }
+    exponent
 }
 
 /// What happened to a scene in a comparison run.
@@ -177,6 +207,8 @@ pub struct SceneOutcome {
     pub field: Option<FieldCheck>,
     /// A problem that prevented the comparison (missing or unreadable reference).
     pub problem: Option<String>,
+    /// Files the comparison wrote: the diff image, references rewritten by `--update`.
+    pub written: Vec<String>,
     pub reference_png: Option<Vec<u8>>,
     pub actual_png: Vec<u8>,
     pub diff_png: Option<Vec<u8>>,
@@ -202,6 +234,7 @@ impl SceneOutcome {
         if let Some(field) = &self.field {
             parts.push(field.summary());
         }
+        parts.extend(self.written.iter().cloned());
         format!("{} {}: {}", self.status.key(), self.name, parts.join("; "))
     }
 }
@@ -221,7 +254,8 @@ fn escape(text: &str) -> String {
 }
 
 /// The report: one self-contained HTML page (images embedded as data URIs), failures first,
-/// then updated, then passed scenes (folded). `context` says what was compared with what, e.g.
+/// then updated, then passed scenes (folded). The page is also well-formed XML (empty elements
+/// closed, text escaped), so any XML parser reads it. `context` says what was compared with what, e.g.
 /// "out/ against tests/golden/".
 pub fn html_report(outcomes: &[SceneOutcome], context: &str, measure: &ImageMeasure) -> String {
     let count = |s: Status| outcomes.iter().filter(|o| o.status == s).count();
@@ -236,7 +270,7 @@ pub fn html_report(outcomes: &[SceneOutcome], context: &str, measure: &ImageMeas
         r#"<!DOCTYPE html>
 <html lang="en">
 <head>
-<meta charset="utf-8">
+<meta charset="utf-8"/>
 <title>stressfield regression report: {failed} failed of {total}</title>
 <style>
 body {{ font-family: system-ui, sans-serif; margin: 1.5em; color: #222; }}
@@ -296,27 +330,36 @@ fn scene_html(html: &mut String, outcome: &SceneOutcome) {
     }
     if let Some(field) = &outcome.field {
         let verdict = if field.passed() { "within" } else { "OUTSIDE" };
+        let summary = field.summary();
         let _ = writeln!(
             html,
-            r#"<div class="measure">{} ({verdict} tolerance)</div>"#,
-            escape(&field.summary())
+            r#"<div class="measure">field ({verdict} tolerance): {}</div>"#,
+            escape(summary.strip_prefix("field: ").unwrap_or(&summary))
         );
+    }
+    for written in &outcome.written {
+        let _ = writeln!(html, r#"<div class="measure">{}</div>"#, escape(written));
     }
     let folded = outcome.status == Status::Passed;
     if folded {
         html.push_str("<details><summary>images</summary>\n");
     }
     html.push_str(r#"<div class="images">"#);
+    // An updated scene's reference is the one it replaced.
+    let (reference, actual) = match outcome.status {
+        Status::Updated => ("previous reference", "actual (now the reference)"),
+        Status::Passed | Status::Failed => ("reference", "actual"),
+    };
     let images = [
-        ("reference", outcome.reference_png.as_deref()),
-        ("actual", Some(outcome.actual_png.as_slice())),
+        (reference, outcome.reference_png.as_deref()),
+        (actual, Some(outcome.actual_png.as_slice())),
         ("difference", outcome.diff_png.as_deref()),
     ];
     for (caption, png) in images {
         let Some(png) = png else { continue };
         let _ = write!(
             html,
-            r#"<figure><figcaption>{caption}</figcaption><img alt="{caption} of {name}" src="{uri}"></figure>"#,
+            r#"<figure><figcaption>{caption}</figcaption><img alt="{caption} of {name}" src="{uri}"/></figure>"#,
             name = escape(&outcome.name),
             uri = data_uri(png),
         );
@@ -353,6 +396,7 @@ mod tests {
             image,
             field: None,
             problem: None,
+            written: Vec::new(),
             reference_png: Some(vec![1, 2, 3]),
             actual_png: vec![4, 5, 6],
             diff_png: None,
@@ -387,6 +431,7 @@ mod tests {
         let check = FieldCheck {
             tolerance: 1e-3,
             unit: "p0".into(),
+            axes: ["x/a".into(), "z/a".into()],
             largest: Some(FieldDifference {
                 panel: 1,
                 largest: 2.5e-3,
@@ -397,7 +442,7 @@ mod tests {
         assert!(!check.passed());
         assert_eq!(
             check.summary(),
-            "field: largest difference 0.0025 p0 in panel 1 at (0.5, 0.48) (limit 0.001 p0)"
+            "field: largest difference 0.0025 p0 in panel 1 at x/a = 0.5, z/a = 0.48 (limit 1e-3 p0)"
         );
         let within = FieldCheck {
             largest: Some(FieldDifference {
@@ -409,7 +454,7 @@ mod tests {
         };
         assert!(within.passed());
         assert!(
-            within.summary().contains("1.000e-12 p0"),
+            within.summary().contains("1e-12 p0"),
             "{}",
             within.summary()
         );
@@ -462,9 +507,13 @@ mod tests {
     #[test]
     fn short_numbers() {
         assert_eq!(short(0.0025), "0.0025");
-        assert_eq!(short(1e-12), "1.000e-12");
+        assert_eq!(short(1e-12), "1e-12");
         assert_eq!(short(0.48), "0.48");
-        assert_eq!(short(1234.5), "1234.5");
-        assert_eq!(short(3.2e9), "3.200e9");
+        assert_eq!(short(-1.0000000000000002), "-1");
+        assert_eq!(short(1234.56), "1235");
+        assert_eq!(short(3.2e9), "3.2e9");
+        assert_eq!(short(1e-3), "1e-3");
+        assert_eq!(short(0.00099987), "9.999e-4");
+        assert_eq!(short(0.0), "0");
     }
 }

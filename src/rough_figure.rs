@@ -28,6 +28,7 @@ use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionS
 use crate::rough_report::search_depth_m;
 use crate::scene::{ContactKind, Scene};
 use crate::study::rough::{self as rough_study, RoughStudyError, REFERENCE_LENGTH_M};
+use crate::surface::generate::Form;
 use crate::surface::gw::GreenwoodWilliamson;
 use crate::surface::stats::{self, Characterisation, Options, StatsError};
 use crate::surface::HeightMap;
@@ -541,7 +542,12 @@ pub fn rough_sheet(
         scale.levels = scene.figure.levels.clone();
     }
 
-    let area_chart = area_against_load(scene, &solution)?;
+    // A rough ball or cylinder: its pressure against the smooth body's (Hertz); a nominally
+    // flat surface: its real area against load.
+    let area_chart = match surface.shape {
+        Form::None => area_against_load(scene, &solution)?,
+        shape => pressure_against_hertz(scene, &solution, shape)?,
+    };
     let sheet = Sheet {
         title: scene
             .title
@@ -622,5 +628,126 @@ fn area_against_load(scene: &Scene, solution: &RoughSolution) -> Result<Chart, S
         style: Style::Dashed,
         colour: PALETTE[1],
     });
+    Ok(chart)
+}
+
+/// The pressure under a rough ball (or cylinder) against the Hertz pressure of the smooth one
+/// under the same load: around the centre of pressure, the mean over rings a fifteenth of the
+/// Hertz radius wide (a cylinder: over strips along its axis y) and the largest in each, and Hertz's
+/// `p0 sqrt(1 - r²/a²)` with `a = (3WR/(4E*))^(1/3)`, `p0 = 3W/(2πa²)` (a cylinder: `b` and
+/// `p0 = 2W'/(πb)` of the load per unit length `W' = W/Ly`, `b = sqrt(4W'R/(πE*))`; Johnson
+/// 1985, §4.2). Roughness spreads the load wider and lower on average while the asperities'
+/// peaks exceed p0 (Greenwood & Tripp 1967).
+fn pressure_against_hertz(
+    scene: &Scene,
+    solution: &RoughSolution,
+    shape: Form,
+) -> Result<Chart, SheetError> {
+    let problem = rough_study::problem(scene).ok_or(SheetError::NoSurface)?;
+    let e_star = problem.e_star_pa;
+    let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
+    let unit = scene.figure.stress_unit.label("");
+    let ny = solution.pressure_pa.nrows();
+    let [dx, dy] = solution.spacing_m;
+    let load = solution.load_n;
+    let total: f64 = solution.pressure_pa.sum();
+    let (mut cx, mut cy) = (0.0, 0.0);
+    for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
+        cx += p * (i as f64 + 0.5) * dx;
+        cy += p * (j as f64 + 0.5) * dy;
+    }
+    let (cx, cy) = (cx / total, cy / total);
+    let (radius_m, cylinder) = match shape {
+        Form::Sphere { radius_m } => (radius_m, false),
+        Form::Cylinder { radius_m } => (radius_m, true),
+        Form::None => return Err(SheetError::NoSurface),
+    };
+    let (half_width, p0) = if cylinder {
+        let per_length = load / (ny as f64 * dy);
+        let b = (4.0 * per_length * radius_m / (PI * e_star)).sqrt();
+        (b, 2.0 * per_length / (PI * b))
+    } else {
+        let a = (3.0 * load * radius_m / (4.0 * e_star)).cbrt();
+        (a, 3.0 * load / (2.0 * PI * a * a))
+    };
+    // Rings (strips) a fifteenth of the Hertz radius wide (at least a cell), out to twice it.
+    let width = (half_width / 15.0).max(if cylinder { dx } else { dx.max(dy) });
+    let bins = ((2.0 * half_width / width).ceil() as usize).max(4);
+    let mut sums = vec![(0.0f64, 0usize, 0.0f64); bins];
+    for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
+        let x = (i as f64 + 0.5) * dx - cx;
+        let y = (j as f64 + 0.5) * dy - cy;
+        let r = if cylinder { x.abs() } else { x.hypot(y) };
+        let bin = (r / width) as usize;
+        if let Some(entry) = sums.get_mut(bin) {
+            entry.0 += p;
+            entry.1 += 1;
+            entry.2 = entry.2.max(p);
+        }
+    }
+    let at = |k: usize| (k as f64 + 0.5) * width * 1e6;
+    let mean: Vec<(f64, f64)> = sums
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| e.1 > 0)
+        .map(|(k, e)| (at(k), e.0 / e.1 as f64 * stress_per_pa))
+        .collect();
+    let largest: Vec<(f64, f64)> = sums
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| e.1 > 0 && e.2 > 0.0)
+        .map(|(k, e)| (at(k), e.2 * stress_per_pa))
+        .collect();
+    let hertz: Vec<(f64, f64)> = (0..=200)
+        .map(|k| {
+            let r = 2.0 * half_width * k as f64 / 200.0;
+            let p = p0 * (1.0 - (r / half_width).powi(2)).max(0.0).sqrt();
+            (r * 1e6, p * stress_per_pa)
+        })
+        .collect();
+    let (axis, ring) = if cylinder {
+        ("distance from the centre line |x| (µm)", "strip")
+    } else {
+        ("radius r from the centre of pressure (µm)", "ring")
+    };
+    let mut chart = Chart::new(
+        &format!(
+            "Pressure against the smooth {} (Hertz)",
+            if cylinder { "cylinder" } else { "ball" }
+        ),
+        axis,
+        &format!("p {}", unit.trim()),
+    );
+    chart.series.push(Series {
+        label: format!("largest in each {ring}"),
+        points: largest,
+        style: Style::Markers,
+        colour: PALETTE[3],
+    });
+    chart.series.push(Series {
+        label: format!("mean over each {ring}"),
+        points: mean,
+        style: Style::Line,
+        colour: PALETTE[0],
+    });
+    chart.series.push(Series {
+        label: format!(
+            "Hertz, smooth: {} = {:.1} µm, p0 = {:.0} MPa",
+            if cylinder { "b" } else { "a" },
+            half_width * 1e6,
+            p0 * 1e-6
+        ),
+        points: hertz,
+        style: Style::Dashed,
+        colour: PALETTE[1],
+    });
+    chart.x_range = Some((0.0, 2.0 * half_width * 1e6));
+    // Head room for the legend above the highest peak.
+    let highest = chart
+        .series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .fold(0.0, f64::max);
+    chart.y_range = Some((0.0, 1.3 * highest));
     Ok(chart)
 }

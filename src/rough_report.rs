@@ -16,8 +16,8 @@ use serde::Serialize;
 use crate::assess::{grid_maxima_to_depth, StressMaxima};
 use crate::contact::rough::RoughSolution;
 use crate::scene::Scene;
-use crate::solution::point_numerical::{NumericalError, PointTractions};
-use crate::study::rough::{traction_grid, REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
+use crate::solution::point_numerical::NumericalError;
+use crate::study::rough::{REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
 use crate::surface::stats::{self, FormRemoval, Options};
 
 /// What the report says.
@@ -79,14 +79,15 @@ pub fn search_depth_m(solution: &RoughSolution) -> f64 {
         .max(dx.min(dy))
 }
 
-/// The subsurface maxima under the solved pressure (and `q = μ p`), from DC-FFT layers at the
-/// cell centres, one cell apart, down to [`search_depth_m`].
+/// The subsurface maxima under the solved pressure (and `q = μ p`; periodic when the contact
+/// is), from DC-FFT layers at the cell centres, one cell apart and refined to an eighth of a
+/// cell around the best ([`grid_maxima_to_depth`]), down to [`search_depth_m`].
 pub fn subsurface_maxima(
     solution: &RoughSolution,
     friction: f64,
     poisson: f64,
 ) -> Result<(StressMaxima, f64), NumericalError> {
-    let tractions = PointTractions::new(traction_grid(solution, friction)?, poisson)?;
+    let tractions = crate::study::rough::tractions(solution, friction, poisson)?;
     let depth_m = search_depth_m(solution);
     let maxima = grid_maxima_to_depth(&tractions, depth_m / REFERENCE_LENGTH_M)?;
     Ok((maxima, depth_m))
@@ -257,8 +258,13 @@ impl ContactReport {
         )?;
         writeln!(
             out,
-            "  (maxima at cell centres of DC-FFT layers one cell apart, searched to {:.3} um)",
-            um(self.search_depth_m)
+            "  (maxima at cell centres of DC-FFT layers, one cell and then an eighth of a cell apart, searched to {:.3} um{})",
+            um(self.search_depth_m),
+            if self.periodic {
+                "; the tractions repeat with the surface"
+            } else {
+                ""
+            }
         )
     }
 }

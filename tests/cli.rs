@@ -15,7 +15,7 @@ fn stressfield() -> Command {
     command
 }
 
-fn run(args: &[&str]) -> Output {
+pub(crate) fn run(args: &[&str]) -> Output {
     stressfield().args(args).output().expect("the binary runs")
 }
 
@@ -36,7 +36,7 @@ fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
     child.wait_with_output().expect("finishes")
 }
 
-fn stderr(output: &Output) -> String {
+pub(crate) fn stderr(output: &Output) -> String {
     String::from_utf8_lossy(&output.stderr).into_owned()
 }
 
@@ -44,7 +44,7 @@ fn stdout(output: &Output) -> String {
     String::from_utf8_lossy(&output.stdout).into_owned()
 }
 
-fn repo(path: &str) -> PathBuf {
+pub(crate) fn repo(path: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join(path)
 }
 
@@ -56,7 +56,7 @@ fn scene_file(text: &str) -> (tempfile::TempDir, PathBuf) {
     (dir, path)
 }
 
-const SMALL_SCENE: &str = "format = 1\n[contact]\nkind = \"line\"\nfriction = 0.2\n[figure]\nquantity = \"von_mises\"\nresolution = 81\nwidth = 300\n";
+pub(crate) const SMALL_SCENE: &str = "format = 1\n[contact]\nkind = \"line\"\nfriction = 0.2\n[figure]\nquantity = \"von_mises\"\nresolution = 81\nwidth = 300\n";
 
 /// The numbers of a successful `probe` run's CSV rows (header dropped).
 fn probe_rows(args: &[&str], input: &str) -> Vec<Vec<f64>> {
@@ -70,7 +70,7 @@ fn probe_rows(args: &[&str], input: &str) -> Vec<Vec<f64>> {
 }
 
 /// Asserts a failed run whose message contains every fragment.
-fn assert_fails_with(output: &Output, fragments: &[&str]) {
+pub(crate) fn assert_fails_with(output: &Output, fragments: &[&str]) {
     assert!(
         !output.status.success(),
         "expected failure, got success; stderr: {}",

@@ -213,6 +213,57 @@ fn westergaard_wavy_surface() {
 }
 
 #[test]
+fn the_stress_under_a_periodic_contact_repeats_and_tends_to_the_mean_pressure() {
+    // Westergaard's wavy surface at p̄ = p*/4: the tractions of one period stand for all of
+    // them. At the surface σzz = -p in every cell (exactly: the other cells and the images add
+    // no normal stress there); a wavelength down the field is the uniform one of the mean
+    // pressure (the wavy parts decay at least as e^(-2π z/λ)).
+    let (nx, ny, wavelength, amplitude) = (128, 4, 1e-3, 1e-6);
+    let spacing = wavelength / nx as f64;
+    let heights = Array2::from_shape_fn((ny, nx), |(_, i)| {
+        amplitude * (2.0 * PI * (i as f64 + 0.5) * spacing / wavelength).cos()
+    });
+    let mean = 0.25 * PI * E_STAR * amplitude / wavelength;
+    let solution = solve(
+        &problem(
+            &heights,
+            spacing,
+            Periodicity::Periodic,
+            Control::MeanPressure { pa: mean },
+        ),
+        &mut |_, _| {},
+    )
+    .expect("solves");
+    let tractions = stressfield::study::rough::tractions(&solution, 0.0, 0.3).expect("grid");
+    assert!(tractions.is_periodic());
+    let unit = stressfield::study::rough::REFERENCE_PRESSURE_PA;
+    let surface = tractions.dcfft().layer(0.0).expect("layer");
+    for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
+        let szz = surface[[2, j, i]] * unit;
+        assert!((szz + p).abs() < 1e-9 * mean, "[{j}, {i}]: {szz} vs -{p}");
+    }
+    // Two wavelengths down (in the traction grid's unit, 1 um).
+    let depth = 2.0 * wavelength / stressfield::study::rough::REFERENCE_LENGTH_M;
+    let deep = tractions.dcfft().layer(depth).expect("layer");
+    for ((c, j, i), &value) in deep.indexed_iter() {
+        let expected = if c == 2 { -mean } else { 0.0 };
+        assert!(
+            (value * unit - expected).abs() < 1e-3 * mean,
+            "component {c} at [{j}, {i}]: {} vs {expected}",
+            value * unit
+        );
+    }
+    // The isolated reading of the same tractions misses the other periods' load.
+    let isolated = PointTractions::new(
+        stressfield::study::rough::traction_grid(&solution, 0.0).expect("grid"),
+        0.3,
+    )
+    .expect("grid");
+    let shallow = isolated.dcfft().layer(depth).expect("layer");
+    assert!(shallow[[2, 0, 0]] * unit > -0.5 * mean);
+}
+
+#[test]
 fn approach_control_reproduces_load_control() {
     let (heights, spacing) = paraboloid(63, 1.6);
     let by_load = solve(

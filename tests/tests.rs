@@ -9,6 +9,7 @@ mod patch;
 mod point_contact;
 #[cfg(feature = "rerun")]
 mod record;
+mod regression;
 mod rough_contact;
 mod scenes;
 mod surfaces;

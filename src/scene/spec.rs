@@ -141,6 +141,10 @@ pub struct SurfaceSpec {
     pub source: String,
     /// Generated (periodic by construction): spectra need no window.
     pub generated: bool,
+    /// The form a generated surface was superposed on (a ball or a cylinder), else `None`.
+    pub shape: crate::surface::generate::Form,
+    /// What the statistics remove besides the mean plane (default: nothing, or a quadratic
+    /// for a generated ball or cylinder).
     pub form: FormRemoval,
     /// The Hurst fit's band of wavelengths (m).
     pub band_m: Option<(f64, f64)>,
@@ -289,6 +293,16 @@ impl StressUnit {
             Self::Pascal => 1.0,
             Self::MegaPascal => 1e6,
             Self::GigaPascal => 1e9,
+        }
+    }
+
+    /// The unit as written in a scene: `p0`, `Pa`, `MPa` or `GPa`.
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Self::PeakPressure => "p0",
+            Self::Pascal => "Pa",
+            Self::MegaPascal => "MPa",
+            Self::GigaPascal => "GPa",
         }
     }
 

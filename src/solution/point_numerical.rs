@@ -8,6 +8,7 @@
 use ndarray::Array2;
 
 use super::dcfft::{DcFft, DcFftError, TractionGrid, TractionGridError};
+use super::elastic::Periodicity;
 use crate::stress::Stress;
 
 /// Errors building a numerical point contact.
@@ -58,10 +59,22 @@ impl PartialEq for PointTractions {
 }
 
 impl PointTractions {
-    /// Tractions given on a grid, for a body of Poisson ratio `poisson`.
+    /// Tractions given on a grid (zero beyond it), for a body of Poisson ratio `poisson`.
     pub fn new(grid: TractionGrid, poisson: f64) -> Result<Self, NumericalError> {
         let fft = DcFft::new(&grid, poisson)?;
         Ok(Self { grid, fft, poisson })
+    }
+
+    /// Tractions of which the grid is one period, repeating in x and y (the stress under a
+    /// periodic rough contact; see [`super::dcfft`]).
+    pub fn periodic(grid: TractionGrid, poisson: f64) -> Result<Self, NumericalError> {
+        let fft = DcFft::periodic(&grid, poisson)?;
+        Ok(Self { grid, fft, poisson })
+    }
+
+    /// Whether the grid is one period of repeating tractions.
+    pub fn is_periodic(&self) -> bool {
+        self.fft.periodicity() == Periodicity::Periodic
     }
 
     /// Tractions given as functions of `(x, y)` (units of a and p0) on `cells x cells` cells
@@ -184,17 +197,27 @@ impl PointTractions {
     }
 
     /// Stress (units of p0) at `(x, y, z)` by direct summation over the cells: exact for the
-    /// piecewise-constant tractions; one patch evaluation per loaded cell.
+    /// piecewise-constant tractions; one patch evaluation per loaded cell (periodic: per
+    /// cell and image, [`TractionGrid::periodic_stress_at`]).
     pub fn stress_over_p0(&self, x: f64, y: f64, z: f64) -> Stress {
-        self.grid.stress_at(x, y, z, self.poisson)
+        if self.is_periodic() {
+            self.grid.periodic_stress_at(x, y, z, self.poisson)
+        } else {
+            self.grid.stress_at(x, y, z, self.poisson)
+        }
     }
 
-    /// The tractions `(p, qx)` of the cell containing `(x, y)` (zero outside the grid).
+    /// The tractions `(p, qx)` of the cell containing `(x, y)` (zero outside an isolated
+    /// grid; a periodic grid repeats).
     pub fn traction_at(&self, x: f64, y: f64) -> (f64, f64) {
         let [ny, nx] = self.grid.shape();
         let [dx, dy] = self.grid.cell();
         let [x0, y0] = self.grid.origin();
-        let (fx, fy) = ((x - x0) / dx, (y - y0) / dy);
+        let (mut fx, mut fy) = ((x - x0) / dx, (y - y0) / dy);
+        if self.is_periodic() && fx.is_finite() && fy.is_finite() {
+            fx = fx.rem_euclid(nx as f64);
+            fy = fy.rem_euclid(ny as f64);
+        }
         if !(fx >= 0.0 && fy >= 0.0 && fx < nx as f64 && fy < ny as f64) {
             return (0.0, 0.0);
         }

@@ -80,13 +80,27 @@ pub fn traction_grid(
     )?)
 }
 
-/// The stress solution under the solved tractions (DC-FFT on the surface's grid).
+/// The solved tractions with their DC-FFT, periodic when the contact is.
+pub fn tractions(
+    solution: &RoughSolution,
+    friction: f64,
+    poisson: f64,
+) -> Result<PointTractions, NumericalError> {
+    let grid = traction_grid(solution, friction)?;
+    Ok(match solution.periodicity {
+        Periodicity::Periodic => PointTractions::periodic(grid, poisson)?,
+        Periodicity::NonPeriodic => PointTractions::new(grid, poisson)?,
+    })
+}
+
+/// The stress solution under the solved tractions (DC-FFT on the surface's grid; a periodic
+/// contact's tractions repeat, with their images, so the field is periodic too).
 pub fn stress_solution(
     solution: &RoughSolution,
     friction: f64,
     poisson: f64,
 ) -> Result<Solution, NumericalError> {
-    let tractions = PointTractions::new(traction_grid(solution, friction)?, poisson)?;
+    let tractions = tractions(solution, friction, poisson)?;
     Ok(Solution::PointNumerical {
         tractions: Arc::new(tractions),
         friction,

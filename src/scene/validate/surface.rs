@@ -24,7 +24,9 @@ impl Validator<'_> {
                 Some("add [surface] with file = \"surfaces/worn.asc\" (spacing, height_unit), or [surface.generate]"),
             ));
         };
-        let (body1, source, generated) = self.height_map("surface", table)?;
+        let (body1, source, shape) = self.height_map("surface", table)?;
+        let generated = shape.is_some();
+        let shape = shape.unwrap_or(Form::None);
         let counter = match (&raw.counter_surface, kind) {
             (None, _) => None,
             (Some(_), ContactKind::Surface) => {
@@ -66,6 +68,8 @@ impl Validator<'_> {
             None => Arc::new(body1.clone()),
         };
         let form = match table.form.as_deref() {
+            // A generated ball or cylinder: its form is not roughness.
+            None if shape != Form::None => FormRemoval::Quadratic,
             None | Some("plane") => FormRemoval::Plane,
             Some("quadratic") => FormRemoval::Quadratic,
             Some(other) => {
@@ -106,17 +110,19 @@ impl Validator<'_> {
             counter,
             source,
             generated,
+            shape,
             form,
             band_m,
         })
     }
 
-    /// One `[surface]`-like table: the map, a description of its source, whether generated.
+    /// One `[surface]`-like table: the map, a description of its source, and for a generated
+    /// surface the form superposed on it.
     fn height_map(
         &self,
         key: &str,
         table: &RawSurface,
-    ) -> Result<(HeightMap, String, bool), SceneError> {
+    ) -> Result<(HeightMap, String, Option<Form>), SceneError> {
         match (&table.file, &table.generate) {
             (Some(_), Some(_)) | (None, None) => Err(self.error(
                 key,
@@ -172,7 +178,7 @@ impl Validator<'_> {
                         Some("the path is relative to the scene file"),
                     )
                 })?;
-                Ok((map, file.clone(), false))
+                Ok((map, file.clone(), None))
             }
             (None, Some(generate)) => {
                 for (name, given) in [
@@ -193,7 +199,7 @@ impl Validator<'_> {
                     self.generator(&format!("{key}.generate"), generate)?;
                 let map = generate::generate(&generator)
                     .map_err(|e| self.error(&format!("{key}.generate"), e.to_string(), None))?;
-                Ok((map, description, true))
+                Ok((map, description, Some(generator.form)))
             }
         }
     }

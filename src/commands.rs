@@ -416,7 +416,6 @@ fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<St
     )
 }
 
-
 /// What `render` made of one scene.
 struct SceneOutput {
     image: image::RgbImage,

@@ -285,9 +285,15 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
         titles[last + 2].starts_with("q: largest |q| 0.500 p0"),
         "{titles:?}"
     );
-    // The colour bar: nice ticks from 0 and the caption with the unit.
+    // The parameter once in each title, however the subtitle writes it.
+    for title in titles.iter().filter(|t| t.starts_with("step ")) {
+        assert_eq!(title.matches("μ = ").count(), 1, "{title}");
+    }
+    // The colour bar: nice ticks from 0, with the decimals of the tick step, and the caption
+    // with the unit.
     let bar = contents.labels("/sections/0/colorbar/labels");
-    assert_eq!(bar.first().map(String::as_str), Some("0"), "{bar:?}");
+    assert_eq!(bar.first().map(String::as_str), Some("0.0"), "{bar:?}");
+    assert!(contents.paths().contains(&"/sections/0/border"));
     assert_eq!(bar.last().map(String::as_str), Some("σvM / p0"), "{bar:?}");
     // The layout: the section view's area, the 2-D chart views, the panels collapsed.
     assert_eq!(contents.layout_paths("/VisualBounds2D").len(), 1);
@@ -356,6 +362,35 @@ material_points = [[0.0, 0.5], [1.0, 0.25]]
     assert!(minima.iter().all(|(_, v)| *v < 0.0), "{minima:?}");
     assert!(maxima.iter().all(|(_, v)| *v > 0.0), "{maxima:?}");
     assert!(contents.labels("/sections/0/minimum/label")[0].starts_with("min τxz = −"));
+}
+
+#[test]
+fn an_extreme_of_no_size_is_not_marked() {
+    // With the load's centre at x0 = −3.5a the positive lobe of τxz lies behind it, outside
+    // the map (x ≥ −3a): what the map holds of it is a small fraction of the colour range,
+    // and only the negative lobe is marked. At x0 = 0 both lobes are.
+    let text = r#"
+format = 1
+[contact]
+kind = "line"
+poisson = 0.3
+[figure]
+quantity = "sxz"
+x = [-3.0, 3.0]
+z = [0.0, 2.0]
+resolution = 61
+[sweep]
+parameter = "position"
+values = [-3.5, 0.0]
+"#;
+    let (_, contents) = record_in_memory(&scene(text));
+    let maxima = contents.labels("/sections/0/maximum/label");
+    let minima = contents.labels("/sections/0/minimum/label");
+    assert_eq!(minima.len(), 2, "{minima:?}");
+    assert_eq!(maxima.len(), 1, "{maxima:?}");
+    assert!(maxima[0].starts_with("max τxz = 0.2"), "{maxima:?}");
+    // The series still has both steps.
+    assert_eq!(contents.scalars("/series/0/maximum", "position").len(), 2);
 }
 
 #[test]
@@ -497,10 +532,126 @@ fn every_shipped_recording_scene_records() {
                 "{}",
                 path.display()
             );
+            // The title row names the step's parameter once (a friction sweep's subtitle
+            // writes μ too).
+            if let Some(sweep) = &scene.sweep {
+                let name = sweep.describe(0, &scene);
+                let name = name.split(" = ").next().expect("a name");
+                for title in contents
+                    .labels("/sections/0/title")
+                    .iter()
+                    .filter(|t| t.starts_with("step "))
+                {
+                    assert_eq!(
+                        title.matches(&format!("{name} = ")).count(),
+                        1,
+                        "{}: {title}",
+                        path.display()
+                    );
+                }
+            }
         }
         recorded += 1;
     }
     assert!(recorded >= 4, "{recorded} recording scenes");
+}
+
+/// A small periodic rough contact with a load sweep.
+const ROUGH_SWEEP: &str = r#"
+format = 1
+title = "rough sweep"
+[contact]
+kind = "rough"
+load = "0.2 N"
+periodic = true
+[contact.body1]
+material = "steel"
+[contact.body2]
+material = "steel"
+[surface.generate]
+samples = 32
+spacing = "1 um"
+hurst = 0.8
+rolloff = "16 um"
+cutoff = "2 um"
+rms_slope = 0.1
+seed = 3
+[sweep]
+parameter = "load"
+values = ["0.05 N", "0.2 N", "0.5 N"]
+"#;
+
+#[test]
+fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load() {
+    let (summary, contents) = record_in_memory(&scene(ROUGH_SWEEP));
+    assert_eq!(summary.steps, 3);
+    for path in [
+        "/sheet",
+        "/topography/surface",
+        "/contact/field",
+        "/contact/border",
+        "/contact/colorbar/image",
+        "/contact/colorbar/labels",
+        "/contact/title",
+        "/contact/maximum/label",
+        "/charts/contact_fraction",
+        "/charts/spots",
+        "/charts/max_pressure",
+        "/depth/field",
+        "/depth/colorbar/labels",
+        "/maps/0/field",
+        "/maps/0/colorbar/labels",
+    ] {
+        assert!(
+            contents.paths().contains(&path),
+            "{path} missing from {:?}",
+            contents.paths()
+        );
+    }
+    // The pressure map at every load, its title following the load; a chart per step.
+    assert_eq!(contents.rows_on("/contact/field", "load"), 3);
+    assert_eq!(contents.rows_on("/charts/contact_fraction", "load"), 3);
+    let titles = contents.labels("/contact/title");
+    assert_eq!(titles.len(), 3, "{titles:?}");
+    for (k, load) in ["0.05", "0.2", "0.5"].iter().enumerate() {
+        assert!(
+            titles[k].starts_with(&format!("step {} of 3: W = {load} N: ", k + 1)),
+            "{titles:?}"
+        );
+    }
+    assert_eq!(
+        contents
+            .labels("/contact/colorbar/labels")
+            .last()
+            .map(String::as_str),
+        Some("p (MPa)")
+    );
+    // The labelled maximum is the step's largest pressure, in MPa.
+    let largest = contents.scalars("/series/max_pressure_mpa", "load");
+    let labels = contents.labels("/contact/maximum/label");
+    assert_eq!(labels.len(), 3, "{labels:?}");
+    for (label, (_, value)) in labels.iter().zip(&largest) {
+        let shown: f64 = label
+            .strip_prefix("max p = ")
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|number| number.parse().ok())
+            .unwrap_or_else(|| panic!("{label}"));
+        assert!(((shown - value) / value).abs() < 5e-3, "{label} vs {value}");
+        assert!(
+            label.contains(" MPa at x = ") && label.ends_with(" µm"),
+            "{label}"
+        );
+    }
+    // More load, more contact.
+    let fraction = contents.scalars("/series/contact_fraction", "load");
+    assert!(fraction.windows(2).all(|w| w[1].1 > w[0].1), "{fraction:?}");
+    // The depth steps are on their own timeline only (the load's would show one of them at
+    // the last load and none before).
+    assert!(contents.rows_on("/depth/field", "depth") >= 2);
+    assert_eq!(contents.rows_on("/depth/field", "load"), 0);
+    assert!(contents.labels("/depth/title")[0].starts_with("layer 1 of "));
+    // Every 2-D map view opens on its frame.
+    assert!(contents.layout_paths("/VisualBounds2D").len() >= 3);
 }
 
 // --- The command line: where recordings go, and what is left behind (issue 13, cases 8, 11
@@ -705,6 +856,200 @@ fn a_recording_streams_to_standard_output() {
     assert!(contents.blueprints >= 1);
 }
 
+/// A stand-in for a Rerun viewer's gRPC endpoint (`MessageProxyService/WriteMessages`, the
+/// call `--connect` makes), enough of HTTP/2 (RFC 9113) and gRPC to take one client-streaming
+/// call: it answers the connection's settings and pings, keeps the flow-control windows open,
+/// collects the call's DATA frames, and once the client ends the call replies `200` with
+/// `grpc-status: 0`. Returns the gRPC messages' bodies (protobuf `WriteMessagesRequest`s).
+fn stand_in_viewer(listener: std::net::TcpListener) -> Vec<Vec<u8>> {
+    use std::io::{Read, Write};
+    let (mut socket, _) = listener.accept().expect("the client connects");
+    socket
+        .set_read_timeout(Some(std::time::Duration::from_secs(120)))
+        .expect("timeout");
+    let mut preface = [0u8; 24];
+    socket.read_exact(&mut preface).expect("the preface");
+    assert_eq!(&preface, b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n", "not HTTP/2");
+    let frame = |kind: u8, flags: u8, stream: u32, payload: &[u8]| {
+        let mut bytes = (payload.len() as u32).to_be_bytes()[1..].to_vec();
+        bytes.extend([kind, flags]);
+        bytes.extend(stream.to_be_bytes());
+        bytes.extend(payload);
+        bytes
+    };
+    let window_update = |stream: u32, increment: u32| frame(8, 0, stream, &increment.to_be_bytes());
+    // SETTINGS: INITIAL_WINDOW_SIZE (4) = 2^31 - 1; and the connection's window opened as far.
+    let mut settings = 4u16.to_be_bytes().to_vec();
+    settings.extend(0x7fff_ffffu32.to_be_bytes());
+    socket.write_all(&frame(4, 0, 0, &settings)).expect("write");
+    socket
+        .write_all(&window_update(0, 0x7fff_ffff - 65_535))
+        .expect("write");
+    let mut body = Vec::new();
+    loop {
+        let mut header = [0u8; 9];
+        match socket.read_exact(&mut header) {
+            Ok(()) => {}
+            // The client hung up: the call is over.
+            Err(e) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
+            Err(e) => panic!("reading a frame: {e}"),
+        }
+        let length = u32::from_be_bytes([0, header[0], header[1], header[2]]) as usize;
+        let (kind, flags) = (header[3], header[4]);
+        let stream = u32::from_be_bytes([header[5], header[6], header[7], header[8]]) & 0x7fff_ffff;
+        let mut payload = vec![0u8; length];
+        socket.read_exact(&mut payload).expect("a frame's payload");
+        match kind {
+            // DATA, possibly padded (flag 0x8): the call's bytes; END_STREAM (0x1) ends it.
+            0 => {
+                let data = if flags & 0x8 != 0 {
+                    let pad = usize::from(payload[0]);
+                    &payload[1..payload.len() - pad]
+                } else {
+                    &payload[..]
+                };
+                body.extend_from_slice(data);
+                if length > 0 {
+                    socket
+                        .write_all(&window_update(stream, length as u32))
+                        .expect("write");
+                }
+                if flags & 0x1 != 0 {
+                    // HEADERS (END_HEADERS): `:status: 200` (static table entry 8), then
+                    // `content-type: application/grpc` (literal, name at static index 31).
+                    let mut block = vec![0x88, 0x0f, 0x10, 16];
+                    block.extend(b"application/grpc");
+                    socket
+                        .write_all(&frame(1, 0x4, stream, &block))
+                        .expect("write");
+                    // Trailers (END_HEADERS | END_STREAM): `grpc-status: 0` (literal, new name).
+                    let mut trailers = vec![0x00, 11];
+                    trailers.extend(b"grpc-status");
+                    trailers.extend([1, b'0']);
+                    socket
+                        .write_all(&frame(1, 0x5, stream, &trailers))
+                        .expect("write");
+                }
+            }
+            // SETTINGS (not an ACK): acknowledge.
+            4 if flags & 0x1 == 0 => socket.write_all(&frame(4, 0x1, 0, &[])).expect("write"),
+            // PING (not an ACK): answer.
+            6 if flags & 0x1 == 0 => socket
+                .write_all(&frame(6, 0x1, 0, &payload))
+                .expect("write"),
+            // GOAWAY: the client is done.
+            7 => break,
+            // HEADERS, CONTINUATION, WINDOW_UPDATE, RST_STREAM, acknowledgements: nothing to do.
+            _ => {}
+        }
+    }
+    // gRPC messages: a compression flag (0), a big-endian length, the protobuf.
+    let mut messages = Vec::new();
+    let mut rest = &body[..];
+    while !rest.is_empty() {
+        assert_eq!(rest[0], 0, "an uncompressed gRPC message");
+        let length = u32::from_be_bytes([rest[1], rest[2], rest[3], rest[4]]) as usize;
+        messages.push(rest[5..5 + length].to_vec());
+        rest = &rest[5 + length..];
+    }
+    messages
+}
+
+/// A protobuf varint at the start of `bytes`, and the bytes after it.
+fn varint(bytes: &[u8]) -> (u64, &[u8]) {
+    let mut value = 0u64;
+    for (i, &byte) in bytes.iter().enumerate() {
+        value |= u64::from(byte & 0x7f) << (7 * i);
+        if byte & 0x80 == 0 {
+            return (value, &bytes[i + 1..]);
+        }
+    }
+    panic!("a truncated varint");
+}
+
+/// The one length-delimited field of a protobuf message: its number and its bytes.
+fn only_field(bytes: &[u8]) -> (u64, &[u8]) {
+    let (key, rest) = varint(bytes);
+    assert_eq!(key & 7, 2, "a length-delimited field");
+    let (length, rest) = varint(rest);
+    assert_eq!(rest.len() as u64, length, "one field");
+    (key >> 3, rest)
+}
+
+/// The messages of a gRPC stream as an .rrd stream: each `WriteMessagesRequest { log_msg:
+/// LogMsg { oneof msg } }` becomes the frame `MessageHeader { kind, len }` + the oneof's
+/// message, the kinds numbered as the oneof's fields (1 store info, 2 Arrow data, 3 blueprint
+/// activation), after a stream header.
+fn rrd_of_grpc(messages: &[Vec<u8>]) -> Vec<u8> {
+    use rerun::external::re_log_encoding::{
+        CrateVersion, Encodable, EncodingOptions, MessageHeader, MessageKind, StreamHeader,
+        RRD_FOURCC,
+    };
+    let mut out = Vec::new();
+    StreamHeader {
+        fourcc: RRD_FOURCC,
+        version: CrateVersion::LOCAL.to_bytes(),
+        options: EncodingOptions::PROTOBUF_COMPRESSED,
+    }
+    .to_rrd_bytes(&mut out)
+    .expect("a header");
+    for message in messages {
+        let (field, log_msg) = only_field(message);
+        assert_eq!(field, 1, "WriteMessagesRequest.log_msg");
+        let (kind, inner) = only_field(log_msg);
+        let kind = match kind {
+            1 => MessageKind::SetStoreInfo,
+            2 => MessageKind::ArrowMsg,
+            3 => MessageKind::BlueprintActivationCommand,
+            other => panic!("LogMsg field {other}"),
+        };
+        MessageHeader {
+            kind,
+            len: inner.len() as u64,
+        }
+        .to_rrd_bytes(&mut out)
+        .expect("a frame header");
+        out.extend_from_slice(inner);
+    }
+    out
+}
+
+/// `--connect URL`: the recording streams to the viewer at that address (here a stand-in
+/// listening on a free port), which receives the whole recording with its layout.
+#[test]
+fn a_recording_streams_to_a_viewer_at_the_given_address() {
+    let (_dir, scene) = scene_file(SMALL_SWEEP);
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a free port");
+    let url = format!(
+        "rerun+http://127.0.0.1:{}/proxy",
+        listener.local_addr().expect("address").port()
+    );
+    let viewer = std::thread::spawn(move || stand_in_viewer(listener));
+    let output = stressfield()
+        .args(["record", scene.to_str().expect("utf8"), "--connect", &url])
+        .output()
+        .expect("runs");
+    let text = stderr_of(&output);
+    assert!(output.status.success(), "{text}");
+    assert!(
+        text.contains(&format!("to the Rerun viewer at {url}")),
+        "{text}"
+    );
+    let messages = viewer.join().expect("the stand-in ends");
+    let rrd = rrd_of_grpc(&messages);
+    let decoded: Vec<LogMsg> = DecoderApp::decode_lazy(std::io::Cursor::new(rrd))
+        .map(|message| message.expect("a valid message"))
+        .collect();
+    let contents = Contents::from_messages(decoded);
+    assert!(contents
+        .application_ids
+        .iter()
+        .all(|id| id == APPLICATION_ID));
+    assert_eq!(contents.scalars("/series/0/maximum", "friction").len(), 2);
+    assert!(contents.paths().contains(&"/sections/0/colorbar/labels"));
+    assert!(contents.blueprints >= 1, "the layout is sent too");
+}
+
 /// `--connect URL` with no viewer there: a clear error naming the address, after the SDK's
 /// connection timeout.
 #[test]
@@ -719,4 +1064,26 @@ fn connecting_to_no_viewer_fails_clearly() {
     assert!(!output.status.success(), "{text}");
     assert!(text.contains(&format!("cannot stream to {url}")), "{text}");
     assert!(text.contains("--spawn"), "{text}");
+}
+
+/// `--spawn` with no `rerun` on the PATH: a clear error saying how to install the viewer.
+/// (Skipped when a viewer already listens on the default port: `--spawn` would stream to it.)
+#[test]
+fn spawning_without_a_viewer_installed_fails_clearly() {
+    let default = std::net::SocketAddr::from(([127, 0, 0, 1], 9876));
+    if std::net::TcpStream::connect_timeout(&default, std::time::Duration::from_millis(500)).is_ok()
+    {
+        eprintln!("a viewer listens on {default}: --spawn would use it; not tested here");
+        return;
+    }
+    let (dir, scene) = scene_file(SMALL_SWEEP);
+    let output = stressfield()
+        .args(["record", scene.to_str().expect("utf8"), "--spawn"])
+        .env("PATH", dir.path())
+        .output()
+        .expect("runs");
+    let text = stderr_of(&output);
+    assert!(!output.status.success(), "{text}");
+    assert!(text.contains("cannot start a Rerun viewer"), "{text}");
+    assert!(text.contains("pip install"), "{text}");
 }

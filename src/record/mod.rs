@@ -43,7 +43,7 @@ use crate::field::FieldError;
 use crate::figure;
 use crate::render::chart::{chart_png, Chart, Series, Style, PALETTE};
 use crate::render::colormap::ColorScale;
-use crate::render::{ColorMap, Figure, Mark};
+use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::scene::{ContactKind, Scene, SweepParameter};
 use crate::study;
 use layout::{Layout, Node, View, ViewKind};
@@ -70,6 +70,8 @@ pub enum RecordError {
     Stdout(String),
     #[error("cannot stream to {url}: {message}\nhint: start a viewer first (`rerun`, from pip install \"rerun-sdk==0.36.*\") or use --spawn")]
     Viewer { url: String, message: String },
+    #[error("cannot start a Rerun viewer: {0}\nhint: install the viewer matching this build, pip install \"rerun-sdk==0.36.*\" (it puts `rerun` on the PATH), or start one yourself and use --connect")]
+    Spawn(String),
 }
 
 impl From<rerun::RecordingStreamError> for RecordError {
@@ -167,17 +169,18 @@ const WINDOW_PX: (f64, f64) = (1600.0, 1000.0);
 /// Width shares of the maps and of the side column.
 const MAIN_SHARE: f32 = 2.6;
 const SIDE_SHARE: f32 = 1.0;
+/// Height shares of the sections and of the 3-D volume below them.
+const SECTIONS_SHARE: f32 = 1.0;
+const VOLUME_SHARE: f32 = 1.5;
 
 /// The size in pixels of each section view in the planned window.
 fn section_view_px(scene: &Scene) -> (f64, f64) {
-    let main = WINDOW_PX.0 * f64::from(MAIN_SHARE / (MAIN_SHARE + SIDE_SHARE)) - 20.0;
-    let width = if scene.volume.is_some() {
-        0.5 * main
-    } else {
-        main
-    };
+    let width = WINDOW_PX.0 * f64::from(MAIN_SHARE / (MAIN_SHARE + SIDE_SHARE)) - 20.0;
     let chrome = if scene.sweep.is_some() { 130.0 } else { 90.0 };
-    let height = (WINDOW_PX.1 - chrome) / scene.panels.len().max(1) as f64;
+    let mut height = (WINDOW_PX.1 - chrome) / scene.panels.len().max(1) as f64;
+    if scene.volume.is_some() {
+        height *= f64::from(SECTIONS_SHARE / (SECTIONS_SHARE + VOLUME_SHARE));
+    }
     (width, height)
 }
 
@@ -286,30 +289,46 @@ fn record_sections(
         })
         .collect();
     let view_px = section_view_px(scene);
-    let frames: Vec<Frame> = figure0
+    // The panels as drawn (a map seen from above with y up), and the material points there.
+    let shown0: Vec<Panel> = figure0
         .panels
         .iter()
-        .zip(&ranges)
-        .map(|(panel, &(lo, hi))| {
-            let longest = section::nice_ticks(lo, hi, 8)
+        .map(|panel| section::displayed(figure0, panel))
+        .collect();
+    let material: Vec<(f64, f64)> = scene
+        .sweep
+        .as_ref()
+        .map(|s| {
+            s.material_points
                 .iter()
-                .map(|t| section::short(*t).chars().count())
-                .max()
-                .unwrap_or(4)
-                .max(figure0.value_label.chars().count() / 2);
+                .map(|&(x, z)| (x, if figure0.vertical_is_depth { z } else { -z }))
+                .collect()
+        })
+        .unwrap_or_default();
+    let frames: Vec<Frame> = shown0
+        .iter()
+        .zip(&ranges)
+        .map(|(panel, &range)| {
+            let longest = section::longest_tick(range)
+                .max(section::panel_caption(figure0, panel).chars().count() / 2);
             let has_strip = figure0.vertical_is_depth && !panel.traction.is_empty();
             Frame::new(panel, has_strip, view_px, longest)
         })
         .collect();
-    for (k, (panel, frame)) in figure0.panels.iter().zip(&frames).enumerate() {
+    for (k, (panel, frame)) in shown0.iter().zip(&frames).enumerate() {
+        let caption = section::panel_caption(figure0, panel);
         section::log_static(
             stream,
             &format!("sections/{k}"),
             frame,
-            figure0,
             panel,
-            ranges[k],
-            scene,
+            &section::Fixed {
+                map: section::panel_colormap(figure0, panel),
+                caption: &caption,
+                range: ranges[k],
+                surface: figure0.vertical_is_depth,
+                material: &material,
+            },
         )?;
     }
     log_series_styles(stream, scene, figure0)?;
@@ -322,7 +341,10 @@ fn record_sections(
         }
         None => None,
     };
-    layout::send(stream, &plan_layout(scene, figure0, &frames))?;
+    let levels: &[f64] = volume_setup
+        .as_ref()
+        .map_or(&[], |(_, levels, _)| levels.as_slice());
+    layout::send(stream, &plan_layout(scene, figure0, &frames, levels))?;
     flush()?;
     let mut volume_triangles = 0;
     let mut history: Vec<Vec<(f64, f64, f64)>> = vec![Vec::new(); panels];
@@ -344,37 +366,23 @@ fn record_sections(
             title = format!("step {} of {steps}: {text}", step + 1);
         }
         for (k, panel) in figure.panels.iter().enumerate() {
-            // The step's parameter, then the rest of the panel's subtitle (without repeating it).
-            let mut panel_title = title.clone();
-            let parameter = scene
-                .sweep
-                .as_ref()
-                .map(|s| s.describe(step, scene))
-                .unwrap_or_default();
-            let rest: Vec<&str> = panel
-                .subtitle
-                .split(", ")
-                .filter(|part| !part.is_empty() && *part != parameter)
-                .collect();
-            if !rest.is_empty() {
-                if !panel_title.is_empty() {
-                    panel_title.push_str(", ");
-                }
-                panel_title.push_str(&rest.join(", "));
-            }
-            if panel_title.is_empty() {
-                panel_title = figure.title.clone();
-            }
-            let base = format!("sections/{k}");
+            let panel_title = step_title(scene, step, &title, &figure, panel);
+            let shown = section::displayed(&figure, panel);
             section::log_step(
                 stream,
-                &base,
+                section::When::Step,
+                &format!("sections/{k}"),
                 &frames[k],
                 &figure,
-                panel,
+                &shown,
                 ranges[k],
-                scene,
-                &panel_title,
+                &section::Changing {
+                    title: &panel_title,
+                    notation: &section::Notation::of(&figure, panel),
+                    mark: figure.mark,
+                    material: &material,
+                    values: true,
+                },
             )?;
             let (largest, smallest) = section::extremes(panel, figure.mark);
             let largest = largest.or_else(|| section::extremes(panel, Mark::Max).0);
@@ -426,6 +434,42 @@ fn record_sections(
         panels,
         volume_triangles,
     })
+}
+
+/// The title row of a panel at a step: the step and its parameter, then the rest of the
+/// panel's subtitle (its groups are separated by two spaces, as in the PNG figure) without
+/// repeating the parameter.
+fn step_title(
+    scene: &Scene,
+    step: usize,
+    title: &str,
+    figure: &Figure,
+    panel: &crate::render::Panel,
+) -> String {
+    let mut panel_title = title.to_string();
+    let parameter = scene.sweep.as_ref().map(|s| s.describe(step, scene));
+    let repeats = |part: &str| match (&parameter, scene.sweep.as_ref().map(|s| s.parameter)) {
+        (Some(text), _) if part == text => true,
+        // The subtitle writes the friction as the panel holds it.
+        (_, Some(SweepParameter::Friction)) => part.starts_with("μ = "),
+        _ => false,
+    };
+    let rest: Vec<&str> = panel
+        .subtitle
+        .split(",  ")
+        .map(str::trim)
+        .filter(|part| !part.is_empty() && !repeats(part))
+        .collect();
+    if !rest.is_empty() {
+        if !panel_title.is_empty() {
+            panel_title.push_str(",  ");
+        }
+        panel_title.push_str(&rest.join(",  "));
+    }
+    if panel_title.is_empty() {
+        panel_title = figure.title.clone();
+    }
+    panel_title
 }
 
 /// Names and colours of the plotted series (static).
@@ -582,7 +626,7 @@ fn log_charts(
 /// The viewer layout: the section maps (and the 3-D volume) take most of the window; beside
 /// them, tabs of plots (against the swept parameter, by step, the stress histories) over tabs
 /// of documents (the description, the raw values, the steps).
-fn plan_layout(scene: &Scene, figure: &Figure, frames: &[Frame]) -> Layout {
+fn plan_layout(scene: &Scene, figure: &Figure, frames: &[Frame], levels: &[f64]) -> Layout {
     let section_name = |k: usize| {
         let mut name = format!(
             "{} · {} section",
@@ -614,19 +658,20 @@ fn plan_layout(scene: &Scene, figure: &Figure, frames: &[Frame]) -> Layout {
         Node::Vertical(sections, Vec::new())
     };
     let main = match &scene.volume {
-        Some(spec) => Node::Horizontal(
+        Some(spec) => Node::Vertical(
             vec![
                 sections,
                 Node::View(View::new(
                     ViewKind::Spatial3D(Some(volume::eye(spec))),
                     format!(
-                        "volume: iso-surfaces of {} (half box y ≥ 0, z down)",
-                        spec.quantity.symbol()
+                        "volume: iso-surfaces of {} at {} (half box y ≥ 0, z down)",
+                        spec.quantity.symbol(),
+                        levels_text(scene, levels)
                     ),
                     "volume",
                 )),
             ],
-            vec![1.0, 1.0],
+            vec![SECTIONS_SHARE, VOLUME_SHARE],
         ),
         None => sections,
     };
@@ -709,6 +754,14 @@ fn plan_layout(scene: &Scene, figure: &Figure, frames: &[Frame]) -> Layout {
     }
 }
 
+/// The iso-levels with their unit, innermost last: `0.198, 0.33, 0.46, 0.594 p0`.
+fn levels_text(scene: &Scene, levels: &[f64]) -> String {
+    let values: Vec<String> = levels.iter().map(|&l| section::short(l)).collect();
+    let unit = section::stress_text(scene, 1.0);
+    let unit = unit.trim_start_matches(|c: char| !c.is_whitespace());
+    format!("{}{unit}", values.join(", "))
+}
+
 /// The Rerun colour map closest to a figure's.
 fn rerun_colormap(map: ColorMap) -> rerun::components::Colormap {
     use rerun::components::Colormap;
@@ -723,36 +776,6 @@ fn rerun_colormap(map: ColorMap) -> rerun::components::Colormap {
         // Rerun's one diverging map (red at the low end, blue at the high end).
         ColorMap::Diverging => Colormap::Spectral,
     }
-}
-
-/// The static transform that places a panel's image pixels (entity `path`) at its samples.
-fn log_panel_placement(
-    stream: &RecordingStream,
-    path: &str,
-    panel: &crate::render::Panel,
-) -> Result<(), RecordError> {
-    let step = |axis: &crate::field::Axis| if axis.count > 1 { axis.step() } else { 1.0 };
-    let (du, dv) = (step(&panel.x), step(&panel.z));
-    // Pixel (i, j) covers [i, i + 1) x [j, j + 1): its centre i + 1/2 maps to sample i.
-    let translation = [
-        (panel.x.min - 0.5 * du) as f32,
-        (panel.z.min - 0.5 * dv) as f32,
-        0.0,
-    ];
-    stream.log_static(
-        path,
-        &rerun::Transform3D::from_translation_scale(translation, [du as f32, dv as f32, 1.0]),
-    )?;
-    Ok(())
-}
-
-/// The largest finite value of a map and its `(row, column)`.
-fn grid_maximum(values: &ndarray::Array2<f64>) -> Option<((usize, usize), f64)> {
-    values
-        .indexed_iter()
-        .filter(|(_, v)| v.is_finite())
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .map(|(index, &v)| (index, v))
 }
 
 /// Stresses at the sweep's material points (body frame) as a moving load passes: `σxx`,
@@ -831,7 +854,7 @@ pub fn describe(scene: &Scene) -> String {
         scene.figure.stress_unit.label(scene.figure.quantity.symbol()),
     ));
     if scene.volume.is_some() {
-        text.push_str(" The 3-D view shows nested translucent iso-surfaces of the half box y ≥ 0 (the cut face shows how they nest) and the contact patch shaded by the pressure; drag to turn it.");
+        text.push_str(" The 3-D view shows nested translucent iso-surfaces of the half box y ≥ 0 at the levels in its title (coloured on the map's colour bar, the outer ones more transparent; the cut face shows how they nest) and the contact patch shaded by the pressure (white at its edge, dark red at its centre); drag to turn it, scroll to zoom, double-click to return to the first view.");
     }
     text.push_str("\n\n");
     text.push_str("## Contact (`stressfield hertz`)\n\n```text\n");

@@ -270,10 +270,9 @@ impl Output {
                 )
             }
             Destination::Spawn => {
-                let stream = builder(name).spawn().map_err(|e| RecordError::Viewer {
-                    url: "a new viewer".into(),
-                    message: e.to_string(),
-                })?;
+                let stream = builder(name)
+                    .spawn()
+                    .map_err(|e| RecordError::Spawn(e.to_string()))?;
                 Ok(Self {
                     stream,
                     writer: None,

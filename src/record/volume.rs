@@ -122,13 +122,13 @@ pub fn eye(spec: &VolumeSpec) -> Eye {
         half(spec).0,
         spec.z.0 + 0.3 * depth,
     ];
-    // About 20 degrees above the surface, a little towards the trailing edge, far enough to
-    // see the whole box.
+    // About 25 degrees above the surface, a little towards the trailing edge, as close as
+    // shows the shells and the patch whole (the box's far corners may leave the view).
     Eye {
         position: [
-            (target[0] - 0.45 * size) as f32,
-            (target[1] - 1.7 * size) as f32,
-            (target[2] - 0.55 * size) as f32,
+            (target[0] - 0.3 * size) as f32,
+            (target[1] - 0.95 * size) as f32,
+            (target[2] - 0.5 * size) as f32,
         ],
         target: target.map(|c| c as f32),
         up: [0.0, 0.0, -1.0],

@@ -22,7 +22,7 @@ pub use spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
     RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
 };
-pub use sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
+pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
 
 /// The scene format this build reads.
 pub const FORMAT: i64 = 1;

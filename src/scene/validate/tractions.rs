@@ -93,7 +93,7 @@ impl Validator<'_> {
         // In units of p0 every traction must stay a number a sum of many cells can carry.
         let largest = read.largest;
         let over_p0 = largest.magnitude * stress;
-        if !(over_p0 <= MAX_TRACTION_OVER_P0) {
+        if over_p0.is_nan() || over_p0 > MAX_TRACTION_OVER_P0 {
             return Err(self.error(
                 "tractions.file",
                 format!(
@@ -127,7 +127,7 @@ impl Validator<'_> {
                 let written = format!("{name} = {}{suffix}", crate::text::number(node));
                 self.within_reach(key, node * length, &written)?;
             }
-            if !(cell[axis] >= MIN_SPAN_OVER_A) {
+            if cell[axis].is_nan() || cell[axis] < MIN_SPAN_OVER_A {
                 return Err(self.error(
                     key,
                     format!(

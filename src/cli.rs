@@ -4,6 +4,9 @@ use std::path::PathBuf;
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+/// The address of a Rerun viewer on this machine (its default port), for `record --connect`.
+pub const DEFAULT_VIEWER_URL: &str = "rerun+http://127.0.0.1:9876/proxy";
+
 /// Elastic stress fields under Hertzian contacts: exact closed forms, parallel grids, figures.
 #[derive(Debug, Parser)]
 #[command(name = "stressfield", version, about, long_about = None)]
@@ -18,14 +21,24 @@ pub enum Command {
     /// scenes (with a [sweep] or a [volume]) are recorded to out/<scene>.rrd instead.
     /// A scene's outputs are written all or none.
     Render(RenderArgs),
-    /// Record scenes to Rerun .rrd files (out/<scene>.rrd): every scene in scenes/ when none
-    /// is named. Open them with the Rerun viewer (see the README for versions).
+    /// Record scenes to Rerun .rrd files (out/<scene>.rrd), or stream them to a Rerun viewer
+    /// step by step as they are computed: every scene in scenes/ when none is named. Open them
+    /// with the Rerun viewer (see the README for versions).
     Record {
         /// Scene files (TOML). Default: every *.toml in --scenes-dir.
         scenes: Vec<PathBuf>,
-        /// The recording's file, for a single scene (default: <out-dir>/<scene>.rrd).
-        #[arg(short = 'o', long, value_name = "FILE.rrd")]
+        /// The recording's file, for a single scene (default: <out-dir>/<scene>.rrd); `-`
+        /// writes it to standard output, e.g. `stressfield record SCENE -o - | rerun -`.
+        #[arg(short = 'o', long, value_name = "FILE.rrd|-")]
         output: Option<PathBuf>,
+        /// Start a Rerun viewer (`rerun` on the PATH) and stream the recording to it.
+        #[arg(long, conflicts_with_all = ["output", "connect"])]
+        spawn: bool,
+        /// Stream the recording to a running Rerun viewer, by default the viewer's local
+        /// address rerun+http://127.0.0.1:9876/proxy. Put the URL right after the flag, or the
+        /// scenes first.
+        #[arg(long, value_name = "URL", num_args = 0..=1, default_missing_value = DEFAULT_VIEWER_URL, conflicts_with = "output")]
+        connect: Option<String>,
         /// Directory for the recordings.
         #[arg(long, default_value = "out")]
         out_dir: PathBuf,
@@ -200,6 +213,10 @@ pub struct SurfaceArgs {
     /// Print one JSON object (SI units) instead of the table.
     #[arg(long)]
     pub json: bool,
+    /// Also write the heights as read or generated (before levelling; m, float64,
+    /// [rows, columns], row = y) as a NumPy .npy file.
+    #[arg(long, value_name = "FILE.npy")]
+    pub heights: Option<PathBuf>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

@@ -37,16 +37,34 @@ pub fn run(command: Command) -> Result<()> {
             render_all(&scenes, &args.out_dir, &options)
         }
         Command::Record {
-            scenes,
+            mut scenes,
             output,
+            spawn,
+            connect,
             out_dir,
             scenes_dir,
         } => {
+            // `--connect SCENE.toml`: the flag's value was a scene, not an address.
+            let connect = match connect {
+                Some(url) if !url.contains("://") => {
+                    scenes.insert(0, PathBuf::from(url));
+                    Some(crate::cli::DEFAULT_VIEWER_URL.to_string())
+                }
+                other => other,
+            };
             let scenes = scene_paths(scenes, &scenes_dir)?;
+            let stdout = output.as_deref() == Some(Path::new("-"));
             if output.is_some() && scenes.len() != 1 {
-                bail!("-o FILE.rrd records one scene, got {}\nhint: name one scene, or leave out -o to write <out-dir>/<scene>.rrd for each", scenes.len());
+                bail!("-o {} records one scene, got {}\nhint: name one scene, or leave out -o to write <out-dir>/<scene>.rrd for each", if stdout { "-" } else { "FILE.rrd" }, scenes.len());
             }
-            record_all(&scenes, &out_dir, output.as_deref())
+            let target = match (output, spawn, connect) {
+                (Some(_), _, _) if stdout => Target::Stdout,
+                (Some(path), _, _) => Target::File(path),
+                (None, true, _) => Target::Spawn,
+                (None, false, Some(url)) => Target::Connect(url),
+                (None, false, None) => Target::OutDir(out_dir),
+            };
+            record_all(&scenes, &target)
         }
         Command::Hertz { scene: scene_path } => {
             let scene = Scene::load(&scene_path)?;
@@ -269,21 +287,45 @@ fn record_reporting(scene: &Scene, path: &Path, bar: &ProgressBar, failures: &mu
     }
 }
 
-/// `record`: one recording per scene, `<out_dir>/<scene>.rrd` or `output`.
-fn record_all(paths: &[PathBuf], out_dir: &Path, output: Option<&Path>) -> Result<()> {
+/// Where `record` sends its recordings.
+#[derive(Clone, Debug)]
+enum Target {
+    /// `<dir>/<scene>.rrd` for each scene.
+    OutDir(PathBuf),
+    /// `-o FILE.rrd` (one scene).
+    File(PathBuf),
+    /// `-o -` (one scene).
+    Stdout,
+    /// `--spawn`: a new viewer.
+    Spawn,
+    /// `--connect [URL]`: a running viewer.
+    Connect(String),
+}
+
+/// `record`: one recording per scene, to files, standard output or a viewer.
+fn record_all(paths: &[PathBuf], target: &Target) -> Result<()> {
     let mut failures = Vec::new();
     let scenes = load_scenes(paths, &mut failures);
-    if !scenes.is_empty() && output.is_none() {
+    if let (Target::OutDir(out_dir), false) = (target, scenes.is_empty()) {
         create_out_dir(out_dir)?;
     }
     let bar = progress_bar(scenes.iter().map(recording_rows).sum::<usize>() as u64);
     for scene in &scenes {
         bar.set_message(scene.name.clone());
-        let path = output.map_or_else(
-            || out_dir.join(format!("{}.rrd", scene.name)),
-            Path::to_path_buf,
-        );
-        record_reporting(scene, &path, &bar, &mut failures);
+        let result = match target {
+            Target::OutDir(dir) => {
+                record_scene(scene, &dir.join(format!("{}.rrd", scene.name)), &bar)
+            }
+            Target::File(path) => record_scene(scene, path, &bar),
+            other => stream_scene(scene, other, &bar),
+        };
+        match result {
+            Ok(line) => say(&bar, line),
+            Err(e) => {
+                say(&bar, format!("error: scene {}: {e:#}", scene.name));
+                failures.push(scene.name.clone());
+            }
+        }
     }
     bar.finish_and_clear();
     fail_if_any(&failures, paths.len())?;
@@ -300,13 +342,34 @@ fn recording_rows(_scene: &Scene) -> usize {
     0
 }
 
-/// Records one scene to `path` (atomically); returns the line to print.
+/// The end of the line that reports a recording: its steps and volume.
+#[cfg(feature = "rerun")]
+fn summary_text(scene: &Scene, summary: &stressfield::record::Summary) -> String {
+    let mut line = String::new();
+    if summary.steps > 1 {
+        let timeline = stressfield::record::timeline(scene);
+        line.push_str(&format!(
+            " ({} steps on the timeline `{timeline}`)",
+            summary.steps
+        ));
+    }
+    if summary.volume_triangles > 0 {
+        line.push_str(&format!(
+            ", iso-surfaces of {} triangles",
+            summary.volume_triangles
+        ));
+    }
+    line
+}
+
+/// Records one scene to `path` (atomically, or through a device or FIFO); returns the line to
+/// print.
 fn record_scene(scene: &Scene, path: &Path, bar: &ProgressBar) -> Result<String> {
     record_scene_as(scene, path, path, bar)
 }
 
-/// Records one scene into `file` (atomically), saying it was recorded to `shown` (the final
-/// name of a staged file); returns the line to print.
+/// Records one scene into `file` (atomically, or through a device or FIFO), saying it was
+/// recorded to `shown` (the final name of a staged file); returns the line to print.
 #[cfg(feature = "rerun")]
 fn record_scene_as(scene: &Scene, file: &Path, shown: &Path, bar: &ProgressBar) -> Result<String> {
     let summary = stressfield::record::record_to_file(scene, file, &|| bar.inc(1));
@@ -315,18 +378,30 @@ fn record_scene_as(scene: &Scene, file: &Path, shown: &Path, bar: &ProgressBar) 
     } else {
         summary.with_context(|| format!("cannot record {}", shown.display()))?
     };
-    let mut line = format!("recorded {}", shown.display());
-    if summary.steps > 1 {
-        let timeline = stressfield::record::timeline(scene);
-        line.push_str(&format!(
-            " ({} steps on the timeline `{timeline}`)",
-            summary.steps
-        ));
-    }
-    if summary.volume_points > 0 {
-        line.push_str(&format!(", {} volume points", summary.volume_points));
-    }
-    Ok(line)
+    Ok(format!(
+        "recorded {}{}",
+        shown.display(),
+        summary_text(scene, &summary)
+    ))
+}
+
+/// Streams one scene to standard output or a viewer; returns the line to print.
+#[cfg(feature = "rerun")]
+fn stream_scene(scene: &Scene, target: &Target, bar: &ProgressBar) -> Result<String> {
+    use stressfield::record::Destination;
+    let destination = match target {
+        Target::Stdout => Destination::Stdout,
+        Target::Spawn => Destination::Spawn,
+        Target::Connect(url) => Destination::Connect(url.clone()),
+        Target::OutDir(dir) => Destination::File(dir.join(format!("{}.rrd", scene.name))),
+        Target::File(path) => Destination::File(path.clone()),
+    };
+    let summary = stressfield::record::record_to(scene, &destination, &|| bar.inc(1))?;
+    Ok(format!(
+        "streamed {} to {destination}{}",
+        scene.name,
+        summary_text(scene, &summary)
+    ))
 }
 
 #[cfg(not(feature = "rerun"))]
@@ -338,6 +413,21 @@ fn record_scene_as(
 ) -> Result<String> {
     bail!(
         "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",
+        scene.name
+    )
+}
+
+#[cfg(not(feature = "rerun"))]
+fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<String> {
+    let place = match target {
+        Target::Connect(url) => format!("the viewer at {url}"),
+        Target::Spawn => "a new viewer".to_string(),
+        Target::Stdout => "standard output".to_string(),
+        Target::OutDir(dir) => dir.display().to_string(),
+        Target::File(path) => path.display().to_string(),
+    };
+    bail!(
+        "scene {}: this build has no Rerun support (built with --no-default-features), so it cannot record to {place}\nhint: rebuild with the default features: cargo build --release",
         scene.name
     )
 }

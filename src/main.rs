@@ -11,6 +11,10 @@ use clap::Parser;
 
 fn main() -> ExitCode {
     let args = cli::Args::parse();
+    // An interruption (Ctrl-C, kill) removes the temporary files of unfinished outputs.
+    if let Err(e) = stressfield::output::remove_pending_on_interrupt() {
+        eprintln!("warning: cannot watch for interruptions ({e}): an interrupted run may leave .stressfield-*.part files");
+    }
     match commands::run(args.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {

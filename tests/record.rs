@@ -12,6 +12,8 @@ use stressfield::solution::line_hertz;
 /// What a recording holds: per entity path, its chunks.
 struct Contents {
     chunks: BTreeMap<String, Vec<Chunk>>,
+    /// The viewer layout's chunks, by blueprint entity path.
+    layout: BTreeMap<String, Vec<Chunk>>,
     application_ids: Vec<String>,
     /// Blueprint stores (viewer layouts) among the messages.
     blueprints: usize,
@@ -20,12 +22,19 @@ struct Contents {
 impl Contents {
     fn from_messages(messages: impl IntoIterator<Item = LogMsg>) -> Self {
         let mut chunks: BTreeMap<String, Vec<Chunk>> = BTreeMap::new();
+        let mut layout: BTreeMap<String, Vec<Chunk>> = BTreeMap::new();
         let mut application_ids = Vec::new();
         let mut blueprints = 0;
         for message in messages {
             match message {
                 // The viewer layout (blueprint store) is not the data.
-                LogMsg::ArrowMsg(store, _) if store.kind() != rerun::StoreKind::Recording => {}
+                LogMsg::ArrowMsg(store, arrow) if store.kind() != rerun::StoreKind::Recording => {
+                    let chunk = Chunk::from_arrow_msg(&arrow).expect("a valid chunk");
+                    layout
+                        .entry(chunk.entity_path().to_string())
+                        .or_default()
+                        .push(chunk);
+                }
                 LogMsg::ArrowMsg(_, arrow) => {
                     let chunk = Chunk::from_arrow_msg(&arrow).expect("a valid chunk");
                     chunks
@@ -43,6 +52,7 @@ impl Contents {
         }
         Self {
             chunks,
+            layout,
             application_ids,
             blueprints,
         }
@@ -60,6 +70,10 @@ impl Contents {
             .get(path)
             .unwrap_or_else(|| panic!("no entity {path}"))
         {
+            // The series' style (name, colour) is static.
+            if chunk.is_static() {
+                continue;
+            }
             let times = chunk
                 .timelines()
                 .get(&rerun::TimelineName::from(timeline))
@@ -77,6 +91,37 @@ impl Contents {
         }
         values.sort_by_key(|(time, _)| *time);
         values
+    }
+
+    /// The labels logged at `path` (a `Points2D`), every row in order.
+    fn labels(&self, path: &str) -> Vec<String> {
+        self.chunks
+            .get(path)
+            .unwrap_or_else(|| panic!("no entity {path}"))
+            .iter()
+            .flat_map(|chunk| {
+                chunk
+                    .iter_component::<rerun::components::Text>(
+                        rerun::Points2D::descriptor_labels().component,
+                    )
+                    .flat_map(|batch| {
+                        batch
+                            .iter()
+                            .map(|t| t.as_str().to_string())
+                            .collect::<Vec<_>>()
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+
+    /// The blueprint entities whose path ends with `suffix`.
+    fn layout_paths(&self, suffix: &str) -> Vec<&str> {
+        self.layout
+            .keys()
+            .map(String::as_str)
+            .filter(|p| p.ends_with(suffix))
+            .collect()
     }
 
     /// The number of rows logged at `path`.
@@ -105,6 +150,21 @@ fn positions_3d(chunk: &Chunk) -> Vec<[f32; 3]> {
     chunk
         .iter_component::<rerun::components::Position3D>(
             rerun::Points3D::descriptor_positions().component,
+        )
+        .flat_map(|batch| {
+            batch
+                .iter()
+                .map(|p| [p.x(), p.y(), p.z()])
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+/// The vertex positions of the `Mesh3D` in a chunk.
+fn mesh_positions(chunk: &Chunk) -> Vec<[f32; 3]> {
+    chunk
+        .iter_component::<rerun::components::Position3D>(
+            rerun::Mesh3D::descriptor_vertex_positions().component,
         )
         .flat_map(|batch| {
             batch
@@ -161,8 +221,16 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
         "/sections/0/field",
         "/sections/0/values",
         "/sections/0/surface",
-        "/sections/0/tractions",
+        "/sections/0/tractions/p",
+        "/sections/0/tractions/q",
+        "/sections/0/title",
+        "/sections/0/colorbar/image",
+        "/sections/0/colorbar/ticks",
+        "/sections/0/colorbar/labels",
         "/sections/0/maximum",
+        "/sections/0/maximum/label",
+        "/charts/0/maximum",
+        "/charts/0/depth",
         "/series/0/maximum",
         "/series/0/maximum_depth",
         "/series/friction",
@@ -195,6 +263,52 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
     assert_eq!(depths[5].1, 0.0, "{depths:?}");
     // The maximum rises with friction.
     assert!(maxima.windows(2).all(|w| w[1].1 > w[0].1), "{maxima:?}");
+    // The charts against μ: one image per step.
+    assert_eq!(contents.rows("/charts/0/maximum"), 6);
+    assert_eq!(contents.rows("/charts/0/depth"), 6);
+    // The title row follows the step (the first label of each row), with the traction legend.
+    let titles = contents.labels("/sections/0/title");
+    assert!(titles[0].starts_with("step 1 of 6: μ = 0"), "{titles:?}");
+    let last = titles
+        .iter()
+        .rposition(|t| t.starts_with("step "))
+        .expect("a title");
+    assert!(
+        titles[last].starts_with("step 6 of 6: μ = 0.5"),
+        "{titles:?}"
+    );
+    assert!(
+        titles[last + 1].starts_with("p: peak 1.00 p0"),
+        "{titles:?}"
+    );
+    assert!(
+        titles[last + 2].starts_with("q: largest |q| 0.500 p0"),
+        "{titles:?}"
+    );
+    // The parameter once in each title, however the subtitle writes it.
+    for title in titles.iter().filter(|t| t.starts_with("step ")) {
+        assert_eq!(title.matches("μ = ").count(), 1, "{title}");
+    }
+    // The colour bar: nice ticks from 0, with the decimals of the tick step, and the caption
+    // with the unit.
+    let bar = contents.labels("/sections/0/colorbar/labels");
+    assert_eq!(bar.first().map(String::as_str), Some("0.0"), "{bar:?}");
+    assert!(contents.paths().contains(&"/sections/0/border"));
+    assert_eq!(bar.last().map(String::as_str), Some("σvM / p0"), "{bar:?}");
+    // The layout: the section view's area, the 2-D chart views, the panels collapsed.
+    assert_eq!(contents.layout_paths("/VisualBounds2D").len(), 1);
+    for panel in [
+        "/blueprint_panel",
+        "/selection_panel",
+        "/time_panel",
+        "/viewport",
+    ] {
+        assert!(
+            contents.layout.contains_key(panel),
+            "{panel}: {:?}",
+            contents.layout.keys()
+        );
+    }
 }
 
 #[test]
@@ -240,6 +354,43 @@ material_points = [[0.0, 0.5], [1.0, 0.25]]
         assert!((got - expected).abs() < 1e-12);
     }
     assert!(contents.paths().contains(&"/sections/0/material_points"));
+    // Signed: both extremes are marked and plotted, the negative lobe as much as the
+    // positive one.
+    let minima = contents.scalars("/series/0/minimum", "position");
+    let maxima = contents.scalars("/series/0/maximum", "position");
+    assert_eq!(minima.len(), 5);
+    assert!(minima.iter().all(|(_, v)| *v < 0.0), "{minima:?}");
+    assert!(maxima.iter().all(|(_, v)| *v > 0.0), "{maxima:?}");
+    assert!(contents.labels("/sections/0/minimum/label")[0].starts_with("min τxz = −"));
+}
+
+#[test]
+fn an_extreme_of_no_size_is_not_marked() {
+    // With the load's centre at x0 = −3.5a the positive lobe of τxz lies behind it, outside
+    // the map (x ≥ −3a): what the map holds of it is a small fraction of the colour range,
+    // and only the negative lobe is marked. At x0 = 0 both lobes are.
+    let text = r#"
+format = 1
+[contact]
+kind = "line"
+poisson = 0.3
+[figure]
+quantity = "sxz"
+x = [-3.0, 3.0]
+z = [0.0, 2.0]
+resolution = 61
+[sweep]
+parameter = "position"
+values = [-3.5, 0.0]
+"#;
+    let (_, contents) = record_in_memory(&scene(text));
+    let maxima = contents.labels("/sections/0/maximum/label");
+    let minima = contents.labels("/sections/0/minimum/label");
+    assert_eq!(minima.len(), 2, "{minima:?}");
+    assert_eq!(maxima.len(), 1, "{maxima:?}");
+    assert!(maxima[0].starts_with("max τxz = 0.2"), "{maxima:?}");
+    // The series still has both steps.
+    assert_eq!(contents.scalars("/series/0/maximum", "position").len(), 2);
 }
 
 #[test]
@@ -262,26 +413,52 @@ points = 41
 threshold = 0.5
 "#;
     let (summary, contents) = record_in_memory(&scene(text));
-    assert!(summary.volume_points > 100, "{summary:?}");
+    assert!(summary.volume_triangles > 1000, "{summary:?}");
     for path in [
         "/volume",
-        "/volume/points",
+        "/volume/iso/0",
+        "/volume/iso/3",
         "/volume/contact",
+        "/volume/contact/patch",
         "/volume/maximum",
     ] {
         assert!(contents.paths().contains(&path), "{path} missing");
     }
-    let positions = positions_3d(&contents.chunks["/volume/points"][0]);
-    assert_eq!(positions.len(), summary.volume_points);
-    assert!(positions.iter().all(|p| p[2] >= 0.0 && p[2] <= 2.0));
-    // Symmetric in y for a frictionless sphere: the cloud's mean y is zero.
-    let mean_y = positions.iter().map(|p| f64::from(p[1])).sum::<f64>() / positions.len() as f64;
-    assert!(mean_y.abs() < 1e-6, "{mean_y}");
-    // The maximum is on the axis at z = 0.48a (Johnson 1985, §3.4(b)), on a 0.1a grid.
+    // The shells fill the half box behind y = 0 (the cut shows how they nest), under the
+    // surface.
+    for m in 0..4 {
+        let vertices = mesh_positions(&contents.chunks[&format!("/volume/iso/{m}")][0]);
+        assert!(!vertices.is_empty(), "level {m}");
+        assert!(vertices
+            .iter()
+            .all(|p| p[1] >= 0.0 && p[2] >= 0.0 && p[2] <= 2.0));
+    }
+    // Levels at 50 % to 90 % of the largest: the innermost shell encloses the maximum, on the
+    // axis at z = 0.48a (Johnson 1985, §3.4(b)), and is small.
+    let inner = mesh_positions(&contents.chunks["/volume/iso/3"][0]);
+    let (lo, hi) = inner
+        .iter()
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), p| {
+            (a.min(p[2]), b.max(p[2]))
+        });
+    assert!(lo < 0.48 && hi > 0.48 && hi - lo < 0.8, "{lo}..{hi}");
     let at = positions_3d(&contents.chunks["/volume/maximum"][0]);
     assert_eq!(at.len(), 1);
     assert!(at[0][0].abs() < 1e-6 && at[0][1].abs() < 1e-6, "{at:?}");
     assert!((at[0][2] - 0.5).abs() < 0.06, "{at:?}");
+    // The 3-D view opens looking at the patch from above (z < 0: z points into the body).
+    let eye = contents.layout_paths("/EyeControls3D");
+    assert_eq!(eye.len(), 1, "{:?}", contents.layout.keys());
+    let position = contents.layout[eye[0]][0]
+        .iter_component::<rerun::components::Position3D>(
+            rerun::external::re_sdk_types::blueprint::archetypes::EyeControls3D::descriptor_position()
+                .component,
+        )
+        .flat_map(|b| b.iter().map(|p| [p.x(), p.y(), p.z()]).collect::<Vec<_>>())
+        .collect::<Vec<_>>();
+    assert!(position.len() == 1 && position[0][2] < 0.0, "{position:?}");
+    // A single step: no plots (they would be empty), no time panel.
+    assert!(contents.paths().iter().all(|p| !p.starts_with("/charts")));
 }
 
 #[test]
@@ -355,8 +532,558 @@ fn every_shipped_recording_scene_records() {
                 "{}",
                 path.display()
             );
+            // The title row names the step's parameter once (a friction sweep's subtitle
+            // writes μ too).
+            if let Some(sweep) = &scene.sweep {
+                let name = sweep.describe(0, &scene);
+                let name = name.split(" = ").next().expect("a name");
+                for title in contents
+                    .labels("/sections/0/title")
+                    .iter()
+                    .filter(|t| t.starts_with("step "))
+                {
+                    assert_eq!(
+                        title.matches(&format!("{name} = ")).count(),
+                        1,
+                        "{}: {title}",
+                        path.display()
+                    );
+                }
+            }
         }
         recorded += 1;
     }
     assert!(recorded >= 4, "{recorded} recording scenes");
+}
+
+/// A small periodic rough contact with a load sweep.
+const ROUGH_SWEEP: &str = r#"
+format = 1
+title = "rough sweep"
+[contact]
+kind = "rough"
+load = "0.2 N"
+periodic = true
+[contact.body1]
+material = "steel"
+[contact.body2]
+material = "steel"
+[surface.generate]
+samples = 32
+spacing = "1 um"
+hurst = 0.8
+rolloff = "16 um"
+cutoff = "2 um"
+rms_slope = 0.1
+seed = 3
+[sweep]
+parameter = "load"
+values = ["0.05 N", "0.2 N", "0.5 N"]
+"#;
+
+#[test]
+fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load() {
+    let (summary, contents) = record_in_memory(&scene(ROUGH_SWEEP));
+    assert_eq!(summary.steps, 3);
+    for path in [
+        "/sheet",
+        "/topography/surface",
+        "/contact/field",
+        "/contact/border",
+        "/contact/colorbar/image",
+        "/contact/colorbar/labels",
+        "/contact/title",
+        "/contact/maximum/label",
+        "/charts/contact_fraction",
+        "/charts/spots",
+        "/charts/max_pressure",
+        "/depth/field",
+        "/depth/colorbar/labels",
+        "/maps/0/field",
+        "/maps/0/colorbar/labels",
+    ] {
+        assert!(
+            contents.paths().contains(&path),
+            "{path} missing from {:?}",
+            contents.paths()
+        );
+    }
+    // The pressure map at every load, its title following the load; a chart per step.
+    assert_eq!(contents.rows_on("/contact/field", "load"), 3);
+    assert_eq!(contents.rows_on("/charts/contact_fraction", "load"), 3);
+    let titles = contents.labels("/contact/title");
+    assert_eq!(titles.len(), 3, "{titles:?}");
+    for (k, load) in ["0.05", "0.2", "0.5"].iter().enumerate() {
+        assert!(
+            titles[k].starts_with(&format!("step {} of 3: W = {load} N: ", k + 1)),
+            "{titles:?}"
+        );
+    }
+    assert_eq!(
+        contents
+            .labels("/contact/colorbar/labels")
+            .last()
+            .map(String::as_str),
+        Some("p (MPa)")
+    );
+    // The labelled maximum is the step's largest pressure, in MPa.
+    let largest = contents.scalars("/series/max_pressure_mpa", "load");
+    let labels = contents.labels("/contact/maximum/label");
+    assert_eq!(labels.len(), 3, "{labels:?}");
+    for (label, (_, value)) in labels.iter().zip(&largest) {
+        let shown: f64 = label
+            .strip_prefix("max p = ")
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|number| number.parse().ok())
+            .unwrap_or_else(|| panic!("{label}"));
+        assert!(((shown - value) / value).abs() < 5e-3, "{label} vs {value}");
+        assert!(
+            label.contains(" MPa at x = ") && label.ends_with(" µm"),
+            "{label}"
+        );
+    }
+    // More load, more contact.
+    let fraction = contents.scalars("/series/contact_fraction", "load");
+    assert!(fraction.windows(2).all(|w| w[1].1 > w[0].1), "{fraction:?}");
+    // The depth steps are on their own timeline only (the load's would show one of them at
+    // the last load and none before).
+    assert!(contents.rows_on("/depth/field", "depth") >= 2);
+    assert_eq!(contents.rows_on("/depth/field", "load"), 0);
+    assert!(contents.labels("/depth/title")[0].starts_with("layer 1 of "));
+    // Every 2-D map view opens on its frame.
+    assert!(contents.layout_paths("/VisualBounds2D").len() >= 3);
+}
+
+// --- The command line: where recordings go, and what is left behind (issue 13, cases 8, 11
+// and 15; issue 14: streaming).
+
+fn stressfield() -> std::process::Command {
+    let mut command = std::process::Command::new(env!("CARGO_BIN_EXE_stressfield"));
+    command
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("CI", "true");
+    command
+}
+
+fn stderr_of(output: &std::process::Output) -> String {
+    String::from_utf8_lossy(&output.stderr).into_owned()
+}
+
+/// Writes `text` as `case.toml` into a fresh directory.
+fn scene_file(text: &str) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let path = dir.path().join("case.toml");
+    std::fs::write(&path, text).expect("scene written");
+    (dir, path)
+}
+
+fn names_in(dir: &std::path::Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .expect("listed")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// A sweep long enough to be interrupted (hundreds of steps at a fine resolution).
+const LONG_SWEEP: &str = "format = 1\n[contact]\nkind = \"line\"\n[figure]\nquantity = \"von_mises\"\nresolution = 801\n[sweep]\nparameter = \"friction\"\nfrom = 0.0\nto = 0.5\nsteps = 400\n";
+
+/// Case 8: Ctrl-C (SIGINT) or `kill` (SIGTERM) during `record` removes the temporary file
+/// and reports the interruption with the shell's status (128 + the signal).
+#[cfg(unix)]
+#[test]
+fn an_interrupted_record_leaves_no_temporary_file() {
+    for (signal, status) in [("-INT", 130), ("-TERM", 143)] {
+        let (dir, scene) = scene_file(LONG_SWEEP);
+        let out = dir.path().join("out");
+        std::fs::create_dir(&out).expect("out/");
+        let child = stressfield()
+            .args(["record", scene.to_str().expect("utf8"), "-o"])
+            .arg(out.join("long.rrd"))
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("the binary runs");
+        // Wait until the recording's temporary file exists, then interrupt.
+        let started = std::time::Instant::now();
+        while names_in(&out).is_empty() {
+            assert!(
+                started.elapsed() < std::time::Duration::from_secs(60),
+                "no temporary file appeared"
+            );
+            std::thread::sleep(std::time::Duration::from_millis(10));
+        }
+        assert!(
+            names_in(&out)[0].ends_with(".rrd.part"),
+            "{:?}",
+            names_in(&out)
+        );
+        let killed = std::process::Command::new("kill")
+            .args([signal, &child.id().to_string()])
+            .status()
+            .expect("kill runs");
+        assert!(killed.success());
+        let output = child.wait_with_output().expect("ends");
+        assert_eq!(output.status.code(), Some(status), "{}", stderr_of(&output));
+        assert!(
+            stderr_of(&output).contains("interrupted"),
+            "{}",
+            stderr_of(&output)
+        );
+        assert!(
+            names_in(&out).is_empty(),
+            "left behind: {:?}",
+            names_in(&out)
+        );
+    }
+}
+
+/// A small sweep for the output tests.
+const SMALL_SWEEP: &str = "format = 1\n[contact]\nkind = \"line\"\nfriction = 0.2\n[figure]\nquantity = \"von_mises\"\nresolution = 81\n[sweep]\nparameter = \"friction\"\nvalues = [0.0, 0.3]\n";
+
+/// Case 11: a full disk (a link to /dev/full) is reported with the path and the system's
+/// reason, not as a Rerun thread that "shut down prematurely".
+#[cfg(unix)]
+#[test]
+fn a_full_disk_names_the_file_and_the_system_error() {
+    if !std::path::Path::new("/dev/full").exists() {
+        return;
+    }
+    let (dir, scene) = scene_file(SMALL_SWEEP);
+    let link = dir.path().join("full.rrd");
+    std::os::unix::fs::symlink("/dev/full", &link).expect("symlink");
+    let output = stressfield()
+        .args(["record", scene.to_str().expect("utf8"), "-o"])
+        .arg(&link)
+        .output()
+        .expect("runs");
+    let text = stderr_of(&output);
+    assert!(!output.status.success(), "{text}");
+    assert!(
+        text.contains(&format!("cannot write {}", link.display())),
+        "{text}"
+    );
+    assert!(text.contains("No space left on device"), "{text}");
+    assert!(!text.contains("prematurely"), "{text}");
+    // The link is still a link, and nothing else was left.
+    assert!(std::fs::symlink_metadata(&link)
+        .expect("exists")
+        .file_type()
+        .is_symlink());
+    assert_eq!(names_in(dir.path()), vec!["case.toml", "full.rrd"]);
+}
+
+/// Case 15: a link is followed (its target replaced, the link kept); a FIFO is written
+/// through, as a shell's `>` would; a directory is refused. Nothing is renamed over them.
+#[cfg(unix)]
+#[test]
+fn links_fifos_and_directories_are_never_replaced() {
+    use std::os::unix::fs::FileTypeExt;
+    let (dir, scene) = scene_file(SMALL_SWEEP);
+    let scene = scene.to_str().expect("utf8").to_string();
+    let run = |target: &std::path::Path| {
+        stressfield()
+            .args(["record", &scene, "-o"])
+            .arg(target)
+            .output()
+            .expect("runs")
+    };
+    // A link to a regular file: the file gets the recording, the link stays a link.
+    let target = dir.path().join("target.rrd");
+    std::fs::write(&target, b"old").expect("written");
+    let link = dir.path().join("link.rrd");
+    std::os::unix::fs::symlink(&target, &link).expect("symlink");
+    let output = run(&link);
+    assert!(output.status.success(), "{}", stderr_of(&output));
+    assert!(std::fs::symlink_metadata(&link)
+        .expect("exists")
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::read(&target).expect("read").starts_with(b"RRF2"));
+    // A FIFO: read on the other side, still a FIFO afterwards.
+    let fifo = dir.path().join("pipe.rrd");
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .expect("mkfifo runs");
+    assert!(made.success());
+    let reader = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || std::fs::read(fifo).expect("read the FIFO"))
+    };
+    let output = run(&fifo);
+    assert!(output.status.success(), "{}", stderr_of(&output));
+    let bytes = reader.join().expect("the reader ends");
+    assert!(bytes.starts_with(b"RRF2") && bytes.len() > 1000);
+    assert!(std::fs::symlink_metadata(&fifo)
+        .expect("exists")
+        .file_type()
+        .is_fifo());
+    // A directory is refused.
+    let output = run(dir.path());
+    assert!(!output.status.success());
+    assert!(
+        stderr_of(&output).contains("it is a directory"),
+        "{}",
+        stderr_of(&output)
+    );
+    assert_eq!(
+        names_in(dir.path()),
+        vec!["case.toml", "link.rrd", "pipe.rrd", "target.rrd"]
+    );
+}
+
+/// `-o -`: the recording on standard output, a complete stream a viewer reads (`| rerun -`).
+#[test]
+fn a_recording_streams_to_standard_output() {
+    let (_dir, scene) = scene_file(SMALL_SWEEP);
+    let output = stressfield()
+        .args(["record", scene.to_str().expect("utf8"), "-o", "-"])
+        .output()
+        .expect("runs");
+    assert!(output.status.success(), "{}", stderr_of(&output));
+    assert!(
+        stderr_of(&output).contains("to standard output"),
+        "{}",
+        stderr_of(&output)
+    );
+    let messages: Vec<LogMsg> = DecoderApp::decode_lazy(std::io::Cursor::new(output.stdout))
+        .map(|message| message.expect("a valid message"))
+        .collect();
+    let contents = Contents::from_messages(messages);
+    assert_eq!(contents.scalars("/series/0/maximum", "friction").len(), 2);
+    assert!(contents.blueprints >= 1);
+}
+
+/// A stand-in for a Rerun viewer's gRPC endpoint (`MessageProxyService/WriteMessages`, the
+/// call `--connect` makes), enough of HTTP/2 (RFC 9113) and gRPC to take one client-streaming
+/// call: it answers the connection's settings and pings, keeps the flow-control windows open,
+/// collects the call's DATA frames, and once the client ends the call replies `200` with
+/// `grpc-status: 0`. Returns the gRPC messages' bodies (protobuf `WriteMessagesRequest`s).
+fn stand_in_viewer(listener: std::net::TcpListener) -> Vec<Vec<u8>> {
+    use std::io::{Read, Write};
+    let (mut socket, _) = listener.accept().expect("the client connects");
+    socket
+        .set_read_timeout(Some(std::time::Duration::from_secs(120)))
+        .expect("timeout");
+    let mut preface = [0u8; 24];
+    socket.read_exact(&mut preface).expect("the preface");
+    assert_eq!(&preface, b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n", "not HTTP/2");
+    let frame = |kind: u8, flags: u8, stream: u32, payload: &[u8]| {
+        let mut bytes = (payload.len() as u32).to_be_bytes()[1..].to_vec();
+        bytes.extend([kind, flags]);
+        bytes.extend(stream.to_be_bytes());
+        bytes.extend(payload);
+        bytes
+    };
+    let window_update = |stream: u32, increment: u32| frame(8, 0, stream, &increment.to_be_bytes());
+    // SETTINGS: INITIAL_WINDOW_SIZE (4) = 2^31 - 1; and the connection's window opened as far.
+    let mut settings = 4u16.to_be_bytes().to_vec();
+    settings.extend(0x7fff_ffffu32.to_be_bytes());
+    socket.write_all(&frame(4, 0, 0, &settings)).expect("write");
+    socket
+        .write_all(&window_update(0, 0x7fff_ffff - 65_535))
+        .expect("write");
+    let mut body = Vec::new();
+    loop {
+        let mut header = [0u8; 9];
+        match socket.read_exact(&mut header) {
+            Ok(()) => {}
+            // The client hung up: the call is over.
+            Err(e) if e.kind() == std::io::ErrorKind::UnexpectedEof => break,
+            Err(e) => panic!("reading a frame: {e}"),
+        }
+        let length = u32::from_be_bytes([0, header[0], header[1], header[2]]) as usize;
+        let (kind, flags) = (header[3], header[4]);
+        let stream = u32::from_be_bytes([header[5], header[6], header[7], header[8]]) & 0x7fff_ffff;
+        let mut payload = vec![0u8; length];
+        socket.read_exact(&mut payload).expect("a frame's payload");
+        match kind {
+            // DATA, possibly padded (flag 0x8): the call's bytes; END_STREAM (0x1) ends it.
+            0 => {
+                let data = if flags & 0x8 != 0 {
+                    let pad = usize::from(payload[0]);
+                    &payload[1..payload.len() - pad]
+                } else {
+                    &payload[..]
+                };
+                body.extend_from_slice(data);
+                if length > 0 {
+                    socket
+                        .write_all(&window_update(stream, length as u32))
+                        .expect("write");
+                }
+                if flags & 0x1 != 0 {
+                    // HEADERS (END_HEADERS): `:status: 200` (static table entry 8), then
+                    // `content-type: application/grpc` (literal, name at static index 31).
+                    let mut block = vec![0x88, 0x0f, 0x10, 16];
+                    block.extend(b"application/grpc");
+                    socket
+                        .write_all(&frame(1, 0x4, stream, &block))
+                        .expect("write");
+                    // Trailers (END_HEADERS | END_STREAM): `grpc-status: 0` (literal, new name).
+                    let mut trailers = vec![0x00, 11];
+                    trailers.extend(b"grpc-status");
+                    trailers.extend([1, b'0']);
+                    socket
+                        .write_all(&frame(1, 0x5, stream, &trailers))
+                        .expect("write");
+                }
+            }
+            // SETTINGS (not an ACK): acknowledge.
+            4 if flags & 0x1 == 0 => socket.write_all(&frame(4, 0x1, 0, &[])).expect("write"),
+            // PING (not an ACK): answer.
+            6 if flags & 0x1 == 0 => socket
+                .write_all(&frame(6, 0x1, 0, &payload))
+                .expect("write"),
+            // GOAWAY: the client is done.
+            7 => break,
+            // HEADERS, CONTINUATION, WINDOW_UPDATE, RST_STREAM, acknowledgements: nothing to do.
+            _ => {}
+        }
+    }
+    // gRPC messages: a compression flag (0), a big-endian length, the protobuf.
+    let mut messages = Vec::new();
+    let mut rest = &body[..];
+    while !rest.is_empty() {
+        assert_eq!(rest[0], 0, "an uncompressed gRPC message");
+        let length = u32::from_be_bytes([rest[1], rest[2], rest[3], rest[4]]) as usize;
+        messages.push(rest[5..5 + length].to_vec());
+        rest = &rest[5 + length..];
+    }
+    messages
+}
+
+/// A protobuf varint at the start of `bytes`, and the bytes after it.
+fn varint(bytes: &[u8]) -> (u64, &[u8]) {
+    let mut value = 0u64;
+    for (i, &byte) in bytes.iter().enumerate() {
+        value |= u64::from(byte & 0x7f) << (7 * i);
+        if byte & 0x80 == 0 {
+            return (value, &bytes[i + 1..]);
+        }
+    }
+    panic!("a truncated varint");
+}
+
+/// The one length-delimited field of a protobuf message: its number and its bytes.
+fn only_field(bytes: &[u8]) -> (u64, &[u8]) {
+    let (key, rest) = varint(bytes);
+    assert_eq!(key & 7, 2, "a length-delimited field");
+    let (length, rest) = varint(rest);
+    assert_eq!(rest.len() as u64, length, "one field");
+    (key >> 3, rest)
+}
+
+/// The messages of a gRPC stream as an .rrd stream: each `WriteMessagesRequest { log_msg:
+/// LogMsg { oneof msg } }` becomes the frame `MessageHeader { kind, len }` + the oneof's
+/// message, the kinds numbered as the oneof's fields (1 store info, 2 Arrow data, 3 blueprint
+/// activation), after a stream header.
+fn rrd_of_grpc(messages: &[Vec<u8>]) -> Vec<u8> {
+    use rerun::external::re_log_encoding::{
+        CrateVersion, Encodable, EncodingOptions, MessageHeader, MessageKind, StreamHeader,
+        RRD_FOURCC,
+    };
+    let mut out = Vec::new();
+    StreamHeader {
+        fourcc: RRD_FOURCC,
+        version: CrateVersion::LOCAL.to_bytes(),
+        options: EncodingOptions::PROTOBUF_COMPRESSED,
+    }
+    .to_rrd_bytes(&mut out)
+    .expect("a header");
+    for message in messages {
+        let (field, log_msg) = only_field(message);
+        assert_eq!(field, 1, "WriteMessagesRequest.log_msg");
+        let (kind, inner) = only_field(log_msg);
+        let kind = match kind {
+            1 => MessageKind::SetStoreInfo,
+            2 => MessageKind::ArrowMsg,
+            3 => MessageKind::BlueprintActivationCommand,
+            other => panic!("LogMsg field {other}"),
+        };
+        MessageHeader {
+            kind,
+            len: inner.len() as u64,
+        }
+        .to_rrd_bytes(&mut out)
+        .expect("a frame header");
+        out.extend_from_slice(inner);
+    }
+    out
+}
+
+/// `--connect URL`: the recording streams to the viewer at that address (here a stand-in
+/// listening on a free port), which receives the whole recording with its layout.
+#[test]
+fn a_recording_streams_to_a_viewer_at_the_given_address() {
+    let (_dir, scene) = scene_file(SMALL_SWEEP);
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a free port");
+    let url = format!(
+        "rerun+http://127.0.0.1:{}/proxy",
+        listener.local_addr().expect("address").port()
+    );
+    let viewer = std::thread::spawn(move || stand_in_viewer(listener));
+    let output = stressfield()
+        .args(["record", scene.to_str().expect("utf8"), "--connect", &url])
+        .output()
+        .expect("runs");
+    let text = stderr_of(&output);
+    assert!(output.status.success(), "{text}");
+    assert!(
+        text.contains(&format!("to the Rerun viewer at {url}")),
+        "{text}"
+    );
+    let messages = viewer.join().expect("the stand-in ends");
+    let rrd = rrd_of_grpc(&messages);
+    let decoded: Vec<LogMsg> = DecoderApp::decode_lazy(std::io::Cursor::new(rrd))
+        .map(|message| message.expect("a valid message"))
+        .collect();
+    let contents = Contents::from_messages(decoded);
+    assert!(contents
+        .application_ids
+        .iter()
+        .all(|id| id == APPLICATION_ID));
+    assert_eq!(contents.scalars("/series/0/maximum", "friction").len(), 2);
+    assert!(contents.paths().contains(&"/sections/0/colorbar/labels"));
+    assert!(contents.blueprints >= 1, "the layout is sent too");
+}
+
+/// `--connect URL` with no viewer there: a clear error naming the address, after the SDK's
+/// connection timeout.
+#[test]
+fn connecting_to_no_viewer_fails_clearly() {
+    let (_dir, scene) = scene_file(SMALL_SWEEP);
+    let url = "rerun+http://127.0.0.1:1/proxy";
+    let output = stressfield()
+        .args(["record", scene.to_str().expect("utf8"), "--connect", url])
+        .output()
+        .expect("runs");
+    let text = stderr_of(&output);
+    assert!(!output.status.success(), "{text}");
+    assert!(text.contains(&format!("cannot stream to {url}")), "{text}");
+    assert!(text.contains("--spawn"), "{text}");
+}
+
+/// `--spawn` with no `rerun` on the PATH: a clear error saying how to install the viewer.
+/// (Skipped when a viewer already listens on the default port: `--spawn` would stream to it.)
+#[test]
+fn spawning_without_a_viewer_installed_fails_clearly() {
+    let default = std::net::SocketAddr::from(([127, 0, 0, 1], 9876));
+    if std::net::TcpStream::connect_timeout(&default, std::time::Duration::from_millis(500)).is_ok()
+    {
+        eprintln!("a viewer listens on {default}: --spawn would use it; not tested here");
+        return;
+    }
+    let (dir, scene) = scene_file(SMALL_SWEEP);
+    let output = stressfield()
+        .args(["record", scene.to_str().expect("utf8"), "--spawn"])
+        .env("PATH", dir.path())
+        .output()
+        .expect("runs");
+    let text = stderr_of(&output);
+    assert!(!output.status.success(), "{text}");
+    assert!(text.contains("cannot start a Rerun viewer"), "{text}");
+    assert!(text.contains("pip install"), "{text}");
 }

@@ -2,6 +2,7 @@
 //! whole crate, so keep them few).
 
 mod cli;
+mod contracts;
 mod dcfft;
 mod golden;
 mod line_contact;

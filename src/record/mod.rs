@@ -1,39 +1,54 @@
-//! Rerun `.rrd` recordings of scenes: each section field as a colour-mapped depth image with its
-//! raw values, the surface tractions, contact outlines and the maximum, the scene's parameters
-//! and Hertz results as a markdown document, scalar series on a timeline, sweeps (one time
-//! point per step) and, for point contacts, the volume as a 3-D point cloud.
+//! Rerun `.rrd` recordings of scenes, written to a file or streamed to a viewer step by step
+//! as the steps are computed ([`sink`]).
 //!
 //! ## Layout of a recording (entity paths)
-//! - `description`: markdown text of the scene, its contact and its `hertz` report (static).
+//! - `description`: markdown text of the scene, its contact, its `hertz` report, and how to
+//!   read the views (static).
 //! - `sections/<k>/field`: panel `k`'s field as a `DepthImage` (values in the figure's stress
-//!   unit, so hovering reads them; colour map and an explicit range shared by all steps), placed
-//!   in the figure's physical coordinates by a `Transform3D` (static): pixel centres at the grid
-//!   samples, horizontal coordinate to the right, the vertical one (depth, or y) downwards.
+//!   unit, so hovering reads them; the viewer calls them "Depth" in "m"), placed in the figure's
+//!   coordinates (horizontal to the right, depth downwards) by a static `Transform3D`; one
+//!   colour range for every step.
+//! - `sections/<k>/colorbar/image` (the same colour map as an image beside the map),
+//!   `.../ticks` and `.../labels` (tick values and the caption with the unit), static.
+//! - `sections/<k>/title`: the step's parameters and the traction legend, as labels above the
+//!   strip; `sections/<k>/tractions/p`, `.../q`: the profiles above the surface (`z < 0`);
+//!   `sections/<k>/surface`; `sections/<k>/outline` (xy sections).
+//! - `sections/<k>/maximum`, `sections/<k>/minimum` (the extremes the figure marks, with
+//!   `label` and, when the label had to move, `leader`); `sections/<k>/material_points`.
 //! - `sections/<k>/values`: the same values as a `Tensor` with named dimensions.
-//! - `sections/<k>/surface`, `sections/<k>/tractions`, `sections/<k>/outline`,
-//!   `sections/<k>/maximum`, `sections/<k>/material_points`: line strips and labelled points in
-//!   the same coordinates (tractions drawn above the surface, `z < 0`).
-//! - `series/<k>/maximum`, `series/<k>/maximum_depth`, `series/<parameter>`: scalars per step.
+//! - `series/<k>/maximum`, `series/<k>/minimum`, `series/<k>/maximum_depth`,
+//!   `series/<parameter>`: scalars per step; `charts/<k>/maximum`, `charts/<k>/depth`: the
+//!   extremes and the depth of the maximum against the swept parameter, drawn as images.
 //! - `history/<k>/point<j>/<component>`: stresses at material points as a load moves.
-//! - `volume/points`, `volume/contact` (outline, and `patch`: a mesh shaded by the pressure),
-//!   `volume/maximum`: the 3-D point cloud (z downwards).
+//! - `volume/iso/<m>` (iso-surfaces as meshes), `volume/contact` (outline, and `patch`
+//!   shaded by the pressure), `volume/maximum`, `volume/surface` (the box's top face).
 //! - `log`: one line per step.
 //!
 //! Steps are time points of a sequence timeline named after the sweep's parameter (`friction`,
-//! `load`, `position`), or `step` (a single point) for a scene without a sweep.
+//! `load`, `position`), or `step` (a single point) for a scene without a sweep. The viewer
+//! layout ([`layout`]) gives the maps most of the window, the plots and documents tabs beside.
 
+mod isosurface;
+mod layout;
 mod rough;
+mod section;
+pub mod sink;
+mod volume;
 
 use std::path::{Path, PathBuf};
 
 use rerun::RecordingStream;
 
-use crate::field::{self, Axis, FieldError, Volume};
+use crate::field::FieldError;
 use crate::figure;
+use crate::render::chart::{chart_png, Chart, Series, Style, PALETTE};
 use crate::render::colormap::ColorScale;
-use crate::render::{ColorMap, Figure};
-use crate::scene::{ContactKind, Scene, SectionKind, SweepParameter, VolumeSpec};
+use crate::render::{ColorMap, Figure, Mark, Panel};
+use crate::scene::{ContactKind, Scene, SweepParameter};
 use crate::study;
+use layout::{Layout, Node, View, ViewKind};
+use section::Frame;
+pub use sink::{Destination, DEFAULT_VIEWER_URL};
 
 /// The application id of every recording.
 pub const APPLICATION_ID: &str = "stressfield";
@@ -47,8 +62,16 @@ pub enum RecordError {
     Step { step: usize, message: String },
     #[error("rerun: {0}")]
     Rerun(String),
-    #[error("cannot write {path}: {message}\nhint: check that the directory exists and is writable, or choose another with --out-dir or -o")]
+    #[error("cannot write {path}: {message}\nhint: check that the directory exists, is writable and has free space, or choose another with --out-dir or -o")]
     Output { path: PathBuf, message: String },
+    #[error("standard output is a terminal, and a recording is binary\nhint: pipe it into a viewer: stressfield record SCENE -o - | rerun -")]
+    Terminal,
+    #[error("cannot write the recording to standard output: {0}")]
+    Stdout(String),
+    #[error("cannot stream to {url}: {message}\nhint: start a viewer first (`rerun`, from pip install \"rerun-sdk==0.36.*\") or use --spawn")]
+    Viewer { url: String, message: String },
+    #[error("cannot start a Rerun viewer: {0}\nhint: install the viewer matching this build, pip install \"rerun-sdk==0.36.*\" (it puts `rerun` on the PATH), or start one yourself and use --connect")]
+    Spawn(String),
 }
 
 impl From<rerun::RecordingStreamError> for RecordError {
@@ -62,52 +85,30 @@ impl From<rerun::RecordingStreamError> for RecordError {
 pub struct Summary {
     pub steps: usize,
     pub panels: usize,
-    /// Points of the 3-D point cloud of the last step (0 without a volume).
-    pub volume_points: usize,
+    /// Triangles of the iso-surfaces of the last step (0 without a volume).
+    pub volume_triangles: usize,
 }
 
-/// Records `scene` into `path` atomically: into a temporary file in the same directory, renamed
-/// once the recording is complete and its stream closed (a failure leaves no file behind).
+/// Records `scene` to `destination`, each step sent as soon as it is computed. A file is
+/// complete or absent: written into a temporary file and renamed at the end (see [`sink`]).
+pub fn record_to(
+    scene: &Scene,
+    destination: &Destination,
+    on_row: &(dyn Fn() + Sync),
+) -> Result<Summary, RecordError> {
+    let output = sink::Output::open(destination, &scene.name)?;
+    let summary = record_with(scene, &output.stream, on_row, &|| output.flush())?;
+    output.finish()?;
+    Ok(summary)
+}
+
+/// Records `scene` into the file `path` (see [`record_to`]).
 pub fn record_to_file(
     scene: &Scene,
     path: &Path,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Summary, RecordError> {
-    let output = |message: String| RecordError::Output {
-        path: path.to_path_buf(),
-        message,
-    };
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
-    let temp = tempfile::Builder::new()
-        .prefix(".stressfield-")
-        .suffix(".rrd.part")
-        .tempfile_in(dir)
-        .map_err(|e| output(e.to_string()))?
-        .into_temp_path();
-    let stream = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
-        .recording_name(scene.name.clone())
-        .save(&temp)?;
-    let summary = record_scene(scene, &stream, on_row).and_then(|summary| {
-        stream
-            .flush_blocking()
-            .map_err(|e| RecordError::Rerun(e.to_string()))?;
-        Ok(summary)
-    });
-    // The footer is written when the last handle of the stream is dropped.
-    drop(stream);
-    let summary = summary?;
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(&temp, std::fs::Permissions::from_mode(0o644))
-            .map_err(|e| output(e.to_string()))?;
-    }
-    temp.persist(path)
-        .map_err(|e| output(e.error.to_string()))?;
-    Ok(summary)
+    record_to(scene, &Destination::File(path.to_path_buf()), on_row)
 }
 
 /// The name of the timeline of a scene's steps.
@@ -139,77 +140,222 @@ pub fn record_scene(
     stream: &RecordingStream,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Summary, RecordError> {
+    record_with(scene, stream, on_row, &|| {
+        stream
+            .flush_blocking()
+            .map_err(|e| RecordError::Rerun(e.to_string()))
+    })
+}
+
+/// Records `scene` into `stream`, calling `flush` after every step.
+fn record_with(
+    scene: &Scene,
+    stream: &RecordingStream,
+    on_row: &(dyn Fn() + Sync),
+    flush: &dyn Fn() -> Result<(), RecordError>,
+) -> Result<Summary, RecordError> {
     if matches!(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
     ) {
-        return rough::record(scene, stream);
+        return rough::record(scene, stream, flush);
     }
+    record_sections(scene, stream, on_row, flush)
+}
+
+/// The window the layout is planned for (the viewer's size when it opens a file varies; the
+/// views scale with it).
+const WINDOW_PX: (f64, f64) = (1600.0, 1000.0);
+/// Width shares of the maps and of the side column.
+const MAIN_SHARE: f32 = 2.6;
+const SIDE_SHARE: f32 = 1.0;
+/// Height shares of the sections and of the 3-D volume below them.
+const SECTIONS_SHARE: f32 = 1.0;
+const VOLUME_SHARE: f32 = 1.5;
+
+/// The size in pixels of each section view in the planned window.
+fn section_view_px(scene: &Scene) -> (f64, f64) {
+    let width = WINDOW_PX.0 * f64::from(MAIN_SHARE / (MAIN_SHARE + SIDE_SHARE)) - 20.0;
+    let chrome = if scene.sweep.is_some() { 130.0 } else { 90.0 };
+    let mut height = (WINDOW_PX.1 - chrome) / scene.panels.len().max(1) as f64;
+    if scene.volume.is_some() {
+        height *= f64::from(SECTIONS_SHARE / (SECTIONS_SHARE + VOLUME_SHARE));
+    }
+    (width, height)
+}
+
+/// Rounds `x > 0` up to two significant digits.
+fn round_up(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return x;
+    }
+    let unit = 10f64.powf(x.log10().floor() - 1.0);
+    (x / unit - 1e-9).ceil() * unit
+}
+
+/// The colour range of a panel for a whole sweep, from the values of a coarse preview of every
+/// step (computed first, so that steps can be sent as they are computed): the figure's range
+/// rule ([`ColorScale::for_range`]) with 3 % to spare, rounded up.
+fn colour_range(map: ColorMap, lo: f64, hi: f64, fixed: Option<(f64, f64)>) -> (f64, f64) {
+    if let Some(range) = fixed {
+        return range;
+    }
+    let scale = ColorScale::for_range(map, lo, hi);
+    let grow = |v: f64| {
+        if v > 0.0 {
+            round_up(1.03 * v)
+        } else if v < 0.0 {
+            -round_up(-1.03 * v)
+        } else {
+            0.0
+        }
+    };
+    (grow(scale.lo), grow(scale.hi))
+}
+
+/// The coarse preview of a scene: at most 81 samples across.
+fn preview(scene: &Scene) -> Scene {
+    let mut coarse = scene.clone();
+    coarse.figure.resolution = scene.figure.resolution.min(81);
+    coarse
+}
+
+fn step_scene(scene: &Scene, step: usize) -> Result<Scene, RecordError> {
+    study::at_step(scene, step).map_err(|e| RecordError::Step {
+        step,
+        message: e.to_string(),
+    })
+}
+
+/// The swept parameter's axis label and the value shown on it.
+fn parameter_axis(scene: &Scene) -> Option<(String, Vec<f64>)> {
+    let sweep = scene.sweep.as_ref()?;
+    Some(match sweep.parameter {
+        SweepParameter::Friction => ("μ".into(), sweep.values.clone()),
+        SweepParameter::Load if scene.contact.kind == ContactKind::Line => (
+            "P (kN/m)".into(),
+            sweep.values.iter().map(|v| v * 1e-3).collect(),
+        ),
+        SweepParameter::Load => ("W (N)".into(), sweep.values.clone()),
+        SweepParameter::Position => (
+            scene.figure.length_unit.axis_label("x0"),
+            sweep.values.clone(),
+        ),
+    })
+}
+
+/// The recording of a section scene (line, point, elliptical, tractions).
+fn record_sections(
+    scene: &Scene,
+    stream: &RecordingStream,
+    on_row: &(dyn Fn() + Sync),
+    flush: &dyn Fn() -> Result<(), RecordError>,
+) -> Result<Summary, RecordError> {
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
     let timeline = timeline(scene);
+    let panels = scene.panels.len();
     stream.log_static(
         "description",
         &rerun::TextDocument::from_markdown(describe(scene)),
     )?;
-    // Every step first, so that each panel keeps one colour range through the sweep.
-    let mut step_scenes = Vec::with_capacity(steps);
-    let mut figures = Vec::with_capacity(steps);
+    // The colour ranges from a coarse preview of every step.
+    let coarse = preview(scene);
+    let mut spans = vec![(f64::INFINITY, f64::NEG_INFINITY); panels];
+    let mut volume_largest = 0.0f64;
     for step in 0..steps {
-        let step_scene = study::at_step(scene, step).map_err(|e| RecordError::Step {
-            step,
-            message: e.to_string(),
-        })?;
-        figures.push(figure::build(&step_scene, on_row)?);
-        step_scenes.push(step_scene);
+        let coarse_step = step_scene(&coarse, step)?;
+        let figure = figure::build(&coarse_step, &|| {})?;
+        for (span, panel) in spans.iter_mut().zip(&figure.panels) {
+            for &v in panel.values.iter().filter(|v| v.is_finite()) {
+                *span = (span.0.min(v), span.1.max(v));
+            }
+        }
+        if let Some(spec) = &scene.volume {
+            let grid = volume::evaluate(&coarse_step, spec, (spec.points / 2).max(9))?;
+            volume_largest = volume_largest.max(grid.largest());
+        }
     }
-    let panels = scene.panels.len();
-    let ranges: Vec<(f64, f64)> = (0..panels)
-        .map(|k| {
-            let (lo, hi) = figures
-                .iter()
-                .flat_map(|f| f.panels[k].values.iter().copied())
-                .filter(|v| v.is_finite())
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
-                    (lo.min(v), hi.max(v))
-                });
-            let map = figures[0].panels[k]
-                .scale
-                .as_ref()
-                .map_or(figures[0].colormap, |s| s.colormap);
-            let scale = ColorScale::for_range(map, lo, hi);
-            (scale.lo, scale.hi)
+    // The first step at full resolution: the frames of the views follow its axes.
+    let first_scene = step_scene(scene, 0)?;
+    let mut first = Some(figure::build(&first_scene, on_row)?);
+    let figure0 = first.as_ref().expect("just built");
+    let ranges: Vec<(f64, f64)> = figure0
+        .panels
+        .iter()
+        .zip(&spans)
+        .map(|(panel, &(lo, hi))| {
+            let map = section::panel_colormap(figure0, panel);
+            colour_range(map, lo, hi, panel.scale.as_ref().and_then(|s| s.range))
         })
         .collect();
-    for k in 0..panels {
-        log_placement(stream, k, &figures[0])?;
+    let view_px = section_view_px(scene);
+    // The panels as drawn (a map seen from above with y up), and the material points there.
+    let shown0: Vec<Panel> = figure0
+        .panels
+        .iter()
+        .map(|panel| section::displayed(figure0, panel))
+        .collect();
+    let material: Vec<(f64, f64)> = scene
+        .sweep
+        .as_ref()
+        .map(|s| {
+            s.material_points
+                .iter()
+                .map(|&(x, z)| (x, if figure0.vertical_is_depth { z } else { -z }))
+                .collect()
+        })
+        .unwrap_or_default();
+    let frames: Vec<Frame> = shown0
+        .iter()
+        .zip(&ranges)
+        .map(|(panel, &range)| {
+            let longest = section::longest_tick(range)
+                .max(section::panel_caption(figure0, panel).chars().count() / 2);
+            let has_strip = figure0.vertical_is_depth && !panel.traction.is_empty();
+            Frame::new(panel, has_strip, view_px, longest)
+        })
+        .collect();
+    for (k, (panel, frame)) in shown0.iter().zip(&frames).enumerate() {
+        let caption = section::panel_caption(figure0, panel);
+        section::log_static(
+            stream,
+            &format!("sections/{k}"),
+            frame,
+            panel,
+            &section::Fixed {
+                map: section::panel_colormap(figure0, panel),
+                caption: &caption,
+                range: ranges[k],
+                surface: figure0.vertical_is_depth,
+                material: &material,
+            },
+        )?;
     }
-    send_blueprint(scene, stream, &figures[0])?;
-    // The point clouds of every step, coloured on one scale.
-    let volumes = match &scene.volume {
+    log_series_styles(stream, scene, figure0)?;
+    let volume_setup = match &scene.volume {
         Some(spec) => {
-            let clouds = step_scenes
-                .iter()
-                .map(|step_scene| volume_cloud(step_scene, spec))
-                .collect::<Result<Vec<_>, _>>()?;
-            let (lo, hi) = clouds
-                .iter()
-                .flat_map(|c| c.values.iter().copied())
-                .fold((f32::INFINITY, f32::NEG_INFINITY), |(lo, hi), v| {
-                    (lo.min(v), hi.max(v))
-                });
-            let map = match spec.quantity.kind() {
-                crate::stress::QuantityKind::Signed => ColorMap::Diverging,
-                _ => scene.figure.colormap,
-            };
-            let scale = ColorScale::for_range(map, f64::from(lo), f64::from(hi));
-            stream.log_static("volume", &rerun::ViewCoordinates::RIGHT_HAND_Z_DOWN())?;
-            Some((spec, clouds, scale))
+            volume::log_static(stream, spec)?;
+            let levels = volume::levels(spec, volume_largest);
+            let scale = volume::scale(scene, spec, volume_largest);
+            Some((spec, levels, scale))
         }
         None => None,
     };
-    let mut volume_points = 0;
-    for (step, (step_scene, figure)) in step_scenes.iter().zip(&figures).enumerate() {
+    let levels: &[f64] = volume_setup
+        .as_ref()
+        .map_or(&[], |(_, levels, _)| levels.as_slice());
+    layout::send(stream, &plan_layout(scene, figure0, &frames, levels))?;
+    flush()?;
+    let mut volume_triangles = 0;
+    let mut history: Vec<Vec<(f64, f64, f64)>> = vec![Vec::new(); panels];
+    for step in 0..steps {
+        let step_scene = step_scene(scene, step)?;
+        let figure = match first.take() {
+            Some(figure) => figure,
+            None => figure::build(&step_scene, on_row)?,
+        };
         stream.set_time_sequence(timeline, step as i64);
+        let mut title = String::new();
         if let Some(sweep) = &scene.sweep {
             let text = sweep.describe(step, scene);
             stream.log("log", &rerun::TextLog::new(format!("step {step}: {text}")))?;
@@ -217,119 +363,403 @@ pub fn record_scene(
                 format!("series/{}", sweep.parameter.key()),
                 &rerun::Scalars::new([sweep.values[step]]),
             )?;
+            title = format!("step {} of {steps}: {text}", step + 1);
         }
         for (k, panel) in figure.panels.iter().enumerate() {
-            log_panel(stream, k, figure, panel, ranges[k], scene)?;
+            let panel_title = step_title(scene, step, &title, &figure, panel);
+            let shown = section::displayed(&figure, panel);
+            section::log_step(
+                stream,
+                section::When::Step,
+                &format!("sections/{k}"),
+                &frames[k],
+                &figure,
+                &shown,
+                ranges[k],
+                &section::Changing {
+                    title: &panel_title,
+                    notation: &section::Notation::of(&figure, panel),
+                    mark: figure.mark,
+                    material: &material,
+                    values: true,
+                },
+            )?;
+            let (largest, smallest) = section::extremes(panel, figure.mark);
+            let largest = largest.or_else(|| section::extremes(panel, Mark::Max).0);
+            if let Some(e) = largest {
+                stream.log(
+                    format!("series/{k}/maximum"),
+                    &rerun::Scalars::new([e.value]),
+                )?;
+                if figure.vertical_is_depth {
+                    stream.log(
+                        format!("series/{k}/maximum_depth"),
+                        &rerun::Scalars::new([e.v]),
+                    )?;
+                }
+            }
+            if let Some(e) = smallest {
+                stream.log(
+                    format!("series/{k}/minimum"),
+                    &rerun::Scalars::new([e.value]),
+                )?;
+            }
+            if steps > 1 {
+                let value = |e: Option<section::Extreme>| e.map_or(f64::NAN, |e| e.value);
+                history[k].push((
+                    value(largest),
+                    value(smallest),
+                    largest.map_or(f64::NAN, |e| e.v),
+                ));
+                log_charts(
+                    stream,
+                    scene,
+                    &figure,
+                    k,
+                    &history[k],
+                    ranges[k],
+                    &frames[k],
+                )?;
+            }
         }
-        log_material_points(stream, step_scene)?;
-        if let Some((spec, clouds, scale)) = &volumes {
-            volume_points = log_volume(stream, step_scene, spec, &clouds[step], scale)?;
+        log_material_points(stream, &step_scene)?;
+        if let Some((spec, levels, scale)) = &volume_setup {
+            let grid = volume::evaluate(&step_scene, spec, spec.points)?;
+            volume_triangles = volume::log_step(stream, &step_scene, spec, &grid, levels, scale)?;
         }
+        flush()?;
     }
     Ok(Summary {
         steps,
         panels,
-        volume_points,
+        volume_triangles,
     })
 }
 
-/// The viewer layout: one 2-D view per panel (its field, tractions and maximum in physical
-/// coordinates), the 3-D volume, and beside them the description, the raw values, the series
-/// and the steps.
-fn send_blueprint(
+/// The title row of a panel at a step: the step and its parameter, then the rest of the
+/// panel's subtitle (its groups are separated by two spaces, as in the PNG figure) without
+/// repeating the parameter.
+fn step_title(
     scene: &Scene,
+    step: usize,
+    title: &str,
+    figure: &Figure,
+    panel: &crate::render::Panel,
+) -> String {
+    let mut panel_title = title.to_string();
+    let parameter = scene.sweep.as_ref().map(|s| s.describe(step, scene));
+    let repeats = |part: &str| match (&parameter, scene.sweep.as_ref().map(|s| s.parameter)) {
+        (Some(text), _) if part == text => true,
+        // The subtitle writes the friction as the panel holds it.
+        (_, Some(SweepParameter::Friction)) => part.starts_with("μ = "),
+        _ => false,
+    };
+    let rest: Vec<&str> = panel
+        .subtitle
+        .split(",  ")
+        .map(str::trim)
+        .filter(|part| !part.is_empty() && !repeats(part))
+        .collect();
+    if !rest.is_empty() {
+        if !panel_title.is_empty() {
+            panel_title.push_str(",  ");
+        }
+        panel_title.push_str(&rest.join(",  "));
+    }
+    if panel_title.is_empty() {
+        panel_title = figure.title.clone();
+    }
+    panel_title
+}
+
+/// Names and colours of the plotted series (static).
+fn log_series_styles(
     stream: &RecordingStream,
+    scene: &Scene,
     figure: &Figure,
 ) -> Result<(), RecordError> {
-    use rerun::blueprint::{
-        Blueprint, BlueprintActivation, ContainerLike, Grid, Horizontal, Spatial2DView,
-        Spatial3DView, Tabs, TensorView, TextDocumentView, TextLogView, TimeSeriesView, Vertical,
+    let symbol = scene.figure.quantity.symbol();
+    let line = |name: String, [r, g, b]: [u8; 3]| {
+        rerun::SeriesLines::new()
+            .with_names([name])
+            .with_colors([rerun::Color::from_rgb(r, g, b)])
+            .with_widths([2.0])
     };
-    let mut maps: Vec<ContainerLike> = figure
-        .panels
+    for k in 0..figure.panels.len() {
+        stream.log_static(
+            format!("series/{k}/maximum"),
+            &line(format!("max {symbol}"), PALETTE[1]),
+        )?;
+        stream.log_static(
+            format!("series/{k}/minimum"),
+            &line(format!("min {symbol}"), PALETTE[0]),
+        )?;
+        stream.log_static(
+            format!("series/{k}/maximum_depth"),
+            &line(format!("depth of max {symbol}"), PALETTE[2]),
+        )?;
+    }
+    if let Some(sweep) = &scene.sweep {
+        stream.log_static(
+            format!("series/{}", sweep.parameter.key()),
+            &line(sweep.parameter.key().to_string(), PALETTE[6]),
+        )?;
+        for k in 0..figure.panels.len() {
+            for j in 0..sweep.material_points.len() {
+                for (c, (key, name)) in history_components(scene).into_iter().enumerate() {
+                    stream.log_static(
+                        format!("history/{k}/point{j}/{key}"),
+                        &line(name, PALETTE[c % PALETTE.len()]),
+                    )?;
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The stress components recorded at material points: `σxx`, `σzz`, `τxz` and the figure's
+/// quantity when it is none of them, as `(key, symbol)`.
+fn history_components(scene: &Scene) -> Vec<(&'static str, String)> {
+    let mut components = vec![
+        ("sxx", "σxx".to_string()),
+        ("szz", "σzz".to_string()),
+        ("sxz", "τxz".to_string()),
+    ];
+    let quantity = scene.figure.quantity;
+    if !components.iter().any(|(key, _)| *key == quantity.key()) {
+        components.push((quantity.key(), quantity.symbol().to_string()));
+    }
+    components
+}
+
+/// The extremes of panel `k` and the depth of its maximum against the swept parameter, for the
+/// steps so far (the current one marked), drawn as chart images. `history` holds (max, min,
+/// depth of max) per step.
+fn log_charts(
+    stream: &RecordingStream,
+    scene: &Scene,
+    figure: &Figure,
+    k: usize,
+    history: &[(f64, f64, f64)],
+    range: (f64, f64),
+    frame: &Frame,
+) -> Result<(), RecordError> {
+    let Some((x_label, xs)) = parameter_axis(scene) else {
+        return Ok(());
+    };
+    let x_range = xs
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
+            (a.min(x), b.max(x))
+        });
+    let symbol = scene.figure.quantity.symbol();
+    let current = history.len() - 1;
+    let mut chart = Chart::new(
+        &format!(
+            "extremes of {symbol} against {}",
+            x_label.split(' ').next().unwrap_or("")
+        ),
+        &x_label,
+        &figure.value_label,
+    );
+    chart.x_range = Some(x_range);
+    chart.y_range = Some((range.0.min(0.0), range.1));
+    chart.width_px = 520;
+    chart.height_px = 400;
+    let add = |label: &str, column: usize, colour: [u8; 3], chart: &mut Chart| {
+        let pick = |h: &(f64, f64, f64)| [h.0, h.1, h.2][column];
+        let points: Vec<(f64, f64)> = history
+            .iter()
+            .zip(&xs)
+            .map(|(h, &x)| (x, pick(h)))
+            .filter(|(_, y)| y.is_finite())
+            .collect();
+        if points.is_empty() {
+            return;
+        }
+        chart.series.push(Series {
+            label: label.to_string(),
+            points,
+            style: Style::Line,
+            colour,
+        });
+        let now = pick(&history[current]);
+        if now.is_finite() {
+            chart.series.push(Series {
+                label: String::new(),
+                points: vec![(xs[current], now)],
+                style: Style::Markers,
+                colour,
+            });
+        }
+    };
+    add(&format!("max {symbol}"), 0, PALETTE[1], &mut chart);
+    add(&format!("min {symbol}"), 1, PALETTE[0], &mut chart);
+    let png = |chart: &Chart| -> Result<Vec<u8>, RecordError> {
+        let image = chart_png(chart).map_err(|e| RecordError::Rerun(e.to_string()))?;
+        crate::render::encode_png(&image).map_err(|e| RecordError::Rerun(e.to_string()))
+    };
+    stream.log(
+        format!("charts/{k}/maximum"),
+        &rerun::EncodedImage::from_file_contents(png(&chart)?),
+    )?;
+    if figure.vertical_is_depth {
+        let mut depth = Chart::new(
+            &format!("depth of the maximum of {symbol}"),
+            &x_label,
+            &figure.z_label,
+        );
+        depth.x_range = Some(x_range);
+        depth.y_range = Some((frame.v.0.max(0.0), frame.v.1));
+        depth.width_px = 520;
+        depth.height_px = 400;
+        add(&format!("depth of max {symbol}"), 2, PALETTE[2], &mut depth);
+        stream.log(
+            format!("charts/{k}/depth"),
+            &rerun::EncodedImage::from_file_contents(png(&depth)?),
+        )?;
+    }
+    Ok(())
+}
+
+/// The viewer layout: the section maps (and the 3-D volume) take most of the window; beside
+/// them, tabs of plots (against the swept parameter, by step, the stress histories) over tabs
+/// of documents (the description, the raw values, the steps).
+fn plan_layout(scene: &Scene, figure: &Figure, frames: &[Frame], levels: &[f64]) -> Layout {
+    let section_name = |k: usize| {
+        let mut name = format!(
+            "{} · {} section",
+            figure.value_label,
+            scene.figure.section.key()
+        );
+        if figure.panels.len() > 1 {
+            name = format!("panel {}: {name}", k + 1);
+        }
+        name
+    };
+    let sections: Vec<Node> = frames
         .iter()
         .enumerate()
-        .map(|(k, panel)| {
-            let name = if panel.subtitle.is_empty() {
-                format!("panel {k}")
-            } else {
-                panel.subtitle.clone()
-            };
-            Spatial2DView::new(name)
-                .with_origin(format!("sections/{k}"))
-                .with_contents(["$origin/**", "- $origin/values"])
-                .into()
+        .map(|(k, frame)| {
+            Node::View(
+                View::new(
+                    ViewKind::Spatial2D(Some(frame.bounds)),
+                    section_name(k),
+                    format!("sections/{k}"),
+                )
+                .with_contents(&["$origin/**", "- $origin/values"]),
+            )
         })
         .collect();
-    if scene.volume.is_some() {
-        maps.push(
-            Spatial3DView::new("volume (z down)")
-                .with_origin("volume")
-                .into(),
-        );
-    }
-    let mut tabs: Vec<ContainerLike> = vec![TextDocumentView::new("scene")
-        .with_origin("description")
-        .into()];
-    tabs.extend((0..figure.panels.len()).map(|k| {
-        TensorView::new(format!("values {k}"))
-            .with_origin(format!("sections/{k}/values"))
-            .into()
-    }));
-    let mut side: Vec<ContainerLike> = vec![Tabs::new(tabs).into()];
-    side.push(TimeSeriesView::new("maxima").with_origin("series").into());
-    if let Some(sweep) = &scene.sweep {
-        if !sweep.material_points.is_empty() {
-            side.push(
-                TimeSeriesView::new("stress history")
-                    .with_origin("history")
-                    .into(),
-            );
-        }
-        side.push(TextLogView::new("steps").with_origin("log").into());
-    }
-    let root = Horizontal::new([Grid::new(maps).into(), Vertical::new(side).into()]);
-    Blueprint::new(root).send(
-        stream,
-        BlueprintActivation {
-            make_active: true,
-            make_default: true,
-        },
-    )?;
-    Ok(())
-}
-
-/// The static transform that places panel `k`'s image pixels at the grid samples.
-fn log_placement(stream: &RecordingStream, k: usize, figure: &Figure) -> Result<(), RecordError> {
-    log_panel_placement(stream, &format!("sections/{k}/field"), &figure.panels[k])
-}
-
-/// The static transform that places a panel's image pixels (entity `path`) at its samples.
-fn log_panel_placement(
-    stream: &RecordingStream,
-    path: &str,
-    panel: &crate::render::Panel,
-) -> Result<(), RecordError> {
-    let (du, dv) = (axis_step(&panel.x), axis_step(&panel.z));
-    // Pixel (i, j) covers [i, i + 1) x [j, j + 1): its centre i + 1/2 maps to sample i.
-    let translation = [
-        (panel.x.min - 0.5 * du) as f32,
-        (panel.z.min - 0.5 * dv) as f32,
-        0.0,
-    ];
-    stream.log_static(
-        path,
-        &rerun::Transform3D::from_translation_scale(translation, [du as f32, dv as f32, 1.0]),
-    )?;
-    Ok(())
-}
-
-fn axis_step(axis: &Axis) -> f64 {
-    if axis.count > 1 {
-        axis.step()
+    let sections = if sections.len() == 1 {
+        sections.into_iter().next().expect("one")
     } else {
-        1.0
+        Node::Vertical(sections, Vec::new())
+    };
+    let main = match &scene.volume {
+        Some(spec) => Node::Vertical(
+            vec![
+                sections,
+                Node::View(View::new(
+                    ViewKind::Spatial3D(Some(volume::eye(spec))),
+                    format!(
+                        "volume: iso-surfaces of {} at {} (half box y ≥ 0, z down)",
+                        spec.quantity.symbol(),
+                        levels_text(scene, levels)
+                    ),
+                    "volume",
+                )),
+            ],
+            vec![SECTIONS_SHARE, VOLUME_SHARE],
+        ),
+        None => sections,
+    };
+    let mut documents = vec![Node::View(View::new(
+        ViewKind::TextDocument,
+        "scene",
+        "description",
+    ))];
+    for k in 0..figure.panels.len() {
+        documents.push(Node::View(View::new(
+            ViewKind::Tensor,
+            format!("values {}", k + 1),
+            format!("sections/{k}/values"),
+        )));
     }
+    // The first tab opens: a moving load's stress history, else the chart against the
+    // parameter.
+    let mut plots = Vec::new();
+    if let Some(sweep) = scene.sweep.as_ref().filter(|s| s.values.len() > 1) {
+        documents.push(Node::View(View::new(ViewKind::TextLog, "steps", "log")));
+        let parameter = parameter_axis(scene).map_or(String::new(), |(label, _)| label);
+        let parameter = parameter.split(' ').next().unwrap_or("").to_string();
+        for k in 0..figure.panels.len() {
+            for j in 0..sweep.material_points.len() {
+                let (x, z) = sweep.material_points[j];
+                plots.push(Node::View(View::new(
+                    ViewKind::TimeSeries,
+                    format!(
+                        "point {j} {}: stresses by step",
+                        section::position_text(scene, x, z)
+                    ),
+                    format!("history/{k}/point{j}"),
+                )));
+            }
+            plots.push(Node::View(View::new(
+                ViewKind::Spatial2D(None),
+                format!("extremes against {parameter}"),
+                format!("charts/{k}/maximum"),
+            )));
+            if figure.vertical_is_depth {
+                plots.push(Node::View(View::new(
+                    ViewKind::Spatial2D(None),
+                    format!("depth of the maximum against {parameter}"),
+                    format!("charts/{k}/depth"),
+                )));
+            }
+            plots.push(Node::View(
+                View::new(
+                    ViewKind::TimeSeries,
+                    format!("extremes ({}) by step", figure.value_label),
+                    format!("series/{k}"),
+                )
+                .with_contents(&["$origin/maximum", "$origin/minimum"]),
+            ));
+            if figure.vertical_is_depth {
+                plots.push(Node::View(
+                    View::new(
+                        ViewKind::TimeSeries,
+                        format!("depth of the maximum ({}) by step", figure.z_label),
+                        format!("series/{k}"),
+                    )
+                    .with_contents(&["$origin/maximum_depth"]),
+                ));
+            }
+        }
+    }
+    let documents = Node::Tabs(documents, 0);
+    let side = if plots.is_empty() {
+        documents
+    } else {
+        Node::Vertical(vec![Node::Tabs(plots, 0), documents], vec![1.3, 1.0])
+    };
+    Layout {
+        root: Node::Horizontal(vec![main, side], vec![MAIN_SHARE, SIDE_SHARE]),
+        timeline: scene
+            .sweep
+            .as_ref()
+            .filter(|s| s.values.len() > 1)
+            .map(|_| timeline(scene).to_string()),
+    }
+}
+
+/// The iso-levels with their unit, innermost last: `0.198, 0.33, 0.46, 0.594 p0`.
+fn levels_text(scene: &Scene, levels: &[f64]) -> String {
+    let values: Vec<String> = levels.iter().map(|&l| section::short(l)).collect();
+    let unit = section::stress_text(scene, 1.0);
+    let unit = unit.trim_start_matches(|c: char| !c.is_whitespace());
+    format!("{}{unit}", values.join(", "))
 }
 
 /// The Rerun colour map closest to a figure's.
@@ -348,149 +778,6 @@ fn rerun_colormap(map: ColorMap) -> rerun::components::Colormap {
     }
 }
 
-/// One panel at the current step: field, raw values, surface, tractions, outlines, maximum and
-/// its series.
-fn log_panel(
-    stream: &RecordingStream,
-    k: usize,
-    figure: &Figure,
-    panel: &crate::render::Panel,
-    range: (f64, f64),
-    scene: &Scene,
-) -> Result<(), RecordError> {
-    let base = format!("sections/{k}");
-    let values32 = panel.values.mapv(|v| v as f32);
-    let map = panel.scale.as_ref().map_or(figure.colormap, |s| s.colormap);
-    let image = rerun::DepthImage::try_from(values32.clone())
-        .map_err(|e| RecordError::Rerun(e.to_string()))?
-        .with_meter(1.0)
-        .with_colormap(rerun_colormap(map))
-        .with_depth_range(rerun::components::ValueRange::new(range.0, range.1));
-    stream.log(format!("{base}/field"), &image)?;
-    let (vertical, horizontal) = (figure.z_label.clone(), figure.x_label.clone());
-    let tensor = rerun::Tensor::try_from(values32)
-        .map_err(|e| RecordError::Rerun(e.to_string()))?
-        .with_dim_names([vertical, horizontal]);
-    stream.log(format!("{base}/values"), &tensor)?;
-    let depth_section = figure.vertical_is_depth;
-    if depth_section {
-        let surface = [[panel.x.min as f32, 0.0], [panel.x.max as f32, 0.0]];
-        stream.log(
-            format!("{base}/surface"),
-            &rerun::LineStrips2D::new([surface])
-                .with_colors([rerun::Color::from_rgb(90, 90, 90)])
-                .with_labels(["surface z = 0"]),
-        )?;
-        let tractions = traction_strips(panel);
-        if !tractions.is_empty() {
-            let (strips, labels): (Vec<_>, Vec<_>) = tractions.into_iter().unzip();
-            let colors: Vec<rerun::Color> = labels
-                .iter()
-                .map(|label: &String| {
-                    if label.starts_with('p') {
-                        rerun::Color::from_rgb(30, 30, 30)
-                    } else {
-                        rerun::Color::from_rgb(200, 60, 30)
-                    }
-                })
-                .collect();
-            stream.log(
-                format!("{base}/tractions"),
-                &rerun::LineStrips2D::new(strips)
-                    .with_colors(colors)
-                    .with_labels(labels),
-            )?;
-        }
-    }
-    if !panel.outlines.is_empty() {
-        let strips: Vec<Vec<[f32; 2]>> = panel
-            .outlines
-            .iter()
-            .map(|line| line.iter().map(|&(u, v)| [u as f32, v as f32]).collect())
-            .collect();
-        stream.log(
-            format!("{base}/outline"),
-            &rerun::LineStrips2D::new(strips).with_colors([rerun::Color::from_rgb(255, 255, 255)]),
-        )?;
-    }
-    let unit = figure.value_label.clone();
-    if let Some(((iv, iu), value)) = grid_maximum(&panel.values) {
-        let (u, v) = (panel.x.value(iu), panel.z.value(iv));
-        let label = format!(
-            "max {} = {value:.4} at ({u:.3}, {v:.3})",
-            unit.split(' ').next().unwrap_or("value")
-        );
-        stream.log(
-            format!("{base}/maximum"),
-            &rerun::Points2D::new([[u as f32, v as f32]])
-                .with_radii([rerun::Radius::new_ui_points(5.0)])
-                .with_colors([rerun::Color::from_rgb(255, 255, 255)])
-                .with_labels([label]),
-        )?;
-        stream.log(format!("series/{k}/maximum"), &rerun::Scalars::new([value]))?;
-        if depth_section {
-            stream.log(
-                format!("series/{k}/maximum_depth"),
-                &rerun::Scalars::new([v]),
-            )?;
-        }
-    }
-    if let Some(sweep) = &scene.sweep {
-        if !sweep.material_points.is_empty() {
-            let points: Vec<[f32; 2]> = sweep
-                .material_points
-                .iter()
-                .map(|&(x, z)| [x as f32, z as f32])
-                .collect();
-            let labels: Vec<String> = (0..points.len()).map(|j| format!("point{j}")).collect();
-            stream.log(
-                format!("{base}/material_points"),
-                &rerun::Points2D::new(points)
-                    .with_radii([rerun::Radius::new_ui_points(4.0)])
-                    .with_colors([rerun::Color::from_rgb(0, 0, 0)])
-                    .with_labels(labels),
-            )?;
-        }
-    }
-    Ok(())
-}
-
-/// The largest finite value of a map and its `(row, column)`.
-fn grid_maximum(values: &ndarray::Array2<f64>) -> Option<((usize, usize), f64)> {
-    values
-        .indexed_iter()
-        .filter(|(_, v)| v.is_finite())
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .map(|(index, &v)| (index, v))
-}
-
-/// The traction profiles drawn above the surface (`z < 0`): `p` and, where any, `q`, scaled
-/// so that the larger peak rises a fifth of the panel's depth range.
-fn traction_strips(panel: &crate::render::Panel) -> Vec<(Vec<[f32; 2]>, String)> {
-    let peak = panel
-        .traction
-        .iter()
-        .map(|s| s.p.abs().max(s.q.abs()))
-        .fold(0.0f64, f64::max);
-    if peak <= 0.0 {
-        return Vec::new();
-    }
-    let height = 0.2 * (panel.z.max - panel.z.min);
-    let scale = height / peak;
-    let strip = |f: &dyn Fn(&crate::render::TractionSample) -> f64| -> Vec<[f32; 2]> {
-        panel
-            .traction
-            .iter()
-            .map(|s| [s.x as f32, (-scale * f(s)) as f32])
-            .collect()
-    };
-    let mut strips = vec![(strip(&|s| s.p), format!("p (peak {peak:.4})"))];
-    if panel.traction.iter().any(|s| s.q != 0.0) {
-        strips.push((strip(&|s| s.q), "q".to_string()));
-    }
-    strips
-}
-
 /// Stresses at the sweep's material points (body frame) as a moving load passes: `σxx`,
 /// `σzz`, `τxz` and the figure's quantity, in the figure's stress unit.
 fn log_material_points(stream: &RecordingStream, scene: &Scene) -> Result<(), RecordError> {
@@ -502,212 +789,33 @@ fn log_material_points(stream: &RecordingStream, scene: &Scene) -> Result<(), Re
     }
     let unit_over_a = study::length_unit_over_a(scene);
     let stress_per_p0 = study::DisplayUnits::of(scene).stress_per_p0;
+    let quantity = scene.figure.quantity;
     for (k, panel) in scene.panels.iter().enumerate() {
         let solution = study::solution(scene, panel)
             .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?;
         let y = match scene.figure.section {
-            SectionKind::Xz => panel.at * unit_over_a,
+            crate::scene::SectionKind::Xz => panel.at * unit_over_a,
             _ => 0.0,
         };
         for (j, &(x, z)) in sweep.material_points.iter().enumerate() {
             // Finite on the surface on a strip or cell edge too (the mean of the neighbours).
             let s = solution.finite_stress_over_p0(x * unit_over_a, y, z * unit_over_a);
             let base = format!("history/{k}/point{j}");
-            let quantity = scene.figure.quantity;
-            let mut components = vec![("sxx", s.xx), ("szz", s.zz), ("sxz", s.xz)];
-            if !components.iter().any(|(name, _)| *name == quantity.key()) {
-                components.push((quantity.key(), quantity.of(&s)));
-            }
-            for (name, value) in components {
+            for (key, _) in history_components(scene) {
+                let value = match key {
+                    "sxx" => s.xx,
+                    "szz" => s.zz,
+                    "sxz" => s.xz,
+                    _ => quantity.of(&s),
+                };
                 stream.log(
-                    format!("{base}/{name}"),
+                    format!("{base}/{key}"),
                     &rerun::Scalars::new([value * stress_per_p0]),
                 )?;
             }
         }
     }
     Ok(())
-}
-
-/// A step's point cloud: positions (figure length unit) and values (figure stress unit).
-struct Cloud {
-    positions: Vec<[f32; 3]>,
-    values: Vec<f32>,
-    spacing: f64,
-    maximum: Option<([f32; 3], f32)>,
-}
-
-/// Evaluates the scene's `[volume]` for its first panel's contact and keeps the points whose
-/// |value| is at least `threshold` of the largest.
-fn volume_cloud(scene: &Scene, spec: &VolumeSpec) -> Result<Cloud, RecordError> {
-    let unit_over_a = study::length_unit_over_a(scene);
-    let longest = (spec.x.1 - spec.x.0)
-        .max(spec.y.1 - spec.y.0)
-        .max(spec.z.1 - spec.z.0);
-    let spacing = longest / (spec.points - 1) as f64;
-    let axis = |(lo, hi): (f64, f64)| {
-        let count = (((hi - lo) / spacing).round() as usize + 1).max(2);
-        Axis::new(lo * unit_over_a, hi * unit_over_a, count)
-    };
-    let volume = Volume {
-        x: axis(spec.x),
-        y: axis(spec.y),
-        z: axis(spec.z),
-    };
-    // The closed form where there is one (a numerical volume would take direct summation at
-    // every point).
-    let panel = &scene.panels[0];
-    let solution = match study::closed_form(scene, panel) {
-        Some(solution) => solution,
-        None => study::solution(scene, panel)
-            .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?,
-    };
-    let field = field::evaluate_volume::<f32>(&solution, &volume, &[spec.quantity], &|| {})?;
-    let block = field
-        .block(spec.quantity)
-        .ok_or_else(|| RecordError::Rerun("volume quantity missing".into()))?;
-    let stress_per_p0 = study::DisplayUnits::of(scene).stress_per_p0;
-    let largest = block
-        .iter()
-        .filter(|v| v.is_finite())
-        .fold(0.0f32, |m, v| m.max(v.abs()));
-    let cut = spec.threshold as f32 * largest;
-    let mut cloud = Cloud {
-        positions: Vec::new(),
-        values: Vec::new(),
-        spacing,
-        maximum: None,
-    };
-    let to_unit = |value: f64| (value / unit_over_a) as f32;
-    for ((iz, iy, ix), &value) in block.indexed_iter() {
-        if !(value.is_finite() && value.abs() >= cut) {
-            continue;
-        }
-        let position = [
-            to_unit(volume.x.value(ix)),
-            to_unit(volume.y.value(iy)),
-            to_unit(volume.z.value(iz)),
-        ];
-        let shown = value * stress_per_p0 as f32;
-        if cloud.maximum.is_none_or(|(_, m)| shown > m) {
-            cloud.maximum = Some((position, shown));
-        }
-        cloud.positions.push(position);
-        cloud.values.push(shown);
-    }
-    Ok(cloud)
-}
-
-/// Logs a step's point cloud, coloured on `scale` (one for all steps), with the contact outline on
-/// the surface and the maximum labelled. Returns the number of points.
-fn log_volume(
-    stream: &RecordingStream,
-    scene: &Scene,
-    spec: &VolumeSpec,
-    cloud: &Cloud,
-    scale: &ColorScale,
-) -> Result<usize, RecordError> {
-    let colors: Vec<rerun::Color> = cloud
-        .values
-        .iter()
-        .map(|&v| {
-            let [r, g, b] = scale.rgb(f64::from(v));
-            rerun::Color::from_rgb(r, g, b)
-        })
-        .collect();
-    stream.log(
-        "volume/points",
-        &rerun::Points3D::new(cloud.positions.iter().copied())
-            .with_colors(colors)
-            .with_radii([(0.35 * cloud.spacing) as f32]),
-    )?;
-    let unit_over_a = study::length_unit_over_a(scene);
-    let aspect = scene.contact.aspect;
-    let centre = scene.load_centre_over_a;
-    if matches!(
-        scene.contact.kind,
-        ContactKind::Point | ContactKind::Elliptical
-    ) {
-        let outline: Vec<[f32; 3]> = (0..=256)
-            .map(|i| {
-                let angle = std::f64::consts::TAU * f64::from(i) / 256.0;
-                [
-                    ((centre + angle.cos()) / unit_over_a) as f32,
-                    (aspect * angle.sin() / unit_over_a) as f32,
-                    0.0,
-                ]
-            })
-            .collect();
-        stream.log(
-            "volume/contact",
-            &rerun::LineStrips3D::new([outline])
-                .with_colors([rerun::Color::from_rgb(20, 20, 20)])
-                .with_labels(["contact"]),
-        )?;
-        stream.log("volume/contact/patch", &contact_patch(scene))?;
-    }
-    if let Some((position, value)) = cloud.maximum {
-        stream.log(
-            "volume/maximum",
-            &rerun::Points3D::new([position])
-                .with_radii([cloud.spacing as f32])
-                .with_colors([rerun::Color::from_rgb(255, 255, 255)])
-                .with_labels([format!(
-                    "max {} = {value:.4} at ({:.3}, {:.3}, {:.3})",
-                    spec.quantity.symbol(),
-                    position[0],
-                    position[1],
-                    position[2]
-                )]),
-        )?;
-    }
-    Ok(cloud.positions.len())
-}
-
-/// The contact patch on the surface `z = 0` as a mesh of rings, shaded by the Hertz pressure
-/// `p/p0 = sqrt(1 - r²)` (white at the edge, dark red at the centre), in the figure's length
-/// unit and at the load's current position.
-fn contact_patch(scene: &Scene) -> rerun::Mesh3D {
-    const RINGS: usize = 12;
-    const SEGMENTS: usize = 96;
-    let unit_over_a = study::length_unit_over_a(scene);
-    let (aspect, centre) = (scene.contact.aspect, scene.load_centre_over_a);
-    let shade = |r: f64| {
-        let p = (1.0 - r * r).max(0.0).sqrt();
-        let mix = |white: f64, dark: f64| (white + (dark - white) * p).round() as u8;
-        rerun::Color::from_rgb(mix(255.0, 150.0), mix(255.0, 20.0), mix(255.0, 20.0))
-    };
-    let mut positions = vec![[(centre / unit_over_a) as f32, 0.0, 0.0]];
-    let mut colors = vec![shade(0.0)];
-    for ring in 1..=RINGS {
-        let r = ring as f64 / RINGS as f64;
-        for k in 0..SEGMENTS {
-            let angle = std::f64::consts::TAU * k as f64 / SEGMENTS as f64;
-            positions.push([
-                ((centre + r * angle.cos()) / unit_over_a) as f32,
-                (aspect * r * angle.sin() / unit_over_a) as f32,
-                0.0,
-            ]);
-            colors.push(shade(r));
-        }
-    }
-    // Vertex of ring `ring` (1-based), segment `k`.
-    let index = |ring: usize, k: usize| (1 + (ring - 1) * SEGMENTS + k % SEGMENTS) as u32;
-    let mut triangles = Vec::new();
-    for k in 0..SEGMENTS {
-        triangles.push([0, index(1, k), index(1, k + 1)]);
-    }
-    for ring in 1..RINGS {
-        for k in 0..SEGMENTS {
-            let (a, b) = (index(ring, k), index(ring, k + 1));
-            let (c, d) = (index(ring + 1, k), index(ring + 1, k + 1));
-            triangles.push([a, c, d]);
-            triangles.push([a, d, b]);
-        }
-    }
-    rerun::Mesh3D::new(positions)
-        .with_triangle_indices(triangles)
-        .with_vertex_colors(colors)
 }
 
 /// The markdown description of a scene: title, contact, sweep and the `hertz` report.
@@ -741,6 +849,15 @@ pub fn describe(scene: &Scene) -> String {
         }
     }
     text.push_str("Conventions: z points into the body (depth drawn downwards), tension positive, q = μp acts in +x on the body (trailing edge x = −a).\n\n");
+    text.push_str(&format!(
+        "**Reading the views.** Hovering the map shows `Val`: the value of {} in the unit of the colour bar ({}). The viewer also prints it as a \"Depth\" in m or mm, because the map is stored as a depth image: ignore that line. The colour range is the same at every step (from a coarse preview of all steps, rounded up); the marked extremes and the title row follow the step.",
+        scene.figure.quantity.symbol(),
+        scene.figure.stress_unit.label(scene.figure.quantity.symbol()),
+    ));
+    if scene.volume.is_some() {
+        text.push_str(" The 3-D view shows nested translucent iso-surfaces of the half box y ≥ 0 at the levels in its title (coloured on the map's colour bar, the outer ones more transparent; the cut face shows how they nest) and the contact patch shaded by the pressure (white at its edge, dark red at its centre); drag to turn it, scroll to zoom, double-click to return to the first view.");
+    }
+    text.push_str("\n\n");
     text.push_str("## Contact (`stressfield hertz`)\n\n```text\n");
     text.push_str(&crate::report::hertz(scene));
     text.push_str("```\n");

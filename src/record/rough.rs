@@ -1,26 +1,34 @@
 //! Recordings of surface and rough scenes.
 //!
 //! ## Entities
-//! - `description`: the scene's report (the surface's statistics, or the solved contact's).
+//! - `description`: the scene's report (the surface's statistics, or the solved contact's),
+//!   and how to read the views.
 //! - `sheet`: the rendered figure (with its colour bars and charts) as an image.
 //! - `topography`: the height map as a 3-D mesh coloured by height (heights exaggerated so
 //!   that the tallest relief is a fifth of the map's width; the factor is in the description).
-//! - `maps/<k>/field`: the sheet's maps (topography, pressure, sections) as depth images whose
-//!   values read on hover, placed in um, with outlines and the labelled maximum.
-//! - Rough scenes with a `[sweep]` of the load, on the timeline `load`: `contact/pressure`
-//!   (MPa) and `contact/spots` (outlines) at every load, and the series
-//!   `series/contact_fraction`, `series/spots`, `series/max_pressure_mpa`.
-//! - Rough scenes, on the timeline `depth` (um): `depth/field`, the sheet's stress quantity in
-//!   planes parallel to the surface from the surface down, the field stepping through depth.
+//! - `maps/<k>`: the sheet's maps (topography, pressure, sections) as map views (see
+//!   [`super::section`]): `field` (a depth image whose values read on hover), a colour bar with
+//!   its unit, a title row, outlines and the labelled maximum; maps seen from above are drawn
+//!   with y up, as in the figure.
+//! - Rough scenes with a `[sweep]` of the load, on the timeline `load`: the map view
+//!   `contact` (pressure in MPa, the spots outlined, the load and spot count in its title) at
+//!   every load; `charts/<name>` (the real area fraction, the spot count and the largest
+//!   pressure against the load W, as chart images, the current load marked); and the series
+//!   `series/load_n`, `series/contact_fraction`, `series/spots`, `series/max_pressure_mpa`.
+//! - Rough scenes, on the timeline `depth` (layers numbered from the surface): the map view
+//!   `depth`, the sheet's stress quantity in planes parallel to the surface from the surface
+//!   down (the depth in its title), under the scene's own load.
 
 use rerun::RecordingStream;
 
-use super::{grid_maximum, log_panel_placement, rerun_colormap, RecordError, Summary};
+use super::layout::{Layout, Node, View, ViewKind};
+use super::section::{self, Changing, Fixed, Frame, Notation, When};
+use super::{RecordError, Summary};
 use crate::contact::rough::{self, Control};
 use crate::field::{self, Axis, Plane, Section};
 use crate::figure::{self, Drawing};
-use crate::render::chart::Cell;
-use crate::render::{ColorMap, Figure};
+use crate::render::chart::{chart_png, Cell, Chart, Series, Style, PALETTE};
+use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::rough_report::{search_depth_m, ContactReport};
 use crate::scene::{ContactKind, Scene};
 use crate::study::rough::{self as rough_study, REFERENCE_LENGTH_M};
@@ -32,7 +40,11 @@ fn rerun_error(e: impl std::fmt::Display) -> RecordError {
 
 /// Records a surface or rough scene (module doc). Its grid rows are not reported as progress
 /// (how many there are depends on the solved contact); [`super::rows`] counts none.
-pub fn record(scene: &Scene, stream: &RecordingStream) -> Result<Summary, RecordError> {
+pub fn record(
+    scene: &Scene,
+    stream: &RecordingStream,
+    flush: &dyn Fn() -> Result<(), RecordError>,
+) -> Result<Summary, RecordError> {
     let on_row = &|| {};
     let surface = scene
         .surface
@@ -65,7 +77,7 @@ pub fn record(scene: &Scene, stream: &RecordingStream) -> Result<Summary, Record
         "description",
         &rerun::TextDocument::from_markdown(format!(
             "# {}\n\n```text\n{report}```\n\nThe `topography` mesh shows heights {exaggeration:.0} times exaggerated. \
-             Maps are in µm; hovering a map reads its value in the unit of its title (the viewer calls it \"depth\" and adds \"m\").",
+             Maps are in µm; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m or mm: ignore that line).",
             sheet.title
         )),
     )?;
@@ -75,44 +87,112 @@ pub fn record(scene: &Scene, stream: &RecordingStream) -> Result<Summary, Record
         .flatten()
         .filter_map(|cell| match cell {
             Cell::Map(figure) => Some(figure),
-            Cell::Chart(_) => None,
+            Cell::Chart(_) | Cell::Table(_) => None,
         })
         .collect();
+    let rough = scene.contact.kind == ContactKind::Rough;
+    let timeline = rough.then(|| {
+        if scene.sweep.is_some() {
+            "load"
+        } else {
+            "depth"
+        }
+    });
+    let view_px = main_view_px(timeline.is_some());
+    let mut map_frames = Vec::with_capacity(maps.len());
     for (k, map) in maps.iter().enumerate() {
-        log_map(stream, &format!("maps/{k}"), map, None, true, true)?;
+        let panel = &map.panels[0];
+        let shown = section::displayed(map, panel);
+        let range = map_range(map, panel, None);
+        let frame = map_frame(map, &shown, range, view_px);
+        let title = if panel.subtitle.is_empty() {
+            map.title.clone()
+        } else {
+            panel.subtitle.clone()
+        };
+        let base = format!("maps/{k}");
+        log_map_static(stream, &base, &frame, map, &shown, range)?;
+        log_map_step(
+            stream,
+            When::Static,
+            &base,
+            &frame,
+            map,
+            &shown,
+            range,
+            &title,
+        )?;
+        map_frames.push(frame);
     }
+    // The views of the load sweep and of the depth steps, framed before they are computed
+    // (their colour ranges are not known yet: the frames allow for six-character ticks).
+    let surface_axes = surface_axes_um(&surface.heights);
+    let contact_frame = (rough && scene.sweep.is_some()).then(|| {
+        let map = pressure_figure(Panel {
+            subtitle: String::new(),
+            x: surface_axes.0,
+            z: surface_axes.1,
+            values: ndarray::Array2::zeros((surface_axes.1.count, surface_axes.0.count)),
+            traction: Vec::new(),
+            half_width: 0.0,
+            outlines: Vec::new(),
+            scale: None,
+        });
+        let shown = section::displayed(&map, &map.panels[0]);
+        Frame::new(&shown, false, view_px, 6)
+    });
+    let depth_frame = rough.then(|| {
+        let shown = Panel {
+            subtitle: String::new(),
+            x: surface_axes.0,
+            z: crate::field::Axis::new(
+                -surface_axes.1.max,
+                -surface_axes.1.min,
+                surface_axes.1.count,
+            ),
+            values: ndarray::Array2::zeros((surface_axes.1.count, surface_axes.0.count)),
+            traction: Vec::new(),
+            half_width: 0.0,
+            outlines: Vec::new(),
+            scale: None,
+        };
+        Frame::new(&shown, false, view_px, 6)
+    });
+    let frames = Frames {
+        maps: &map_frames,
+        contact: contact_frame.as_ref(),
+        depth: depth_frame.as_ref(),
+        timeline,
+    };
+    super::layout::send(stream, &plan_layout(&maps, scene, &frames))?;
+    flush()?;
     let mut steps = 1;
-    if scene.contact.kind == ContactKind::Rough {
-        steps = log_load_sweep(stream, scene)?.max(1);
-        log_depth_steps(stream, scene, on_row)?;
+    if let Some(frame) = &contact_frame {
+        steps = log_load_sweep(stream, scene, frame, flush)?.max(1);
     }
-    send_blueprint(stream, &maps, scene)?;
+    if let Some(frame) = &depth_frame {
+        // The depth steps are at the scene's own load, on their own timeline only.
+        stream.disable_timeline("load");
+        log_depth_steps(stream, scene, frame, on_row, flush)?;
+    }
     Ok(Summary {
         steps,
         panels: maps.len(),
-        volume_points: 0,
+        volume_triangles: 0,
     })
 }
 
-/// One map figure's single panel at `base`: field (depth image), placement, outlines, maximum.
-fn log_map(
-    stream: &RecordingStream,
-    base: &str,
-    map: &Figure,
-    range: Option<(f64, f64)>,
-    timeless: bool,
-    place: bool,
-) -> Result<(), RecordError> {
-    let log = |path: String, archetype: &dyn rerun::AsComponents| {
-        if timeless {
-            stream.log_static(path, archetype)
-        } else {
-            stream.log(path, archetype)
-        }
-    };
-    let panel = &map.panels[0];
-    let colormap = panel.scale.as_ref().map_or(map.colormap, |s| s.colormap);
-    let (lo, hi) = range.unwrap_or_else(|| {
+/// The size of a view in the main area (tabs beside the side column) in the planned window.
+fn main_view_px(has_timeline: bool) -> (f64, f64) {
+    let (width, height) = super::WINDOW_PX;
+    let share = f64::from(super::MAIN_SHARE / (super::MAIN_SHARE + super::SIDE_SHARE));
+    let chrome = if has_timeline { 130.0 } else { 90.0 };
+    (width * share - 20.0, height - chrome)
+}
+
+/// The colour range of a map: its scale's fixed range, or its values' by the figure's rule.
+fn map_range(map: &Figure, panel: &Panel, values: Option<(f64, f64)>) -> (f64, f64) {
+    let (lo, hi) = values.unwrap_or_else(|| {
         panel
             .values
             .iter()
@@ -121,39 +201,99 @@ fn log_map(
                 (a.min(v), b.max(v))
             })
     });
-    let image = rerun::DepthImage::try_from(panel.values.mapv(|v| v as f32))
-        .map_err(rerun_error)?
-        .with_meter(1.0)
-        .with_colormap(rerun_colormap(colormap))
-        .with_depth_range(rerun::components::ValueRange::new(lo, hi.max(lo + 1e-12)));
-    if place {
-        log_panel_placement(stream, &format!("{base}/field"), panel)?;
+    let colormap = section::panel_colormap(map, panel);
+    let (lo, hi) =
+        super::colour_range(colormap, lo, hi, panel.scale.as_ref().and_then(|s| s.range));
+    (lo, if hi > lo { hi } else { lo + 1.0 })
+}
+
+/// The frame of a map (as [`section::displayed`]) in a view of `view_px`.
+fn map_frame(map: &Figure, shown: &Panel, range: (f64, f64), view_px: (f64, f64)) -> Frame {
+    let caption = section::panel_caption(map, shown);
+    let ticks = section::longest_tick(range).max(caption.chars().count() / 2);
+    Frame::new(shown, false, view_px, ticks)
+}
+
+/// Logs a map's static parts: placement, border and colour bar.
+fn log_map_static(
+    stream: &RecordingStream,
+    base: &str,
+    frame: &Frame,
+    map: &Figure,
+    shown: &Panel,
+    range: (f64, f64),
+) -> Result<(), RecordError> {
+    let caption = section::panel_caption(map, shown);
+    section::log_static(
+        stream,
+        base,
+        frame,
+        shown,
+        &Fixed {
+            map: section::panel_colormap(map, shown),
+            caption: &caption,
+            range,
+            surface: map.vertical_is_depth,
+            material: &[],
+        },
+    )
+}
+
+/// Logs a map (as [`section::displayed`]) with its title row and labelled maximum.
+#[allow(clippy::too_many_arguments)]
+fn log_map_step(
+    stream: &RecordingStream,
+    when: When,
+    base: &str,
+    frame: &Frame,
+    map: &Figure,
+    shown: &Panel,
+    range: (f64, f64),
+    title: &str,
+) -> Result<(), RecordError> {
+    section::log_step(
+        stream,
+        when,
+        base,
+        frame,
+        map,
+        shown,
+        range,
+        &Changing {
+            title,
+            notation: &Notation::of(map, shown),
+            mark: map.mark,
+            material: &[],
+            values: false,
+        },
+    )
+}
+
+/// The axes of a height map's cells, in µm (cell centres).
+fn surface_axes_um(map: &HeightMap) -> (Axis, Axis) {
+    let [ny, nx] = map.shape();
+    let [dx, dy] = map.spacing_m();
+    (
+        Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx),
+        Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny),
+    )
+}
+
+/// A map figure of the contact pressure (MPa) in µm, seen from above.
+fn pressure_figure(panel: Panel) -> Figure {
+    Figure {
+        title: "pressure".into(),
+        panels: vec![panel],
+        value_label: "p (MPa)".into(),
+        x_label: "x (µm)".into(),
+        z_label: "y (µm)".into(),
+        vertical_is_depth: false,
+        traction_label: String::new(),
+        colormap: ColorMap::Inferno,
+        levels: crate::render::Levels::Count(0),
+        mark: Mark::Max,
+        panel_width_px: 400,
     }
-    log(format!("{base}/field"), &image)?;
-    if !panel.outlines.is_empty() {
-        let strips: Vec<Vec<[f32; 2]>> = panel
-            .outlines
-            .iter()
-            .map(|line| line.iter().map(|&(u, v)| [u as f32, v as f32]).collect())
-            .collect();
-        log(
-            format!("{base}/outline"),
-            &rerun::LineStrips2D::new(strips)
-                .with_colors([rerun::Color::from_rgb(255, 255, 255)])
-                .with_radii([rerun::Radius::new_ui_points(0.75)]),
-        )?;
-    }
-    if let Some(((iv, iu), value)) = grid_maximum(&panel.values) {
-        let (u, v) = (panel.x.value(iu), panel.z.value(iv));
-        log(
-            format!("{base}/maximum"),
-            &rerun::Points2D::new([[u as f32, v as f32]])
-                .with_radii([rerun::Radius::new_ui_points(5.0)])
-                .with_colors([rerun::Color::from_rgb(255, 255, 255)])
-                .with_labels([format!("max {value:.4} ({})", panel.subtitle)]),
-        )?;
-    }
-    Ok(())
 }
 
 /// The height map as a mesh coloured by height (at most 256 samples a side); returns the
@@ -207,12 +347,19 @@ fn log_topography(stream: &RecordingStream, map: &HeightMap) -> Result<f64, Reco
 }
 
 /// The load sweep of a rough scene: each load solved, its pressure and spots logged on the
-/// `load` timeline; returns the number of steps.
-fn log_load_sweep(stream: &RecordingStream, scene: &Scene) -> Result<usize, RecordError> {
+/// `load` timeline in the view framed by `frame`, with the charts against the load; returns
+/// the number of steps.
+fn log_load_sweep(
+    stream: &RecordingStream,
+    scene: &Scene,
+    frame: &Frame,
+    flush: &dyn Fn() -> Result<(), RecordError>,
+) -> Result<usize, RecordError> {
     let Some(sweep) = &scene.sweep else {
         return Ok(0);
     };
     let problem = rough_study::problem(scene).ok_or_else(|| rerun_error("no rough contact"))?;
+    // Every load is solved first: the colour range is the largest pressure of them all.
     let mut solutions = Vec::with_capacity(sweep.values.len());
     for &load in &sweep.values {
         let mut step = problem.clone();
@@ -228,54 +375,47 @@ fn log_load_sweep(stream: &RecordingStream, scene: &Scene) -> Result<usize, Reco
         .surface
         .as_ref()
         .ok_or_else(|| rerun_error("no surface"))?;
-    let [dx, dy] = surface.heights.spacing_m();
+    let (x, y) = surface_axes_um(&surface.heights);
+    let range = (0.0, super::round_up(1.03 * highest).max(1e-9));
+    let charts = load_charts(&solutions);
+    let steps = sweep.values.len();
     for (k, (solution, &load)) in solutions.iter().zip(&sweep.values).enumerate() {
         stream.set_time_sequence("load", k as i64);
-        let [ny, nx] = surface.heights.shape();
-        let x = Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx);
-        let y = Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny);
         let indicator = solution
             .pressure_pa
             .mapv(|p| if p > 0.0 { 1.0 } else { 0.0 });
         let outlines = crate::render::contour_lines(indicator.view(), &x, &y, 0.5);
-        let figure = Figure {
-            title: "pressure".into(),
-            panels: vec![crate::render::Panel {
-                subtitle: format!(
-                    "W = {load:.4} N: {} spots, {:.2} % in contact",
-                    solution.spots,
-                    100.0 * solution.contact_fraction
-                ),
-                x,
-                z: y,
-                values: solution.pressure_pa.mapv(|p| p * 1e-6),
-                traction: Vec::new(),
-                half_width: 0.0,
-                outlines,
-                scale: None,
-            }],
-            value_label: "p (MPa)".into(),
-            x_label: "x (µm)".into(),
-            z_label: "y (µm)".into(),
-            vertical_is_depth: false,
-            traction_label: String::new(),
-            colormap: ColorMap::Inferno,
-            levels: crate::render::Levels::Count(0),
-            mark: crate::render::Mark::Max,
-            panel_width_px: 400,
-        };
-        log_map(
+        let text = format!(
+            "{}: {} spots, {} % in contact",
+            sweep.describe(k, scene),
+            solution.spots,
+            section::short(100.0 * solution.contact_fraction)
+        );
+        let figure = pressure_figure(Panel {
+            subtitle: text.clone(),
+            x,
+            z: y,
+            values: solution.pressure_pa.mapv(|p| p * 1e-6),
+            traction: Vec::new(),
+            half_width: 0.0,
+            outlines,
+            scale: None,
+        });
+        let shown = section::displayed(&figure, &figure.panels[0]);
+        if k == 0 {
+            log_map_static(stream, "contact", frame, &figure, &shown, range)?;
+        }
+        log_map_step(
             stream,
+            When::Step,
             "contact",
+            frame,
             &figure,
-            Some((0.0, highest)),
-            false,
-            k == 0,
+            &shown,
+            range,
+            &format!("step {} of {steps}: {text}", k + 1),
         )?;
-        stream.log(
-            "log",
-            &rerun::TextLog::new(format!("step {k}: {}", figure.panels[0].subtitle)),
-        )?;
+        stream.log("log", &rerun::TextLog::new(format!("step {k}: {text}")))?;
         stream.log("series/load_n", &rerun::Scalars::new([load]))?;
         stream.log(
             "series/contact_fraction",
@@ -289,16 +429,105 @@ fn log_load_sweep(stream: &RecordingStream, scene: &Scene) -> Result<usize, Reco
             "series/max_pressure_mpa",
             &rerun::Scalars::new([solution.max_pressure_pa * 1e-6]),
         )?;
+        for chart in &charts {
+            let png = chart.png(&sweep.values, k)?;
+            stream.log(
+                format!("charts/{}", chart.name),
+                &rerun::EncodedImage::from_file_contents(png),
+            )?;
+        }
+        flush()?;
     }
     Ok(solutions.len())
 }
 
+/// A quantity of the load sweep against the load, drawn up to the current step.
+struct LoadChart {
+    /// Entity name under `charts/`.
+    name: &'static str,
+    title: &'static str,
+    y_label: &'static str,
+    values: Vec<f64>,
+    colour: [u8; 3],
+}
+
+/// The charts of a rough load sweep: one quantity (one unit) each.
+fn load_charts(solutions: &[crate::contact::rough::RoughSolution]) -> Vec<LoadChart> {
+    let of = |f: &dyn Fn(&crate::contact::rough::RoughSolution) -> f64| {
+        solutions.iter().map(f).collect::<Vec<f64>>()
+    };
+    vec![
+        LoadChart {
+            name: "contact_fraction",
+            title: "real area against load",
+            y_label: "real area A/A0 (%)",
+            values: of(&|s| 100.0 * s.contact_fraction),
+            colour: PALETTE[0],
+        },
+        LoadChart {
+            name: "spots",
+            title: "contact spots against load",
+            y_label: "spots",
+            values: of(&|s| s.spots as f64),
+            colour: PALETTE[2],
+        },
+        LoadChart {
+            name: "max_pressure",
+            title: "largest pressure against load",
+            y_label: "max p (MPa)",
+            values: of(&|s| s.max_pressure_pa * 1e-6),
+            colour: PALETTE[1],
+        },
+    ]
+}
+
+impl LoadChart {
+    /// The chart at step `current` (the steps so far, the current one marked) as a PNG.
+    fn png(&self, loads: &[f64], current: usize) -> Result<Vec<u8>, RecordError> {
+        let span = |values: &[f64]| {
+            values
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+                    (a.min(v), b.max(v))
+                })
+        };
+        let (x_lo, x_hi) = span(loads);
+        let (_, y_hi) = span(&self.values);
+        let mut chart = Chart::new(self.title, "W (N)", self.y_label);
+        chart.x_range = Some((x_lo.min(0.0), x_hi));
+        chart.y_range = Some((0.0, (1.08 * y_hi).max(1e-9)));
+        chart.width_px = 520;
+        chart.height_px = 400;
+        chart.series.push(Series {
+            label: String::new(),
+            points: loads
+                .iter()
+                .zip(&self.values)
+                .take(current + 1)
+                .map(|(&x, &y)| (x, y))
+                .collect(),
+            style: Style::Line,
+            colour: self.colour,
+        });
+        chart.series.push(Series {
+            label: String::new(),
+            points: vec![(loads[current], self.values[current])],
+            style: Style::Markers,
+            colour: self.colour,
+        });
+        let image = chart_png(&chart).map_err(rerun_error)?;
+        crate::render::encode_png(&image).map_err(rerun_error)
+    }
+}
+
 /// The scene's stress quantity in planes parallel to the surface, stepping down on the
-/// `depth` timeline (um).
+/// `depth` timeline, in the view framed by `frame`.
 fn log_depth_steps(
     stream: &RecordingStream,
     scene: &Scene,
+    frame: &Frame,
     on_row: &(dyn Fn() + Sync),
+    flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<(), RecordError> {
     let solution = rough_study::solve(scene, &mut |_, _| {}).map_err(rerun_error)?;
     let stresses =
@@ -337,12 +566,14 @@ fn log_depth_steps(
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
             (a.min(v), b.max(v))
         });
+    let count = maps.len();
     for (k, (z, values)) in maps.into_iter().enumerate() {
         stream.set_time_sequence("depth", k as i64);
+        let depth_um = z * REFERENCE_LENGTH_M * 1e6;
         let figure = Figure {
             title: quantity.description().into(),
-            panels: vec![crate::render::Panel {
-                subtitle: format!("z = {:.2} µm", z * REFERENCE_LENGTH_M * 1e6),
+            panels: vec![Panel {
+                subtitle: String::new(),
                 x: Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx),
                 z: Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny),
                 values,
@@ -358,83 +589,119 @@ fn log_depth_steps(
             traction_label: String::new(),
             colormap: scene.figure.colormap,
             levels: crate::render::Levels::Count(0),
-            mark: crate::render::Mark::Max,
+            mark: Mark::Max,
             panel_width_px: 400,
         };
-        log_map(stream, "depth", &figure, Some((lo, hi)), false, k == 0)?;
-        stream.log(
-            "series/depth_um",
-            &rerun::Scalars::new([z * REFERENCE_LENGTH_M * 1e6]),
+        let range = map_range(&figure, &figure.panels[0], Some((lo, hi)));
+        let shown = section::displayed(&figure, &figure.panels[0]);
+        if k == 0 {
+            log_map_static(stream, "depth", frame, &figure, &shown, range)?;
+        }
+        let title = format!(
+            "layer {} of {count}: z = {} µm below the surface, under {}",
+            k + 1,
+            crate::scene::compact(depth_um),
+            load_text(&solution)
+        );
+        log_map_step(
+            stream,
+            When::Step,
+            "depth",
+            frame,
+            &figure,
+            &shown,
+            range,
+            &title,
         )?;
+        stream.log("series/depth_um", &rerun::Scalars::new([depth_um]))?;
+        flush()?;
     }
     Ok(())
 }
 
-/// The layout: the sheet image and the 3-D topography first, then the maps; the description
-/// and series beside them.
-fn send_blueprint(
-    stream: &RecordingStream,
-    maps: &[&Figure],
-    scene: &Scene,
-) -> Result<(), RecordError> {
-    use rerun::blueprint::{
-        Blueprint, BlueprintActivation, ContainerLike, Grid, Horizontal, Spatial2DView,
-        Spatial3DView, Tabs, TextDocumentView, TextLogView, TimeSeriesView, Vertical,
+/// The load of a solved contact: `W = 0.8 N`.
+fn load_text(solution: &crate::contact::rough::RoughSolution) -> String {
+    format!("W = {} N", crate::scene::compact(solution.load_n))
+}
+
+/// The frames of the 2-D views that the layout shows.
+struct Frames<'a> {
+    maps: &'a [Frame],
+    contact: Option<&'a Frame>,
+    depth: Option<&'a Frame>,
+    /// The timeline the time panel opens on.
+    timeline: Option<&'static str>,
+}
+
+/// The layout: the map views (for a rough scene first the pressure against load and the
+/// stress through depth), the sheet image (the figure, with its colour bars and charts) in
+/// tabs; beside them the charts against load (one quantity each) over the report, the 3-D
+/// topography and the steps.
+fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
+    let view2d = |name: String, origin: &str, frame: Option<&Frame>| {
+        Node::View(View::new(
+            ViewKind::Spatial2D(frame.map(|f| f.bounds)),
+            name,
+            origin,
+        ))
     };
-    let mut views: Vec<ContainerLike> = vec![
-        Spatial2DView::new("figure").with_origin("sheet").into(),
-        Spatial3DView::new("topography (heights exaggerated)")
-            .with_origin("topography")
-            .into(),
-    ];
-    let rough = scene.contact.kind == ContactKind::Rough;
-    if rough {
-        if scene.sweep.is_some() {
-            views.push(
-                Spatial2DView::new("pressure against load")
-                    .with_origin("contact")
-                    .into(),
-            );
-        }
-        views.push(
-            Spatial2DView::new("stress stepping through depth")
-                .with_origin("depth")
-                .into(),
-        );
+    let mut main: Vec<Node> = Vec::new();
+    if let Some(frame) = frames.contact {
+        main.push(view2d(
+            "contact pressure (MPa) against load: timeline `load`".into(),
+            "contact",
+            Some(frame),
+        ));
     }
-    for (k, map) in maps.iter().enumerate() {
-        views.push(
-            Spatial2DView::new(map.title.clone())
-                .with_origin(format!("maps/{k}"))
-                .into(),
-        );
+    if let Some(frame) = frames.depth {
+        main.push(view2d(
+            format!(
+                "{} through depth: timeline `depth`",
+                scene
+                    .figure
+                    .stress_unit
+                    .label(scene.figure.quantity.symbol())
+            ),
+            "depth",
+            Some(frame),
+        ));
     }
-    let mut side: Vec<ContainerLike> = vec![Tabs::new(vec![TextDocumentView::new("report")
-        .with_origin("description")
-        .into()])
-    .into()];
-    if rough {
-        // One plot per quantity: their units differ.
-        if scene.sweep.is_some() {
-            for (name, path) in [
-                ("real area fraction", "series/contact_fraction"),
-                ("contact spots", "series/spots"),
-                ("max pressure (MPa)", "series/max_pressure_mpa"),
-            ] {
-                side.push(TimeSeriesView::new(name).with_origin(path).into());
-            }
-        }
-        if scene.sweep.is_some() {
-            side.push(TextLogView::new("steps").with_origin("log").into());
-        }
+    main.push(view2d("figure".into(), "sheet", None));
+    for (k, (map, frame)) in maps.iter().zip(frames.maps).enumerate() {
+        main.push(view2d(map.title.clone(), &format!("maps/{k}"), Some(frame)));
     }
-    let root = Horizontal::new([Grid::new(views).into(), Vertical::new(side).into()]);
-    Blueprint::new(root).send(
-        stream,
-        BlueprintActivation {
-            make_active: true,
-            make_default: true,
-        },
-    )?;
-    Ok(())
+    let main = Node::Tabs(main, 0);
+    let mut side = vec![Node::View(View::new(
+        ViewKind::TextDocument,
+        "report",
+        "description",
+    ))];
+    side.push(Node::View(View::new(
+        ViewKind::Spatial3D(None),
+        "topography (heights exaggerated)",
+        "topography",
+    )));
+    let mut plots = Vec::new();
+    if frames.contact.is_some() {
+        for (name, path) in [
+            ("real area against W", "charts/contact_fraction"),
+            ("spots against W", "charts/spots"),
+            ("largest pressure against W", "charts/max_pressure"),
+        ] {
+            plots.push(view2d(name.into(), path, None));
+        }
+        side.push(Node::View(View::new(ViewKind::TextLog, "steps", "log")));
+    }
+    let side = if plots.is_empty() {
+        Node::Tabs(side, 0)
+    } else {
+        Node::Vertical(
+            vec![Node::Tabs(plots, 0), Node::Tabs(side, 0)],
+            vec![1.0, 1.0],
+        )
+    };
+    Layout {
+        root: Node::Horizontal(vec![main, side], vec![super::MAIN_SHARE, super::SIDE_SHARE]),
+        timeline: frames.timeline.map(str::to_string),
+    }
 }

@@ -22,7 +22,7 @@ pub use spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
     RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
 };
-pub use sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
+pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
 
 /// The scene format this build reads.
 pub const FORMAT: i64 = 1;
@@ -89,7 +89,7 @@ pub struct Scene {
     pub tractions: Option<std::sync::Arc<TractionGrid>>,
     /// A recording scene's sweep: one time point per value.
     pub sweep: Option<Sweep>,
-    /// A recording scene's 3-D point cloud (point contacts).
+    /// A recording scene's 3-D volume, recorded as iso-surfaces (point contacts).
     pub volume: Option<VolumeSpec>,
     /// The x position of the contact's centre on the body (units of a; a moving load's step).
     pub load_centre_over_a: f64,

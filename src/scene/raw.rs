@@ -91,7 +91,7 @@ pub struct RawSweep {
     pub material_points: Option<Vec<Vec<f64>>>,
 }
 
-/// `[volume]`: a box under a point contact, recorded as a point cloud.
+/// `[volume]`: a box under a point contact, recorded as nested iso-surfaces.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawVolume {

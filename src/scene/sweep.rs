@@ -1,5 +1,5 @@
 //! Recording scenes: a `[sweep]` of friction, load or the load's position (one step per time
-//! point of a recording), and a `[volume]` recorded as a 3-D point cloud.
+//! point of a recording), and a `[volume]` recorded as 3-D iso-surfaces.
 
 use super::{ContactKind, Scene};
 use crate::contact::{ContactError, LineContact, PointContact};
@@ -57,19 +57,58 @@ impl Sweep {
     pub fn describe(&self, k: usize, scene: &Scene) -> String {
         let value = self.values[k];
         match self.parameter {
-            SweepParameter::Friction => format!("μ = {}", crate::text::number(value)),
+            SweepParameter::Friction => format!("μ = {}", compact(value)),
             SweepParameter::Load if scene.contact.kind == ContactKind::Line => {
-                format!("P = {} kN/m", crate::text::fixed(value * 1e-3, 4))
+                format!("P = {} kN/m", compact(value * 1e-3))
             }
-            SweepParameter::Load => format!("W = {} N", crate::text::fixed(value, 4)),
+            SweepParameter::Load => format!("W = {} N", compact(value)),
             SweepParameter::Position => {
-                format!("x0 = {value:.4}{}", scene.figure.length_unit.suffix())
+                format!(
+                    "x0 = {}{}",
+                    compact(value),
+                    scene.figure.length_unit.suffix()
+                )
             }
         }
     }
 }
 
-/// A validated `[volume]`: a box under a point contact recorded as a point cloud.
+/// A number with at most four significant digits and no trailing zeros (`0.15`, `800`,
+/// `−0.866`), in exponent form when very small or large; a typographic minus.
+pub fn compact(value: f64) -> String {
+    if value == 0.0 || !value.is_finite() {
+        return if value.is_finite() {
+            "0".into()
+        } else {
+            value.to_string()
+        };
+    }
+    let magnitude = value.abs();
+    let text = if (1e-3..1e6).contains(&magnitude) {
+        let decimals = (3 - magnitude.log10().floor() as i32).max(0) as usize;
+        let fixed = format!("{value:.decimals$}");
+        if fixed.contains('.') {
+            fixed
+                .trim_end_matches('0')
+                .trim_end_matches('.')
+                .to_string()
+        } else {
+            fixed
+        }
+    } else {
+        let text = format!("{value:.3e}");
+        match text.split_once('e') {
+            Some((mantissa, exponent)) if mantissa.contains('.') => format!(
+                "{}e{exponent}",
+                mantissa.trim_end_matches('0').trim_end_matches('.')
+            ),
+            _ => text,
+        }
+    };
+    text.replace('-', "\u{2212}")
+}
+
+/// A validated `[volume]`: a box under a point contact recorded as nested iso-surfaces.
 #[derive(Clone, Debug, PartialEq)]
 pub struct VolumeSpec {
     pub quantity: Quantity,
@@ -79,7 +118,7 @@ pub struct VolumeSpec {
     pub z: (f64, f64),
     /// Samples along the longest side; the others follow with the same spacing.
     pub points: usize,
-    /// Only points whose |value| is at least this fraction of the largest are kept.
+    /// The lowest iso-surface, as a fraction of the largest |value| (the others up to 90 %).
     pub threshold: f64,
 }
 
@@ -121,5 +160,22 @@ impl super::Contact {
             dimensional: Some(dimensional),
             ..*self
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::compact;
+
+    #[test]
+    fn compact_numbers_drop_trailing_zeros_and_noise() {
+        assert_eq!(compact(0.15000000000000002), "0.15");
+        assert_eq!(compact(800.0), "800");
+        assert_eq!(compact(100.0), "100");
+        assert_eq!(compact(-0.8660254037844386), "\u{2212}0.866");
+        assert_eq!(compact(-3.0), "\u{2212}3");
+        assert_eq!(compact(0.0), "0");
+        assert_eq!(compact(2.5e-5), "2.5e\u{2212}5");
+        assert_eq!(compact(1234.5678), "1235");
     }
 }

@@ -12,6 +12,7 @@ pub mod stats;
 pub mod x3p;
 
 use ndarray::Array2;
+use rayon::prelude::*;
 
 /// Why a height map cannot be built.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -63,10 +64,12 @@ impl HeightMap {
         if !(spacing_ok(dx) && spacing_ok(dy)) {
             return Err(SurfaceError::Spacing { dx, dy });
         }
-        if let Some(((row, column), &value)) =
-            heights_m.indexed_iter().find(|(_, v)| !v.is_finite())
-        {
-            return Err(SurfaceError::NotFinite { row, column, value });
+        if !heights_m.par_iter().all(|v| v.is_finite()) {
+            if let Some(((row, column), &value)) =
+                heights_m.indexed_iter().find(|(_, v)| !v.is_finite())
+            {
+                return Err(SurfaceError::NotFinite { row, column, value });
+            }
         }
         if let Some(((row, column), &value)) = heights_m
             .indexed_iter()

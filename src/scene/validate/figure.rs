@@ -28,7 +28,7 @@ impl Validator<'_> {
         value_over_a: f64,
         written: &str,
     ) -> Result<f64, SceneError> {
-        if !(value_over_a.is_finite() && value_over_a.abs() <= REACH_OVER_A) {
+        if value_over_a.is_nan() || value_over_a.abs() > REACH_OVER_A {
             return Err(self.error(
                 key,
                 format!(

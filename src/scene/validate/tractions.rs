@@ -93,7 +93,7 @@ impl Validator<'_> {
         // In units of p0 every traction must stay a number a sum of many cells can carry.
         let largest = read.largest;
         let over_p0 = largest.magnitude * stress;
-        if !(over_p0.is_finite() && over_p0 <= MAX_TRACTION_OVER_P0) {
+        if over_p0.is_nan() || over_p0 > MAX_TRACTION_OVER_P0 {
             return Err(self.error(
                 "tractions.file",
                 format!(

@@ -1,0 +1,462 @@
+//! Where a recording goes: a file, standard output, or a Rerun viewer (started here, or one
+//! already running), step by step as the steps are computed.
+//!
+//! A file is encoded here rather than by Rerun's own file sink, so that a failure names the
+//! file and the system's reason ("No space left on device") and no rename ever replaces
+//! something that is not a regular file:
+//! - a new path or a regular file: written into a temporary file beside it (registered with
+//!   [`crate::output::Pending`], so that an interruption removes it) and renamed over it once
+//!   complete;
+//! - a symbolic link: followed; its target is treated by these rules (the link stays);
+//! - a character device or a FIFO (`/dev/null`, a named pipe): written through, as a shell's
+//!   `>` would;
+//! - a directory, a block device or a socket: refused.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, MutexGuard};
+
+use rerun::external::re_log_encoding::{CrateVersion, EncodeError, Encoder, EncodingOptions};
+use rerun::log::LogMsg;
+use rerun::sink::{LogSink, SinkFlushError};
+use rerun::RecordingStream;
+
+use super::{RecordError, APPLICATION_ID};
+use crate::output::Pending;
+
+/// The address `--connect` uses when none is given: a viewer on this machine, default port.
+pub const DEFAULT_VIEWER_URL: &str = rerun::DEFAULT_CONNECT_URL;
+
+/// Where to send a recording.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Destination {
+    /// A file (see the module doc for links, devices and FIFOs).
+    File(PathBuf),
+    /// Standard output (`-o -`), e.g. piped into `rerun -`.
+    Stdout,
+    /// A new viewer, started here (`rerun` must be on the PATH).
+    Spawn,
+    /// A running viewer at this gRPC address (e.g. [`DEFAULT_VIEWER_URL`]).
+    Connect(String),
+}
+
+impl std::fmt::Display for Destination {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Destination::File(path) => write!(f, "{}", path.display()),
+            Destination::Stdout => write!(f, "standard output"),
+            Destination::Spawn => write!(f, "a new Rerun viewer"),
+            Destination::Connect(url) => write!(f, "the Rerun viewer at {url}"),
+        }
+    }
+}
+
+/// How a file target is written.
+#[derive(Debug, PartialEq, Eq)]
+enum FileKind {
+    /// Into a temporary file in the same directory, then renamed to this path.
+    Replace(PathBuf),
+    /// Opened and written in place (a character device or a FIFO).
+    Through(PathBuf),
+}
+
+/// Decides how `path` is written, or why it cannot be (see the module doc).
+fn file_kind(path: &Path) -> Result<FileKind, String> {
+    let metadata = match std::fs::symlink_metadata(path) {
+        Ok(metadata) => metadata,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Ok(FileKind::Replace(path.to_path_buf()))
+        }
+        Err(e) => return Err(e.to_string()),
+    };
+    let kind = metadata.file_type();
+    if kind.is_symlink() {
+        let target = std::fs::canonicalize(path)
+            .map_err(|e| format!("it is a symbolic link whose target cannot be reached ({e})"))?;
+        return match file_kind(&target)? {
+            // The target is a new file or a regular one: replace it, keep the link.
+            FileKind::Replace(_) => Ok(FileKind::Replace(target)),
+            through => Ok(through),
+        };
+    }
+    if kind.is_file() {
+        return Ok(FileKind::Replace(path.to_path_buf()));
+    }
+    if kind.is_dir() {
+        return Err("it is a directory".into());
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if kind.is_char_device() || kind.is_fifo() {
+            return Ok(FileKind::Through(path.to_path_buf()));
+        }
+        if kind.is_block_device() {
+            return Err(
+                "it is a block device (a disk): a recording is never written onto one".into(),
+            );
+        }
+        if kind.is_socket() {
+            return Err("it is a socket".into());
+        }
+    }
+    Err("it is not a regular file".into())
+}
+
+/// The encoder of a file or standard output, and the first error it met.
+struct Writer {
+    encoder: Option<Encoder<Box<dyn Write + Send>>>,
+    error: Option<std::io::Error>,
+}
+
+impl Writer {
+    fn fail(&mut self, error: EncodeError) {
+        if self.error.is_none() {
+            self.error = Some(match error {
+                EncodeError::Write(e) => e,
+                other => std::io::Error::other(other.to_string()),
+            });
+        }
+        // Nothing more is written after a failure.
+        self.encoder = None;
+    }
+}
+
+type SharedWriter = Arc<Mutex<Writer>>;
+
+fn lock(writer: &SharedWriter) -> MutexGuard<'_, Writer> {
+    writer
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
+/// A Rerun log sink that encodes every message into a [`Writer`].
+struct WriterSink(SharedWriter);
+
+impl LogSink for WriterSink {
+    fn send(&self, message: LogMsg) {
+        let mut writer = lock(&self.0);
+        if let Some(encoder) = writer.encoder.as_mut() {
+            if let Err(e) = encoder.append(&message) {
+                writer.fail(e);
+            }
+        }
+    }
+
+    fn flush_blocking(&self, _timeout: std::time::Duration) -> Result<(), SinkFlushError> {
+        let mut writer = lock(&self.0);
+        if let Some(encoder) = writer.encoder.as_mut() {
+            if let Err(e) = encoder.flush_blocking() {
+                writer.fail(e);
+            }
+        }
+        match &writer.error {
+            Some(e) => Err(SinkFlushError::failed(e.to_string())),
+            None => Ok(()),
+        }
+    }
+}
+
+/// How an open recording is completed.
+enum Completion {
+    /// Rename the temporary file to `path`.
+    Rename {
+        temp: tempfile::TempPath,
+        _pending: Pending,
+        file: std::fs::File,
+        path: PathBuf,
+    },
+    /// Written in place (a device, a FIFO).
+    Through,
+    Stdout,
+    /// A viewer: nothing to complete.
+    Viewer {
+        url: String,
+    },
+}
+
+/// An open recording: its stream, and how to complete it.
+pub struct Output {
+    pub stream: RecordingStream,
+    writer: Option<SharedWriter>,
+    completion: Completion,
+    /// What the user asked for (for messages).
+    destination: Destination,
+}
+
+fn builder(name: &str) -> rerun::RecordingStreamBuilder {
+    rerun::RecordingStreamBuilder::new(APPLICATION_ID)
+        .recording_name(name.to_string())
+        .enabled(true)
+}
+
+impl Output {
+    /// Opens `destination` for the recording named `name` (a file is created at once, a
+    /// viewer started or connected to).
+    pub fn open(destination: &Destination, name: &str) -> Result<Self, RecordError> {
+        let output_error = |path: &Path, message: String| RecordError::Output {
+            path: path.to_path_buf(),
+            message,
+        };
+        let with_writer = |write: Box<dyn Write + Send>, completion: Completion, shown: &Path| {
+            let encoder = Encoder::new_eager(
+                CrateVersion::LOCAL,
+                EncodingOptions::PROTOBUF_COMPRESSED,
+                write,
+            )
+            .map_err(|e| output_error(shown, e.to_string()))?;
+            let writer = Arc::new(Mutex::new(Writer {
+                encoder: Some(encoder),
+                error: None,
+            }));
+            let stream = builder(name).buffered()?;
+            stream.set_sink(Box::new(WriterSink(Arc::clone(&writer))));
+            Ok::<_, RecordError>(Self {
+                stream,
+                writer: Some(writer),
+                completion,
+                destination: destination.clone(),
+            })
+        };
+        match destination {
+            Destination::File(path) => match file_kind(path).map_err(|m| output_error(path, m))? {
+                FileKind::Replace(target) => {
+                    let dir = match target.parent() {
+                        Some(p) if !p.as_os_str().is_empty() => p,
+                        _ => Path::new("."),
+                    };
+                    let temp = tempfile::Builder::new()
+                        .prefix(".stressfield-")
+                        .suffix(".rrd.part")
+                        .tempfile_in(dir)
+                        .map_err(|e| output_error(path, e.to_string()))?;
+                    let pending = Pending::new(temp.path());
+                    let (file, temp) = temp.into_parts();
+                    let write = file
+                        .try_clone()
+                        .map_err(|e| output_error(path, e.to_string()))?;
+                    with_writer(
+                        Box::new(std::io::BufWriter::new(write)),
+                        Completion::Rename {
+                            temp,
+                            _pending: pending,
+                            file,
+                            path: target,
+                        },
+                        path,
+                    )
+                }
+                FileKind::Through(target) => {
+                    let file = std::fs::OpenOptions::new()
+                        .write(true)
+                        .open(&target)
+                        .map_err(|e| output_error(path, e.to_string()))?;
+                    with_writer(
+                        Box::new(std::io::BufWriter::new(file)),
+                        Completion::Through,
+                        path,
+                    )
+                }
+            },
+            Destination::Stdout => {
+                use std::io::IsTerminal;
+                if std::io::stdout().is_terminal() {
+                    return Err(RecordError::Terminal);
+                }
+                with_writer(
+                    Box::new(std::io::BufWriter::new(std::io::stdout())),
+                    Completion::Stdout,
+                    Path::new("standard output"),
+                )
+            }
+            Destination::Spawn => {
+                let stream = builder(name)
+                    .spawn()
+                    .map_err(|e| RecordError::Spawn(e.to_string()))?;
+                Ok(Self {
+                    stream,
+                    writer: None,
+                    completion: Completion::Viewer {
+                        url: DEFAULT_VIEWER_URL.into(),
+                    },
+                    destination: destination.clone(),
+                })
+            }
+            Destination::Connect(url) => {
+                let stream = builder(name).connect_grpc_opts(url.clone()).map_err(|e| {
+                    RecordError::Viewer {
+                        url: url.clone(),
+                        message: e.to_string(),
+                    }
+                })?;
+                Ok(Self {
+                    stream,
+                    writer: None,
+                    completion: Completion::Viewer { url: url.clone() },
+                    destination: destination.clone(),
+                })
+            }
+        }
+    }
+
+    /// Sends what has been logged so far (after each step, so that a viewer shows it).
+    pub fn flush(&self) -> Result<(), RecordError> {
+        self.stream
+            .flush_blocking()
+            .map_err(|e| self.error(e.to_string()))
+    }
+
+    /// The error of this destination: the writer's system error if there was one.
+    fn error(&self, fallback: String) -> RecordError {
+        let system = self
+            .writer
+            .as_ref()
+            .and_then(|w| lock(w).error.as_ref().map(ToString::to_string));
+        match (&self.destination, &self.completion) {
+            (_, Completion::Viewer { url }) => RecordError::Viewer {
+                url: url.clone(),
+                message: fallback,
+            },
+            (Destination::File(path), _) => RecordError::Output {
+                path: path.clone(),
+                message: system.unwrap_or(fallback),
+            },
+            (_, _) => RecordError::Stdout(system.unwrap_or(fallback)),
+        }
+    }
+
+    /// Completes the recording: the footer written and the file renamed into place, or the
+    /// viewer's stream flushed. Whatever fails, a temporary file is removed.
+    pub fn finish(self) -> Result<(), RecordError> {
+        self.flush()?;
+        let Self {
+            stream,
+            writer,
+            completion,
+            destination,
+        } = self;
+        // Every message reaches the sink before the stream is gone.
+        drop(stream);
+        let viewer = match &completion {
+            Completion::Viewer { url } => Some(url.clone()),
+            _ => None,
+        };
+        let fail = |message: String| match (&destination, &viewer) {
+            (Destination::File(path), _) => RecordError::Output {
+                path: path.clone(),
+                message,
+            },
+            (_, Some(url)) => RecordError::Viewer {
+                url: url.clone(),
+                message,
+            },
+            _ => RecordError::Stdout(message),
+        };
+        if let Some(writer) = writer {
+            let mut writer = lock(&writer);
+            if let Some(e) = &writer.error {
+                return Err(fail(e.to_string()));
+            }
+            let mut encoder = writer
+                .encoder
+                .take()
+                .ok_or_else(|| fail("the recording was closed early".into()))?;
+            encoder
+                .finish()
+                .and_then(|()| encoder.flush_blocking())
+                .map_err(|e| match e {
+                    EncodeError::Write(e) => fail(e.to_string()),
+                    other => fail(other.to_string()),
+                })?;
+        }
+        match completion {
+            Completion::Rename {
+                temp,
+                _pending,
+                file,
+                path: target,
+            } => {
+                file.sync_all().map_err(|e| fail(e.to_string()))?;
+                #[cfg(unix)]
+                {
+                    use std::os::unix::fs::PermissionsExt;
+                    std::fs::set_permissions(&temp, std::fs::Permissions::from_mode(0o644))
+                        .map_err(|e| fail(e.to_string()))?;
+                }
+                temp.persist(&target)
+                    .map_err(|e| fail(e.error.to_string()))?;
+                Ok(())
+            }
+            Completion::Through | Completion::Stdout | Completion::Viewer { .. } => Ok(()),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn file_kinds_follow_links_and_refuse_directories() {
+        let dir = tempfile::tempdir().expect("dir");
+        let new = dir.path().join("new.rrd");
+        assert_eq!(file_kind(&new), Ok(FileKind::Replace(new.clone())));
+        std::fs::write(&new, b"old").expect("write");
+        assert_eq!(file_kind(&new), Ok(FileKind::Replace(new.clone())));
+        assert!(file_kind(dir.path())
+            .expect_err("a directory")
+            .contains("directory"));
+        #[cfg(unix)]
+        {
+            let link = dir.path().join("link.rrd");
+            std::os::unix::fs::symlink(&new, &link).expect("symlink");
+            let target = std::fs::canonicalize(&new).expect("canonical");
+            assert_eq!(file_kind(&link), Ok(FileKind::Replace(target)));
+            let dangling = dir.path().join("dangling.rrd");
+            std::os::unix::fs::symlink(dir.path().join("missing/x.rrd"), &dangling)
+                .expect("symlink");
+            assert!(file_kind(&dangling)
+                .expect_err("dangling")
+                .contains("symbolic link"));
+            let null = Path::new("/dev/null");
+            if null.exists() {
+                assert_eq!(file_kind(null), Ok(FileKind::Through(null.to_path_buf())));
+            }
+        }
+    }
+
+    /// A writer that fails as a full disk does.
+    struct FullDisk;
+
+    impl Write for FullDisk {
+        fn write(&mut self, _: &[u8]) -> std::io::Result<usize> {
+            Err(std::io::Error::from_raw_os_error(28))
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn a_write_error_is_kept_and_reported_by_flush() {
+        let writer = Arc::new(Mutex::new(Writer {
+            encoder: None,
+            error: None,
+        }));
+        // The header write fails at once, as on a full disk.
+        let error = Encoder::new_eager(
+            CrateVersion::LOCAL,
+            EncodingOptions::PROTOBUF_COMPRESSED,
+            Box::new(FullDisk) as Box<dyn Write + Send>,
+        )
+        .err()
+        .expect("the header cannot be written");
+        lock(&writer).fail(error);
+        let sink = WriterSink(Arc::clone(&writer));
+        let message = sink
+            .flush_blocking(std::time::Duration::from_secs(1))
+            .expect_err("the error is reported")
+            .to_string();
+        assert!(message.contains("No space left on device"), "{message}");
+    }
+}

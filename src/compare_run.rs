@@ -8,6 +8,7 @@ use anyhow::{bail, Context, Result};
 use crate::cli::{CompareArgs, MeasureArg};
 use stressfield::compare::{self, Tolerance};
 use stressfield::field_file::{self, PanelField};
+use stressfield::input::{self, InputError};
 use stressfield::output::{write_atomic, Staged};
 use stressfield::regression::{self, FieldCheck, ImageCheck, ImageMeasure, SceneOutcome, Status};
 use stressfield::render;
@@ -125,11 +126,12 @@ pub struct Rendered<'a> {
     pub axes: [String; 2],
 }
 
-/// A reference file: its bytes, or `None` when it does not exist.
+/// A reference file: its bytes, or `None` when it does not exist; at most
+/// [`input::REFERENCE_FILE_LIMIT`] bytes (a wrong file such as `/dev/zero` fails at once).
 fn read_reference(path: &Path) -> Result<Option<Vec<u8>>> {
-    match std::fs::read(path) {
+    match input::read_bytes(path, input::REFERENCE_FILE_LIMIT) {
         Ok(bytes) => Ok(Some(bytes)),
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
+        Err(InputError::Io(e)) if e.kind() == std::io::ErrorKind::NotFound => Ok(None),
         Err(e) => Err(e).with_context(|| format!("cannot read {}", path.display())),
     }
 }

@@ -53,6 +53,26 @@ pub fn read_to_string(path: &Path, limit: u64) -> Result<String, InputError> {
     read_all_with_capacity(file, limit, capacity)
 }
 
+/// The largest reference file of a regression run (`render --compare`: a PNG or a field
+/// archive): a quarter of the memory a figure may use, so the largest figure's field fits.
+pub const REFERENCE_FILE_LIMIT: u64 = (crate::field::MAX_FIELD_BYTES / 4) as u64;
+
+/// Reads the whole of `path` as bytes, failing as soon as more than `limit` bytes come.
+pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, InputError> {
+    let file = std::fs::File::open(path)?;
+    // A regular file's size is known: beyond the limit it fails before a byte is read.
+    let size = file.metadata().map_or(0, |m| m.len());
+    if size > limit {
+        return Err(InputError::TooLarge { limit });
+    }
+    let mut bytes = Vec::with_capacity(size as usize + 1);
+    file.take(limit.saturating_add(1)).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > limit {
+        return Err(InputError::TooLarge { limit });
+    }
+    Ok(bytes)
+}
+
 /// Reads all of `reader` as UTF-8 text, failing as soon as more than `limit` bytes come.
 pub fn read_all(reader: impl Read, limit: u64) -> Result<String, InputError> {
     read_all_with_capacity(reader, limit, 0)
@@ -166,6 +186,28 @@ mod tests {
         assert!(error.to_string().contains("1 KiB"), "{error}");
         let error = read_all(&b"ok\n\xff\n"[..], 100).expect_err("binary");
         assert!(error.to_string().contains("line 2"), "{error}");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn byte_reads_stop_at_the_limit() {
+        let error = read_bytes(Path::new("/dev/zero"), 4096).expect_err("endless");
+        assert!(
+            matches!(error, InputError::TooLarge { limit: 4096 }),
+            "{error}"
+        );
+        let dir = tempfile::tempdir().expect("temp dir");
+        let path = dir.path().join("f");
+        std::fs::write(&path, b"\x89PNG").expect("write");
+        assert_eq!(read_bytes(&path, 4).expect("fits"), b"\x89PNG");
+        assert!(read_bytes(&path, 3).is_err());
+        // A large (sparse) file fails by its size, before it is read.
+        let file = std::fs::File::create(&path).expect("create");
+        file.set_len(1 << 40).expect("sparse");
+        assert!(matches!(
+            read_bytes(&path, 1 << 20),
+            Err(InputError::TooLarge { .. })
+        ));
     }
 
     #[test]

@@ -178,6 +178,36 @@ fn render_to_an_unwritable_place_fails_cleanly() {
     }
 }
 
+/// Issue 13, case 6: the references of a regression run are read within a limit too: a
+/// reference that is a huge file (or a device) fails at once, naming it and the limit.
+#[cfg(unix)]
+#[test]
+fn regression_references_are_read_within_a_limit() {
+    let (dir, scene) = scene_file(SMALL_SCENE);
+    let reference = dir.path().join("reference");
+    std::fs::create_dir(&reference).expect("mkdir");
+    // Sparse files of a tebibyte (no disk space); devices are read up to the limit (unit test
+    // of `input::read_bytes` with /dev/zero).
+    for name in ["case.png", "case.npz"] {
+        let file = std::fs::File::create(reference.join(name)).expect("create");
+        file.set_len(1 << 40).expect("sparse");
+    }
+    let out = dir.path().join("out");
+    let output = run(&[
+        "render",
+        scene.to_str().expect("utf8"),
+        "--out-dir",
+        out.to_str().expect("utf8"),
+        "--compare",
+        reference.to_str().expect("utf8"),
+    ]);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    let text = format!("{}{}", stdout(&output), stderr(&output));
+    for fragment in ["case.png", "case.npz", "larger than the 1 GiB allowed"] {
+        assert!(text.contains(fragment), "missing `{fragment}` in:\n{text}");
+    }
+}
+
 #[test]
 fn render_compare_detects_changes_and_writes_a_diff() {
     let (dir, scene) = scene_file(SMALL_SCENE);

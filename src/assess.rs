@@ -145,7 +145,35 @@ fn layer_maxima(
     Ok(found.into_inner().unwrap_or_else(|e| e.into_inner()))
 }
 
+/// Layers one cell apart from the surface down to this many cells; deeper ones each
+/// [`DEEP_LAYER_GROWTH`] times as deep as the one above (the field is smoother there).
+const UNIFORM_LAYERS: usize = 32;
+const DEEP_LAYER_GROWTH: f64 = 1.08;
+
+/// The search depths from 0 to `depth`: [`UNIFORM_LAYERS`] steps of `dz`, then a geometric
+/// progression, the last at `depth`.
+fn search_depths(dz: f64, depth: f64) -> Vec<f64> {
+    let mut depths = vec![0.0];
+    loop {
+        let last = depths[depths.len() - 1];
+        let step = if depths.len() > UNIFORM_LAYERS {
+            (DEEP_LAYER_GROWTH - 1.0) * last
+        } else {
+            dz
+        };
+        if last + 0.5 * step >= depth {
+            break;
+        }
+        depths.push((last + step).min(depth));
+    }
+    depths
+}
+
 /// [`grid_maxima`] searched no deeper than `max_depth` (units of a) either.
+///
+/// Layers are one cell apart near the surface and farther apart at depth ([`search_depths`]);
+/// around each quantity's best layer, seven more on each side, an eighth of the distance to
+/// the neighbouring layer apart.
 pub fn grid_maxima_to_depth(
     tractions: &PointTractions,
     max_depth: f64,
@@ -155,22 +183,29 @@ pub fn grid_maxima_to_depth(
     let cell = grid.cell();
     let dz = cell[0].min(cell[1]);
     let depth = (0.5 * (nx as f64 * cell[0]).min(ny as f64 * cell[1])).min(max_depth.max(dz));
-    let layers = (depth / dz).floor() as usize + 1;
-    let mut depths: Vec<f64> = (0..layers).map(|k| k as f64 * dz).collect();
+    let mut depths = search_depths(dz, depth);
+    let layers = depths.len();
     let mut found = layer_maxima(tractions, &depths)?;
     let best_layer = |k: usize, found: &[LayerMaxima], range: std::ops::Range<usize>| {
         range
             .max_by(|&i, &j| found[i].0[k].0.total_cmp(&found[j].0[k].0))
             .unwrap_or(0)
     };
-    // Between the neighbours of each quantity's best layer, every dz/8.
+    // Between the neighbours of each quantity's best layer, eighths of the gaps.
     let mut fine: Vec<f64> = Vec::new();
     for k in 0..2 {
-        let z = depths[best_layer(k, &found, 0..layers)];
-        for step in -7i32..=7 {
-            let fine_z = z + f64::from(step) * dz / 8.0;
-            if step != 0 && (0.0..=depth).contains(&fine_z) && !fine.contains(&fine_z) {
-                fine.push(fine_z);
+        let best = best_layer(k, &found, 0..layers);
+        let z = depths[best];
+        let below = depths.get(best + 1).map_or(0.0, |d| d - z);
+        let above = if best > 0 { z - depths[best - 1] } else { 0.0 };
+        for step in 1..=7 {
+            for fine_z in [
+                z - f64::from(step) * above / 8.0,
+                z + f64::from(step) * below / 8.0,
+            ] {
+                if fine_z != z && (0.0..=depth).contains(&fine_z) && !fine.contains(&fine_z) {
+                    fine.push(fine_z);
+                }
             }
         }
     }
@@ -223,6 +258,28 @@ impl StressMaxima {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn search_depths_are_uniform_near_the_surface_and_sparser_below() {
+        let depths = search_depths(1.0, 230.0);
+        assert_eq!(depths[0], 0.0);
+        for (k, z) in depths.iter().enumerate().take(UNIFORM_LAYERS + 1) {
+            assert_eq!(*z, k as f64);
+        }
+        assert!(depths.windows(2).all(|w| w[1] > w[0]));
+        let last = depths[depths.len() - 1];
+        assert!(last <= 230.0 && last > 230.0 - 0.5 * 230.0 * (DEEP_LAYER_GROWTH - 1.0));
+        // 32 unit steps, then about ln(230/32)/ln(1.08) = 26 growing ones (230 uniform before).
+        assert!((57..=60).contains(&depths.len()), "{}", depths.len());
+        assert!(
+            (depths[UNIFORM_LAYERS + 1] / depths[UNIFORM_LAYERS] - DEEP_LAYER_GROWTH).abs() < 1e-12
+        );
+        // A shallow search is unchanged: one cell apart to the end.
+        assert_eq!(
+            search_depths(0.5, 3.0),
+            vec![0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0]
+        );
+    }
     use approx::assert_relative_eq;
 
     #[test]

@@ -213,6 +213,10 @@ pub struct SurfaceArgs {
     /// Print one JSON object (SI units) instead of the table.
     #[arg(long)]
     pub json: bool,
+    /// Also write the heights as read or generated (before levelling; m, float64,
+    /// [rows, columns], row = y) as a NumPy .npy file.
+    #[arg(long, value_name = "FILE.npy")]
+    pub heights: Option<PathBuf>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

@@ -15,6 +15,7 @@ use stressfield::probe;
 use stressfield::scene::{ContactKind, Method, PanelSpec, Scene};
 use stressfield::solution::Solution;
 use stressfield::study;
+use stressfield::text;
 use stressfield::{figure, render, report};
 
 pub fn run(command: Command) -> Result<()> {
@@ -84,15 +85,30 @@ pub fn run(command: Command) -> Result<()> {
     }
 }
 
-/// Writes `text` to standard output. A closed pipe (`| head`) ends quietly; any other failure
-/// (a full disk) is an error naming standard output.
+/// Writes `text` to standard output (see [`with_stdout`]).
 pub(crate) fn print_out(text: &str) -> Result<()> {
-    let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+    with_stdout(|out| out.write_all(text.as_bytes()))
+}
+
+/// The one path of every command's output: `write` into standard output (buffered), then
+/// flush. A closed pipe (`| head`) ends quietly, as the reader asked for no more; any other
+/// failure (a full disk, `> /dev/full`) is an error naming standard output.
+pub(crate) fn with_stdout(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<()> {
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    match write(&mut out).and_then(|()| out.flush()) {
         Ok(()) => Ok(()),
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
         Err(e) => Err(e).context("cannot write to standard output"),
     }
+}
+
+/// Writes a line to standard error. Messages and errors are the last thing a run can say:
+/// when standard error itself cannot be written (closed, full), there is nobody left to tell,
+/// and the exit code still reports the failure.
+pub(crate) fn print_err(line: &str) {
+    let mut err = std::io::stderr().lock();
+    let _ = writeln!(err, "{line}");
 }
 
 /// The scenes named, or every `*.toml` in `scenes_dir` in name order.
@@ -131,7 +147,7 @@ pub(crate) fn progress_bar(total: u64) -> ProgressBar {
 /// Prints a line above the progress bar, or on stderr when the bar is hidden (not a terminal).
 fn say(bar: &ProgressBar, line: impl AsRef<str>) {
     if bar.is_hidden() {
-        eprintln!("{}", line.as_ref());
+        print_err(line.as_ref());
     } else {
         bar.println(line);
     }
@@ -161,7 +177,7 @@ fn load_scenes(paths: &[PathBuf], failures: &mut Vec<String>) -> Vec<Scene> {
         match Scene::load(path) {
             Ok(scene) => scenes.push(scene),
             Err(e) => {
-                eprintln!("error: {e}");
+                print_err(&format!("error: {e}"));
                 failures.push(path.display().to_string());
             }
         }
@@ -240,7 +256,7 @@ fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Res
     }
     bar.finish_and_clear();
     if let Some(compare) = options.compare {
-        let say = |line: String| eprintln!("{line}");
+        let say = |line: String| print_err(&line);
         return compare_run::finish(&outcomes, compare, out_dir, &failures, recordings, &say);
     }
     fail_if_any(&failures, paths.len())?;
@@ -496,7 +512,7 @@ fn check(paths: &[PathBuf]) -> Result<()> {
                 check_summary(&scene)
             ))?,
             Err(e) => {
-                eprintln!("error: {e}");
+                print_err(&format!("error: {e}"));
                 failed += 1;
             }
         }
@@ -582,17 +598,23 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
         bail!("--cells must lie in 8..=2048, got {cells}");
     }
     if !(extent.is_finite() && (1.0..=20.0).contains(&extent)) {
-        bail!("--extent must lie in 1..=20 (units of a; the grid must cover the contact), got {extent}");
+        bail!(
+            "--extent must lie in 1..=20 (units of a; the grid must cover the contact), got {}",
+            text::number(extent)
+        );
     }
     if let Some(f) = friction {
-        if !(f.is_finite() && f >= 0.0) {
-            bail!("--friction must be >= 0 and finite, got {f}");
+        if let Some(message) = stressfield::scene::friction_requirement(f) {
+            bail!(
+                "--friction: {message}\nhint: {}",
+                stressfield::scene::FRICTION_HINT
+            );
         }
         mu = f;
     }
     if let Some(p) = poisson {
         if !(p > -1.0 && p <= 0.5) {
-            bail!("--poisson must lie in (-1, 0.5], got {p}");
+            bail!("--poisson must lie in (-1, 0.5], got {}", text::number(p));
         }
         nu = p;
     }
@@ -647,9 +669,5 @@ fn probe_command(args: &ProbeArgs) -> Result<()> {
             Solution::sphere_numerical(mu, nu, cells, extent)?
         }
     };
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    probe::write_csv(&mut out, &solution, &rows)?;
-    out.flush()?;
-    Ok(())
+    with_stdout(|mut out| probe::write_csv(&mut out, &solution, &rows))
 }

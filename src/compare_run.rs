@@ -59,7 +59,8 @@ impl CompareOptions {
                 let max = args.rms_tolerance.unwrap_or(DEFAULT_RMS_TOLERANCE);
                 if !(max.is_finite() && max >= 0.0) {
                     bail!(
-                        "--rms-tolerance must be a finite number >= 0 (levels of 255), got {max}"
+                        "--rms-tolerance must be a finite number >= 0 (levels of 255), got {}",
+                        stressfield::text::number(max)
                     );
                 }
                 ImageMeasure::Rms { max }
@@ -67,7 +68,10 @@ impl CompareOptions {
         };
         let field_tolerance = args.field_tolerance.unwrap_or(DEFAULT_FIELD_TOLERANCE);
         if !(field_tolerance.is_finite() && field_tolerance >= 0.0) {
-            bail!("--field-tolerance must be a finite number >= 0 (in the figure's stress unit), got {field_tolerance}");
+            bail!(
+                "--field-tolerance must be a finite number >= 0 (in the figure's stress unit), got {}",
+                stressfield::text::number(field_tolerance)
+            );
         }
         if args.update {
             std::fs::create_dir_all(&reference_dir).with_context(|| {

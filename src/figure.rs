@@ -5,12 +5,62 @@ use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
 use crate::study;
+use crate::text;
 
 /// Number of samples of the traction profile across the figure.
 const TRACTION_SAMPLES: usize = 601;
 
 /// Number of segments of the contact circle drawn on planes parallel to the surface.
 const OUTLINE_SEGMENTS: usize = 256;
+
+/// Bytes each panel keeps per grid point until the figure is drawn (its values in display
+/// units).
+pub const KEPT_BYTES_PER_POINT: usize = 8;
+
+/// Bytes per grid point while a panel is evaluated, on top of what the panels keep: the field,
+/// its map, the copy in display units and the contour buffers. Measured: one von Mises panel of
+/// 4000 x 1601 points peaked at 232 MB (36 bytes per point), three at 333 MB.
+pub const WORKING_BYTES_PER_POINT: usize = 32;
+
+/// Bytes per pixel of the image (the canvas, the returned image and the encoder's rows).
+const BYTES_PER_PIXEL: usize = 8;
+
+/// The memory a figure needs, in bytes, estimated before anything is allocated: every panel's
+/// kept values, the working buffers of the largest panel (twice for a difference, which
+/// evaluates two fields), and the image. Surface and rough scenes (sheets) are estimated by
+/// their own solver and are not counted here.
+pub fn memory_estimate_bytes(scene: &Scene) -> usize {
+    if matches!(
+        scene.contact.kind,
+        ContactKind::Rough | ContactKind::Surface
+    ) {
+        return 0;
+    }
+    let mut kept = 0usize;
+    let mut working = 0usize;
+    for panel in &scene.panels {
+        let points = study::plane(scene, panel).points();
+        kept = kept.saturating_add(points.saturating_mul(KEPT_BYTES_PER_POINT));
+        let factor = if panel.method == Method::Difference {
+            2
+        } else {
+            1
+        };
+        working = working.max(points.saturating_mul(WORKING_BYTES_PER_POINT * factor));
+    }
+    // The image: each map at its width and equal-scale height, with room for the axes, the
+    // traction strip, the titles and the colour bars.
+    let spec = &scene.figure;
+    let width = spec.width_px as usize;
+    let aspect = (spec.vertical.1 - spec.vertical.0) / (spec.horizontal.1 - spec.horizontal.0);
+    let map_height = (width as f64 * aspect).clamp(8.0, 1e9) as usize;
+    let image_width = scene.panels.len() * (width + 200) + 400;
+    let image_height = map_height + map_height / 4 + 400;
+    let image = image_width
+        .saturating_mul(image_height)
+        .saturating_mul(BYTES_PER_PIXEL);
+    kept.saturating_add(working).saturating_add(image)
+}
 
 /// What a scene draws: a figure of stress maps, or a sheet of maps and charts (surface and
 /// rough scenes).
@@ -58,6 +108,22 @@ pub fn draw(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Drawing, DrawEr
 /// `on_row` is called once per evaluated grid row, for progress reporting.
 pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldError> {
     let spec = &scene.figure;
+    // The whole figure, before the first panel is allocated.
+    let needed = memory_estimate_bytes(scene);
+    let limit = field::memory_limit_bytes();
+    if needed > limit {
+        let points = scene
+            .panels
+            .iter()
+            .map(|p| study::plane(scene, p).points())
+            .sum();
+        return Err(FieldError::TooLarge {
+            points,
+            quantities: 1,
+            needed_mib: needed >> 20,
+            limit_mib: limit >> 20,
+        });
+    }
     let units = study::DisplayUnits::of(scene);
     let (length_per_a, stress_per_p0) = (units.length_per_a, units.stress_per_p0);
 
@@ -354,21 +420,23 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
     // Tractions from a file carry their own shear, and a and p0 are only the figure's units.
     let from_file = scene.contact.kind == ContactKind::Tractions;
     if !from_file {
-        parts.push(format!("μ = {}", panel.friction));
+        parts.push(format!("μ = {}", text::number(panel.friction)));
     }
-    parts.push(format!("ν = {}", panel.poisson));
+    parts.push(format!("ν = {}", text::number(panel.poisson)));
     if let (Some(scale), false) = (scene.contact.scale, from_file) {
         let a = scale.half_width_m;
         let a_text = match scene.figure.length_unit {
-            LengthUnit::Micrometre | LengthUnit::HalfWidth => format!("a = {:.1} µm", a * 1e6),
-            LengthUnit::Millimetre => format!("a = {:.4} mm", a * 1e3),
+            LengthUnit::Micrometre | LengthUnit::HalfWidth => {
+                format!("a = {} µm", text::fixed(a * 1e6, 1))
+            }
+            LengthUnit::Millimetre => format!("a = {} mm", text::fixed(a * 1e3, 4)),
             LengthUnit::Metre => format!("a = {a:.3e} m"),
         };
         parts.push(a_text);
         let p0 = scale.p0_pa;
         parts.push(match scene.figure.stress_unit {
-            StressUnit::GigaPascal => format!("p0 = {:.3} GPa", p0 * 1e-9),
-            _ => format!("p0 = {:.0} MPa", p0 * 1e-6),
+            StressUnit::GigaPascal => format!("p0 = {} GPa", text::fixed(p0 * 1e-9, 3)),
+            _ => format!("p0 = {} MPa", text::fixed(p0 * 1e-6, 0)),
         });
     }
     parts.join(",  ")

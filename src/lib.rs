@@ -26,6 +26,7 @@
 //! - [`figure`], [`render`]: display units, then pixels; renderers do no I/O.
 //! - [`assess`], [`report`]: stress maxima, yield assessment, the `hertz` report.
 //! - [`probe`]: stresses at given points, CSV in and out.
+//! - [`input`], [`text`]: reading user files within limits; numbers and echoes for messages.
 //! - [`output`], [`compare`], [`regression`], [`field_file`]: atomic file writes, regression
 //!   comparison of images and fields, the HTML report.
 //!
@@ -44,6 +45,7 @@ pub mod field;
 pub mod field_file;
 pub mod figure;
 pub mod grid_table;
+pub mod input;
 pub mod output;
 pub mod probe;
 #[cfg(feature = "rerun")]
@@ -59,4 +61,5 @@ pub mod stress;
 pub mod study;
 pub mod surface;
 pub mod surface_report;
+pub mod text;
 pub mod transform;

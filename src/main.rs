@@ -18,7 +18,7 @@ fn main() -> ExitCode {
     match commands::run(args.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            eprintln!("error: {error:#}");
+            commands::print_err(&format!("error: {error:#}"));
             ExitCode::FAILURE
         }
     }

@@ -16,22 +16,37 @@ pub enum ProbeError {
         text: String,
         reason: String,
     },
-    #[error("line {line}: z = {z} lies outside the body; z >= 0 points into the body")]
+    #[error("line {line}: z = {} lies outside the body; z >= 0 points into the body", crate::text::number(*.z))]
     OutsideBody { line: usize, z: f64 },
+    #[error("line {line}: the point ({}, {}, {}) lies {} a from the contact, farther than the {} a a probe reaches\nhint: beyond it every stress is below 1e-9 p0 (they fall as a/r for a line contact, (a/r)² for a point contact); probe nearer", crate::text::number(.point[0]), crate::text::number(.point[1]), crate::text::number(.point[2]), crate::text::number(*.distance), crate::text::compact(MAX_DISTANCE_OVER_A))]
+    TooFar {
+        line: usize,
+        point: [f64; 3],
+        distance: f64,
+    },
     #[error("cannot read the points: {0}")]
     Read(String),
     #[error("no points given\nhint: give rows x,y,z, e.g. 0,0,0.786")]
     Empty,
 }
 
+/// How far from the contact's centre a probe point may lie, in units of a. The closed forms
+/// keep their precision far beyond (they break down near 1e78 a, where squares of lengths
+/// overflow); every stress there is below 1e-9 p0.
+pub const MAX_DISTANCE_OVER_A: f64 = 1e9;
+
+/// The longest echo of a bad row in a message, in characters.
+const ECHO_CHARS: usize = 80;
+
 /// Reads rows `x,y,z`; blank lines and `#` comments are skipped, and a first row `x,y,z` is
-/// taken as a header.
+/// taken as a header. At most [`crate::input::POINTS_LIMIT`] bytes in all and
+/// [`crate::input::LINE_LIMIT`] a line; points within [`MAX_DISTANCE_OVER_A`] of the origin.
 pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
     let mut points = Vec::new();
     let mut seen_row = false;
-    for (index, line) in input.lines().enumerate() {
-        let line_number = index + 1;
-        let line = line.map_err(|e| ProbeError::Read(e.to_string()))?;
+    let lines = crate::input::lines(input, crate::input::POINTS_LIMIT, crate::input::LINE_LIMIT);
+    for line in lines {
+        let (line_number, line) = line.map_err(|e| ProbeError::Read(e.to_string()))?;
         let text = line.trim();
         if text.is_empty() || text.starts_with('#') {
             continue;
@@ -49,7 +64,7 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
         seen_row = true;
         let bad = |reason: &str| ProbeError::BadRow {
             line: line_number,
-            text: text.to_string(),
+            text: crate::text::cut(text, ECHO_CHARS),
             reason: reason.into(),
         };
         if fields.len() != 3 {
@@ -57,17 +72,26 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
         }
         let mut point = [0.0_f64; 3];
         for (value, field) in point.iter_mut().zip(&fields) {
+            let shown = crate::text::cut(field, 30);
             *value = field
                 .parse()
-                .map_err(|_| bad(&format!("`{field}` is not a number")))?;
+                .map_err(|_| bad(&format!("`{shown}` is not a number")))?;
             if !value.is_finite() {
-                return Err(bad(&format!("`{field}` is not finite")));
+                return Err(bad(&format!("`{shown}` is not finite")));
             }
         }
         if point[2] < 0.0 {
             return Err(ProbeError::OutsideBody {
                 line: line_number,
                 z: point[2],
+            });
+        }
+        let distance = point.iter().map(|v| v.abs()).fold(0.0, f64::max);
+        if distance > MAX_DISTANCE_OVER_A {
+            return Err(ProbeError::TooFar {
+                line: line_number,
+                point,
+                distance,
             });
         }
         points.push(point);
@@ -78,8 +102,10 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
     Ok(points)
 }
 
-/// Writes the header and one row per point, every value in shortest round-trip form (17
-/// significant digits at most, exact to the last bit).
+/// Writes the header and one row per point ([`Solution::finite_stress_over_p0`]: on a strip
+/// or cell edge at the surface of a numerical solution, the mean of the neighbouring centres),
+/// every value in shortest round-trip form (17 significant digits at most, exact to the last
+/// bit; exponent notation where it is shorter, see [`crate::text::number`]).
 pub fn write_csv(
     out: &mut impl Write,
     solution: &Solution,
@@ -87,20 +113,26 @@ pub fn write_csv(
 ) -> std::io::Result<()> {
     writeln!(out, "{HEADER}")?;
     for &[x, y, z] in points {
-        let s = solution.stress_over_p0(x, y, z);
+        let s = solution.finite_stress_over_p0(x, y, z);
         let [s1, s2, s3] = s.principal();
-        writeln!(
-            out,
-            "{x},{y},{z},{},{},{},{},{},{},{s1},{s2},{s3},{},{}",
+        let values = [
+            x,
+            y,
+            z,
             s.xx,
             s.yy,
             s.zz,
             s.yz,
             s.xz,
             s.xy,
+            s1,
+            s2,
+            s3,
             s.von_mises(),
-            s.max_shear()
-        )?;
+            s.max_shear(),
+        ];
+        let row: Vec<String> = values.iter().map(|v| crate::text::number(*v)).collect();
+        writeln!(out, "{}", row.join(","))?;
     }
     Ok(())
 }
@@ -140,5 +172,43 @@ mod tests {
             read_points("0,0,NaN\n".as_bytes()),
             Err(ProbeError::BadRow { .. })
         ));
+    }
+
+    #[test]
+    fn far_points_and_long_lines_are_refused_with_a_short_echo() {
+        assert!(read_points("1e9,0,0\n0,-1e9,1e9\n".as_bytes()).is_ok());
+        let error = read_points("0,0,1\n1e79,0,1\n".as_bytes()).expect_err("far");
+        assert!(
+            matches!(error, ProbeError::TooFar { line: 2, .. }),
+            "{error}"
+        );
+        let text = error.to_string();
+        assert!(text.contains("1e79") && text.contains("1e9 a"), "{text}");
+        // A bad row of a megabyte is echoed in a few dozen characters.
+        let row = format!("0,0,{}\n", "9".repeat(1 << 20));
+        let error = read_points(row.as_bytes()).expect_err("long line");
+        assert!(error.to_string().contains("64 KiB"), "{error}");
+        let row = format!("0,0,{}x\n", "9".repeat(60_000));
+        let error = read_points(row.as_bytes()).expect_err("bad number");
+        assert!(error.to_string().len() < 500, "{error}");
+        assert!(error.to_string().contains("60005 characters"), "{error}");
+    }
+
+    #[test]
+    fn values_print_short_and_exact() {
+        let solution = Solution::LineHertz {
+            friction: 0.0,
+            poisson: 0.3,
+        };
+        let mut out = Vec::new();
+        write_csv(&mut out, &solution, &[[1e-5, 0.0, 1e8]]).expect("writes");
+        let text = String::from_utf8(out).expect("utf-8");
+        let row = text.lines().nth(1).expect("row");
+        assert!(row.starts_with("1e-5,0,1e8,"), "{row}");
+        for field in row.split(',') {
+            assert!(field.len() <= 24, "{field}");
+            let value: f64 = field.parse().expect("number");
+            assert!(value.is_finite(), "{row}");
+        }
     }
 }

@@ -5,6 +5,7 @@ use std::fmt::Write;
 use crate::assess::{grid_maxima, Extreme, StressMaxima};
 use crate::scene::{ContactKind, Hertz, Method, PanelSpec, Scene};
 use crate::solution::Solution;
+use crate::text;
 
 /// The report of a traction scene: the figure's units and the resultants of the file's
 /// tractions.
@@ -17,10 +18,10 @@ fn write_tractions(out: &mut String, scene: &Scene) -> std::fmt::Result {
             "figure units: lengths in a = {:.3} µm, stresses in p0 = {:.2} MPa; body ν = {}",
             a_m * 1e6,
             p0_pa * 1e-6,
-            scene.contact.poisson
+            crate::text::number(scene.contact.poisson)
         )?;
     } else {
-        writeln!(out, "normalised: the file gives lengths in units of a and tractions in units of p0; body ν = {}", scene.contact.poisson)?;
+        writeln!(out, "normalised: the file gives lengths in units of a and tractions in units of p0; body ν = {}", crate::text::number(scene.contact.poisson))?;
     }
     let Some(grid) = &scene.tractions else {
         return Ok(());
@@ -80,7 +81,7 @@ pub fn hertz(scene: &Scene) -> String {
 }
 
 fn mm(m: f64) -> String {
-    format!("{:.4} mm", m * 1e3)
+    format!("{} mm", text::fixed(m * 1e3, 4))
 }
 
 fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
@@ -110,7 +111,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     writeln!(
         out,
         "contact: {geometry}; friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)",
-        contact.friction
+        crate::text::number(contact.friction)
     )?;
     let a_name = if point {
         "contact radius              "
@@ -122,43 +123,43 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             writeln!(
                 out,
                 "normalised contact: lengths in units of a, stresses in units of p0; body 1 ν = {}",
-                contact.poisson
+                crate::text::number(contact.poisson)
             )?;
         }
         (None, Some(scale)) => {
             writeln!(
                 out,
                 "contact given by its size; body 1 ν = {}",
-                contact.poisson
+                crate::text::number(contact.poisson)
             )?;
             let (a, p0) = (scale.half_width_m, scale.p0_pa);
-            writeln!(out, "{a_name} a  = {:.3} µm", a * 1e6)?;
+            writeln!(out, "{a_name} a  = {} µm", text::fixed(a * 1e6, 3))?;
             writeln!(
                 out,
-                "peak pressure                p0 = {:.2} MPa",
-                p0 * 1e-6
+                "peak pressure                p0 = {} MPa",
+                text::fixed(p0 * 1e-6, 2)
             )?;
             if point {
                 writeln!(
                     out,
-                    "mean pressure                pm = {:.2} MPa (= 2 p0 / 3)",
-                    2.0 / 3.0 * p0 * 1e-6
+                    "mean pressure                pm = {} MPa (= 2 p0 / 3)",
+                    text::fixed(2.0 / 3.0 * p0 * 1e-6, 2)
                 )?;
                 writeln!(
                     out,
-                    "load                         W  = {:.4} N (= 2 π a² p0 / 3)",
-                    2.0 / 3.0 * std::f64::consts::PI * a * a * p0
+                    "load                         W  = {} N (= 2 π a² p0 / 3)",
+                    text::fixed(2.0 / 3.0 * std::f64::consts::PI * a * a * p0, 4)
                 )?;
             } else {
                 writeln!(
                     out,
-                    "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
-                    std::f64::consts::FRAC_PI_4 * p0 * 1e-6
+                    "mean pressure                pm = {} MPa (= π p0 / 4)",
+                    text::fixed(std::f64::consts::FRAC_PI_4 * p0 * 1e-6, 2)
                 )?;
                 writeln!(
                     out,
-                    "load per unit length         P  = {:.4} kN/m (= π a p0 / 2)",
-                    std::f64::consts::FRAC_PI_2 * a * p0 * 1e-3
+                    "load per unit length         P  = {} kN/m (= π a p0 / 2)",
+                    text::fixed(std::f64::consts::FRAC_PI_2 * a * p0 * 1e-3, 4)
                 )?;
             }
         }
@@ -166,11 +167,11 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             if let Some(g) = d.gears {
                 writeln!(
                     out,
-                    "spur gears: module {}, teeth {} and {}, pressure angle {:.2} deg",
+                    "spur gears: module {}, teeth {} and {}, pressure angle {} deg",
                     mm(g.module_m),
                     g.teeth[0],
                     g.teeth[1],
-                    g.pressure_angle_rad.to_degrees()
+                    text::fixed(g.pressure_angle_rad.to_degrees(), 2)
                 )?;
                 writeln!(
                     out,
@@ -201,9 +202,9 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                 };
                 writeln!(
                     out,
-                    "{name}: radius {radius}, E = {:.1} GPa, ν = {}",
-                    body.material.modulus_pa * 1e-9,
-                    body.material.poisson
+                    "{name}: radius {radius}, E = {} GPa, ν = {}",
+                    text::fixed(body.material.modulus_pa * 1e-9, 1),
+                    crate::text::number(body.material.poisson)
                 )?;
             }
             match d.hertz {
@@ -211,13 +212,13 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                     let c = ellipse.curvature;
                     writeln!(
                         out,
-                        "load                         W  = {:.4} N",
-                        ellipse.load_n
+                        "load                         W  = {} N",
+                        text::fixed(ellipse.load_n, 4)
                     )?;
                     writeln!(
                         out,
-                        "effective modulus            E* = {:.3} GPa",
-                        ellipse.effective_modulus_pa * 1e-9
+                        "effective modulus            E* = {} GPa",
+                        text::fixed(ellipse.effective_modulus_pa * 1e-9, 3)
                     )?;
                     writeln!(
                         out,
@@ -227,92 +228,100 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                     )?;
                     writeln!(
                         out,
-                        "semi-axes                    a  = {:.3} µm along x, b = {:.3} µm along y (b/a = {:.4})",
-                        ellipse.semi_axis_x_m * 1e6,
-                        ellipse.semi_axis_y_m * 1e6,
-                        ellipse.semi_axis_y_m / ellipse.semi_axis_x_m
+                        "semi-axes                    a  = {} µm along x, b = {} µm along y (b/a = {})",
+                        text::fixed(ellipse.semi_axis_x_m * 1e6, 3),
+                        text::fixed(ellipse.semi_axis_y_m * 1e6, 3),
+                        text::fixed(ellipse.semi_axis_y_m / ellipse.semi_axis_x_m, 4)
                     )?;
                     writeln!(
                         out,
-                        "eccentricity                 e  = {:.5}",
-                        ellipse.eccentricity
+                        "eccentricity                 e  = {}",
+                        text::fixed(ellipse.eccentricity, 5)
                     )?;
                     writeln!(
                         out,
-                        "peak pressure                p0 = {:.2} MPa",
-                        ellipse.p0_pa * 1e-6
+                        "peak pressure                p0 = {} MPa",
+                        text::fixed(ellipse.p0_pa * 1e-6, 2)
                     )?;
                     writeln!(
                         out,
-                        "mean pressure                pm = {:.2} MPa (= 2 p0 / 3)",
-                        ellipse.mean_pressure_pa * 1e-6
+                        "mean pressure                pm = {} MPa (= 2 p0 / 3)",
+                        text::fixed(ellipse.mean_pressure_pa * 1e-6, 2)
                     )?;
                     writeln!(
                         out,
-                        "approach                     δ  = {:.4} µm",
-                        ellipse.approach_m * 1e6
+                        "approach                     δ  = {} µm",
+                        text::fixed(ellipse.approach_m * 1e6, 4)
                     )?;
                 }
                 Hertz::Line(line) => {
                     writeln!(
                         out,
-                        "load per unit length         P  = {:.4} kN/m",
-                        line.load_n_per_m * 1e-3
+                        "load per unit length         P  = {} kN/m",
+                        text::fixed(line.load_n_per_m * 1e-3, 4)
                     )?;
                     writeln!(
                         out,
-                        "effective modulus            E* = {:.3} GPa",
-                        line.effective_modulus_pa * 1e-9
+                        "effective modulus            E* = {} GPa",
+                        text::fixed(line.effective_modulus_pa * 1e-9, 3)
                     )?;
                     writeln!(
                         out,
                         "effective radius             R  = {}",
                         mm(line.effective_radius_m)
                     )?;
-                    writeln!(out, "{a_name} a  = {:.3} µm", line.half_width_m * 1e6)?;
                     writeln!(
                         out,
-                        "peak pressure                p0 = {:.2} MPa",
-                        line.p0_pa * 1e-6
+                        "{a_name} a  = {} µm",
+                        text::fixed(line.half_width_m * 1e6, 3)
                     )?;
                     writeln!(
                         out,
-                        "mean pressure                pm = {:.2} MPa (= π p0 / 4)",
-                        line.mean_pressure_pa * 1e-6
+                        "peak pressure                p0 = {} MPa",
+                        text::fixed(line.p0_pa * 1e-6, 2)
+                    )?;
+                    writeln!(
+                        out,
+                        "mean pressure                pm = {} MPa (= π p0 / 4)",
+                        text::fixed(line.mean_pressure_pa * 1e-6, 2)
                     )?;
                     writeln!(out, "approach                     not defined by a 2-D line contact alone (it depends on the bodies' size)")?;
                 }
                 Hertz::Point(point) => {
                     writeln!(
                         out,
-                        "load                         W  = {:.4} N",
-                        point.load_n
+                        "load                         W  = {} N",
+                        text::fixed(point.load_n, 4)
                     )?;
                     writeln!(
                         out,
-                        "effective modulus            E* = {:.3} GPa",
-                        point.effective_modulus_pa * 1e-9
+                        "effective modulus            E* = {} GPa",
+                        text::fixed(point.effective_modulus_pa * 1e-9, 3)
                     )?;
                     writeln!(
                         out,
                         "effective radius             R  = {}",
                         mm(point.effective_radius_m)
                     )?;
-                    writeln!(out, "{a_name} a  = {:.3} µm", point.radius_m * 1e6)?;
                     writeln!(
                         out,
-                        "peak pressure                p0 = {:.2} MPa",
-                        point.p0_pa * 1e-6
+                        "{a_name} a  = {} µm",
+                        text::fixed(point.radius_m * 1e6, 3)
                     )?;
                     writeln!(
                         out,
-                        "mean pressure                pm = {:.2} MPa (= 2 p0 / 3)",
-                        point.mean_pressure_pa * 1e-6
+                        "peak pressure                p0 = {} MPa",
+                        text::fixed(point.p0_pa * 1e-6, 2)
                     )?;
                     writeln!(
                         out,
-                        "approach                     δ  = {:.4} µm (= a² / R)",
-                        point.approach_m * 1e6
+                        "mean pressure                pm = {} MPa (= 2 p0 / 3)",
+                        text::fixed(point.mean_pressure_pa * 1e-6, 2)
+                    )?;
+                    writeln!(
+                        out,
+                        "approach                     δ  = {} µm (= a² / R)",
+                        text::fixed(point.approach_m * 1e6, 4)
                     )?;
                 }
             }
@@ -370,7 +379,11 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let describe = |e: &Extreme| {
         let mut text = format!("{:.4} p0", e.value_over_p0);
         if dimensional {
-            let _ = write!(text, " = {:.1} MPa", e.value_over_p0 * p0_pa * 1e-6);
+            let _ = write!(
+                text,
+                " = {} MPa",
+                text::fixed(e.value_over_p0 * p0_pa * 1e-6, 1)
+            );
         }
         if point {
             let _ = write!(
@@ -399,7 +412,11 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
     } else {
         "body 1"
     };
-    writeln!(out, "stress maxima in {body} (ν = {}):", contact.poisson)?;
+    writeln!(
+        out,
+        "stress maxima in {body} (ν = {}):",
+        crate::text::number(contact.poisson)
+    )?;
     writeln!(
         out,
         "  von Mises σvM                {}",
@@ -444,7 +461,7 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
         return Ok(());
     };
     match y.from_hardness {
-        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {h} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, h * 9.80665)?,
+        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, crate::text::number(h), h * 9.80665)?,
         None => writeln!(out, "yield strength               Y  = {:.0} MPa", y.pa * 1e-6)?,
     }
     let ratio_vm = vm * p0_pa / y.pa;

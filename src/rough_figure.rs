@@ -24,6 +24,7 @@ use ndarray::Array2;
 use crate::contact::rough::{self, Control, RoughSolution};
 use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::chart::{Cell, Chart, Scale as ChartScale, Series, Sheet, Style, PALETTE};
+use crate::render::table::Table;
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::rough_report::search_depth_m;
 use crate::scene::{ContactKind, Scene};
@@ -32,6 +33,7 @@ use crate::surface::generate::Form;
 use crate::surface::gw::GreenwoodWilliamson;
 use crate::surface::stats::{self, Characterisation, Options, StatsError};
 use crate::surface::HeightMap;
+use crate::surface_report::SurfaceReport;
 
 /// What can go wrong building these figures.
 #[derive(Debug, thiserror::Error)]
@@ -270,11 +272,27 @@ pub fn surface_sheet(scene: &Scene) -> Result<Sheet, SheetError> {
                 .map_or("n/a".into(), |s| format!("{:.2} µm", s * um))
         ),
     ));
+    let rough = scene.contact.rough;
+    let report = SurfaceReport::new(
+        &c,
+        rough.and_then(|r| r.e_star_pa),
+        rough.and_then(|r| r.hardness_pa),
+    );
+    let table = Table {
+        title: "Parameters".into(),
+        rows: report.table_rows(),
+        width_px: 520,
+        height_px: 560,
+    };
     let mut rows = vec![
-        vec![Cell::Map(topography), Cell::Chart(profile)],
+        vec![
+            Cell::Map(topography),
+            Cell::Chart(profile),
+            Cell::Table(table),
+        ],
         vec![Cell::Chart(histogram), Cell::Chart(psd), Cell::Chart(acf)],
     ];
-    if let Some(e_star) = scene.contact.rough.and_then(|r| r.e_star_pa) {
+    if let Some(e_star) = rough.and_then(|r| r.e_star_pa) {
         let gw = gw_model(&c, e_star);
         let curves = gw.curves(60);
         let mut separation = Chart::new(

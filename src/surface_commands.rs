@@ -13,6 +13,7 @@ use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;
 use stressfield::surface::read::{self, Fill, ReadOptions};
 use stressfield::surface::stats::{self, FormRemoval, Options};
+use stressfield::surface::MIN_SPACING_M;
 use stressfield::surface_report::SurfaceReport;
 
 /// A solver progress bar: iterations as they come (the total is not known).
@@ -28,6 +29,20 @@ fn solver_bar() -> ProgressBar {
     bar
 }
 
+/// A spinner with a message and the elapsed time, for work of unknown length (hidden where
+/// progress bars are).
+fn spinner(message: &str) -> ProgressBar {
+    let bar = progress_bar(0);
+    if !bar.is_hidden() {
+        if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
+            bar.set_style(style);
+        }
+        bar.set_message(message.to_string());
+        bar.enable_steady_tick(std::time::Duration::from_millis(200));
+    }
+    bar
+}
+
 /// `contact SCENE [--json] [--pressure FILE.npy]`.
 pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()> {
     let scene = Scene::load(scene_path)?;
@@ -39,12 +54,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         );
     }
     if let Some(path) = pressure {
-        if path.extension().is_none_or(|e| e != "npy") {
-            bail!(
-                "--pressure writes a NumPy file: give a path ending in .npy, got {}",
-                path.display()
-            );
-        }
+        npy_path("--pressure", path)?;
     }
     let bar = solver_bar();
     let solution = study::rough::solve(&scene, &mut |iteration, residual| {
@@ -53,12 +63,15 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     });
     bar.finish_and_clear();
     let solution = solution.with_context(|| format!("scene {}", scene.name))?;
-    let report = ContactReport::new(&scene, &solution)?;
+    let maxima_bar = spinner(&format!(
+        "subsurface maxima: DC-FFT layers down to {:.1} um",
+        stressfield::rough_report::search_depth_m(&solution) * 1e6
+    ));
+    let report = ContactReport::new(&scene, &solution);
+    maxima_bar.finish_and_clear();
+    let report = report?;
     if let Some(path) = pressure {
-        let mut bytes = Vec::new();
-        ndarray_npy::WriteNpyExt::write_npy(&solution.pressure_pa, &mut bytes)
-            .context("encoding the pressure as .npy")?;
-        write_atomic(path, &bytes)?;
+        write_npy(path, &solution.pressure_pa, "pressure")?;
     }
     if json {
         print_out(&format!("{}\n", report.json()))
@@ -74,6 +87,26 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     }
 }
 
+/// Refuses an output path that does not end in `.npy`.
+fn npy_path(flag: &str, path: &Path) -> Result<()> {
+    if path.extension().is_none_or(|e| e != "npy") {
+        bail!(
+            "{flag} writes a NumPy file: give a path ending in .npy, got {}",
+            path.display()
+        );
+    }
+    Ok(())
+}
+
+/// `array` as a NumPy .npy file at `path`, written atomically.
+fn write_npy(path: &Path, array: &ndarray::Array2<f64>, what: &str) -> Result<()> {
+    let mut bytes = Vec::new();
+    ndarray_npy::WriteNpyExt::write_npy(array, &mut bytes)
+        .with_context(|| format!("encoding the {what} as .npy"))?;
+    write_atomic(path, &bytes)?;
+    Ok(())
+}
+
 fn length(flag: &str, text: &str) -> Result<f64> {
     let text = text.trim();
     let split = text
@@ -86,8 +119,9 @@ fn length(flag: &str, text: &str) -> Result<f64> {
     let unit = read::length_unit_m(&text[split..])
         .with_context(|| format!("{flag} {text}: unknown unit; use m, mm, um, nm or pm"))?;
     let metres = value * unit;
-    if !(metres > 0.0 && metres.is_finite()) {
-        bail!("{flag} must be positive and finite, got {text}");
+    // The spacings and wavelengths of a surface (as in scenes): from an atomic spacing to 10 km.
+    if !((MIN_SPACING_M..=1e4).contains(&metres)) {
+        bail!("{flag} must lie between 1e-10 m and 10000 m, got {text}");
     }
     Ok(metres)
 }
@@ -109,8 +143,9 @@ fn pressure_pa(flag: &str, text: &str) -> Result<f64> {
         other => bail!("{flag} {text}: unknown unit `{other}`; use Pa, MPa, GPa, or HV/HB"),
     };
     let pa = value * factor;
-    if !(pa > 0.0 && pa.is_finite()) {
-        bail!("{flag} must be positive and finite, got {text}");
+    // As moduli, hardnesses and pressures in scenes: a pascal to ten times diamond's modulus.
+    if !((1.0..=1e13).contains(&pa)) {
+        bail!("{flag} must lie between 1 Pa and 1e13 Pa, got {text}");
     }
     Ok(pa)
 }
@@ -128,6 +163,7 @@ pub fn surface_of_scene(path: &Path) -> Result<()> {
         e_star: None,
         hardness: None,
         json: false,
+        heights: None,
     })
 }
 
@@ -152,6 +188,9 @@ pub fn surface(args: &SurfaceArgs) -> Result<()> {
             Ok((a, b))
         })
         .transpose()?;
+    if let Some(path) = &args.heights {
+        npy_path("--heights", path)?;
+    }
     let is_scene = args.input.extension().is_some_and(|e| e == "toml");
     let (map, source, generated, mut e_star, mut hardness, scene_form, scene_band) = if is_scene {
         for (flag, given) in [
@@ -246,9 +285,19 @@ pub fn surface(args: &SurfaceArgs) -> Result<()> {
     let characterisation =
         stats::characterise(&map, &options).with_context(|| format!("characterising {source}"))?;
     let report = SurfaceReport::new(&characterisation, e_star, hardness);
+    if let Some(path) = &args.heights {
+        write_npy(path, map.heights_m(), "heights")?;
+    }
     if args.json {
         print_out(&format!("{}\n", report.json()))
     } else {
-        print_out(&report.text(&characterisation, &source))
+        let mut text = report.text(&characterisation, &source);
+        if let Some(path) = &args.heights {
+            text.push_str(&format!(
+                "heights written to {} (m, float64, [rows, columns], row = y, before levelling)\n",
+                path.display()
+            ));
+        }
+        print_out(&text)
     }
 }

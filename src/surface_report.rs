@@ -16,6 +16,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use crate::render::table::Row;
 use crate::surface::gw::{plasticity_index, plasticity_reading};
 use crate::surface::stats::Characterisation;
 
@@ -159,6 +160,128 @@ impl SurfaceReport {
 
     pub fn json(&self) -> String {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The main values as the rows of a sheet's table (lengths in µm).
+    pub fn table_rows(&self) -> Vec<Row> {
+        let um = |m: f64| m * 1e6;
+        let value = |symbol: &str, value: String, meaning: &str| {
+            Row::Value(symbol.into(), value, meaning.into())
+        };
+        let optional = |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or("n/a".into(), f);
+        let mut rows = vec![
+            Row::Heading(format!("Height (ISO 25178-2), {}", self.levelling)),
+            value(
+                "Sa",
+                format!("{:.4} µm", um(self.Sa)),
+                "arithmetic mean height",
+            ),
+            value(
+                "Sq",
+                format!("{:.4} µm", um(self.Sq)),
+                "root mean square height",
+            ),
+            value("Ssk", format!("{:.3}", self.Ssk), "skewness"),
+            value("Sku", format!("{:.3}", self.Sku), "kurtosis"),
+            value("Sp", format!("{:.4} µm", um(self.Sp)), "highest peak"),
+            value("Sv", format!("{:.4} µm", um(self.Sv)), "deepest valley"),
+            value("Sz", format!("{:.4} µm", um(self.Sz)), "maximum height"),
+            Row::Heading("Hybrid and spatial".into()),
+            value("Sdq", format!("{:.4}", self.Sdq), "rms gradient"),
+            value(
+                "Sdr",
+                format!("{:.3} %", 100.0 * self.Sdr),
+                "developed area ratio",
+            ),
+            value(
+                "Sal",
+                optional(self.Sal, &|v| format!("{:.2} µm", um(v))),
+                "autocorrelation length (0.2)",
+            ),
+            value(
+                "Str",
+                optional(self.Str, &|v| {
+                    format!("{}{v:.3}", if self.str_is_upper_bound { "≤ " } else { "" })
+                }),
+                "texture aspect ratio",
+            ),
+            Row::Heading(format!(
+                "Spectrum (fit over {:.3}–{:.1} µm)",
+                um(self.hurst_band_m[0]),
+                um(self.hurst_band_m[1])
+            )),
+            value(
+                "H",
+                optional(self.hurst, &|v| format!("{v:.3}")),
+                "Hurst exponent",
+            ),
+            value(
+                "D",
+                optional(self.fractal_dimension, &|v| format!("{v:.3}")),
+                "fractal dimension 3 − H",
+            ),
+            value("α", format!("{:.2}", self.nayak_alpha), "Nayak's bandwidth"),
+            Row::Heading("Summits: measured | McCool (spectral)".into()),
+            value(
+                "η",
+                format!(
+                    "{:.0} | {:.0} /mm²",
+                    self.summit_density_per_m2 * 1e-6,
+                    self.mccool_summit_density_per_m2 * 1e-6
+                ),
+                "summit density",
+            ),
+            value(
+                "β",
+                format!(
+                    "{:.1} | {:.1} µm",
+                    um(self.summit_radius_m),
+                    um(self.mccool_summit_radius_m)
+                ),
+                "mean tip radius",
+            ),
+            value(
+                "σs",
+                format!(
+                    "{:.3} | {:.3} µm",
+                    um(self.summit_height_std_m),
+                    um(self.mccool_summit_height_std_m)
+                ),
+                "summit height spread",
+            ),
+        ];
+        if let Some(psi) = self.plasticity_index {
+            rows.push(value(
+                "ψ",
+                format!("{psi:.2}"),
+                &format!(
+                    "plasticity index: {}",
+                    plasticity_reading(psi)
+                        .split(':')
+                        .next()
+                        .unwrap_or_default()
+                ),
+            ));
+        }
+        rows.push(Row::Heading("Highest asperity (the homework)".into()));
+        rows.push(value(
+            "h",
+            format!("{:.4} µm", um(self.asperity_height_m)),
+            "above the mean plane",
+        ));
+        rows.push(value(
+            "R",
+            optional(self.asperity_radius_m, &|v| format!("{:.1} µm", um(v))),
+            "tip radius along x",
+        ));
+        if let (Some(p0), Some(a)) = (self.asperity_p0_pa, self.asperity_contact_radius_m) {
+            rows.push(value(
+                "p0",
+                format!("{:.0} MPa", p0 * 1e-6),
+                &format!("Hertz at δ = h/5, a = {:.2} µm", um(a)),
+            ));
+        }
+        rows
     }
 
     /// The readable table with units.

@@ -31,6 +31,9 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 
+/// Columns (or rows) gathered together in the transposes between the row and column passes.
+const TILE: usize = 16;
+
 /// A failure of the FFT library (lengths are fixed at planning, so this indicates a bug).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 #[error("2-D FFT failed: {0}")]
@@ -185,13 +188,20 @@ impl RealFft2 {
             .zip(work.blocks.par_iter_mut())
             .enumerate()
             .for_each(|(b, (columns, scratch))| {
-                for (offset, column) in columns.chunks_exact_mut(ny).enumerate() {
-                    let kx = b * column_block + offset;
-                    for (r, target) in column.iter_mut().enumerate() {
-                        *target = rows[r * width + kx];
+                // A tile of columns at a time, so that each row is read in runs of TILE.
+                for (t, tile) in columns.chunks_mut(TILE * ny).enumerate() {
+                    let kx0 = b * column_block + t * TILE;
+                    let count = tile.len() / ny;
+                    for r in 0..ny {
+                        let start = r * width + kx0;
+                        for (c, value) in rows[start..start + count].iter().enumerate() {
+                            tile[c * ny + r] = *value;
+                        }
                     }
-                    self.column_forward
-                        .process_with_scratch(column, &mut scratch.column_scratch);
+                    for column in tile.chunks_exact_mut(ny) {
+                        self.column_forward
+                            .process_with_scratch(column, &mut scratch.column_scratch);
+                    }
                 }
             });
         Ok(())
@@ -240,29 +250,34 @@ impl RealFft2 {
             .zip(work.blocks.par_iter_mut())
             .enumerate()
             .try_for_each(|(b, ((mut out_rows, row_spectra), scratch))| {
-                for (offset, (mut out, row)) in out_rows
-                    .rows_mut()
-                    .into_iter()
-                    .zip(row_spectra.chunks_exact_mut(width))
-                    .enumerate()
-                {
-                    let r = b * block + offset;
-                    for (kx, value) in row.iter_mut().enumerate() {
-                        *value = spectrum[kx * ny + r];
+                let rows_here = out_rows.nrows();
+                // Gather a tile of rows at a time, so that each column is read in runs of
+                // TILE.
+                for t0 in (0..rows_here).step_by(TILE) {
+                    let count = TILE.min(rows_here - t0);
+                    let r0 = b * block + t0;
+                    for kx in 0..width {
+                        let start = kx * ny + r0;
+                        for (t, value) in spectrum[start..start + count].iter().enumerate() {
+                            row_spectra[(t0 + t) * width + kx] = *value;
+                        }
                     }
-                    // The spectrum of a real row has real values at kx = 0 (and nx / 2); the
-                    // real inverse transform requires them exactly real.
-                    row[0].im = 0.0;
-                    if let Some(k) = nyquist {
-                        row[k].im = 0.0;
-                    }
-                    self.row_inverse.process_with_scratch(
-                        row,
-                        &mut scratch.line,
-                        &mut scratch.real_scratch,
-                    )?;
-                    for (target, value) in out.iter_mut().zip(&scratch.line) {
-                        *target = scale * value;
+                    for t in t0..t0 + count {
+                        let row = &mut row_spectra[t * width..(t + 1) * width];
+                        // The spectrum of a real row has real values at kx = 0 (and nx / 2);
+                        // the real inverse transform requires them exactly real.
+                        row[0].im = 0.0;
+                        if let Some(k) = nyquist {
+                            row[k].im = 0.0;
+                        }
+                        self.row_inverse.process_with_scratch(
+                            row,
+                            &mut scratch.line,
+                            &mut scratch.real_scratch,
+                        )?;
+                        for (target, value) in out_rows.row_mut(t).iter_mut().zip(&scratch.line) {
+                            *target = scale * value;
+                        }
                     }
                 }
                 Ok::<(), TransformError>(())
@@ -325,7 +340,8 @@ mod tests {
 
     #[test]
     fn forward_equals_the_direct_dft_for_odd_even_and_padded_grids() {
-        for shape in [[8, 8], [5, 7], [6, 9], [1, 4], [3, 1]] {
+        // [34, 70]: more columns and rows than a transpose tile, with a partial tile.
+        for shape in [[8, 8], [5, 7], [6, 9], [1, 4], [3, 1], [34, 70]] {
             check_forward_against_direct(shape, &grid(shape[0], shape[1]));
         }
         // A 4x5 input zero-padded into 8x10.
@@ -339,7 +355,7 @@ mod tests {
             .build()
             .expect("pool");
         pool.install(|| {
-            for shape in [[16, 16], [7, 10], [9, 5], [2, 2]] {
+            for shape in [[16, 16], [7, 10], [9, 5], [2, 2], [100, 130]] {
                 let input = grid(shape[0], shape[1]);
                 let plan = RealFft2::new(shape);
                 let mut work = plan.work();

@@ -272,18 +272,18 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nresolutoin = 100\n", "key `figure.resolutoin`", "unknown field"),
     ("format = 1\n[contact]\nkind = \"line\"\npoisson = 0.7\n", "key `contact.poisson`", "(-1, 0.5]"),
     ("format = 1\n[contact]\nkind = \"line\"\npoisson = -1.0\n", "key `contact.poisson`", "(-1, 0.5]"),
-    ("format = 1\n[contact]\nkind = \"line\"\nfriction = -0.1\n", "key `contact.friction`", ">= 0"),
-    ("format = 1\n[contact]\nkind = \"line\"\nload = \"-40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\nfriction = -0.1\n", "key `contact.friction`", "0..=10"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"-40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "between 1e-12 N/m and 1e12 N/m"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"nan kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "does not start with a number"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "unknown unit `kN`"),
-    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"0 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.radius`", "non-zero"),
-    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmodulus = \"0 GPa\"\npoisson = 0.3\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.modulus`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"0 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.radius`", "between 1e-9 m and 1e6 m"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmodulus = \"0 GPa\"\npoisson = 0.3\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.modulus`", "between 1000 Pa and 1e13 Pa"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"-5 mm\"\nmaterial = \"steel\"\n", "key `contact.body2.radius`", "concave"),
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [2.0, -2.0]\n", "key `figure.x`", "min < max"),
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nz = [-1.0, 1.0]\n", "key `figure.z`", "into the body"),
-    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [-1.0, 1.0]\nz = [0.0, 100.0]\nresolution = 20000\n", "key `figure.resolution`", "MiB"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [-1.0, 1.0]\nz = [0.0, 40.0]\nresolution = 20000\n", "key `figure.resolution`", "MiB"),
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nquantity = \"vonmises\"\n", "key `figure.quantity`", "von_mises"),
-    ("format = 1\n[contact]\nkind = \"line\"\na = \"0 mm\"\np0 = \"1 GPa\"\n", "key `contact.a`", "positive"),
+    ("format = 1\n[contact]\nkind = \"line\"\na = \"0 mm\"\np0 = \"1 GPa\"\n", "key `contact.a`", "between 1e-12 m"),
     ("format = 1\n[contact]\nkind = \"line\"\na = 2.0\np0 = 1.0\n", "key `contact.a`", "must be 1"),
     ("format = 1\n[contact]\nkind = \"line\"\na = \"0.2 mm\"\n", "key `contact.p0`", "p0 = "),
     ("format = 1\n[contact]\nkind = \"line\"\nhardness = \"300 HB\"\n", "key `contact.hardness`", "dimensional"),
@@ -310,7 +310,7 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"speed\"\nvalues = [1.0]\n", "key `sweep.parameter`", "\"position\""),
     ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\n", "key `sweep`", "from = 0.0, to = 0.5, steps = 11"),
     ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nfrom = 0.0\nto = 0.5\nsteps = 1000\n", "key `sweep.steps`", "2..=400"),
-    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nvalues = [0.1, -0.2]\n", "key `sweep.values[1]`", ">= 0"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nvalues = [0.1, -0.2]\n", "key `sweep.values[1]`", "0..=10"),
     ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"load\"\nvalues = [\"1 kN/m\"]\n", "key `sweep.parameter`", "contact.load"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n[figure]\nlength_unit = \"a\"\nstress_unit = \"p0\"\n[sweep]\nparameter = \"load\"\nvalues = [\"10 kN/m\", \"20 kN/m\"]\n", "key `figure.length_unit`", "length_unit = \"mm\""),
     ("format = 1\n[contact]\nkind = \"point\"\nload = \"300 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6 mm\"\nmaterial = \"steel\"\n[sweep]\nparameter = \"load\"\nvalues = [\"100 N/m\"]\n", "key `sweep.values[0]`", "unknown unit `N/m`"),
@@ -323,7 +323,156 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"point\"\n[volume]\nz = [-1.0, 1.0]\n", "key `volume.z`", ">= 0"),
     ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [-1.0, 1.0]\nz = [0.0, 2.0]\nresolution = 8000\n[sweep]\nparameter = \"position\"\nfrom = -1.0\nto = 1.0\nsteps = 400\n", "key `sweep`", "fewer steps"),
     ("format = 1\n[contact]\nkind = \"elliptical\"\naspect = 3.0\nmethod = \"numerical\"\n[volume]\npoints = 32\n", "key `volume`", "record sections"),
+    // Issue 13, case 2: friction is bounded wherever it is written.
+    ("format = 1\n[contact]\nkind = \"line\"\nfriction = 1e300\n", "key `contact.friction`", "weld"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[[panel]]\nfriction = 11.0\n", "key `panel[0].friction`", "0..=10"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nvalues = [0.1, 1e300]\n", "key `sweep.values[1]`", "got 1e300"),
+    // Case 3: the inputs of Hertz theory, named as written.
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"5e-324 N\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "got `5e-324 N`"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"1.7e308 N/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "got `1.7e308 N/m`"),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\n[contact.body1]\nradius = \"10 mm\"\nmodulus = \"5e-324 Pa\"\npoisson = 0.3\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.modulus`", "diamond"),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\n[contact.body1]\nradius = \"5e-324 m\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.radius`", "got `5e-324 m`"),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\nyield_strength = \"5e-324 Pa\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.yield_strength`", "got `5e-324 Pa`"),
+    ("format = 1\n[contact]\nkind = \"line\"\na = \"1 mm\"\np0 = \"1e300 GPa\"\n", "key `contact.p0`", "1e13 Pa"),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"300 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6 mm\"\nmaterial = \"steel\"\n[figure]\nlength_unit = \"mm\"\n[sweep]\nparameter = \"load\"\nvalues = [\"100 N\", \"1e300 N\"]\n", "key `sweep.values[1]`", "got `1e300 N`"),
+    // Case 4: ranges in units of a, dimensional ones converted.
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [0.0, 1e300]\n", "key `figure.x`", "10000 a"),
+    ("format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n[figure]\nsection = \"xy\"\ny = [-0.5, 1e308]\n", "key `figure.y`", "`1e308 mm`"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[figure]\nat = 1e300\n", "key `figure.at`", "10000 a"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [-1000.0, 1000.0]\nz = [0.0, 1.0]\n", "key `figure.z`", "between 1/50 and 50"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nx = [0.0, 1e-9]\nz = [0.0, 1e-9]\n", "key `figure.x`", "1e-6 a"),
+    ("format = 1\n[contact]\nkind = \"point\"\n[volume]\nx = [0.0, 1e300]\n", "key `volume.x`", "10000 a"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"position\"\nvalues = [0.0, 1e300]\n", "key `sweep.values[1]`", "10000 a"),
+    // Case 7: the memory of the whole figure (three panels at the largest resolution).
+    ("format = 1\n[contact]\nkind = \"line\"\n[figure]\nresolution = 20000\n[[panel]]\nfriction = 0.0\n[[panel]]\nfriction = 0.2\n[[panel]]\nfriction = 0.4\n", "key `figure.resolution`", "bytes a point"),
+    // Case 12: the key the user wrote, not a generated value.
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nfrom = inf\nto = 0.5\nsteps = 3\n", "key `sweep.from`", "finite"),
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"position\"\nfrom = -1.7e308\nto = 1.7e308\nsteps = 3\n", "key `sweep.to`", "double precision"),
+    // ... the value written, not a generated step (5e299 is the middle of 0 to 1e300).
+    ("format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nfrom = 0.0\nto = 1e300\nsteps = 3\n", "key `sweep.to`", "got 1e300"),
+    // Case 3: derived values: a gear pair's radii at the pitch point, an ellipse's b/a.
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.gears]\nmodule = \"5 mm\"\nteeth = [20, 40]\npressure_angle = \"1e-300 deg\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n", "key `contact.gears`", "radius of curvature at the pitch point is 8.727e-304 m"),
+    ("format = 1\n[contact]\nkind = \"elliptical\"\nload = \"1 kN\"\nmethod = \"numerical\"\n[contact.body1]\nradius_x = \"26.15 mm\"\nradius_y = \"-6.35000000001 mm\"\nmaterial = \"bearing_steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"bearing_steel\"\n", "key `contact.body2.radius_y`", "b/a = 3492000"),
 ];
+
+/// A small rough scene (a 32² generated surface on a steel flat) for [`ROUGH_EXTREMES`].
+const ROUGH_BASE: &str = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\nfriction = 0.1\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 32\nspacing = \"0.5 um\"\nhurst = 0.8\nrolloff = \"8 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\n";
+
+/// Issue 13 in rough scenes: a line of [`ROUGH_BASE`] replaced, the key named in the error
+/// and the limit.
+const ROUGH_EXTREMES: &[(&str, &str, &str, &str)] = &[
+    (
+        "load = \"0.5 N\"",
+        "load = \"5e-324 N\"",
+        "key `contact.load`",
+        "between 1e-12 N and 1e12 N, got `5e-324 N`",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "load = \"1e12 N\"",
+        "key `contact.load`",
+        "more than the combined modulus E*",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "mean_pressure = \"1e300 Pa\"",
+        "key `contact.mean_pressure`",
+        "1e13 Pa",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "mean_pressure = \"1000 GPa\"",
+        "key `contact.mean_pressure`",
+        "more than the combined modulus E*",
+    ),
+    (
+        "load = \"0.5 N\"",
+        "approach = \"1 mm\"",
+        "key `contact.approach`",
+        "peak-to-valley",
+    ),
+    (
+        "friction = 0.1",
+        "friction = 1e300",
+        "key `contact.friction`",
+        "0..=10",
+    ),
+    (
+        "spacing = \"0.5 um\"",
+        "spacing = \"1e300 um\"",
+        "key `surface.generate.spacing`",
+        "between 1e-10 m and 1 m",
+    ),
+    (
+        "rms_height = \"0.05 um\"",
+        "rms_height = \"1e300 um\"",
+        "key `surface.generate.rms_height`",
+        "0.1 m",
+    ),
+    (
+        "rms_height = \"0.05 um\"",
+        "rms_slope = 1e300",
+        "key `surface.generate.rms_slope`",
+        "between 1e-6 and 10",
+    ),
+    (
+        "hurst = 0.8",
+        "hurst = 5.0",
+        "key `surface.generate.hurst`",
+        "(0, 1]",
+    ),
+    (
+        "rolloff = \"8 um\"",
+        "rolloff = \"1e300 m\"",
+        "key `surface.generate.rolloff`",
+        "10000 m",
+    ),
+    (
+        "sphere_radius = \"2 mm\"",
+        "sphere_radius = \"1e300 m\"",
+        "key `surface.generate.sphere_radius`",
+        "1e6 m",
+    ),
+];
+
+/// Issue 13: extreme values in rough and surface scenes are refused at `check`, naming the key,
+/// instead of a NaN surface or a solver that never converges.
+#[test]
+fn rough_and_surface_extremes_are_refused() {
+    for (line, replacement, key, fix) in ROUGH_EXTREMES {
+        assert!(ROUGH_BASE.contains(line), "{line}");
+        let (_dir, scene) = scene_file(&ROUGH_BASE.replace(line, replacement));
+        assert_fails_with(&run(&["check", scene.to_str().expect("utf8")]), &[key, fix]);
+    }
+    // A measured surface whose heights are far beyond any roughness (a wrong height unit).
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mut rows = vec![vec!["0.1"; 8]; 8];
+    rows[1][1] = "1e300";
+    let asc: String = rows.iter().map(|r| r.join(" ") + "\n").collect();
+    std::fs::write(dir.path().join("s.asc"), asc).expect("write");
+    let scene = dir.path().join("s.toml");
+    std::fs::write(
+        &scene,
+        "format = 1\n[contact]\nkind = \"surface\"\n[surface]\nfile = \"s.asc\"\nspacing = \"1 um\"\nheight_unit = \"um\"\n",
+    )
+    .expect("write");
+    assert_fails_with(
+        &run(&["check", scene.to_str().expect("utf8")]),
+        &["key `surface.file`", "row 1, column 1", "1e294 m", "1 m"],
+    );
+    let asc = dir.path().join("s.asc");
+    assert_fails_with(
+        &run(&[
+            "surface",
+            asc.to_str().expect("utf8"),
+            "--spacing",
+            "1um",
+            "--height-unit",
+            "um",
+        ]),
+        &["row 1, column 1", "1e294 m"],
+    );
+}
 
 #[test]
 fn bad_scenes_name_the_key_and_the_fix() {
@@ -518,6 +667,321 @@ fn probe_rejects_bad_input() {
         let output = run_with_stdin(args, input);
         assert_fails_with(&output, fragments);
         assert!(stdout(&output).is_empty(), "no partial CSV for {args:?}");
+    }
+}
+
+// Issue 13: bad input found by fuzzing. Each test names the case it guards.
+
+/// Every number of every row of a successful `probe` is finite.
+fn assert_rows_finite(rows: &[Vec<f64>]) {
+    assert!(!rows.is_empty());
+    for row in rows {
+        assert!(row.iter().all(|v| v.is_finite()), "{row:?}");
+    }
+}
+
+/// Case 1: on a strip or cell edge at the surface, the numerical probe gives the mean of the
+/// values at the neighbouring strip (cell) centres, never NaN.
+#[test]
+fn numerical_probe_on_strip_and_cell_edges_is_finite() {
+    let line = probe_rows(
+        &["probe", "--method", "numerical", "--points", "-"],
+        "0,0,0\n1,0,0\n-1,0,0\n",
+    );
+    assert_rows_finite(&line);
+    // At the centre, between two strips of 2000: szz = -p, sxx = -p (frictionless) to the
+    // discretisation error; at the contact edge half the last strip's pressure.
+    assert!((line[0][5] + 1.0).abs() < 1e-5, "{:?}", line[0]);
+    assert!((line[0][3] + 1.0).abs() < 1e-3, "{:?}", line[0]);
+    assert!(line[1][5] < 0.0 && line[1][5] > -0.02, "{:?}", line[1]);
+    let sliding = probe_rows(
+        &[
+            "probe",
+            "--method",
+            "numerical",
+            "--friction",
+            "0.3",
+            "--points",
+            "-",
+        ],
+        "0,0,0\n",
+    );
+    assert_rows_finite(&sliding);
+    let point = probe_rows(
+        &[
+            "probe",
+            "--contact",
+            "point",
+            "--method",
+            "numerical",
+            "--cells",
+            "8",
+            "--points",
+            "-",
+        ],
+        "0,0,0\n0.5,0.25,0\n1,1,0\n",
+    );
+    assert_rows_finite(&point);
+}
+
+/// Case 2: friction is bounded on the command line as in scenes; case 12: the message names
+/// the flag, not a cell of the traction grid.
+#[test]
+fn probe_refuses_friction_beyond_a_few() {
+    for args in [
+        &["probe", "--friction", "1e300", "--points", "-"][..],
+        &[
+            "probe",
+            "--contact",
+            "point",
+            "--method",
+            "numerical",
+            "--friction",
+            "1e308",
+            "--points",
+            "-",
+        ][..],
+    ] {
+        let output = run_with_stdin(args, "0,0,1\n");
+        assert_fails_with(&output, &["--friction", "0..=10", "weld"]);
+        assert!(!stderr(&output).contains("shear_x"), "{}", stderr(&output));
+    }
+}
+
+/// Case 5: numbers print short (exponent notation where decimals would run on), and no text
+/// makes a figure wide.
+#[test]
+fn numbers_and_texts_keep_outputs_small() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let out = dir.path().join("out");
+    let tiny = dir.path().join("tiny.toml");
+    std::fs::write(
+        &tiny,
+        "format = 1\n[contact]\nkind = \"line\"\nfriction = 5e-324\n[figure]\nresolution = 81\nwidth = 300\n",
+    )
+    .expect("write");
+    let long = dir.path().join("long.toml");
+    std::fs::write(
+        &long,
+        format!(
+            "format = 1\ntitle = \"{}\"\n[contact]\nkind = \"point\"\n[figure]\nresolution = 41\nwidth = 300\n[[panel]]\nsubtitle = \"{}\"\n[[panel]]\nat = 0.5\n",
+            "A very long title ".repeat(500),
+            "a very long subtitle ".repeat(500)
+        ),
+    )
+    .expect("write");
+    let args = [
+        "render",
+        tiny.to_str().expect("utf8"),
+        long.to_str().expect("utf8"),
+        "--out-dir",
+        out.to_str().expect("utf8"),
+    ];
+    let output = run(&args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for (name, widest) in [("tiny", 800), ("long", 1600)] {
+        let image = image::open(out.join(format!("{name}.png"))).expect("png");
+        assert!(image.width() <= widest, "{name}: {} px wide", image.width());
+    }
+    let report = stdout(&run(&["hertz", tiny.to_str().expect("utf8")]));
+    assert!(report.contains("μ = 5e-324"), "{report}");
+    assert!(report.lines().all(|l| l.chars().count() < 200), "{report}");
+    let output = run_with_stdin(&["probe", "--points", "-"], "1e8,0,1e-7\n1e-300,0,1\n");
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    assert!(text.lines().nth(1).expect("row").starts_with("1e8,0,1e-7,"));
+    for field in text.lines().skip(1).flat_map(|l| l.split(',')) {
+        assert!(field.len() <= 24, "{field}");
+    }
+}
+
+/// Case 6: scene, traction and point files are read within limits, so an endless file fails
+/// at once with the limit in the message.
+#[cfg(unix)]
+#[test]
+fn endless_inputs_stop_at_a_limit() {
+    assert_fails_with(&run(&["check", "/dev/zero"]), &["/dev/zero", "1 MiB"]);
+    assert_fails_with(
+        &run(&["probe", "--points", "/dev/zero"]),
+        &["/dev/zero", "64 KiB"],
+    );
+    let (_dir, scene) = scene_file(
+        "format = 1\n[contact]\nkind = \"tractions\"\nmethod = \"numerical\"\n[tractions]\nfile = \"/dev/zero\"\n",
+    );
+    assert_fails_with(
+        &run(&["check", scene.to_str().expect("utf8")]),
+        &["key `tractions.file`", "256 MiB"],
+    );
+    assert_fails_with(
+        &run(&[
+            "surface",
+            "/dev/zero",
+            "--spacing",
+            "1um",
+            "--height-unit",
+            "um",
+        ]),
+        &["/dev/zero"],
+    );
+    // Standard input too: a megabyte without a newline.
+    let output = run_with_stdin(&["probe", "--points", "-"], &"7".repeat(1 << 20));
+    assert_fails_with(&output, &["standard input", "64 KiB"]);
+}
+
+/// Case 10: every command prints through one path: a closed pipe ends quietly, a full disk is
+/// an `error:` line with exit 1, and a full standard error is no panic.
+#[test]
+fn closed_pipes_end_quietly_and_full_disks_are_errors() {
+    use std::io::Read;
+    let points = "0,0,0.5\n".repeat(20_000);
+    let scenes: Vec<String> = (0..1200)
+        .map(|_| repo("scenes/line_tau1.toml").display().to_string())
+        .collect();
+    let mut check_args = vec!["check".to_string()];
+    check_args.extend(scenes);
+    let cases: [(Vec<String>, &str); 2] = [
+        (
+            ["probe", "--points", "-"].map(String::from).to_vec(),
+            points.as_str(),
+        ),
+        (check_args, ""),
+    ];
+    for (args, input) in cases {
+        let mut child = stressfield()
+            .args(&args)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("runs");
+        let mut stdin = child.stdin.take().expect("stdin");
+        let input = input.to_string();
+        let writer = std::thread::spawn(move || {
+            let _ = stdin.write_all(input.as_bytes());
+        });
+        // `| head -c 10`: read ten bytes, then close the pipe.
+        let mut head = [0u8; 10];
+        child
+            .stdout
+            .take()
+            .expect("stdout")
+            .read_exact(&mut head)
+            .expect("ten bytes");
+        let output = child.wait_with_output().expect("ends");
+        writer.join().expect("writer");
+        assert!(
+            output.status.success(),
+            "{}: {:?} {}",
+            args[0],
+            output.status,
+            stderr(&output)
+        );
+        assert_eq!(stderr(&output), "", "{}", args[0]);
+    }
+    #[cfg(target_os = "linux")]
+    {
+        let full = || std::fs::File::create("/dev/full").expect("/dev/full");
+        for args in [
+            &["hertz", "scenes/line_tau1.toml"][..],
+            &["check", "scenes/line_tau1.toml"][..],
+            &["surface", "scenes/surface_worn_homework.toml"][..],
+        ] {
+            let output = stressfield()
+                .args(args)
+                .stdout(full())
+                .output()
+                .expect("runs");
+            assert_eq!(output.status.code(), Some(1), "{args:?}");
+            assert!(
+                stderr(&output).starts_with("error: cannot write to standard output"),
+                "{args:?}: {}",
+                stderr(&output)
+            );
+        }
+        let output = run_with_stdin(&["probe", "--points", "-"], "0,0,1\n");
+        assert!(output.status.success());
+        let output = stressfield()
+            .args(["probe", "--points", "-"])
+            .stdin(Stdio::null())
+            .stderr(full())
+            .output()
+            .expect("runs");
+        assert_eq!(output.status.code(), Some(1), "no panic on a full stderr");
+    }
+}
+
+/// Case 12: a bad probe line is echoed in a few dozen characters, whatever its length.
+#[test]
+fn long_bad_probe_lines_are_cut_in_messages() {
+    let line = format!("0,0,{}x\n", "9".repeat(60_000));
+    let output = run_with_stdin(&["probe", "--points", "-"], &line);
+    assert_fails_with(&output, &["line 1", "60005 characters", "not a number"]);
+    assert!(stderr(&output).len() < 1000, "{}", stderr(&output).len());
+    let output = run_with_stdin(&["probe", "--points", "-"], &"1".repeat(10 << 20));
+    assert_fails_with(&output, &["line 1", "64 KiB"]);
+    assert!(stderr(&output).len() < 1000);
+}
+
+/// Case 13: points farther than 1e9 a are refused for both contact kinds; nearer ones, however
+/// far, give finite (vanishing) stresses.
+#[test]
+fn far_probe_points_are_refused_and_near_ones_are_finite() {
+    for contact in ["line", "point"] {
+        for point in ["1e79,0,1\n", "0,0,1e200\n", "0,-1e300,0\n"] {
+            let output = run_with_stdin(&["probe", "--contact", contact, "--points", "-"], point);
+            assert_fails_with(&output, &["line 1", "1e9 a"]);
+        }
+        let rows = probe_rows(
+            &["probe", "--contact", contact, "--points", "-"],
+            "1e9,0,1\n0,0,1e9\n-1e9,1e9,0\n",
+        );
+        assert_rows_finite(&rows);
+        assert!(
+            rows.iter().all(|r| r[3..].iter().all(|v| v.abs() < 1e-8)),
+            "{rows:?}"
+        );
+    }
+}
+
+/// Cases 12 and 14: a traction table with a column named twice, a traction that overflows in
+/// units of p0, and a grid too long along one side are refused, each naming what is wrong.
+#[test]
+fn bad_traction_tables_are_refused() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let scene = dir.path().join("t.toml");
+    std::fs::write(
+        &scene,
+        "format = 1\n[contact]\nkind = \"tractions\"\na = \"1 mm\"\np0 = \"1 GPa\"\nmethod = \"numerical\"\n[tractions]\nfile = \"t.csv\"\nlength_unit = \"mm\"\nstress_unit = \"MPa\"\n",
+    )
+    .expect("write scene");
+    let scene = scene.to_str().expect("utf8");
+    let grid = |p: &str| format!("0,0,1\n1,0,1\n0,1,{p}\n1,1,1\n");
+    let long_grid: String = (0..20_000)
+        .flat_map(|i| [format!("{i},0,1\n"), format!("{i},1,1\n")])
+        .collect();
+    let cases = [
+        (
+            format!("x,y,p,p\n{}", "0,0,1,2\n1,0,1,2\n0,1,1,2\n1,1,1,2\n"),
+            vec!["`p` is named twice", "columns 3 and 4"],
+        ),
+        (
+            format!("x,y,p\n{}", grid("1e308")),
+            vec!["line 4", "p = 1e308 MPa", "1e12 p0"],
+        ),
+        (
+            format!("x,y,p\n{long_grid}"),
+            vec!["20000 x 2", "more than 4096 nodes along x"],
+        ),
+        (
+            format!("x,y,p\n{}", "0,0,1\n1e300,0,1\n0,1,1\n1e300,1,1\n"),
+            vec!["x = 1e300 mm", "10000 a"],
+        ),
+    ];
+    for (csv, fragments) in cases {
+        std::fs::write(dir.path().join("t.csv"), csv).expect("write csv");
+        let mut fragments = fragments;
+        fragments.push("key `tractions.file`");
+        assert_fails_with(&run(&["check", scene]), &fragments);
     }
 }
 

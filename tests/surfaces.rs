@@ -21,8 +21,8 @@ fn self_affine(n: usize, hurst: f64, seed: u64) -> Generator {
 
 #[test]
 fn the_fitted_hurst_exponent_is_the_generated_one() {
-    // 1024², band from 8 samples to an eighth of the map (inside the self-affine range from
-    // the roll-off at a quarter to the cutoff at 4 samples); periodic, so no window.
+    // 1024², the default band from 4 samples to a quarter of the map (the self-affine range
+    // from the roll-off at a quarter to the cutoff at 4 samples); periodic, so no window.
     for (hurst, seed) in [(0.8, 1), (0.5, 2), (0.3, 3)] {
         let map = generate(&self_affine(1024, hurst, seed)).expect("surface");
         let options = Options {

@@ -2,9 +2,11 @@
 //! whole crate, so keep them few).
 
 mod cli;
+mod contracts;
 mod dcfft;
 mod golden;
 mod line_contact;
+mod mutations;
 mod patch;
 mod point_contact;
 #[cfg(feature = "rerun")]

@@ -800,7 +800,8 @@ fn log_material_points(stream: &RecordingStream, scene: &Scene) -> Result<(), Re
             _ => 0.0,
         };
         for (j, &(x, z)) in sweep.material_points.iter().enumerate() {
-            let s = solution.stress_over_p0(x * unit_over_a, y, z * unit_over_a);
+            // Finite on the surface on a strip or cell edge too (the mean of the neighbours).
+            let s = solution.finite_stress_over_p0(x * unit_over_a, y, z * unit_over_a);
             let base = format!("history/{k}/point{j}");
             for (key, _) in history_components(scene) {
                 let value = match key {

@@ -87,7 +87,7 @@ pub fn record(
         .flatten()
         .filter_map(|cell| match cell {
             Cell::Map(figure) => Some(figure),
-            Cell::Chart(_) => None,
+            Cell::Chart(_) | Cell::Table(_) => None,
         })
         .collect();
     let rough = scene.contact.kind == ContactKind::Rough;

@@ -8,6 +8,7 @@ use plotters::style::RGBAColor;
 use super::font;
 use super::layout::Rect;
 use super::paint::{draw_error, Align, Painter, Target};
+use super::table::{table_png, table_svg, Table};
 use super::ticks::choose_ticks;
 use super::{render_png, render_svg, Figure, RenderError};
 
@@ -542,6 +543,7 @@ pub fn chart_svg(chart: &Chart) -> Result<String, RenderError> {
 pub enum Cell {
     Map(Figure),
     Chart(Chart),
+    Table(Table),
 }
 
 /// A title over rows of maps and charts.
@@ -586,6 +588,7 @@ pub fn sheet_png(sheet: &Sheet) -> Result<image::RgbImage, RenderError> {
                 .map(|cell| match cell {
                     Cell::Map(figure) => render_png(figure),
                     Cell::Chart(chart) => chart_png(chart),
+                    Cell::Table(table) => table_png(table),
                 })
                 .collect::<Result<Vec<_>, _>>()
         })
@@ -639,6 +642,9 @@ pub fn sheet_svg(sheet: &Sheet) -> Result<String, RenderError> {
                         }
                         Cell::Chart(chart) => {
                             Ok((chart_svg(chart)?, (chart.width_px, chart.height_px)))
+                        }
+                        Cell::Table(table) => {
+                            Ok((table_svg(table)?, (table.width_px, table.height_px)))
                         }
                     }
                 })

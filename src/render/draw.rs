@@ -83,7 +83,7 @@ pub(crate) fn draw<DB: DrawingBackend>(
             text_box(painter, &extreme.label)?;
         }
         let (centre, _) = pl.map.center();
-        let subtitle = &figure.panels[index].subtitle;
+        let subtitle = &layout.subtitles[index];
         painter.text(
             subtitle,
             (centre, layout.subtitle_baseline),
@@ -97,7 +97,7 @@ pub(crate) fn draw<DB: DrawingBackend>(
         colorbar(painter, layout, group, bar, &pens)?;
     }
     painter.text(
-        &figure.title,
+        &layout.title,
         (layout.title_x, layout.title_baseline),
         layout.sizes.title,
         Align::Center,

@@ -115,6 +115,26 @@ pub(crate) fn text_width(text: &str, size: f64) -> Result<f64, RenderError> {
     Ok(text.chars().map(|c| glyph_metrics(c, size).0).sum())
 }
 
+/// `text` as set at `size`, cut to at most `max_width` pixels: unchanged when it fits,
+/// otherwise the longest beginning that fits followed by an ellipsis.
+pub(crate) fn fit(text: &str, size: f64, max_width: f64) -> Result<String, RenderError> {
+    if text_width(text, size)? <= max_width {
+        return Ok(text.to_string());
+    }
+    let ellipsis = text_width("…", size)?;
+    // Widths of the beginnings, one character at a time, until the budget is spent.
+    let mut width = ellipsis;
+    let mut end = 0;
+    for (index, c) in text.char_indices() {
+        width += glyph_metrics(c, size).0;
+        if width > max_width {
+            break;
+        }
+        end = index + c.len_utf8();
+    }
+    Ok(format!("{}…", text[..end].trim_end()))
+}
+
 #[cfg(test)]
 mod tests {
     use plotters::style::IntoFont;
@@ -135,6 +155,17 @@ mod tests {
                 "no glyph for {c}"
             );
         }
+    }
+
+    #[test]
+    fn long_text_is_cut_to_its_width() {
+        let short = "μ = 0.3,  ν = 0.3";
+        assert_eq!(fit(short, 14.0, 500.0).expect("fits"), short);
+        let long = "very long subtitle ".repeat(10_000);
+        let cut = fit(&long, 14.0, 300.0).expect("cut");
+        assert!(cut.ends_with('…'), "{cut}");
+        let width = text_width(&cut, 14.0).expect("width");
+        assert!(width <= 300.0 && width > 250.0, "{width}");
     }
 
     #[test]

@@ -150,6 +150,10 @@ pub(crate) struct Layout {
     pub title_baseline: f64,
     /// Horizontal centre of the title.
     pub title_x: f64,
+    /// The title and the panels' subtitles as drawn: cut with an ellipsis where they would be
+    /// wider than the figure could reasonably be (so no text makes an image huge).
+    pub title: String,
+    pub subtitles: Vec<String>,
     pub subtitle_baseline: f64,
     pub panels: Vec<PanelLayout>,
     /// One per scale group, in the order of the groups.
@@ -238,10 +242,19 @@ impl Layout {
         let gutter = |widest: f64| tick_length + tick_gap + widest;
         let rotated_column = label_line + 0.5 * s;
 
-        let subtitle_widths: Vec<f64> = figure
+        // A subtitle at most three times its map's width, a title twice the maps' width; each
+        // at least about eighty characters' worth (an average glyph is about 0.6 em).
+        let subtitle_budget = (3.0 * map_w).max(50.0 * sizes.subtitle);
+        let subtitles: Vec<String> = figure
             .panels
             .iter()
-            .map(|p| font::text_width(&p.subtitle, sizes.subtitle))
+            .map(|p| font::fit(&p.subtitle, sizes.subtitle, subtitle_budget))
+            .collect::<Result<_, _>>()?;
+        let title_budget = (2.0 * count as f64 * map_w).max(50.0 * sizes.title);
+        let title = font::fit(&figure.title, sizes.title, title_budget)?;
+        let subtitle_widths: Vec<f64> = subtitles
+            .iter()
+            .map(|text| font::text_width(text, sizes.subtitle))
             .collect::<Result<_, _>>()?;
         // Horizontal positions of the maps and of the colour bar after each group.
         let colorbar_w = (0.9 * s).clamp(12.0, 30.0).round();
@@ -287,7 +300,7 @@ impl Layout {
         width = width.max(last_subtitle_right + margin);
 
         // The title, centred over the maps unless it needs the whole width.
-        let title_w = font::text_width(&figure.title, sizes.title)?;
+        let title_w = font::text_width(&title, sizes.title)?;
         let maps_centre = (map_x[0] + maps_right) / 2.0;
         let mut shift = 0.0;
         let mut title_x = maps_centre;
@@ -305,7 +318,7 @@ impl Layout {
         // Vertical positions.
         let mut y = margin;
         let mut title_baseline = y;
-        if !figure.title.is_empty() {
+        if !title.is_empty() {
             title_baseline = y + font::ascent(sizes.title);
             y = title_baseline + font::descent(sizes.title) + 0.6 * s;
         }
@@ -360,6 +373,8 @@ impl Layout {
             tick_gap,
             title_baseline,
             title_x,
+            title,
+            subtitles,
             subtitle_baseline,
             panels,
             colorbars: colorbars

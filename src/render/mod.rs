@@ -15,6 +15,7 @@ mod paint;
 mod plan;
 mod scales;
 mod svg;
+pub mod table;
 mod ticks;
 
 use ndarray::Array2;

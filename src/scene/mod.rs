@@ -27,6 +27,25 @@ pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
 /// The scene format this build reads.
 pub const FORMAT: i64 = 1;
 
+/// The largest coefficient of friction accepted (scenes, sweeps, `probe --friction`). Dry
+/// sliding gives 0.1 to 1 and clean metals in vacuum a few; beyond about 10 surfaces weld
+/// rather than slide, and `q = μ p` no longer describes the contact.
+pub const MAX_FRICTION: f64 = 10.0;
+
+/// What a friction coefficient must be, for messages: the range and why.
+pub fn friction_requirement(mu: f64) -> Option<String> {
+    if (0.0..=MAX_FRICTION).contains(&mu) {
+        return None;
+    }
+    Some(format!(
+        "the coefficient of friction must lie in 0..={MAX_FRICTION}, got {}",
+        crate::text::number(mu)
+    ))
+}
+
+/// The hint that goes with [`friction_requirement`].
+pub const FRICTION_HINT: &str = "dry sliding gives 0.1 to 1, clean metals in vacuum a few; beyond 10 surfaces weld rather than slide (q = μ p no longer holds)";
+
 /// A scene that cannot be used, with the key at fault and how to fix it.
 #[derive(Debug, thiserror::Error, PartialEq)]
 #[error("{file}{}: {message}{}", location_text(.key, .line_column), hint_text(.hint))]
@@ -82,15 +101,19 @@ impl Scene {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Self, SceneError> {
         let file = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|e| SceneError {
-            file: file.clone(),
-            key: None,
-            line_column: None,
-            message: format!("cannot read the scene: {e}"),
-            hint: Some(
-                "check the path; scenes are TOML files such as scenes/line_tau1.toml".into(),
-            ),
-        })?;
+        let text =
+            crate::input::read_to_string(path, crate::input::SCENE_FILE_LIMIT).map_err(|e| {
+                SceneError {
+                    file: file.clone(),
+                    key: None,
+                    line_column: None,
+                    message: format!("cannot read the scene: {e}"),
+                    hint: Some(
+                        "check the path; scenes are TOML files such as scenes/line_tau1.toml"
+                            .into(),
+                    ),
+                }
+            })?;
         let name = path
             .file_stem()
             .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());

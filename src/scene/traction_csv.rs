@@ -3,6 +3,19 @@
 
 use ndarray::Array2;
 
+/// The most nodes along x or along y.
+pub const MAX_NODES_PER_SIDE: usize = 4096;
+
+/// The largest traction of a table, where it was read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Largest {
+    /// `|value|`, in the file's unit.
+    pub magnitude: f64,
+    pub line: usize,
+    /// The column: `p`, `qx` or `qy`.
+    pub column: &'static str,
+}
+
 /// Tractions read from a CSV file, still in the file's units.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TractionTable {
@@ -14,13 +27,27 @@ pub struct TractionTable {
     pub pressure: Array2<f64>,
     pub shear_x: Option<Array2<f64>>,
     pub shear_y: Option<Array2<f64>>,
+    /// The largest `|p|`, `|qx|` or `|qy|` (for the caller's check after unit conversion).
+    pub largest: Largest,
 }
 
 /// Reads the table. The header names the columns (`x`, `y`, `p`, and optionally `qx`, `qy`, in
 /// any order); `#` comments and blank lines are skipped; the rows may come in any order but must
 /// cover every node of a regular grid (at least 2 x 2) exactly once. `p >= 0` (compressive
-/// contact pressure). Errors name the line and the fix.
+/// contact pressure). Lines are at most [`crate::input::LINE_LIMIT`] bytes, and the grid at
+/// most [`MAX_NODES_PER_SIDE`] nodes along each side. Errors name the line and the fix.
 pub fn read(text: &str) -> Result<TractionTable, String> {
+    if let Some((number, _)) = text
+        .lines()
+        .enumerate()
+        .find(|(_, l)| l.len() > crate::input::LINE_LIMIT)
+    {
+        return Err(format!(
+            "line {}: longer than the {} allowed for a line: is it the right file?",
+            number + 1,
+            crate::text::bytes(crate::input::LINE_LIMIT as u64)
+        ));
+    }
     let mut lines = text
         .lines()
         .enumerate()
@@ -33,7 +60,8 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
     let column = |name: &str| names.iter().position(|n| *n == name);
     let (Some(ix), Some(iy), Some(ip)) = (column("x"), column("y"), column("p")) else {
         return Err(format!(
-            "line {header_line}: the header must name the columns x, y and p (and optionally qx, qy), got `{header}`"
+            "line {header_line}: the header must name the columns x, y and p (and optionally qx, qy), got `{}`",
+            crate::text::cut(header, 60)
         ));
     };
     if let Some(unknown) = names
@@ -41,12 +69,35 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
         .find(|n| !["x", "y", "p", "qx", "qy"].contains(n))
     {
         return Err(format!(
-            "line {header_line}: unknown column `{unknown}`; the columns are x, y, p, qx, qy"
+            "line {header_line}: unknown column `{}`; the columns are x, y, p, qx, qy",
+            crate::text::cut(unknown, 40)
+        ));
+    }
+    if let Some((second, name)) = names
+        .iter()
+        .enumerate()
+        .find(|(i, n)| names[..*i].contains(n))
+    {
+        return Err(format!(
+            "line {header_line}: the column `{name}` is named twice (columns {} and {}); each of x, y, p, qx, qy may appear once",
+            column(name).map_or(0, |first| first + 1),
+            second + 1
         ));
     }
     let (iqx, iqy) = (column("qx"), column("qy"));
+    let max_rows = MAX_NODES_PER_SIDE * MAX_NODES_PER_SIDE;
     let mut rows: Vec<[f64; 5]> = Vec::new();
+    let mut largest = Largest {
+        magnitude: 0.0,
+        line: header_line,
+        column: "p",
+    };
     for (number, line) in lines {
+        if rows.len() == max_rows {
+            return Err(format!(
+                "line {number}: more than {max_rows} rows; a grid has at most {MAX_NODES_PER_SIDE} x {MAX_NODES_PER_SIDE} nodes"
+            ));
+        }
         let fields: Vec<&str> = line.split(',').map(str::trim).collect();
         if fields.len() != names.len() {
             return Err(format!(
@@ -60,7 +111,7 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
             let v: f64 = fields[index].parse().map_err(|_| {
                 format!(
                     "line {number}: {name} = `{}` is not a number",
-                    fields[index]
+                    crate::text::cut(fields[index], 40)
                 )
             })?;
             if !v.is_finite() {
@@ -81,11 +132,26 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
                 row[2]
             ));
         }
+        for (value, column) in row[2..].iter().zip(["p", "qx", "qy"]) {
+            if value.abs() > largest.magnitude {
+                largest = Largest {
+                    magnitude: value.abs(),
+                    line: number,
+                    column,
+                };
+            }
+        }
         rows.push(row);
     }
     let points: Vec<[f64; 2]> = rows.iter().map(|r| [r[0], r[1]]).collect();
     let grid = crate::grid_table::assemble(&points)?;
     let [ny, nx] = grid.shape;
+    if nx > MAX_NODES_PER_SIDE || ny > MAX_NODES_PER_SIDE {
+        return Err(format!(
+            "a grid of {nx} x {ny} nodes (x by y) has more than {MAX_NODES_PER_SIDE} nodes along {}",
+            if nx > MAX_NODES_PER_SIDE { "x" } else { "y" }
+        ));
+    }
     let mut arrays = [
         Array2::zeros((ny, nx)),
         Array2::zeros((ny, nx)),
@@ -103,6 +169,7 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
         pressure,
         shear_x: iqx.map(|_| shear_x),
         shear_y: iqy.map(|_| shear_y),
+        largest,
     })
 }
 
@@ -138,6 +205,8 @@ mod tests {
             ("x,y,p\n0,0,1\n1,0,1\n0,1,1\n", "every node"),
             ("x,y,p\n0,0,1\n1,0,1\n0,1,1\n0,1,1\n", "appears twice"),
             ("x,y,p\n0,0,1\n0,1,1\n", "two distinct x"),
+            ("x,y,p,p\n0,0,1,1\n", "`p` is named twice (columns 3 and 4)"),
+            ("x,x,y,p\n0,0,0,1\n", "`x` is named twice (columns 1 and 2)"),
         ];
         for (text, fragment) in cases {
             let error = read(text).expect_err(text);

@@ -66,6 +66,18 @@ impl Dimension {
         }
     }
 
+    /// The SI unit values are converted to (the hardness number for hardness).
+    pub fn si_unit(self) -> &'static str {
+        match self {
+            Dimension::Length => "m",
+            Dimension::Pressure => "Pa",
+            Dimension::Force => "N",
+            Dimension::ForcePerLength => "N/m",
+            Dimension::Angle => "rad",
+            Dimension::Hardness => "HB",
+        }
+    }
+
     pub fn unit_list(self) -> String {
         self.units()
             .iter()

@@ -38,8 +38,30 @@ impl StripTractions {
         }
     }
 
-    /// Stress (units of p0) at `(x, z)` by direct summation over the strips (plane strain).
+    /// Stress (units of p0) at `(x, z)` by direct summation over the strips (plane strain):
+    /// exact for the discretised tractions, so on the surface exactly at a strip edge, where
+    /// the traction jumps, the tangential load's `sxx` is logarithmically infinite (and
+    /// `0 x inf`, NaN, where a strip carries none); see [`Self::finite_stress_over_p0`].
     pub fn stress_over_p0(&self, x: f64, z: f64, nu: f64) -> Stress {
+        self.summed(x, z, nu)
+    }
+
+    /// [`Self::stress_over_p0`], made finite on the surface at the strip edges by the mean of
+    /// the values at the centres of the two strips meeting there (half a strip either side):
+    /// the value a user expects of the continuous tractions, to which it converges as the
+    /// strips are refined. (For `szz` and `sxz`, constant on each strip's surface, that is the
+    /// mean of the one-sided limits.) Everywhere else the exact value.
+    pub fn finite_stress_over_p0(&self, x: f64, z: f64, nu: f64) -> Stress {
+        let stress = self.summed(x, z, nu);
+        if z > 0.0 || stress.is_finite() {
+            return stress;
+        }
+        let n = self.pressure.len() as f64;
+        let half = 0.5 * (self.edges[self.pressure.len()] - self.edges[0]) / n;
+        Stress::mean(&[self.summed(x - half, z, nu), self.summed(x + half, z, nu)])
+    }
+
+    fn summed(&self, x: f64, z: f64, nu: f64) -> Stress {
         let mut sum = [0.0; 3];
         for (i, edge) in self.edges.windows(2).enumerate() {
             let (normal, tangential) = strip::uniform_strip(x, z, edge[0], edge[1]);
@@ -77,6 +99,37 @@ impl StripTractions {
 mod tests {
     use super::*;
     use crate::solution::line_hertz;
+
+    #[test]
+    fn surface_values_at_strip_edges_are_the_mean_of_the_neighbouring_centres() {
+        for mu in [0.0, 0.3] {
+            let tractions = StripTractions::hertz(10, mu);
+            // The contact edges (one side unloaded), interior edges, the centre x = 0.
+            for k in [0, 3, 5, 10] {
+                let x = tractions.edges[k];
+                let at_edge = tractions.finite_stress_over_p0(x, 0.0, 0.3);
+                assert!(at_edge.is_finite(), "mu {mu}, x {x}: {at_edge:?}");
+                let left = tractions.stress_over_p0(x - 0.1, 0.0, 0.3);
+                let right = tractions.stress_over_p0(x + 0.1, 0.0, 0.3);
+                let mean = Stress::mean(&[left, right]);
+                assert!(
+                    (at_edge.xx - mean.xx).abs() < 1e-14,
+                    "{at_edge:?} vs {mean:?}"
+                );
+                // szz = -p on the surface: the mean of the two strips' pressures.
+                let (p_left, _) = tractions.at(x - 0.1);
+                let (p_right, _) = tractions.at(x + 0.1);
+                assert!((at_edge.zz + 0.5 * (p_left + p_right)).abs() < 1e-14);
+            }
+            // Just below the surface the exact sum is used, and it is close to the mean.
+            let below = tractions.finite_stress_over_p0(0.0, 1e-3, 0.3);
+            assert_eq!(below, tractions.stress_over_p0(0.0, 1e-3, 0.3));
+            // The exact value of the discrete tractions at an edge is not finite.
+            if mu > 0.0 {
+                assert!(!tractions.stress_over_p0(0.0, 0.0, 0.3).is_finite());
+            }
+        }
+    }
 
     #[test]
     fn discretised_load_is_exact() {

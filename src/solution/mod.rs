@@ -118,6 +118,30 @@ impl Solution {
         }
     }
 
+    /// [`Self::stress_over_p0`] for a point a user asks about (`probe`): the same, except on
+    /// the surface exactly on a strip or cell edge of a numerical solution, where the
+    /// discretised tractions jump and the exact value is infinite or undefined: there the mean
+    /// of the values at the neighbouring strip or cell centres (see
+    /// [`StripTractions::finite_stress_over_p0`], [`PointTractions::finite_stress_over_p0`]).
+    /// Grids keep the exact values (a figure leaves those few samples blank).
+    pub fn finite_stress_over_p0(&self, x_over_a: f64, y_over_a: f64, z_over_a: f64) -> Stress {
+        match self {
+            Solution::LineNumerical {
+                tractions, poisson, ..
+            } => tractions.finite_stress_over_p0(x_over_a, z_over_a, *poisson),
+            Solution::PointNumerical { tractions, .. } => {
+                tractions.finite_stress_over_p0(x_over_a, y_over_a, z_over_a)
+            }
+            Solution::Moved {
+                inner,
+                centre_x_over_a,
+            } => inner.finite_stress_over_p0(x_over_a - centre_x_over_a, y_over_a, z_over_a),
+            Solution::LineHertz { .. } | Solution::SphereHertz { .. } => {
+                self.stress_over_p0(x_over_a, y_over_a, z_over_a)
+            }
+        }
+    }
+
     /// Stresses along a row of points `(xs[i], y, z)`, written into `out` (same length).
     ///
     /// The match on the solution is hoisted out of the loop so the loop body can vectorise.

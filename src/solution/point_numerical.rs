@@ -198,13 +198,53 @@ impl PointTractions {
 
     /// Stress (units of p0) at `(x, y, z)` by direct summation over the cells: exact for the
     /// piecewise-constant tractions; one patch evaluation per loaded cell (periodic: per
-    /// cell and image, [`TractionGrid::periodic_stress_at`]).
+    /// cell and image, [`TractionGrid::periodic_stress_at`]). On the surface exactly on a
+    /// cell edge some components are infinite (see [`super::patch::uniform_patch`] and
+    /// [`Self::finite_stress_over_p0`]).
     pub fn stress_over_p0(&self, x: f64, y: f64, z: f64) -> Stress {
         if self.is_periodic() {
             self.grid.periodic_stress_at(x, y, z, self.poisson)
         } else {
             self.grid.stress_at(x, y, z, self.poisson)
         }
+    }
+
+    /// [`Self::stress_over_p0`], made finite on the surface on the cell edges and corners,
+    /// where the discretised tractions jump and some of the cells' stresses are
+    /// logarithmically infinite: there the mean of the values at the centres of the cells
+    /// meeting there (two across an edge, four at a corner; half a cell away), to which the
+    /// continuous tractions' value is the limit as the grid is refined. Where the exact value
+    /// is finite on an edge it is kept (the mean of the one-sided limits).
+    pub fn finite_stress_over_p0(&self, x: f64, y: f64, z: f64) -> Stress {
+        let stress = self.stress_over_p0(x, y, z);
+        if z > 0.0 || stress.is_finite() {
+            return stress;
+        }
+        let [dx, dy] = self.grid.cell();
+        let [x0, y0] = self.grid.origin();
+        let on_edge = |u: f64, origin: f64, h: f64| {
+            let f = (u - origin) / h;
+            (f - f.round()).abs() <= 1e-9 * f.abs().max(1.0)
+        };
+        let (on_x, on_y) = (on_edge(x, x0, dx), on_edge(y, y0, dy));
+        // Neither found by the test (a rounding away from the edge): both.
+        let (on_x, on_y) = (on_x || !on_y, on_y || !on_x);
+        let xs: &[f64] = if on_x {
+            &[x - 0.5 * dx, x + 0.5 * dx]
+        } else {
+            &[x]
+        };
+        let ys: &[f64] = if on_y {
+            &[y - 0.5 * dy, y + 0.5 * dy]
+        } else {
+            &[y]
+        };
+        let around: Vec<Stress> = ys
+            .iter()
+            .flat_map(|&v| xs.iter().map(move |&u| (u, v)))
+            .map(|(u, v)| self.stress_over_p0(u, v, z))
+            .collect();
+        Stress::mean(&around)
     }
 
     /// The tractions `(p, qx)` of the cell containing `(x, y)` (zero outside an isolated
@@ -301,6 +341,39 @@ mod tests {
         let (p, q) = resultants(&partial);
         assert!((p / third - 1.0).abs() < 1e-4, "{p}");
         assert!((q / (0.6 * 0.5 * third) - 1.0).abs() < 1e-4, "{q}");
+    }
+
+    #[test]
+    fn surface_values_on_cell_edges_are_finite_means_of_the_neighbouring_centres() {
+        // 8 cells over ±2: edges at multiples of 0.5, a corner at the origin.
+        let tractions = PointTractions::hertz_sphere(8, 2.0, 0.3, 0.3).expect("grid");
+        let exact = |x: f64, y: f64| tractions.grid().stress_at(x, y, 0.0, 0.3);
+        assert!(!tractions.stress_over_p0(0.0, 0.0, 0.0).is_finite());
+        let corner = tractions.finite_stress_over_p0(0.0, 0.0, 0.0);
+        assert!(corner.is_finite(), "{corner:?}");
+        let four = Stress::mean(&[
+            exact(-0.25, -0.25),
+            exact(0.25, -0.25),
+            exact(-0.25, 0.25),
+            exact(0.25, 0.25),
+        ]);
+        assert_eq!(corner, four);
+        // On an x edge away from the corners: the two cells either side.
+        let edge = tractions.finite_stress_over_p0(0.5, 0.25, 0.0);
+        assert!(edge.is_finite(), "{edge:?}");
+        assert_eq!(edge, Stress::mean(&[exact(0.25, 0.25), exact(0.75, 0.25)]));
+        // szz = -p on the surface: the mean of the four cells' pressures at the corner.
+        let p: f64 = [(-0.25, -0.25), (0.25, -0.25), (-0.25, 0.25), (0.25, 0.25)]
+            .iter()
+            .map(|&(x, y)| tractions.traction_at(x, y).0)
+            .sum::<f64>()
+            / 4.0;
+        assert!((corner.zz + p).abs() < 1e-12, "{} vs {p}", corner.zz);
+        // Cell centres and points below the surface are untouched.
+        assert_eq!(
+            tractions.finite_stress_over_p0(0.25, 0.25, 0.0),
+            exact(0.25, 0.25)
+        );
     }
 
     #[test]

@@ -50,6 +50,20 @@ impl Stress {
         }
     }
 
+    /// Whether every component is a finite number.
+    pub fn is_finite(&self) -> bool {
+        [self.xx, self.yy, self.zz, self.yz, self.xz, self.xy]
+            .iter()
+            .all(|v| v.is_finite())
+    }
+
+    /// The mean of several stresses (componentwise).
+    #[must_use]
+    pub fn mean(stresses: &[Stress]) -> Self {
+        let sum = stresses.iter().fold(Stress::default(), |sum, s| sum + *s);
+        sum.scaled(1.0 / stresses.len().max(1) as f64)
+    }
+
     /// Hydrostatic (mean normal) stress `(sxx + syy + szz) / 3`.
     pub fn hydrostatic(&self) -> f64 {
         (self.xx + self.yy + self.zz) / 3.0

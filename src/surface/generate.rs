@@ -34,9 +34,10 @@
 
 use std::f64::consts::PI;
 
-use ndarray::Array2;
+use ndarray::{Array2, Axis, Zip};
 use rand_chacha::ChaCha8Rng;
 use rand_core::{RngCore, SeedableRng};
+use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 
 use super::{HeightMap, SurfaceError};
@@ -98,7 +99,7 @@ pub struct Generator {
 /// Parameters that cannot make a surface.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum GenerateError {
-    #[error("{name} {requirement}, got {value}")]
+    #[error("{name} {requirement}, got {}", crate::text::number(*.value))]
     Parameter {
         name: &'static str,
         requirement: &'static str,
@@ -206,6 +207,18 @@ impl Normal {
         }
     }
 
+    /// The stream of `seed` from its deviate number `index` on: deviates `2k` and `2k + 1`
+    /// come from the 64-bit outputs `2k` and `2k + 1`, that is the 32-bit words `4k..4k + 4`,
+    /// so any position can be reached without drawing what comes before it.
+    fn at(seed: u64, index: usize) -> Self {
+        let mut normal = Self::new(seed);
+        normal.rng.set_word_pos(4 * (index / 2) as u128);
+        if index % 2 == 1 {
+            normal.sample();
+        }
+        normal
+    }
+
     fn uniform(&mut self) -> f64 {
         ((self.rng.next_u64() >> 11) + 1) as f64 * (1.0 / (1u64 << 53) as f64)
     }
@@ -219,6 +232,29 @@ impl Normal {
         self.spare = Some(radius * angle.sin());
         radius * angle.cos()
     }
+}
+
+/// Deviates per parallel chunk of [`white_noise`] (a fixed count, so the chunks, and with them
+/// the bits, do not depend on the number of threads).
+const NOISE_CHUNK: usize = 1 << 15;
+
+/// `[ny, nx]` standard normal deviates of `seed` in row-major order: the sequence of
+/// [`Normal::new`]`(seed)`, drawn in parallel chunks that each start at their own position.
+fn white_noise(seed: u64, [ny, nx]: [usize; 2]) -> Array2<f64> {
+    let mut noise = Array2::zeros((ny, nx));
+    let values = noise
+        .as_slice_mut()
+        .expect("a new array is contiguous in standard order");
+    values
+        .par_chunks_mut(NOISE_CHUNK)
+        .enumerate()
+        .for_each(|(chunk, values)| {
+            let mut normal = Normal::at(seed, chunk * NOISE_CHUNK);
+            for value in values {
+                *value = normal.sample();
+            }
+        });
+    noise
 }
 
 /// The wavenumbers `(qx, qy)` (rad/m) of the stored spectrum entry `[kx, ky]`, or `None` on a
@@ -251,32 +287,45 @@ pub fn generate(generator: &Generator) -> Result<HeightMap, GenerateError> {
     };
     let period_m = [nx as f64 * dx, ny as f64 * dy];
 
-    let mut normal = Normal::new(generator.seed);
-    let noise = Array2::from_shape_simple_fn((ny, nx), || normal.sample());
+    let mut noise = white_noise(generator.seed, [ny, nx]);
     let plan = RealFft2::new([ny, nx]);
     let mut work = plan.work();
     let mut spectrum = plan.new_spectrum();
     plan.forward(noise.view(), &mut spectrum, &mut work)?;
 
     // Filter, and accumulate Σ|H|² and Σ|H|² q² over the full spectrum (columns kx > 0 of the
-    // stored half stand for their conjugates too, except a Nyquist column).
-    let (mut power, mut slope_power) = (0.0, 0.0);
-    for ((kx, ky), value) in spectrum.indexed_iter_mut() {
-        let Some((qx, qy)) = wavenumbers(kx, ky, [ny, nx], period_m) else {
-            *value = Complex::new(0.0, 0.0);
-            continue;
-        };
-        let q = qx.hypot(qy);
-        if q == 0.0 {
-            *value = Complex::new(0.0, 0.0);
-            continue;
-        }
-        *value *= generator.spectrum.filter(q);
-        let weight = if kx == 0 { 1.0 } else { 2.0 };
-        let norm = value.norm_sqr();
-        power += weight * norm;
-        slope_power += weight * norm * q * q;
-    }
+    // stored half stand for their conjugates too, except a Nyquist column). In parallel over
+    // kx, each kx summed on its own and the sums added in kx order: the same bits on any
+    // number of threads.
+    let spectral = &generator.spectrum;
+    let sums: Vec<(f64, f64)> = spectrum
+        .axis_iter_mut(Axis(0))
+        .into_par_iter()
+        .enumerate()
+        .map(|(kx, mut column)| {
+            let (mut power, mut slope_power) = (0.0, 0.0);
+            let weight = if kx == 0 { 1.0 } else { 2.0 };
+            for (ky, value) in column.iter_mut().enumerate() {
+                let Some((qx, qy)) = wavenumbers(kx, ky, [ny, nx], period_m) else {
+                    *value = Complex::new(0.0, 0.0);
+                    continue;
+                };
+                let q2 = qx * qx + qy * qy;
+                if q2 == 0.0 {
+                    *value = Complex::new(0.0, 0.0);
+                    continue;
+                }
+                *value *= spectral.filter(q2.sqrt());
+                let norm = value.norm_sqr();
+                power += weight * norm;
+                slope_power += weight * norm * q2;
+            }
+            (power, slope_power)
+        })
+        .collect();
+    let (power, slope_power) = sums
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (p, s)| (a + p, b + s));
     if power == 0.0 {
         return Err(GenerateError::Empty);
     }
@@ -286,9 +335,10 @@ pub fn generate(generator: &Generator) -> Result<HeightMap, GenerateError> {
         Amplitude::RmsHeight(rms) => rms / (power.sqrt() / count),
         Amplitude::RmsSlope(rms) => rms / (slope_power.sqrt() / count),
     };
-    spectrum.mapv_inplace(|v| v * scale);
-    let mut heights = Array2::zeros((ny, nx));
-    plan.inverse(&mut spectrum, heights.view_mut(), &mut work)?;
+    spectrum.par_mapv_inplace(|v| v * scale);
+    // The noise's memory takes the heights.
+    plan.inverse(&mut spectrum, noise.view_mut(), &mut work)?;
+    let mut heights = noise;
 
     match generator.form {
         Form::None => {}
@@ -305,13 +355,13 @@ pub fn generate(generator: &Generator) -> Result<HeightMap, GenerateError> {
                 return Err(GenerateError::FormTooSmall { radius_m, half_m });
             }
             let (cx, cy) = (0.5 * (nx - 1) as f64 * dx, 0.5 * (ny - 1) as f64 * dy);
-            for ((j, i), h) in heights.indexed_iter_mut() {
+            Zip::indexed(&mut heights).par_for_each(|(j, i), h| {
                 let x = i as f64 * dx - cx;
                 let y = if along_y { j as f64 * dy - cy } else { 0.0 };
                 let r2 = x * x + y * y;
                 // sqrt(R² - r²) - R without cancellation.
                 *h -= r2 / (radius_m + (radius_m * radius_m - r2).sqrt());
-            }
+            });
         }
     }
     Ok(HeightMap::new(heights, generator.spacing_m)?)
@@ -409,6 +459,20 @@ mod tests {
         let expected = (-2.0 * u1.ln()).sqrt() * (2.0 * PI * u2).cos();
         assert_eq!(first[0], expected);
         assert_eq!(word, 0xb585f767a79a3b6c, "ChaCha8 stream of seed 0");
+    }
+
+    #[test]
+    fn parallel_noise_is_the_sequential_stream() {
+        // Two chunks (the second starts inside a row of 1001), and starts at odd positions
+        // (the second deviate of a Box-Muller pair) directly.
+        let shape = [40, 1001];
+        let noise = white_noise(5, shape);
+        let mut normal = Normal::new(5);
+        let sequential: Vec<f64> = (0..shape[0] * shape[1]).map(|_| normal.sample()).collect();
+        assert_eq!(noise.as_slice().expect("contiguous"), &sequential[..]);
+        for index in [0, 1, 2, 7, 32768, 32769] {
+            assert_eq!(Normal::at(5, index).sample(), sequential[index], "{index}");
+        }
     }
 
     #[test]

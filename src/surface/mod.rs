@@ -12,14 +12,21 @@ pub mod stats;
 pub mod x3p;
 
 use ndarray::Array2;
+use rayon::prelude::*;
 
 /// Why a height map cannot be built.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SurfaceError {
     #[error("a height map needs at least 2 x 2 samples, got {rows} row(s) of {columns}")]
     TooSmall { rows: usize, columns: usize },
-    #[error("the sample spacing must be positive and finite, got dx = {dx} m, dy = {dy} m")]
+    #[error("the sample spacing must lie between {} m and {} m, got dx = {} m, dy = {} m", crate::text::compact(MIN_SPACING_M), crate::text::compact(MAX_SPACING_M), crate::text::number(*.dx), crate::text::number(*.dy))]
     Spacing { dx: f64, dy: f64 },
+    #[error("the height at row {row}, column {column} is {} m, more than the {} m a surface's height may reach (are the height unit and the spacing right?)", crate::text::number(*.value), crate::text::compact(MAX_HEIGHT_M))]
+    TooHigh {
+        row: usize,
+        column: usize,
+        value: f64,
+    },
     #[error("the height at row {row}, column {column} is not finite ({value})")]
     NotFinite {
         row: usize,
@@ -27,6 +34,14 @@ pub enum SurfaceError {
         value: f64,
     },
 }
+
+/// The smallest sample spacing, m: an atomic spacing (an AFM scan).
+pub const MIN_SPACING_M: f64 = 1e-10;
+/// The largest sample spacing, m.
+pub const MAX_SPACING_M: f64 = 1.0;
+/// The largest height (in size), m: far beyond any roughness or form a contact sees, and far
+/// from where the statistics' sums of squares and the contact solver's sums could overflow.
+pub const MAX_HEIGHT_M: f64 = 1.0;
 
 /// Heights of a surface sampled on a regular grid.
 #[derive(Clone, Debug, PartialEq)]
@@ -36,21 +51,31 @@ pub struct HeightMap {
 }
 
 impl HeightMap {
-    /// Checks the samples (at least 2 x 2, every height finite: missing points must have been
-    /// refused or filled by the reader) and the spacing `[dx, dy]` (positive, finite).
+    /// Checks the samples (at least 2 x 2, every height finite, missing points must have been
+    /// refused or filled by the reader, and at most [`MAX_HEIGHT_M`] in size) and the spacing
+    /// `[dx, dy]` (within [`MIN_SPACING_M`] and [`MAX_SPACING_M`]).
     pub fn new(heights_m: Array2<f64>, spacing_m: [f64; 2]) -> Result<Self, SurfaceError> {
         let (rows, columns) = heights_m.dim();
         if rows < 2 || columns < 2 {
             return Err(SurfaceError::TooSmall { rows, columns });
         }
         let [dx, dy] = spacing_m;
-        if !(dx > 0.0 && dy > 0.0 && dx.is_finite() && dy.is_finite()) {
+        let spacing_ok = |d: f64| (MIN_SPACING_M..=MAX_SPACING_M).contains(&d);
+        if !(spacing_ok(dx) && spacing_ok(dy)) {
             return Err(SurfaceError::Spacing { dx, dy });
         }
-        if let Some(((row, column), &value)) =
-            heights_m.indexed_iter().find(|(_, v)| !v.is_finite())
+        if !heights_m.par_iter().all(|v| v.is_finite()) {
+            if let Some(((row, column), &value)) =
+                heights_m.indexed_iter().find(|(_, v)| !v.is_finite())
+            {
+                return Err(SurfaceError::NotFinite { row, column, value });
+            }
+        }
+        if let Some(((row, column), &value)) = heights_m
+            .indexed_iter()
+            .find(|(_, v)| v.abs() > MAX_HEIGHT_M)
         {
-            return Err(SurfaceError::NotFinite { row, column, value });
+            return Err(SurfaceError::TooHigh { row, column, value });
         }
         Ok(Self {
             heights_m,
@@ -105,6 +130,26 @@ mod tests {
             HeightMap::new(ok.clone(), [0.0, 1e-6]),
             Err(SurfaceError::Spacing { .. })
         ));
+        // Issue 13: spacings and heights a surface cannot mean are refused, not overflowed.
+        for spacing in [[1e-300, 1e-6], [1e-6, 1e300], [f64::INFINITY, 1e-6]] {
+            assert!(matches!(
+                HeightMap::new(ok.clone(), spacing),
+                Err(SurfaceError::Spacing { .. })
+            ));
+        }
+        assert!(HeightMap::new(ok.clone(), [MIN_SPACING_M, MAX_SPACING_M]).is_ok());
+        let mut high = ok.clone();
+        high[[0, 1]] = -1e300;
+        let error = HeightMap::new(high, [1e-6, 1e-6]).expect_err("too high");
+        assert!(matches!(
+            error,
+            SurfaceError::TooHigh {
+                row: 0,
+                column: 1,
+                ..
+            }
+        ));
+        assert!(error.to_string().contains("-1e300 m"), "{error}");
         let mut bad = ok;
         bad[[1, 2]] = f64::NAN;
         assert!(matches!(

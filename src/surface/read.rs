@@ -140,7 +140,20 @@ fn read_text(path: &Path) -> Result<String, ReadError> {
             needed_mib: (size + size * 2) >> 20,
         });
     }
-    std::fs::read_to_string(path).map_err(io)
+    // Counted as read too: a device or a pipe (`/dev/zero`) has no size beforehand.
+    crate::input::read_to_string(path, limit).map_err(|e| match e {
+        crate::input::InputError::Io(source) => io(source),
+        crate::input::InputError::TooLarge { limit } => ReadError::TooLarge {
+            path: name.clone(),
+            size_mib: (limit >> 20) + 1,
+            limit_mib: limit >> 20,
+            needed_mib: (limit * 3) >> 20,
+        },
+        other => ReadError::Format {
+            path: name.clone(),
+            message: other.to_string(),
+        },
+    })
 }
 
 /// Reads a surface file (see the module doc for the formats).
@@ -531,22 +544,22 @@ mod tests {
         assert!(ascii("1 2\n3 4\n", zero)
             .expect_err("zero")
             .to_string()
-            .contains("spacing must be positive"));
+            .contains("spacing must lie between"));
     }
 
     #[test]
     fn missing_points_are_interpolated_on_request() {
         let options = ReadOptions {
             spacing_m: Some([1e-6, 1e-6]),
-            height_unit_m: Some(1.0),
+            height_unit_m: Some(1e-6),
             fill: Fill::Interpolate,
             ..ReadOptions::default()
         };
-        // A plane z = x + 2y with two holes: harmonic interpolation restores it exactly.
+        // A plane z = x + 2y (um) with two holes: harmonic interpolation restores it exactly.
         let text = "0 1 2 3\n2 nan 4 5\n4 5 NaN 7\n6 7 8 9\n";
         let map = ascii(text, options).expect("filled");
-        assert!((map.heights_m()[[1, 1]] - 3.0).abs() < 1e-7);
-        assert!((map.heights_m()[[2, 2]] - 6.0).abs() < 1e-7);
+        assert!((map.heights_m()[[1, 1]] - 3e-6).abs() < 1e-13);
+        assert!((map.heights_m()[[2, 2]] - 6e-6).abs() < 1e-13);
         let all = ReadOptions { ..options };
         assert!(ascii("nan nan\nnan nan\n", all).is_err());
     }

@@ -56,7 +56,8 @@
 
 use std::f64::consts::PI;
 
-use ndarray::Array2;
+use ndarray::{Array2, Axis, Zip};
+use rayon::prelude::*;
 
 use super::HeightMap;
 use crate::transform::{signed_index, RealFft2, TransformError};
@@ -84,8 +85,11 @@ impl FormRemoval {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Options {
     pub form: FormRemoval,
-    /// Band of wavelengths `(shortest, longest)` in m for the Hurst fit; `None`: from 8
-    /// samples to an eighth of the map's shorter side.
+    /// Band of wavelengths `(shortest, longest)` in m for the Hurst fit; `None`: from 4
+    /// samples to a quarter of the map's shorter side (a decade or more from 160 samples on;
+    /// the range of a generated surface's power law, whose cutoff is 4 samples and roll-off
+    /// a quarter of the map by default). Set it for measured maps whose shortest wavelengths
+    /// carry the instrument's response.
     pub band_m: Option<(f64, f64)>,
     /// Hann window before the spectra (measured, non-periodic maps).
     pub window: bool,
@@ -229,54 +233,65 @@ pub struct Characterisation {
     pub asperity: Asperity,
 }
 
-/// Least-squares fit of `z` by the given basis functions of the sample position `(x, y)` (m),
-/// by the normal equations (solved by Gaussian elimination with partial pivoting).
-fn least_squares(
+/// Per-row values `f(j)` of the rows `0..rows`, computed in parallel and returned in row
+/// order: sums folded from them in that order have the same bits on any number of threads.
+fn per_row<T: Send>(rows: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
+    (0..rows).into_par_iter().map(f).collect()
+}
+
+/// Least-squares fit of `z` by `K` basis functions of the sample indices `(i, j)`, by the
+/// normal equations (solved by Gaussian elimination with partial pivoting).
+fn least_squares<const K: usize>(
     map: &Array2<f64>,
-    spacing: [f64; 2],
-    basis: &dyn Fn(f64, f64) -> Vec<f64>,
-) -> Vec<f64> {
-    let k = basis(0.0, 0.0).len();
-    let mut a = vec![vec![0.0; k + 1]; k];
-    // Centre the coordinates for conditioning; the returned coefficients are in the centred
-    // frame and the caller evaluates with the same basis.
-    for ((j, i), &z) in map.indexed_iter() {
-        let b = basis(i as f64 * spacing[0], j as f64 * spacing[1]);
-        for r in 0..k {
-            for c in 0..k {
-                a[r][c] += b[r] * b[c];
+    basis: &(dyn Fn(usize, usize) -> [f64; K] + Sync),
+) -> [f64; K] {
+    let ny = map.nrows();
+    let rows = per_row(ny, |j| {
+        let (mut a, mut r) = ([[0.0; K]; K], [0.0; K]);
+        for (i, &z) in map.row(j).iter().enumerate() {
+            let b = basis(i, j);
+            for p in 0..K {
+                for q in 0..K {
+                    a[p][q] += b[p] * b[q];
+                }
+                r[p] += b[p] * z;
             }
-            a[r][k] += b[r] * z;
+        }
+        (a, r)
+    });
+    let (mut a, mut r) = ([[0.0; K]; K], [0.0; K]);
+    for (row_a, row_r) in &rows {
+        for (sum, row) in a.iter_mut().zip(row_a) {
+            for (sum, value) in sum.iter_mut().zip(row) {
+                *sum += value;
+            }
+        }
+        for (sum, value) in r.iter_mut().zip(row_r) {
+            *sum += value;
         }
     }
-    for col in 0..k {
-        let pivot = (col..k)
+    for col in 0..K {
+        let pivot = (col..K)
             .max_by(|&p, &q| a[p][col].abs().total_cmp(&a[q][col].abs()))
             .unwrap_or(col);
         a.swap(col, pivot);
+        r.swap(col, pivot);
         let d = a[col][col];
         if d == 0.0 {
             continue;
         }
-        let pivot_row = a[col].clone();
-        for (r, row) in a.iter_mut().enumerate().take(k) {
-            if r != col {
-                let f = row[col] / d;
-                for (value, &pivot_value) in row.iter_mut().zip(&pivot_row).take(k + 1).skip(col) {
-                    *value -= f * pivot_value;
+        let (pivot_row, pivot_rhs) = (a[col], r[col]);
+        for row in 0..K {
+            if row != col {
+                let f = a[row][col] / d;
+                for c in col..K {
+                    a[row][c] -= f * pivot_row[c];
                 }
+                r[row] -= f * pivot_rhs;
             }
         }
     }
-    (0..k)
-        .map(|r| {
-            if a[r][r] == 0.0 {
-                0.0
-            } else {
-                a[r][k] / a[r][r]
-            }
-        })
-        .collect()
+    std::array::from_fn(|k| if a[k][k] == 0.0 { 0.0 } else { r[k] / a[k][k] })
 }
 
 /// The levelled heights and the removed plane's coefficients `[c0, c1, c2]`.
@@ -284,32 +299,37 @@ pub fn level(map: &HeightMap, form: FormRemoval) -> (Array2<f64>, [f64; 3]) {
     let heights = map.heights_m();
     let spacing = map.spacing_m();
     let [ny, nx] = map.shape();
-    let (cx, cy) = (
-        0.5 * (nx - 1) as f64 * spacing[0],
-        0.5 * (ny - 1) as f64 * spacing[1],
-    );
-    let (sx, sy) = (cx.max(f64::MIN_POSITIVE), cy.max(f64::MIN_POSITIVE));
-    // Scaled, centred coordinates u = (x - cx)/sx in [-1, 1].
-    let plane_basis = move |x: f64, y: f64| vec![1.0, (x - cx) / sx, (y - cy) / sy];
-    let quadratic_basis = move |x: f64, y: f64| {
-        let (u, v) = ((x - cx) / sx, (y - cy) / sy);
-        vec![1.0, u, v, u * u, u * v, v * v]
+    // Centred, scaled coordinates u = (x - cx)/sx in [-1, 1] (for conditioning).
+    let (ci, cj) = (0.5 * (nx - 1) as f64, 0.5 * (ny - 1) as f64);
+    let (si, sj) = (ci.max(f64::MIN_POSITIVE), cj.max(f64::MIN_POSITIVE));
+    let uv = move |i: usize, j: usize| ((i as f64 - ci) / si, (j as f64 - cj) / sj);
+    let plane_basis = move |i: usize, j: usize| {
+        let (u, v) = uv(i, j);
+        [1.0, u, v]
     };
-    let plane = least_squares(heights, spacing, &plane_basis);
-    let basis: &dyn Fn(f64, f64) -> Vec<f64> = match form {
-        FormRemoval::Plane => &plane_basis,
-        FormRemoval::Quadratic => &quadratic_basis,
+    let quadratic_basis = move |i: usize, j: usize| {
+        let (u, v) = uv(i, j);
+        [1.0, u, v, u * u, u * v, v * v]
     };
-    let coefficients = match form {
-        FormRemoval::Plane => plane.clone(),
-        FormRemoval::Quadratic => least_squares(heights, spacing, &quadratic_basis),
-    };
-    let levelled = Array2::from_shape_fn((ny, nx), |(j, i)| {
-        let b = basis(i as f64 * spacing[0], j as f64 * spacing[1]);
-        heights[[j, i]] - b.iter().zip(&coefficients).map(|(b, c)| b * c).sum::<f64>()
-    });
+    let plane = least_squares(heights, &plane_basis);
+    let mut levelled = heights.clone();
+    match form {
+        FormRemoval::Plane => Zip::indexed(&mut levelled).par_for_each(|(j, i), z| {
+            let b = plane_basis(i, j);
+            *z -= b[0] * plane[0] + b[1] * plane[1] + b[2] * plane[2];
+        }),
+        FormRemoval::Quadratic => {
+            let c = least_squares(heights, &quadratic_basis);
+            Zip::indexed(&mut levelled).par_for_each(|(j, i), z| {
+                let b = quadratic_basis(i, j);
+                *z -= b.iter().zip(&c).map(|(b, c)| b * c).sum::<f64>();
+            })
+        }
+    }
     // The plane in physical coordinates: c0 + c1 x + c2 y.
-    let (p0, p1, p2) = (plane[0], plane[1] / sx, plane[2] / sy);
+    let [dx, dy] = spacing;
+    let (cx, cy) = (ci * dx, cj * dy);
+    let (p0, p1, p2) = (plane[0], plane[1] / (si * dx), plane[2] / (sj * dy));
     (levelled, [p0 - p1 * cx - p2 * cy, p1, p2])
 }
 
@@ -339,14 +359,39 @@ fn moments_of(values: impl Iterator<Item = f64> + Clone) -> (f64, f64, f64, f64)
 
 /// ISO 25178-2 height parameters of levelled heights.
 pub fn height_parameters(z: &Array2<f64>) -> HeightParameters {
-    let (sa, sq, ssk, sku) = moments_of(z.iter().copied());
-    let (low, high) = z
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-            (a.min(v), b.max(v))
-        });
+    let (ny, nx) = z.dim();
+    let n = (nx * ny).max(1) as f64;
+    let mean = per_row(ny, |j| z.row(j).sum()).iter().sum::<f64>() / n;
+    let rows = per_row(ny, |j| {
+        let (mut m, mut low, mut high) = ([0.0; 4], f64::INFINITY, f64::NEG_INFINITY);
+        for &v in z.row(j) {
+            let d = v - mean;
+            let d2 = d * d;
+            m[0] += d.abs();
+            m[1] += d2;
+            m[2] += d2 * d;
+            m[3] += d2 * d2;
+            low = low.min(v);
+            high = high.max(v);
+        }
+        (m, low, high)
+    });
+    let (mut m, mut low, mut high) = ([0.0; 4], f64::INFINITY, f64::NEG_INFINITY);
+    for (row, l, h) in &rows {
+        for (sum, value) in m.iter_mut().zip(row) {
+            *sum += value;
+        }
+        low = low.min(*l);
+        high = high.max(*h);
+    }
+    let sq = (m[1] / n).sqrt();
+    let (ssk, sku) = if sq > 0.0 {
+        (m[2] / n / sq.powi(3), m[3] / n / sq.powi(4))
+    } else {
+        (0.0, 0.0)
+    };
     HeightParameters {
-        sa,
+        sa: m[0] / n,
         sq,
         ssk,
         sku,
@@ -360,17 +405,22 @@ pub fn height_parameters(z: &Array2<f64>) -> HeightParameters {
 pub fn hybrid_parameters(z: &Array2<f64>, spacing: [f64; 2]) -> (f64, f64) {
     let (ny, nx) = z.dim();
     let [dx, dy] = spacing;
-    let (mut slope2, mut area) = (0.0, 0.0);
-    for j in 0..ny - 1 {
+    let rows = per_row(ny - 1, |j| {
+        let (mut slope2, mut area) = (0.0, 0.0);
+        let (lower, upper) = (z.row(j), z.row(j + 1));
         for i in 0..nx - 1 {
-            let zx = (z[[j, i + 1]] - z[[j, i]] + z[[j + 1, i + 1]] - z[[j + 1, i]]) / (2.0 * dx);
-            let zy = (z[[j + 1, i]] - z[[j, i]] + z[[j + 1, i + 1]] - z[[j, i + 1]]) / (2.0 * dy);
+            let zx = (lower[i + 1] - lower[i] + upper[i + 1] - upper[i]) / (2.0 * dx);
+            let zy = (upper[i] - lower[i] + upper[i + 1] - lower[i + 1]) / (2.0 * dy);
             let s = zx * zx + zy * zy;
             slope2 += s;
             // sqrt(1 + s) - 1 without cancellation.
             area += s / ((1.0 + s).sqrt() + 1.0);
         }
-    }
+        (slope2, area)
+    });
+    let (slope2, area) = rows
+        .iter()
+        .fold((0.0, 0.0), |(a, b), (s, r)| (a + s, b + r));
     let cells = ((nx - 1) * (ny - 1)) as f64;
     ((slope2 / cells).sqrt(), area / cells)
 }
@@ -378,10 +428,10 @@ pub fn hybrid_parameters(z: &Array2<f64>, spacing: [f64; 2]) -> (f64, f64) {
 /// ISO 4287 parameters of the rows, each with its least-squares line removed, averaged.
 pub fn profile_parameters(z: &Array2<f64>) -> ProfileParameters {
     let (ny, nx) = z.dim();
-    let mut sums = [0.0; 4];
     let xs: Vec<f64> = (0..nx).map(|i| i as f64 - 0.5 * (nx - 1) as f64).collect();
     let sxx: f64 = xs.iter().map(|x| x * x).sum();
-    for row in z.rows() {
+    let rows = per_row(ny, |j| {
+        let row = z.row(j);
         let mean = row.sum() / nx as f64;
         let slope = if sxx > 0.0 {
             row.iter().zip(&xs).map(|(v, x)| v * x).sum::<f64>() / sxx
@@ -389,7 +439,10 @@ pub fn profile_parameters(z: &Array2<f64>) -> ProfileParameters {
             0.0
         };
         let residual = row.iter().zip(&xs).map(move |(v, x)| v - mean - slope * x);
-        let (ra, rq, rsk, rku) = moments_of(residual);
+        moments_of(residual)
+    });
+    let mut sums = [0.0; 4];
+    for (ra, rq, rsk, rku) in &rows {
         for (s, v) in sums.iter_mut().zip([ra, rq, rsk, rku]) {
             *s += v;
         }
@@ -407,26 +460,43 @@ pub fn profile_parameters(z: &Array2<f64>) -> ProfileParameters {
 pub fn spectral_moments(z: &Array2<f64>, spacing: [f64; 2]) -> Moments {
     let (ny, nx) = z.dim();
     let [dx, dy] = spacing;
-    let m0 = z.iter().map(|v| v * v).sum::<f64>() / z.len() as f64;
-    let (mut m2x, mut m2y, mut m4x, mut m4y) = (0.0, 0.0, 0.0, 0.0);
-    for j in 0..ny {
-        for i in 0..nx - 1 {
-            m2x += ((z[[j, i + 1]] - z[[j, i]]) / dx).powi(2);
-        }
-        for i in 1..nx - 1 {
-            m4x += ((z[[j, i + 1]] - 2.0 * z[[j, i]] + z[[j, i - 1]]) / (dx * dx)).powi(2);
-        }
-    }
-    for j in 0..ny - 1 {
+    // Per row j: Σ z², the x differences of row j, and the y differences from row j up.
+    let rows = per_row(ny, |j| {
+        let row = z.row(j);
+        let mut sums = [0.0; 5];
         for i in 0..nx {
-            m2y += ((z[[j + 1, i]] - z[[j, i]]) / dy).powi(2);
+            sums[0] += row[i] * row[i];
+            if i + 1 < nx {
+                sums[1] += ((row[i + 1] - row[i]) / dx).powi(2);
+            }
+            if i >= 1 && i + 1 < nx {
+                sums[2] += ((row[i + 1] - 2.0 * row[i] + row[i - 1]) / (dx * dx)).powi(2);
+            }
+        }
+        if j + 1 < ny {
+            let up = z.row(j + 1);
+            sums[3] += row
+                .iter()
+                .zip(up.iter())
+                .map(|(a, b)| ((b - a) / dy).powi(2))
+                .sum::<f64>();
+        }
+        if j >= 1 && j + 1 < ny {
+            let (down, up) = (z.row(j - 1), z.row(j + 1));
+            for i in 0..nx {
+                sums[4] += ((up[i] - 2.0 * row[i] + down[i]) / (dy * dy)).powi(2);
+            }
+        }
+        sums
+    });
+    let mut s = [0.0; 5];
+    for row in &rows {
+        for (total, value) in s.iter_mut().zip(row) {
+            *total += value;
         }
     }
-    for j in 1..ny - 1 {
-        for i in 0..nx {
-            m4y += ((z[[j + 1, i]] - 2.0 * z[[j, i]] + z[[j - 1, i]]) / (dy * dy)).powi(2);
-        }
-    }
+    let [sum_z2, m2x, m4x, m2y, m4y] = s;
+    let m0 = sum_z2 / z.len() as f64;
     let m2 = 0.5 * (m2x / ((nx - 1) * ny) as f64 + m2y / (nx * (ny - 1)) as f64);
     let m4 = 0.5 * (m4x / ((nx - 2) * ny) as f64 + m4y / (nx * (ny - 2)) as f64);
     Moments {
@@ -445,24 +515,27 @@ pub fn spectral_moments(z: &Array2<f64>, spacing: [f64; 2]) -> Moments {
 pub fn summits(z: &Array2<f64>, spacing: [f64; 2]) -> SummitParameters {
     let (ny, nx) = z.dim();
     let [dx, dy] = spacing;
-    let mut heights = Vec::new();
-    let mut curvature_sum = 0.0;
-    for j in 1..ny - 1 {
+    let rows = per_row(ny.saturating_sub(2), |r| {
+        let j = r + 1;
+        let (down, row, up) = (z.row(j - 1), z.row(j), z.row(j + 1));
+        let mut heights = Vec::new();
+        let mut curvature_sum = 0.0;
         for i in 1..nx - 1 {
-            let v = z[[j, i]];
-            let higher = (-1i64..=1).all(|b| {
-                (-1i64..=1).all(|a| {
-                    (a == 0 && b == 0) || v > z[[(j as i64 + b) as usize, (i as i64 + a) as usize]]
-                })
-            });
+            let v = row[i];
+            let higher = v > row[i - 1]
+                && v > row[i + 1]
+                && (i - 1..=i + 1).all(|k| v > down[k] && v > up[k]);
             if higher {
-                let kx = (2.0 * v - z[[j, i - 1]] - z[[j, i + 1]]) / (dx * dx);
-                let ky = (2.0 * v - z[[j - 1, i]] - z[[j + 1, i]]) / (dy * dy);
+                let kx = (2.0 * v - row[i - 1] - row[i + 1]) / (dx * dx);
+                let ky = (2.0 * v - down[i] - up[i]) / (dy * dy);
                 curvature_sum += 0.5 * (kx + ky);
                 heights.push(v);
             }
         }
-    }
+        (heights, curvature_sum)
+    });
+    let heights: Vec<f64> = rows.iter().flat_map(|(h, _)| h.iter().copied()).collect();
+    let curvature_sum: f64 = rows.iter().map(|(_, c)| c).sum();
     let count = heights.len();
     let area = ((nx - 2) * (ny - 2)) as f64 * dx * dy;
     let mean = heights.iter().sum::<f64>() / count.max(1) as f64;
@@ -500,6 +573,9 @@ pub fn mccool(moments: &Moments, area_m2: f64) -> SummitParameters {
     }
 }
 
+/// Spectrum columns (kx) per parallel block of the radial average.
+const RING_BLOCK: usize = 16;
+
 /// The characterisation of `map` (module doc).
 pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisation, StatsError> {
     let [ny, nx] = map.shape();
@@ -510,7 +586,11 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
     let [dx, dy] = spacing;
     let (z, plane) = level(map, options.form);
     let height = height_parameters(&z);
-    let scale = map.heights_m().iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let scale = map
+        .heights_m()
+        .par_iter()
+        .fold(|| 0.0f64, |m, v| m.max(v.abs()))
+        .reduce(|| 0.0, f64::max);
     if height.sq <= 1e-12 * scale {
         return Err(StatsError::Flat);
     }
@@ -536,20 +616,37 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
     let (lx, ly) = (nx as f64 * dx, ny as f64 * dy);
     let ring = 2.0 * PI / lx.min(ly);
     let rings = ((PI / dx.max(dy)) / ring).floor() as usize + 1;
-    // Per ring: Σ C, Σ q, count (the ring's wavenumber is the mean of its samples').
-    let mut radial = vec![(0.0, 0.0, 0usize); rings + 1];
+    // Per ring: Σ C, Σ q, count (the ring's wavenumber is the mean of its samples'). In
+    // parallel over fixed blocks of kx, merged in kx order (the same bits on any thread count).
     let psd_factor = dx * dy / (nx * ny) as f64;
-    for ((kx, ky), value) in spectrum.indexed_iter() {
-        let qx = 2.0 * PI * kx as f64 / lx;
-        let qy = 2.0 * PI * signed_index(ky, ny) as f64 / ly;
-        let q = qx.hypot(qy);
-        let k = (q / ring).round() as usize;
-        if k == 0 || k > rings {
-            continue;
+    let blocks: Vec<Vec<(f64, f64, usize)>> = spectrum
+        .axis_chunks_iter(Axis(0), RING_BLOCK)
+        .into_par_iter()
+        .enumerate()
+        .map(|(b, block)| {
+            let mut radial = vec![(0.0, 0.0, 0usize); rings + 1];
+            for ((k, ky), value) in block.indexed_iter() {
+                let qx = 2.0 * PI * (b * RING_BLOCK + k) as f64 / lx;
+                let qy = 2.0 * PI * signed_index(ky, ny) as f64 / ly;
+                let q = (qx * qx + qy * qy).sqrt();
+                let r = (q / ring).round() as usize;
+                if r == 0 || r > rings {
+                    continue;
+                }
+                radial[r].0 += psd_factor * value.norm_sqr();
+                radial[r].1 += q;
+                radial[r].2 += 1;
+            }
+            radial
+        })
+        .collect();
+    let mut radial = vec![(0.0, 0.0, 0usize); rings + 1];
+    for block in &blocks {
+        for (total, part) in radial.iter_mut().zip(block) {
+            total.0 += part.0;
+            total.1 += part.1;
+            total.2 += part.2;
         }
-        radial[k].0 += psd_factor * value.norm_sqr();
-        radial[k].1 += q;
-        radial[k].2 += 1;
     }
     let radial: Vec<(f64, f64)> = radial
         .iter()
@@ -558,10 +655,11 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
         .collect();
     // 1-D PSD along x: |Z(kx, ky)|² summed over ky is ny Σ_rows |Z_row(kx)|² (Parseval along
     // the columns), so the row average needs no transform of its own.
-    let mut profile_psd = vec![0.0; nx / 2 + 1];
-    for ((kx, _), value) in spectrum.indexed_iter() {
-        profile_psd[kx] += value.norm_sqr();
-    }
+    let profile_psd: Vec<f64> = spectrum
+        .axis_iter(Axis(0))
+        .into_par_iter()
+        .map(|column| column.iter().map(|v| v.norm_sqr()).sum())
+        .collect();
     let profile_spectrum: Vec<(f64, f64)> = profile_psd
         .iter()
         .enumerate()
@@ -573,10 +671,10 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
             )
         })
         .collect();
-    // Default band: 8 samples to an eighth of the map; a small map takes what it resolves.
+    // Default band: 4 samples to a quarter of the map; a small map takes what it resolves.
     let resolved = (2.0 * dx.max(dy), lx.min(ly));
     let (shortest, longest) = options.band_m.unwrap_or_else(|| {
-        let (short, long) = (8.0 * dx.max(dy), lx.min(ly) / 8.0);
+        let (short, long) = (4.0 * dx.max(dy), lx.min(ly) / 4.0);
         if long >= 2.0 * short {
             (short, long)
         } else {
@@ -621,11 +719,11 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
 
     // Autocorrelation: inverse transform of |Z|² of the unwindowed heights.
     plan.forward(z.view(), &mut spectrum, &mut work)?;
-    spectrum.mapv_inplace(|v| rustfft::num_complex::Complex::new(v.norm_sqr(), 0.0));
+    spectrum.par_mapv_inplace(|v| rustfft::num_complex::Complex::new(v.norm_sqr(), 0.0));
     let mut acf = Array2::zeros((ny, nx));
     plan.inverse(&mut spectrum, acf.view_mut(), &mut work)?;
     let zero = acf[[0, 0]];
-    acf.mapv_inplace(|v| v / zero);
+    acf.par_mapv_inplace(|v| v / zero);
     let spatial = spatial_parameters(&acf, spacing);
     let acf_x = (0..=nx / 2).map(|i| (i as f64 * dx, acf[[0, i]])).collect();
     let acf_y = (0..=ny / 2).map(|j| (j as f64 * dy, acf[[j, 0]])).collect();
@@ -656,12 +754,21 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
 fn hann(z: &Array2<f64>) -> Array2<f64> {
     let (ny, nx) = z.dim();
     let w = |k: usize, n: usize| (PI * (k as f64 + 0.5) / n as f64).sin().powi(2);
-    let mut out = Array2::from_shape_fn((ny, nx), |(j, i)| z[[j, i]] * w(i, nx) * w(j, ny));
-    let before = z.iter().map(|v| v * v).sum::<f64>();
-    let after = out.iter().map(|v| v * v).sum::<f64>();
+    let (wx, wy): (Vec<f64>, Vec<f64>) = (
+        (0..nx).map(|i| w(i, nx)).collect(),
+        (0..ny).map(|j| w(j, ny)).collect(),
+    );
+    let mut out = z.clone();
+    Zip::indexed(&mut out).par_for_each(|(j, i), v| *v *= wx[i] * wy[j]);
+    let square_sum = |a: &Array2<f64>| -> f64 {
+        per_row(a.nrows(), |j| a.row(j).iter().map(|v| v * v).sum::<f64>())
+            .iter()
+            .sum()
+    };
+    let (before, after) = (square_sum(z), square_sum(&out));
     if after > 0.0 {
         let scale = (before / after).sqrt();
-        out.mapv_inplace(|v| v * scale);
+        out.par_mapv_inplace(|v| v * scale);
     }
     out
 }
@@ -687,29 +794,29 @@ fn spatial_parameters(acf: &Array2<f64>, spacing: [f64; 2]) -> Spatial {
     };
     let reach = 0.5 * (nx as f64 * dx).min(ny as f64 * dy);
     let step = 0.25 * dx.min(dy);
-    let mut lengths = Vec::new();
-    let mut bounded = false;
-    for k in 0..360 {
-        let theta = PI * k as f64 / 360.0;
-        let (c, s) = (theta.cos(), theta.sin());
-        let mut previous = (0.0, 1.0);
-        let mut found = None;
-        let mut r = step;
-        while r <= reach {
-            let value = at(r * c / dx, r * s / dy);
-            if value <= 0.2 {
-                let (r0, v0) = previous;
-                found = Some(r0 + (r - r0) * (v0 - 0.2) / (v0 - value));
-                break;
+    let directions: Vec<Option<f64>> = (0..360)
+        .into_par_iter()
+        .map(|k| {
+            let theta = PI * k as f64 / 360.0;
+            let (c, s) = (theta.cos(), theta.sin());
+            let mut previous = (0.0, 1.0);
+            let mut found = None;
+            let mut r = step;
+            while r <= reach {
+                let value = at(r * c / dx, r * s / dy);
+                if value <= 0.2 {
+                    let (r0, v0) = previous;
+                    found = Some(r0 + (r - r0) * (v0 - 0.2) / (v0 - value));
+                    break;
+                }
+                previous = (r, value);
+                r += step;
             }
-            previous = (r, value);
-            r += step;
-        }
-        match found {
-            Some(length) => lengths.push(length),
-            None => bounded = true,
-        }
-    }
+            found
+        })
+        .collect();
+    let lengths: Vec<f64> = directions.iter().flatten().copied().collect();
+    let bounded = directions.iter().any(Option::is_none);
     let shortest = lengths.iter().copied().fold(f64::INFINITY, f64::min);
     let longest = if bounded {
         reach
@@ -728,17 +835,33 @@ fn spatial_parameters(acf: &Array2<f64>, spacing: [f64; 2]) -> Spatial {
 /// `sqrt(N)`, at most 100).
 fn histogram(z: &Array2<f64>, sq: f64) -> Vec<(f64, f64)> {
     let (low, high) = z
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-            (a.min(v), b.max(v))
-        });
+        .par_iter()
+        .fold(
+            || (f64::INFINITY, f64::NEG_INFINITY),
+            |(a, b), &v| (a.min(v), b.max(v)),
+        )
+        .reduce(
+            || (f64::INFINITY, f64::NEG_INFINITY),
+            |(a, b), (c, d)| (a.min(c), b.max(d)),
+        );
     let bins = ((z.len() as f64).sqrt() as usize).clamp(10, 100);
     let width = ((high - low) / bins as f64).max(sq * 1e-9);
-    let mut counts = vec![0usize; bins];
-    for &v in z {
-        let k = (((v - low) / width) as usize).min(bins - 1);
-        counts[k] += 1;
-    }
+    let counts = z
+        .par_iter()
+        .fold(
+            || vec![0usize; bins],
+            |mut counts, &v| {
+                counts[(((v - low) / width) as usize).min(bins - 1)] += 1;
+                counts
+            },
+        )
+        .reduce(
+            || vec![0usize; bins],
+            |mut a, b| {
+                a.iter_mut().zip(&b).for_each(|(a, b)| *a += b);
+                a
+            },
+        );
     let n = z.len() as f64;
     counts
         .iter()
@@ -752,12 +875,27 @@ fn highest_asperity(z: &Array2<f64>, spacing: [f64; 2]) -> Asperity {
     let (ny, nx) = z.dim();
     let [dx, dy] = spacing;
     // Off the border, so that both finite differences exist.
-    let (at, height) = z
-        .indexed_iter()
-        .fold(((0, 0), f64::NEG_INFINITY), |best, ((j, i), &v)| {
-            let interior = j > 0 && i > 0 && j + 1 < ny && i + 1 < nx;
-            if interior && v > best.1 {
-                ((j, i), v)
+    // Each row's first highest interior sample, then the first highest row: the first in
+    // row-major order, as a sequential scan finds it.
+    let rows = per_row(ny, |j| {
+        let interior = j > 0 && j + 1 < ny;
+        z.row(j)
+            .iter()
+            .enumerate()
+            .filter(|&(i, _)| interior && i > 0 && i + 1 < nx)
+            .fold(((j, 0), f64::NEG_INFINITY), |best, (i, &v)| {
+                if v > best.1 {
+                    ((j, i), v)
+                } else {
+                    best
+                }
+            })
+    });
+    let (at, height) = rows
+        .into_iter()
+        .fold(((0, 0), f64::NEG_INFINITY), |best, row| {
+            if row.1 > best.1 {
+                row
             } else {
                 best
             }

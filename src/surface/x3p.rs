@@ -68,9 +68,19 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
             });
         }
         let mut bytes = Vec::with_capacity(entry.size() as usize);
-        entry
+        // Counted as unpacked too: the declared size of a damaged archive may be wrong.
+        (&mut entry)
+            .take(size_limit.saturating_add(1))
             .read_to_end(&mut bytes)
             .map_err(|e| format(&name, format!("cannot unpack {member}: {e}")))?;
+        if bytes.len() as u64 > size_limit {
+            return Err(ReadError::TooLarge {
+                path: format!("{name}/{member}"),
+                size_mib: (size_limit >> 20) + 1,
+                limit_mib: size_limit >> 20,
+                needed_mib: (size_limit >> 20) + 1,
+            });
+        }
         Ok(bytes)
     };
     let xml = member("main.xml")?;

@@ -11,13 +11,8 @@ impl Validator<'_> {
             _ => {
                 let r =
                     units::parse(text, Dimension::Length).map_err(|m| self.error(key, m, None))?;
-                if !r.is_finite() || r == 0.0 {
-                    return Err(self.error(
-                        key,
-                        format!("must be non-zero and finite, got `{text}`"),
-                        Some("use \"flat\" for a plane"),
-                    ));
-                }
+                // In size: a concave body's radius is negative.
+                self.within(key, r.abs(), text, Dimension::Length, RADIUS_BOUNDS)?;
                 Ok(r)
             }
         }
@@ -88,9 +83,12 @@ impl Validator<'_> {
             None => None,
         };
         let modulus_pa = match (&raw.modulus, preset) {
-            (Some(text), _) => {
-                self.positive(&format!("{key}.modulus"), text, Dimension::Pressure)?
-            }
+            (Some(text), _) => self.bounded(
+                &format!("{key}.modulus"),
+                text,
+                Dimension::Pressure,
+                MODULUS_BOUNDS,
+            )?,
             (None, Some(p)) => p.material.modulus_pa,
             (None, None) => {
                 return Err(self.error(

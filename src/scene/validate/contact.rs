@@ -3,6 +3,10 @@
 #[allow(clippy::wildcard_imports)]
 use super::*;
 
+/// The range of an elliptical contact's semi-axis ratio b/a, given or derived from the radii.
+const MIN_ASPECT: f64 = 0.01;
+const MAX_ASPECT: f64 = 100.0;
+
 impl Validator<'_> {
     pub(super) fn contact(&self, raw: &RawContact) -> Result<Contact, SceneError> {
         let kind = match raw.kind.as_str() {
@@ -53,7 +57,10 @@ impl Validator<'_> {
             (Some(ratio), ContactKind::Point) => {
                 return Err(self.error(
                     "contact.tangential",
-                    format!("the tangential force over mu P must lie in (0, 1], got {ratio}"),
+                    format!(
+                        "the tangential force over mu P must lie in (0, 1], got {}",
+                        crate::text::number(ratio)
+                    ),
                     Some("1 is full sliding; 0.5 leaves a stick circle of radius 0.79a"),
                 ))
             }
@@ -113,11 +120,18 @@ impl Validator<'_> {
                     Some("use kind = \"elliptical\", or remove it"),
                 ))
             }
-            (Some(ratio), ContactKind::Elliptical) if (0.01..=100.0).contains(&ratio) => ratio,
+            (Some(ratio), ContactKind::Elliptical)
+                if (MIN_ASPECT..=MAX_ASPECT).contains(&ratio) =>
+            {
+                ratio
+            }
             (Some(ratio), ContactKind::Elliptical) => {
                 return Err(self.error(
                     "contact.aspect",
-                    format!("the semi-axis ratio b/a must lie in 0.01..=100, got {ratio}"),
+                    format!(
+                        "the semi-axis ratio b/a must lie in {MIN_ASPECT}..={MAX_ASPECT}, got {}",
+                        crate::text::number(ratio)
+                    ),
                     Some("b is the semi-axis along y, a along x (the sliding direction)"),
                 ))
             }
@@ -206,7 +220,7 @@ impl Validator<'_> {
                 Some(load_hint),
             )
         })?;
-        let load = self.positive("contact.load", load_text, load_dimension)?;
+        let load = self.bounded("contact.load", load_text, load_dimension, LOAD_BOUNDS)?;
         let gears = raw.gears.as_ref().map(|g| self.gears(g)).transpose()?;
         let empty = RawBody::default();
         let elliptical = kind == ContactKind::Elliptical;
@@ -217,6 +231,20 @@ impl Validator<'_> {
         if let Some(pair) = gears {
             body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
             body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
+            for (name, radius) in [("pinion", body1.radius_m), ("gear", body2.radius_m)] {
+                if !(RADIUS_BOUNDS.lo..=RADIUS_BOUNDS.hi).contains(&radius.abs()) {
+                    return Err(self.error(
+                        "contact.gears",
+                        format!(
+                            "the {name}'s radius of curvature at the pitch point is {} m, outside {} m to {} m",
+                            crate::text::approx(radius),
+                            crate::text::compact(RADIUS_BOUNDS.lo),
+                            crate::text::compact(RADIUS_BOUNDS.hi)
+                        ),
+                        Some("check module, teeth and pressure_angle (20 deg is standard)"),
+                    ));
+                }
+            }
         }
         let radius_error = |e: crate::contact::ContactError| {
             self.error("contact.body2.radius", e.to_string(), Some("a flat is radius = \"flat\"; a concave body has a negative radius larger in size than the convex one's"))
@@ -239,6 +267,18 @@ impl Validator<'_> {
                     self.error("contact.body2.radius_y", e.to_string(), Some("each principal relative curvature must be positive: a concave radius must be larger in size than the convex one's in the same plane"))
                 })?;
                 aspect = ellipse.semi_axis_y_m / ellipse.semi_axis_x_m;
+                if !(MIN_ASPECT..=MAX_ASPECT).contains(&aspect) {
+                    return Err(self.error(
+                        "contact.body2.radius_y",
+                        format!(
+                            "the radii give an ellipse with b/a = {} (b = {} m along y, a = {} m along x); b/a must lie in {MIN_ASPECT}..={MAX_ASPECT}",
+                            crate::text::approx(aspect),
+                            crate::text::approx(ellipse.semi_axis_y_m),
+                            crate::text::approx(ellipse.semi_axis_x_m)
+                        ),
+                        Some("the relative curvatures in x and y (1/radius_x and 1/radius_y of both bodies, added) must not differ by more than about 1000; a nearly conforming groove gives a very long ellipse: check radius_y"),
+                    ));
+                }
                 Hertz::Elliptical(ellipse)
             }
             ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => {
@@ -249,6 +289,7 @@ impl Validator<'_> {
                 ))
             }
         };
+        self.hertz_values(&hertz, yield_strength)?;
         Ok(Contact {
             kind,
             friction,
@@ -270,30 +311,88 @@ impl Validator<'_> {
         })
     }
 
+    /// Every value derived from the load, the radii and the moduli (E*, R, a, b, p0, the mean
+    /// pressure, the approach, and the load at which p0 reaches the yield strength) finite and
+    /// positive: a safety net behind the bounds on each input, which keep them so.
+    pub(super) fn hertz_values(
+        &self,
+        hertz: &Hertz,
+        yield_strength: Option<YieldStrength>,
+    ) -> Result<(), SceneError> {
+        let values: Vec<(&str, f64)> = match hertz {
+            Hertz::Line(line) => vec![
+                ("the effective modulus E* (Pa)", line.effective_modulus_pa),
+                ("the effective radius R (m)", line.effective_radius_m),
+                ("the half-width a (m)", line.half_width_m),
+                ("the peak pressure p0 (Pa)", line.p0_pa),
+                ("the mean pressure (Pa)", line.mean_pressure_pa),
+            ],
+            Hertz::Point(point) => vec![
+                ("the effective modulus E* (Pa)", point.effective_modulus_pa),
+                ("the effective radius R (m)", point.effective_radius_m),
+                ("the contact radius a (m)", point.radius_m),
+                ("the peak pressure p0 (Pa)", point.p0_pa),
+                ("the mean pressure (Pa)", point.mean_pressure_pa),
+                ("the approach (m)", point.approach_m),
+            ],
+            Hertz::Elliptical(ellipse) => vec![
+                (
+                    "the effective modulus E* (Pa)",
+                    ellipse.effective_modulus_pa,
+                ),
+                ("the semi-axis a (m)", ellipse.semi_axis_x_m),
+                ("the semi-axis b (m)", ellipse.semi_axis_y_m),
+                ("the peak pressure p0 (Pa)", ellipse.p0_pa),
+                ("the mean pressure (Pa)", ellipse.mean_pressure_pa),
+                ("the approach (m)", ellipse.approach_m),
+            ],
+        };
+        let yield_load = yield_strength.map(|y| hertz.load_for_peak_pressure(y.pa));
+        let values = values.into_iter().chain(
+            yield_load.map(|load| ("the load at which p0 reaches the yield strength", load)),
+        );
+        for (name, value) in values {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(self.error(
+                    "contact.load",
+                    format!(
+                        "with these bodies the load gives {name} = {}: every Hertz value must be finite and positive",
+                        crate::text::approx(value)
+                    ),
+                    Some("check the load, the radii and the moduli (and their units)"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// `a` and `p0` given directly: both bare 1 (normalised, the default) or both with units.
     pub(super) fn scale(&self, raw: &RawContact) -> Result<Option<Scale>, SceneError> {
-        let value = |key: &str, value: &NumberOrText, dimension: Dimension| match value {
+        let value = |key: &str, value: &NumberOrText, dimension: Dimension, bounds| match value {
             NumberOrText::Number(n) if *n == 1.0 => Ok(None),
             NumberOrText::Number(n) => Err(self.error(
                 key,
-                format!("a bare number means normalised units and must be 1, got {n}"),
+                format!(
+                    "a bare number means normalised units and must be 1, got {}",
+                    crate::text::number(*n)
+                ),
                 Some(&format!(
                     "write it with a unit for a dimensional scale, e.g. {}",
                     dimension.example()
                 )),
             )),
-            NumberOrText::Text(text) => self.positive(key, text, dimension).map(Some),
+            NumberOrText::Text(text) => self.bounded(key, text, dimension, bounds).map(Some),
         };
         let a = raw
             .a
             .as_ref()
-            .map(|v| value("contact.a", v, Dimension::Length))
+            .map(|v| value("contact.a", v, Dimension::Length, HALF_WIDTH_BOUNDS))
             .transpose()?
             .flatten();
         let p0 = raw
             .p0
             .as_ref()
-            .map(|v| value("contact.p0", v, Dimension::Pressure))
+            .map(|v| value("contact.p0", v, Dimension::Pressure, STRESS_BOUNDS))
             .transpose()?
             .flatten();
         match (a, p0) {
@@ -326,11 +425,21 @@ impl Validator<'_> {
                 None,
             )),
             (Some(text), None) => Ok(Some(YieldStrength {
-                pa: self.positive("contact.yield_strength", text, Dimension::Pressure)?,
+                pa: self.bounded(
+                    "contact.yield_strength",
+                    text,
+                    Dimension::Pressure,
+                    STRESS_BOUNDS,
+                )?,
                 from_hardness: None,
             })),
             (None, Some(text)) => {
-                let number = self.positive("contact.hardness", text, Dimension::Hardness)?;
+                let number = self.bounded(
+                    "contact.hardness",
+                    text,
+                    Dimension::Hardness,
+                    HARDNESS_BOUNDS,
+                )?;
                 Ok(Some(YieldStrength {
                     pa: yield_strength_from_hardness_pa(number),
                     from_hardness: Some(number),
@@ -341,7 +450,12 @@ impl Validator<'_> {
     }
 
     pub(super) fn gears(&self, raw: &raw::RawGears) -> Result<SpurGearPair, SceneError> {
-        let module_m = self.positive("contact.gears.module", &raw.module, Dimension::Length)?;
+        let module_m = self.bounded(
+            "contact.gears.module",
+            &raw.module,
+            Dimension::Length,
+            MODULE_BOUNDS,
+        )?;
         let angle = units::parse(&raw.pressure_angle, Dimension::Angle)
             .map_err(|m| self.error("contact.gears.pressure_angle", m, None))?;
         if !(angle > 0.0 && angle < std::f64::consts::FRAC_PI_2) {

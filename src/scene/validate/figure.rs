@@ -3,7 +3,74 @@
 #[allow(clippy::wildcard_imports)]
 use super::*;
 
+/// How far from the contact's centre a figure range, a section, a volume, a moving load or a
+/// material point may reach, in units of a. There the stresses have fallen below 1e-4 p0
+/// (line contact, as 1/r) or 1e-8 p0 (point contact, as 1/r²); farther, a figure shows
+/// nothing and its numbers lose their meaning.
+pub(crate) const REACH_OVER_A: f64 = 1e4;
+
+/// The smallest span of a figure range, in units of a.
+pub(crate) const MIN_SPAN_OVER_A: f64 = 1e-6;
+
+/// The largest ratio of a section's height to its width, and of its width to its height: at
+/// equal scale the map is drawn this much taller (or shorter) than it is wide.
+pub(crate) const MAX_ASPECT: f64 = 50.0;
+
+/// The tallest map, in pixels (the renderer's limit on a side of an image).
+pub(crate) const MAX_MAP_PX: f64 = 16_384.0;
+
 impl Validator<'_> {
+    /// `value_over_a` (a position in units of a, which the user wrote as `written`) within
+    /// [`REACH_OVER_A`] of the contact.
+    pub(super) fn within_reach(
+        &self,
+        key: &str,
+        value_over_a: f64,
+        written: &str,
+    ) -> Result<f64, SceneError> {
+        if value_over_a.is_nan() || value_over_a.abs() > REACH_OVER_A {
+            return Err(self.error(
+                key,
+                format!(
+                    "`{}` lies more than {} a from the contact, as far as figures, sections and points may reach",
+                    crate::text::cut(written, 40),
+                    crate::text::compact(REACH_OVER_A)
+                ),
+                Some("there the stresses have fallen below 1e-4 p0 (line contact) or 1e-8 p0 (point contact): draw nearer to the contact"),
+            ));
+        }
+        Ok(value_over_a)
+    }
+
+    /// A figure's or volume's range `(lo, hi)` in the figure's unit (`unit_over_a` a each):
+    /// both ends within reach, and a span of at least [`MIN_SPAN_OVER_A`].
+    pub(super) fn range_within_reach(
+        &self,
+        key: &str,
+        (lo, hi): (f64, f64),
+        unit_over_a: f64,
+        suffix: &str,
+    ) -> Result<(), SceneError> {
+        for end in [lo, hi] {
+            let written = format!("{}{suffix}", crate::text::number(end));
+            self.within_reach(key, end * unit_over_a, &written)?;
+        }
+        if (hi - lo) * unit_over_a < MIN_SPAN_OVER_A {
+            return Err(self.error(
+                key,
+                format!(
+                    "the range [{}, {}] spans {} a, less than the {} a a figure can resolve",
+                    crate::text::number(lo),
+                    crate::text::number(hi),
+                    crate::text::number((hi - lo) * unit_over_a),
+                    crate::text::compact(MIN_SPAN_OVER_A)
+                ),
+                Some("widen the range"),
+            ));
+        }
+        Ok(())
+    }
+
     /// The position of a section along its normal: any y or x, a depth z >= 0; only 0 for a
     /// line contact (its field does not depend on y).
     pub(super) fn section_position(
@@ -18,8 +85,20 @@ impl Validator<'_> {
         };
         let (_, _, normal) = figure.section.coordinates();
         if !at.is_finite() {
-            return Err(self.error(key, format!("must be a finite {normal}, got {at}"), None));
+            return Err(self.error(
+                key,
+                format!("must be a finite {normal}, got {}", crate::text::number(at)),
+                None,
+            ));
         }
+        let unit_over_a =
+            figure.length_unit.metres(contact.half_width_m()) / contact.half_width_m();
+        let written = format!(
+            "{}{}",
+            crate::text::number(at),
+            unit_after(figure.length_unit)
+        );
+        self.within_reach(key, at * unit_over_a, &written)?;
         if contact.kind == ContactKind::Line && at != 0.0 {
             return Err(self.error(
                 key,
@@ -31,7 +110,8 @@ impl Validator<'_> {
             return Err(self.error(
                 key,
                 format!(
-                    "the depth of an xy section must be >= 0 (z points into the body), got {at}"
+                    "the depth of an xy section must be >= 0 (z points into the body), got {}",
+                    crate::text::number(at)
                 ),
                 Some("0 is the surface"),
             ));
@@ -174,9 +254,35 @@ impl Validator<'_> {
                 "figure.z",
                 format!(
                     "depth must be >= 0 (z points into the body), got {}",
-                    vertical.0
+                    crate::text::number(vertical.0)
                 ),
                 Some("start the range at 0 for the surface"),
+            ));
+        }
+        let unit_over_a = 1.0 / a_in_unit;
+        let suffix = unit_after(length_unit);
+        for (name, range) in [(horizontal_name, horizontal), (vertical_name, vertical)] {
+            self.range_within_reach(&format!("figure.{name}"), range, unit_over_a, suffix)?;
+        }
+        // At equal scale: neither a sliver nor a tower.
+        let aspect = (vertical.1 - vertical.0) / (horizontal.1 - horizontal.0);
+        if !(1.0 / MAX_ASPECT..=MAX_ASPECT).contains(&aspect) {
+            let key = if range_of(vertical_name).is_some() || range_of(horizontal_name).is_none() {
+                vertical_name
+            } else {
+                horizontal_name
+            };
+            return Err(self.error(
+                &format!("figure.{key}"),
+                format!(
+                    "at equal scale the section would be drawn {} times as tall as it is wide ({} by {}{suffix}); keep the ratio between 1/{MAX_ASPECT} and {MAX_ASPECT}",
+                    crate::text::number((aspect * 1000.0).round() / 1000.0),
+                    crate::text::number(horizontal.1 - horizontal.0),
+                    crate::text::number(vertical.1 - vertical.0),
+                ),
+                Some(&format!(
+                    "adjust figure.{horizontal_name} or figure.{vertical_name}, or split the section into several panels"
+                )),
             ));
         }
         let resolution = match raw.resolution {
@@ -253,6 +359,17 @@ impl Validator<'_> {
                 ))
             }
         };
+        let map_px = f64::from(width_px) * aspect;
+        if map_px > MAX_MAP_PX {
+            return Err(self.error(
+                "figure.width",
+                format!(
+                    "a map {width_px} px wide would be {} px tall at equal scale, more than the {MAX_MAP_PX} px of an image",
+                    map_px.round()
+                ),
+                Some("narrow the panels (figure.width) or the depth range"),
+            ));
+        }
         Ok(FigureSpec {
             quantity,
             section,

@@ -32,7 +32,93 @@ use crate::contact::{Body, LineContact, PointContact};
 use crate::render::{ColorMap, Levels, Mark};
 use crate::solution::dcfft::TractionGrid;
 use crate::stress::{Quantity, QuantityKind};
-use crate::study::grid_rows;
+
+/// The range a dimensional input may take (SI), and why: wide enough for every contact a user
+/// could mean (an AFM tip to a rolling mill), narrow enough that every derived Hertz value
+/// stays far inside double precision (so no figure or report meets an infinity or a zero).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Bounds {
+    pub lo: f64,
+    pub hi: f64,
+    pub why: &'static str,
+}
+
+/// Loads, N (point contacts) or N/m (line contacts).
+pub(super) const LOAD_BOUNDS: Bounds = Bounds {
+    lo: 1e-12,
+    hi: 1e12,
+    why: "from the piconewtons of an AFM tip to far beyond the largest press",
+};
+/// Radii of curvature (in size; negative for a concave body), m.
+pub(super) const RADIUS_BOUNDS: Bounds = Bounds {
+    lo: 1e-9,
+    hi: 1e6,
+    why: "from a nanometre (an AFM tip) to 1000 km; use \"flat\" for a plane",
+};
+/// Young's moduli, Pa.
+pub(super) const MODULUS_BOUNDS: Bounds = Bounds {
+    lo: 1e3,
+    hi: 1e13,
+    why: "from soft gels (kPa) to ten times diamond (1.2 TPa)",
+};
+/// Yield strengths and peak pressures given directly, Pa.
+pub(super) const STRESS_BOUNDS: Bounds = Bounds {
+    lo: 1.0,
+    hi: 1e13,
+    why: "from a pascal to ten times the modulus of diamond",
+};
+/// Hardness numbers (kgf/mm²).
+pub(super) const HARDNESS_BOUNDS: Bounds = Bounds {
+    lo: 0.1,
+    hi: 1e5,
+    why: "from soft polymers to ten times diamond (about 10000 HV)",
+};
+/// Contact half-widths given directly, m.
+pub(super) const HALF_WIDTH_BOUNDS: Bounds = Bounds {
+    lo: 1e-12,
+    hi: 1e6,
+    why: "from a picometre to 1000 km",
+};
+/// Gear modules, m.
+pub(super) const MODULE_BOUNDS: Bounds = Bounds {
+    lo: 1e-6,
+    hi: 10.0,
+    why: "from micro-gears to the largest mill gears",
+};
+
+/// Approaches of a rough contact, m.
+pub(super) const APPROACH_BOUNDS: Bounds = Bounds {
+    lo: 1e-12,
+    hi: 0.1,
+    why: "from a picometre to 10 cm (a surface's heights may reach 1 m)",
+};
+/// Sample spacings of a surface, m.
+pub(super) const SPACING_BOUNDS: Bounds = Bounds {
+    lo: crate::surface::MIN_SPACING_M,
+    hi: crate::surface::MAX_SPACING_M,
+    why: "from an atomic spacing (0.1 nm, an AFM scan) to a metre",
+};
+/// Wavelengths and lengths of a surface's spectrum (roll-off, cutoff, correlation length, the
+/// band of the statistics), m.
+pub(super) const WAVELENGTH_BOUNDS: Bounds = Bounds {
+    lo: crate::surface::MIN_SPACING_M,
+    hi: 1e4,
+    why: "from an atomic spacing (0.1 nm) to 10 km (8192 samples a metre apart)",
+};
+/// The rms height of a generated surface, m.
+pub(super) const RMS_HEIGHT_BOUNDS: Bounds = Bounds {
+    lo: 1e-12,
+    hi: 0.1,
+    why: "from a picometre (a polished crystal) to 10 cm (a surface's heights may reach 1 m)",
+};
+
+/// The unit after a length a user wrote, for messages: `" a"`, `" mm"`, ...
+pub(super) fn unit_after(unit: LengthUnit) -> &'static str {
+    match unit {
+        LengthUnit::HalfWidth => " a",
+        other => other.suffix(),
+    }
+}
 
 pub(super) struct Validator<'a> {
     pub(super) file: &'a str,
@@ -151,26 +237,6 @@ impl Validator<'_> {
                 Some("use at most 6 [[panel]] tables; split the rest into another scene"),
             ));
         }
-        let plane_points = figure.resolution
-            * grid_rows(
-                figure.resolution,
-                figure.horizontal.1 - figure.horizontal.0,
-                figure.vertical.1 - figure.vertical.0,
-            );
-        let bytes = plane_points.saturating_mul(panels.len()).saturating_mul(8);
-        if bytes > crate::field::MAX_FIELD_BYTES {
-            return Err(self.error(
-                "figure.resolution",
-                format!(
-                    "{} points per panel x {} panels need about {} MiB, more than the {} MiB allowed",
-                    plane_points,
-                    panels.len(),
-                    bytes >> 20,
-                    crate::field::MAX_FIELD_BYTES >> 20
-                ),
-                Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),
-            ));
-        }
         let mut scene = Scene {
             name: name.into(),
             title: raw.title,
@@ -184,6 +250,26 @@ impl Validator<'_> {
             load_centre_over_a: 0.0,
             surface: None,
         };
+        // The whole figure: every panel's grid and buffers, and the image.
+        let bytes = crate::figure::memory_estimate_bytes(&scene);
+        if bytes > crate::field::MAX_FIELD_BYTES {
+            let points: usize = scene
+                .panels
+                .iter()
+                .map(|p| crate::study::plane(&scene, p).points())
+                .sum();
+            return Err(self.error(
+                "figure.resolution",
+                format!(
+                    "{points} points in {} panel(s) need about {} MiB to draw (the grids at about {} bytes a point, and the image), more than the {} MiB allowed",
+                    scene.panels.len(),
+                    bytes >> 20,
+                    crate::figure::KEPT_BYTES_PER_POINT + crate::figure::WORKING_BYTES_PER_POINT,
+                    crate::field::MAX_FIELD_BYTES >> 20
+                ),
+                Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),
+            ));
+        }
         if let Some(sweep) = &raw.sweep {
             scene.sweep = Some(self.sweep(sweep, &scene)?);
         }
@@ -207,34 +293,59 @@ impl Validator<'_> {
     }
 
     fn friction(&self, key: &str, mu: f64) -> Result<f64, SceneError> {
-        if !(mu.is_finite() && mu >= 0.0) {
-            return Err(self.error(
-                key,
-                format!("friction coefficient must be >= 0 and finite, got {mu}"),
-                Some("typical values are 0 to 0.5"),
-            ));
+        match super::friction_requirement(mu) {
+            Some(message) => Err(self.error(key, message, Some(super::FRICTION_HINT))),
+            None => Ok(mu),
         }
-        Ok(mu)
     }
 
     fn poisson(&self, key: &str, nu: f64) -> Result<f64, SceneError> {
         if !(nu > -1.0 && nu <= 0.5) {
             return Err(self.error(
                 key,
-                format!("Poisson's ratio must lie in (-1, 0.5], got {nu}"),
+                format!(
+                    "Poisson's ratio must lie in (-1, 0.5], got {}",
+                    crate::text::number(nu)
+                ),
                 Some("steel is about 0.3"),
             ));
         }
         Ok(nu)
     }
 
-    fn positive(&self, key: &str, text: &str, dimension: Dimension) -> Result<f64, SceneError> {
+    /// A value with its unit within `bounds` (in SI units), named by `key` with the value
+    /// the user wrote.
+    fn bounded(
+        &self,
+        key: &str,
+        text: &str,
+        dimension: Dimension,
+        bounds: Bounds,
+    ) -> Result<f64, SceneError> {
         let value = units::parse(text, dimension).map_err(|m| self.error(key, m, None))?;
-        if !(value.is_finite() && value > 0.0) {
+        self.within(key, value, text, dimension, bounds)
+    }
+
+    /// `value` (SI, as the user wrote `text`) within `bounds`.
+    fn within(
+        &self,
+        key: &str,
+        value: f64,
+        text: &str,
+        dimension: Dimension,
+        bounds: Bounds,
+    ) -> Result<f64, SceneError> {
+        if !(value >= bounds.lo && value <= bounds.hi) {
+            let unit = dimension.si_unit();
             return Err(self.error(
                 key,
-                format!("must be positive and finite, got `{text}`"),
-                None,
+                format!(
+                    "must lie between {} {unit} and {} {unit}, got `{}`",
+                    crate::text::compact(bounds.lo),
+                    crate::text::compact(bounds.hi),
+                    crate::text::cut(text, 40)
+                ),
+                Some(bounds.why),
             ));
         }
         Ok(value)

@@ -99,13 +99,13 @@ impl Validator<'_> {
                 }
                 [(key, Some(text))] => Some(match *key {
                     "contact.load" => Control::Load {
-                        newtons: self.positive(key, text, Dimension::Force)?,
+                        newtons: self.bounded(key, text, Dimension::Force, LOAD_BOUNDS)?,
                     },
                     "contact.mean_pressure" => Control::MeanPressure {
-                        pa: self.positive(key, text, Dimension::Pressure)?,
+                        pa: self.bounded(key, text, Dimension::Pressure, STRESS_BOUNDS)?,
                     },
                     _ => Control::Approach {
-                        m: self.positive(key, text, Dimension::Length)?,
+                        m: self.bounded(key, text, Dimension::Length, APPROACH_BOUNDS)?,
                     },
                 }),
                 _ => {

@@ -5,10 +5,15 @@ use std::sync::Arc;
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::contact::rough::Control;
 use crate::surface::generate::{self, Amplitude, Form, Generator, Spectrum};
 use crate::surface::read::{self, Fill, ReadOptions};
 use crate::surface::stats::FormRemoval;
 use crate::surface::HeightMap;
+
+/// The range of a generated surface's rms slope (a slope of 10 rises 10 m a metre).
+const MIN_RMS_SLOPE: f64 = 1e-6;
+const MAX_RMS_SLOPE: f64 = 10.0;
 
 impl Validator<'_> {
     /// `[surface]` (and `[counter_surface]`) of a rough or surface scene.
@@ -84,8 +89,10 @@ impl Validator<'_> {
             None => None,
             Some(values) => match values.as_slice() {
                 [a, b] => {
-                    let a = self.positive("surface.band", a, Dimension::Length)?;
-                    let b = self.positive("surface.band", b, Dimension::Length)?;
+                    let a =
+                        self.bounded("surface.band", a, Dimension::Length, WAVELENGTH_BOUNDS)?;
+                    let b =
+                        self.bounded("surface.band", b, Dimension::Length, WAVELENGTH_BOUNDS)?;
                     if a >= b {
                         return Err(self.error(
                             "surface.band",
@@ -172,11 +179,11 @@ impl Validator<'_> {
                     .unwrap_or_else(|| Path::new(""))
                     .join(file);
                 let map = read::read_surface(&path, &options).map_err(|e| {
-                    self.error(
-                        &format!("{key}.file"),
-                        e.to_string(),
-                        Some("the path is relative to the scene file"),
-                    )
+                    let hint = match e {
+                        read::ReadError::Io { .. } => "the path is relative to the scene file",
+                        _ => "check the file and its height_unit and spacing",
+                    };
+                    self.error(&format!("{key}.file"), e.to_string(), Some(hint))
                 })?;
                 Ok((map, file.clone(), None))
             }
@@ -207,13 +214,13 @@ impl Validator<'_> {
     fn spacing(&self, key: &str, value: &TextOrList) -> Result<[f64; 2], SceneError> {
         match value {
             TextOrList::Text(text) => {
-                let d = self.positive(key, text, Dimension::Length)?;
+                let d = self.bounded(key, text, Dimension::Length, SPACING_BOUNDS)?;
                 Ok([d, d])
             }
             TextOrList::List(list) => match list.as_slice() {
                 [x, y] => Ok([
-                    self.positive(key, x, Dimension::Length)?,
-                    self.positive(key, y, Dimension::Length)?,
+                    self.bounded(key, x, Dimension::Length, SPACING_BOUNDS)?,
+                    self.bounded(key, y, Dimension::Length, SPACING_BOUNDS)?,
                 ]),
                 _ => Err(self.error(
                     key,
@@ -264,15 +271,26 @@ impl Validator<'_> {
             }
         };
         let length = |name: &str, value: &Option<String>| {
+            let bounds = match name {
+                "sphere_radius" | "cylinder_radius" => RADIUS_BOUNDS,
+                _ => WAVELENGTH_BOUNDS,
+            };
             value
                 .as_deref()
-                .map(|text| self.positive(&format!("{key}.{name}"), text, Dimension::Length))
+                .map(|text| self.bounded(&format!("{key}.{name}"), text, Dimension::Length, bounds))
                 .transpose()
         };
         let (nx, ny) = (samples[0] as usize, samples[1] as usize);
         let size = (nx as f64 * spacing_m[0]).min(ny as f64 * spacing_m[1]);
         let (spectrum, description) = match (raw.hurst, length("correlation_length", &raw.correlation_length)?) {
             (Some(hurst), None) => {
+                if !(hurst > 0.0 && hurst <= 1.0) {
+                    return Err(self.error(
+                        &format!("{key}.hurst"),
+                        format!("must lie in (0, 1], got {}", crate::text::number(hurst)),
+                        Some("measured surfaces have Hurst exponents of 0.5 to 1; 0.8 is common"),
+                    ));
+                }
                 let rolloff = length("rolloff", &raw.rolloff)?.unwrap_or(size / 4.0);
                 let cutoff = length("cutoff", &raw.cutoff)?.unwrap_or(4.0 * spacing_m[0].max(spacing_m[1]));
                 (
@@ -281,7 +299,7 @@ impl Validator<'_> {
                         rolloff_wavelength_m: rolloff,
                         cutoff_wavelength_m: cutoff,
                     },
-                    format!("self-affine, H = {hurst}, roll-off {:.4} um, cutoff {:.4} um", rolloff * 1e6, cutoff * 1e6),
+                    format!("self-affine, H = {}, roll-off {:.4} um, cutoff {:.4} um", crate::text::number(hurst), rolloff * 1e6, cutoff * 1e6),
                 )
             }
             (None, Some(length)) => {
@@ -311,17 +329,24 @@ impl Validator<'_> {
             }
         };
         let amplitude = match (&raw.rms_height, raw.rms_slope) {
-            (Some(text), None) => Amplitude::RmsHeight(self.positive(
+            (Some(text), None) => Amplitude::RmsHeight(self.bounded(
                 &format!("{key}.rms_height"),
                 text,
                 Dimension::Length,
+                RMS_HEIGHT_BOUNDS,
             )?),
-            (None, Some(slope)) if slope > 0.0 && slope.is_finite() => Amplitude::RmsSlope(slope),
+            (None, Some(slope)) if (MIN_RMS_SLOPE..=MAX_RMS_SLOPE).contains(&slope) => {
+                Amplitude::RmsSlope(slope)
+            }
             (None, Some(slope)) => {
                 return Err(self.error(
                     &format!("{key}.rms_slope"),
-                    format!("must be positive and finite, got {slope}"),
-                    None,
+                    format!(
+                        "must lie between {} and {MAX_RMS_SLOPE}, got {}",
+                        crate::text::compact(MIN_RMS_SLOPE),
+                        crate::text::number(slope)
+                    ),
+                    Some("machined and worn surfaces have rms slopes of 0.01 to 0.5"),
                 ))
             }
             _ => {
@@ -369,6 +394,61 @@ impl Validator<'_> {
             },
             format!("generated ({description}, seed {seed})"),
         ))
+    }
+
+    /// What presses a rough contact, against its surface: a mean pressure over the map below
+    /// the combined modulus E* (beyond it the strains would be of order one, far outside
+    /// elasticity, and the surfaces flattened), an approach below the surface's peak-to-valley
+    /// height (beyond it the surfaces overlap everywhere).
+    fn rough_control(&self, rough: &RoughSpec, heights: &HeightMap) -> Result<(), SceneError> {
+        let [width_m, length_m] = heights.size_m();
+        let area_m2 = width_m * length_m;
+        match (rough.control, rough.e_star_pa) {
+            (Some(Control::Load { newtons }), Some(e_star)) if newtons / area_m2 > e_star => {
+                Err(self.error(
+                    "contact.load",
+                    format!(
+                        "{} N over the map's {} m² is a mean pressure of {} Pa, more than the combined modulus E* = {} Pa",
+                        crate::text::approx(newtons),
+                        crate::text::approx(area_m2),
+                        crate::text::approx(newtons / area_m2),
+                        crate::text::approx(e_star)
+                    ),
+                    Some("rough contact is elastic (up to a hardness cap): give a load whose mean pressure over the map is a small fraction of E*, or a larger map"),
+                ))
+            }
+            (Some(Control::MeanPressure { pa }), Some(e_star)) if pa > e_star => Err(self.error(
+                "contact.mean_pressure",
+                format!(
+                    "{} Pa is more than the combined modulus E* = {} Pa",
+                    crate::text::approx(pa),
+                    crate::text::approx(e_star)
+                ),
+                Some("rough contact is elastic (up to a hardness cap): give a small fraction of E*"),
+            )),
+            (Some(Control::Approach { m }), _) => {
+                let (low, high) = heights
+                    .heights_m()
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| {
+                        (lo.min(h), hi.max(h))
+                    });
+                if m > high - low {
+                    Err(self.error(
+                        "contact.approach",
+                        format!(
+                            "{} m is more than the surface's peak-to-valley height {} m: the surfaces would overlap everywhere",
+                            crate::text::approx(m),
+                            crate::text::approx(high - low)
+                        ),
+                        Some("the approach is counted from first contact: give a fraction of the peak-to-valley height"),
+                    ))
+                } else {
+                    Ok(())
+                }
+            }
+            _ => Ok(()),
+        }
     }
 
     /// A rough or surface scene: its tables beyond `[contact]`.
@@ -419,7 +499,7 @@ impl Validator<'_> {
                 if !(t > 0.0 && t < 1e-2) {
                     return Err(self.error(
                         "numerical.tolerance",
-                        format!("must lie in (0, 0.01), got {t}"),
+                        format!("must lie in (0, 0.01), got {}", crate::text::number(t)),
                         Some("the default is 1e-8"),
                     ));
                 }
@@ -435,6 +515,9 @@ impl Validator<'_> {
                 }
                 rough.max_iterations = n as usize;
             }
+        }
+        if let Some(rough) = &contact.rough {
+            self.rough_control(rough, &surface.heights)?;
         }
         let figure = self.figure(&raw.figure, &contact)?;
         let [ny, nx] = surface.heights.shape();

@@ -40,6 +40,29 @@ impl Validator<'_> {
                 numbers
             }
             (None, Some(from), Some(to), Some(steps)) => {
+                for (key, value) in [("sweep.from", from), ("sweep.to", to)] {
+                    if !value.is_finite() {
+                        return Err(self.error(
+                            key,
+                            format!(
+                                "must be a finite number, got {}",
+                                crate::text::number(value)
+                            ),
+                            None,
+                        ));
+                    }
+                }
+                if !(to - from).is_finite() {
+                    return Err(self.error(
+                        "sweep.to",
+                        format!(
+                            "the span from {} to {} is beyond double precision",
+                            crate::text::number(from),
+                            crate::text::number(to)
+                        ),
+                        Some("give a sweep of sizes a user could mean"),
+                    ));
+                }
                 if !(2..=MAX_STEPS as i64).contains(&steps) {
                     return Err(self.error(
                         "sweep.steps",
@@ -67,23 +90,65 @@ impl Validator<'_> {
                 None,
             ));
         }
-        for (i, &value) in values.iter().enumerate() {
-            let key = format!("sweep.values[{i}]");
+        // Each value as the user wrote it, named by its key. Generated values lie between
+        // `from` and `to` (every bound below is an interval, and a, p0 and the other Hertz
+        // values change monotonically with the load), so those two are checked, by their keys.
+        let checked: Vec<(String, f64, Option<&str>)> = match (&raw.values, raw.from, raw.to) {
+            (Some(written), _, _) => values
+                .iter()
+                .zip(written)
+                .enumerate()
+                .map(|(i, (&value, text))| {
+                    let text = match text {
+                        NumberOrText::Text(text) => Some(text.as_str()),
+                        NumberOrText::Number(_) => None,
+                    };
+                    (format!("sweep.values[{i}]"), value, text)
+                })
+                .collect(),
+            (None, Some(from), Some(to)) => vec![
+                ("sweep.from".to_string(), from, None),
+                ("sweep.to".to_string(), to, None),
+            ],
+            _ => Vec::new(),
+        };
+        for (key, value, text) in checked {
+            let key = key.as_str();
+            let written = text.map_or_else(|| crate::text::number(value), str::to_string);
             match parameter {
                 SweepParameter::Friction => {
-                    self.friction(&key, value)?;
+                    self.friction(key, value)?;
                 }
-                SweepParameter::Load if !(value.is_finite() && value > 0.0) => {
-                    return Err(self.error(
-                        &key,
-                        format!("a load must be positive and finite, got {value}"),
-                        None,
-                    ));
+                SweepParameter::Load => {
+                    let (dimension, unit) = if contact.kind == ContactKind::Line {
+                        (Dimension::ForcePerLength, "N/m")
+                    } else {
+                        (Dimension::Force, "N")
+                    };
+                    let written = match text {
+                        Some(_) => written,
+                        None => format!("{written} {unit}"),
+                    };
+                    self.within(key, value, &written, dimension, LOAD_BOUNDS)?;
+                    if contact.dimensional.is_some() {
+                        let stepped = contact
+                            .with_load(value)
+                            .map_err(|e| self.error(key, e.to_string(), None))?;
+                        if let Some(d) = stepped.dimensional {
+                            self.hertz_values(&d.hertz, contact.yield_strength)
+                                .map_err(|e| SceneError {
+                                    key: Some(key.to_string()),
+                                    ..e
+                                })?;
+                        }
+                    }
                 }
-                SweepParameter::Load | SweepParameter::Position if !value.is_finite() => {
-                    return Err(self.error(&key, format!("must be finite, got {value}"), None));
+                SweepParameter::Position => {
+                    // In units of a, like every figure range.
+                    let over_a = value * crate::study::length_unit_over_a(scene);
+                    let written = format!("{written}{}", unit_after(scene.figure.length_unit));
+                    self.within_reach(key, over_a, &written)?;
                 }
-                _ => {}
             }
         }
         match parameter {
@@ -177,7 +242,14 @@ impl Validator<'_> {
             for (i, point) in points.iter().enumerate() {
                 match point.as_slice() {
                     [x, z] if x.is_finite() && z.is_finite() && *z >= 0.0 => {
-                        material_points.push((*x, *z))
+                        let key = format!("sweep.material_points[{i}]");
+                        let unit_over_a = crate::study::length_unit_over_a(scene);
+                        let suffix = unit_after(scene.figure.length_unit);
+                        for value in [*x, *z] {
+                            let written = format!("{}{suffix}", crate::text::number(value));
+                            self.within_reach(&key, value * unit_over_a, &written)?;
+                        }
+                        material_points.push((*x, *z));
                     }
                     _ => {
                         return Err(self.error(

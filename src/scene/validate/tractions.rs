@@ -1,7 +1,13 @@
 //! The `[tractions]` table: a CSV grid of surface tractions.
 
+use super::figure::MIN_SPAN_OVER_A;
 #[allow(clippy::wildcard_imports)]
 use super::*;
+
+/// The largest traction, in units of the figures' p0: far beyond any contact (a traction
+/// file in MPa with p0 = 1 Pa stays below it), and far from where sums of millions of cells
+/// could overflow.
+const MAX_TRACTION_OVER_P0: f64 = 1e12;
 
 impl Validator<'_> {
     /// The `[tractions]` table of a `kind = "tractions"` scene: the CSV grid read and converted
@@ -69,24 +75,72 @@ impl Validator<'_> {
             .parent()
             .unwrap_or_else(|| std::path::Path::new(""))
             .join(&table.file);
-        let text = std::fs::read_to_string(&path).map_err(|e| {
-            self.error(
-                "tractions.file",
-                format!("cannot read {}: {e}", path.display()),
-                Some("the path is relative to the scene file"),
-            )
-        })?;
+        let text = crate::input::read_to_string(&path, crate::input::TRACTION_FILE_LIMIT).map_err(
+            |e| {
+                self.error(
+                    "tractions.file",
+                    format!("cannot read {}: {e}", path.display()),
+                    Some("the path is relative to the scene file"),
+                )
+            },
+        )?;
         let read = traction_csv::read(&text)
             .map_err(|m| self.error("tractions.file", format!("{}: {m}", path.display()), None))?;
         let a_m = contact.half_width_m();
         let p0_pa = contact.p0_pa();
         let length = length_unit.metres(a_m) / a_m;
         let stress = stress_unit.pascals(p0_pa) / p0_pa;
+        // In units of p0 every traction must stay a number a sum of many cells can carry.
+        let largest = read.largest;
+        let over_p0 = largest.magnitude * stress;
+        if over_p0.is_nan() || over_p0 > MAX_TRACTION_OVER_P0 {
+            return Err(self.error(
+                "tractions.file",
+                format!(
+                    "{}: line {}: {} = {} {} is {} p0 (p0 = {} Pa), more than the {} p0 allowed",
+                    path.display(),
+                    largest.line,
+                    largest.column,
+                    crate::text::number(largest.magnitude),
+                    table.stress_unit.as_deref().unwrap_or("p0"),
+                    crate::text::number(over_p0),
+                    crate::text::number(p0_pa),
+                    crate::text::compact(MAX_TRACTION_OVER_P0)
+                ),
+                Some("check the value and tractions.stress_unit; contact.p0 should be near the size of the tractions"),
+            ));
+        }
         let cell = [read.cell[0] * length, read.cell[1] * length];
         let origin = [
             read.first_centre[0] * length - 0.5 * cell[0],
             read.first_centre[1] * length - 0.5 * cell[1],
         ];
+        // The nodes (cell centres) within reach of the figures' origin.
+        let shape = [read.pressure.ncols(), read.pressure.nrows()];
+        for axis in 0..2 {
+            let key = "tractions.file";
+            let name = ["x", "y"][axis];
+            let suffix = unit_after(length_unit);
+            let first = read.first_centre[axis];
+            let last = first + (shape[axis] - 1) as f64 * read.cell[axis];
+            for node in [first, last] {
+                let written = format!("{name} = {}{suffix}", crate::text::number(node));
+                self.within_reach(key, node * length, &written)?;
+            }
+            if cell[axis].is_nan() || cell[axis] < MIN_SPAN_OVER_A {
+                return Err(self.error(
+                    key,
+                    format!(
+                        "{}: the {name} spacing {} is {} a, less than the {} a a figure can resolve",
+                        path.display(),
+                        crate::text::number(read.cell[axis]),
+                        crate::text::number(cell[axis]),
+                        crate::text::compact(MIN_SPAN_OVER_A)
+                    ),
+                    Some("check tractions.length_unit"),
+                ));
+            }
+        }
         let scaled = |a: ndarray::Array2<f64>| a.mapv(|v| v * stress);
         let grid = TractionGrid::new(
             origin,
@@ -96,14 +150,6 @@ impl Validator<'_> {
             read.shear_y.map(scaled),
         )
         .map_err(|e| self.error("tractions.file", e.to_string(), None))?;
-        let [ny, nx] = grid.shape();
-        if nx > 4096 || ny > 4096 {
-            return Err(self.error(
-                "tractions.file",
-                format!("a {nx} x {ny} grid is larger than 4096 x 4096"),
-                Some("resample the tractions more coarsely"),
-            ));
-        }
         Ok(Some(std::sync::Arc::new(grid)))
     }
 }

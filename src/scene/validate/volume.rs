@@ -41,10 +41,16 @@ impl Validator<'_> {
         let x = self.range("volume.x", raw.x.as_ref(), (default(-2.0), default(2.0)))?;
         let y = self.range("volume.y", raw.y.as_ref(), (default(-2.0), default(2.0)))?;
         let z = self.range("volume.z", raw.z.as_ref(), (0.0, default(2.0)))?;
+        for (key, range) in [("volume.x", x), ("volume.y", y), ("volume.z", z)] {
+            self.range_within_reach(key, range, unit, unit_after(figure.length_unit))?;
+        }
         if z.0 < 0.0 {
             return Err(self.error(
                 "volume.z",
-                format!("depths must be >= 0 (z points into the body), got {}", z.0),
+                format!(
+                    "depths must be >= 0 (z points into the body), got {}",
+                    crate::text::number(z.0)
+                ),
                 None,
             ));
         }
@@ -65,7 +71,10 @@ impl Validator<'_> {
             Some(t) => {
                 return Err(self.error(
                     "volume.threshold",
-                    format!("must lie in [0, 1) (a fraction of the largest |value|), got {t}"),
+                    format!(
+                        "must lie in [0, 1) (a fraction of the largest |value|), got {}",
+                        crate::text::number(t)
+                    ),
                     None,
                 ))
             }

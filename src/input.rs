@@ -1,0 +1,208 @@
+//! Reading what users give us (scene files, traction tables, probe points, height maps) with
+//! limits on the size of a file and the length of a line, so that a wrong path (`/dev/zero`,
+//! a disk image, a binary file) fails at once with the limit in the message instead of filling
+//! the memory. Sizes are counted as the bytes are read, so devices and pipes, whose size is
+//! not known beforehand, are limited too.
+
+use std::io::{BufRead, Read};
+use std::path::Path;
+
+use crate::text;
+
+/// The largest scene file: scenes are a few KiB of TOML.
+pub const SCENE_FILE_LIMIT: u64 = 1 << 20;
+
+/// The largest traction table (CSV): a 2048 x 2048 grid of `x,y,p,qx,qy` rows takes about
+/// 200 MiB; the grid may have at most 4096 x 4096 nodes.
+pub const TRACTION_FILE_LIMIT: u64 = 256 << 20;
+
+/// The largest input of `probe` (file or standard input): about five million points.
+pub const POINTS_LIMIT: u64 = 128 << 20;
+
+/// The longest line of a table (traction CSV, probe points): a row of five numbers takes well
+/// under 200 bytes.
+pub const LINE_LIMIT: usize = 64 << 10;
+
+/// Input that cannot be read or is beyond a limit. The caller names the file.
+#[derive(Debug, thiserror::Error)]
+pub enum InputError {
+    #[error("{0}")]
+    Io(#[from] std::io::Error),
+    #[error("larger than the {} allowed{}", text::bytes(*limit), hint_for(*limit))]
+    TooLarge { limit: u64 },
+    #[error("line {line} is longer than the {} allowed for a line (is it the right file?)", text::bytes(*limit as u64))]
+    LineTooLong { line: usize, limit: usize },
+    #[error("line {line} is not text (UTF-8): is it the right file?")]
+    NotText { line: usize },
+}
+
+fn hint_for(limit: u64) -> &'static str {
+    if limit == SCENE_FILE_LIMIT {
+        " for a scene (scenes are a few KiB of TOML): is it the right file?"
+    } else {
+        ": is it the right file?"
+    }
+}
+
+/// Reads the whole of `path` as UTF-8 text, failing as soon as more than `limit` bytes come.
+pub fn read_to_string(path: &Path, limit: u64) -> Result<String, InputError> {
+    let file = std::fs::File::open(path)?;
+    // A regular file's size, when within the limit, sizes the buffer once (no doubling).
+    let size = file.metadata().map_or(0, |m| m.len());
+    let capacity = if size <= limit { size as usize + 1 } else { 0 };
+    read_all_with_capacity(file, limit, capacity)
+}
+
+/// Reads all of `reader` as UTF-8 text, failing as soon as more than `limit` bytes come.
+pub fn read_all(reader: impl Read, limit: u64) -> Result<String, InputError> {
+    read_all_with_capacity(reader, limit, 0)
+}
+
+fn read_all_with_capacity(
+    reader: impl Read,
+    limit: u64,
+    capacity: usize,
+) -> Result<String, InputError> {
+    let mut bytes = Vec::with_capacity(capacity);
+    reader
+        .take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > limit {
+        return Err(InputError::TooLarge { limit });
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        InputError::NotText {
+            line: valid.iter().filter(|b| **b == b'\n').count() + 1,
+        }
+    })
+}
+
+/// The lines of `reader` (without their line ending), numbered from 1, at most `line_limit`
+/// bytes each and `total_limit` bytes in all; the first error ends the iteration.
+pub fn lines<R: BufRead>(reader: R, total_limit: u64, line_limit: usize) -> Lines<R> {
+    Lines {
+        reader,
+        total_limit,
+        line_limit,
+        read: 0,
+        line: 0,
+        done: false,
+    }
+}
+
+/// The iterator of [`lines`].
+pub struct Lines<R> {
+    reader: R,
+    total_limit: u64,
+    line_limit: usize,
+    read: u64,
+    line: usize,
+    done: bool,
+}
+
+impl<R: BufRead> Iterator for Lines<R> {
+    type Item = Result<(usize, String), InputError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        if self.done {
+            return None;
+        }
+        self.line += 1;
+        let mut buffer = Vec::new();
+        // One byte more than a line may have (plus its newline) tells a line that is too long.
+        let cap = self.line_limit as u64 + 2;
+        let result = (&mut self.reader).take(cap).read_until(b'\n', &mut buffer);
+        let error = match result {
+            Err(e) => Some(InputError::Io(e)),
+            Ok(0) => {
+                self.done = true;
+                return None;
+            }
+            Ok(n) => {
+                self.read += n as u64;
+                if buffer.last() == Some(&b'\n') {
+                    buffer.pop();
+                    if buffer.last() == Some(&b'\r') {
+                        buffer.pop();
+                    }
+                }
+                if self.read > self.total_limit {
+                    Some(InputError::TooLarge {
+                        limit: self.total_limit,
+                    })
+                } else if buffer.len() > self.line_limit {
+                    Some(InputError::LineTooLong {
+                        line: self.line,
+                        limit: self.line_limit,
+                    })
+                } else {
+                    None
+                }
+            }
+        };
+        if let Some(error) = error {
+            self.done = true;
+            return Some(Err(error));
+        }
+        match String::from_utf8(buffer) {
+            Ok(text) => Some(Ok((self.line, text))),
+            Err(_) => {
+                self.done = true;
+                Some(Err(InputError::NotText { line: self.line }))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn whole_reads_stop_at_the_limit() {
+        assert_eq!(read_all("abc".as_bytes(), 3).expect("fits"), "abc");
+        let error = read_all(std::io::repeat(0).take(1 << 30), 1024).expect_err("endless");
+        assert!(error.to_string().contains("1 KiB"), "{error}");
+        let error = read_all(&b"ok\n\xff\n"[..], 100).expect_err("binary");
+        assert!(error.to_string().contains("line 2"), "{error}");
+    }
+
+    #[test]
+    fn lines_are_numbered_and_limited() {
+        let text = "a\r\nbb\n\nccc";
+        let read: Vec<(usize, String)> = lines(text.as_bytes(), 100, 10)
+            .collect::<Result<_, _>>()
+            .expect("valid");
+        assert_eq!(
+            read,
+            vec![
+                (1, "a".into()),
+                (2, "bb".into()),
+                (3, String::new()),
+                (4, "ccc".into())
+            ]
+        );
+        // A line of exactly the limit passes; one byte more does not.
+        assert!(lines("12345\n".as_bytes(), 100, 5).all(|l| l.is_ok()));
+        let mut long = lines("ok\n123456\nnever\n".as_bytes(), 100, 5);
+        assert!(long.next().expect("first").is_ok());
+        let error = long.next().expect("second").expect_err("too long");
+        assert!(
+            matches!(error, InputError::LineTooLong { line: 2, .. }),
+            "{error}"
+        );
+        assert!(long.next().is_none(), "the first error ends the lines");
+        // An endless line without a newline ends at the line limit, not the memory.
+        let mut zeros = lines(std::io::BufReader::new(std::io::repeat(0)), 1 << 40, 64);
+        assert!(matches!(
+            zeros.next().expect("one"),
+            Err(InputError::LineTooLong { line: 1, .. })
+        ));
+        let mut many = lines(std::io::BufReader::new(std::io::repeat(b'\n')), 1000, 64);
+        assert!(matches!(
+            many.find(Result::is_err).expect("stops"),
+            Err(InputError::TooLarge { limit: 1000 })
+        ));
+    }
+}

@@ -230,3 +230,17 @@ pub enum MethodArg {
     ClosedForm,
     Numerical,
 }
+
+#[cfg(test)]
+mod tests {
+    /// The address `--connect` uses alone is the one Rerun's SDK connects to by default (this
+    /// copy exists for builds without Rerun).
+    #[cfg(feature = "rerun")]
+    #[test]
+    fn the_default_viewer_address_is_rerun_s() {
+        assert_eq!(
+            super::DEFAULT_VIEWER_URL,
+            stressfield::record::DEFAULT_VIEWER_URL
+        );
+    }
+}

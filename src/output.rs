@@ -378,6 +378,27 @@ mod tests {
     }
 
     #[test]
+    fn staged_files_are_removed_on_interruption_until_committed() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let in_dir = |list: &[PathBuf]| {
+            list.iter()
+                .filter(|p| p.starts_with(dir.path()))
+                .cloned()
+                .collect::<Vec<_>>()
+        };
+        let mut staged = Staged::new();
+        staged.add(&dir.path().join("a.png"), b"a").expect("stage");
+        staged.reserve(&dir.path().join("b.rrd")).expect("reserve");
+        // Both temporary files are registered: an interruption now would remove them.
+        let registered = in_dir(&pending());
+        assert_eq!(registered.len(), 2, "{registered:?}");
+        assert!(registered.iter().all(|p| p.exists()));
+        staged.commit().expect("commit");
+        assert!(in_dir(&pending()).is_empty());
+        assert_eq!(names(dir.path()), ["a.png", "b.rrd"]);
+    }
+
+    #[test]
     fn pending_files_are_listed_while_their_guard_lives() {
         let dir = tempfile::tempdir().expect("temp dir");
         let path = dir.path().join(".x.part");

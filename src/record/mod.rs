@@ -564,7 +564,9 @@ fn log_charts(
         &figure.value_label,
     );
     chart.x_range = Some(x_range);
-    chart.y_range = Some((range.0.min(0.0), range.1));
+    // A quarter of the span free above the data: the legend's corner.
+    let headroom = |(lo, hi): (f64, f64)| (lo, hi + 0.25 * (hi - lo));
+    chart.y_range = Some(headroom((range.0.min(0.0), range.1)));
     chart.width_px = 520;
     chart.height_px = 400;
     let add = |label: &str, column: usize, colour: [u8; 3], chart: &mut Chart| {
@@ -611,7 +613,7 @@ fn log_charts(
             &figure.z_label,
         );
         depth.x_range = Some(x_range);
-        depth.y_range = Some((frame.v.0.max(0.0), frame.v.1));
+        depth.y_range = Some(headroom((frame.v.0.max(0.0), frame.v.1)));
         depth.width_px = 520;
         depth.height_px = 400;
         add(&format!("depth of max {symbol}"), 2, PALETTE[2], &mut depth);

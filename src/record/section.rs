@@ -16,8 +16,8 @@ use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::scene::Scene;
 
 /// Height of a label in pixels, and the width of one of its characters (the viewer's font).
-const LABEL_PX: f64 = 18.0;
-const CHAR_PX: f64 = 7.5;
+const LABEL_PX: f64 = 21.0;
+const CHAR_PX: f64 = 6.3;
 
 /// The p profile: a light blue that reads on the dark background and beside every map.
 pub const P_COLOUR: [u8; 3] = [86, 180, 233];

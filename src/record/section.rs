@@ -268,6 +268,13 @@ impl Frame {
         LABEL_PX / self.px
     }
 
+    /// Where a leader from `point` meets the label centred at `centre`: the middle of the
+    /// label's top edge, or of its bottom edge for a label above the point.
+    fn leader_end(&self, (cu, cv): (f64, f64), (_, v): (f64, f64)) -> [f32; 2] {
+        let edge = if cv >= v { -0.5 } else { 0.5 };
+        [cu as f32, (cv + edge * self.label_height()) as f32]
+    }
+
     /// The anchor point of a label whose text is centred at `(u, v)`.
     fn anchor(&self, u: f64, v: f64) -> [f32; 2] {
         [u as f32, (v - 0.5 * self.label_height()) as f32]
@@ -298,33 +305,84 @@ impl LabelBox {
     }
 }
 
+/// What labels must not cover, besides one another.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Avoid<'a> {
+    /// Labels already in place (the title and legend rows): centre and text.
+    pub labels: &'a [((f64, f64), &'a str)],
+    /// Marked points (the extremes, the material points): no label covers one.
+    pub dots: &'a [(f64, f64)],
+    /// Points along drawn lines (the outlines): covered only where no other place is free.
+    pub lines: &'a [(f64, f64)],
+}
+
+/// Half the size of the box kept free around a marked point (its dot is 4 points in radius).
+const DOT_PX: f64 = 6.0;
+
 /// Places labels at their preferred centres, kept inside the map's width (a label is
-/// centred on its point, so one near a side would be cut by the view's edge), moving each one
-/// that would cover an earlier one down (then up) by label heights until it is clear. Returns
-/// the centres.
-fn place_labels(frame: &Frame, wanted: &[((f64, f64), &str)]) -> Vec<(f64, f64)> {
+/// centred on its point, so one near a side would be cut by the view's edge). A label is wanted
+/// just below its point; one that would cover an earlier label, a label of `avoid` or a
+/// marked point goes just above it, else further down or up by label heights, and where
+/// possible it covers no line either. Returns the centres.
+fn place_labels(
+    frame: &Frame,
+    wanted: &[((f64, f64), &str)],
+    avoid: &Avoid<'_>,
+) -> Vec<(f64, f64)> {
     let height = frame.label_height();
-    let mut placed: Vec<LabelBox> = Vec::new();
+    let boxed = |(u, v): (f64, f64), text: &str| LabelBox {
+        u,
+        v,
+        half_width: 0.5 * (text.chars().count() as f64 * CHAR_PX + 10.0) / frame.px,
+        half_height: 0.5 * height,
+    };
+    let point = |&(u, v): &(f64, f64), half: f64| LabelBox {
+        u,
+        v,
+        half_width: half,
+        half_height: half,
+    };
+    let dots: Vec<LabelBox> = avoid
+        .dots
+        .iter()
+        .map(|p| point(p, DOT_PX / frame.px))
+        .collect();
+    let lines: Vec<LabelBox> = avoid.lines.iter().map(|p| point(p, 0.0)).collect();
+    let mut placed: Vec<LabelBox> = avoid
+        .labels
+        .iter()
+        .map(|&(at, text)| boxed(at, text))
+        .collect();
     let mut centres = Vec::new();
     for &((u, v), text) in wanted {
-        let half_width = 0.5 * (text.chars().count() as f64 * CHAR_PX + 10.0) / frame.px;
+        let half_width = boxed((u, v), text).half_width;
         let (left, right) = (frame.u.0 + half_width, frame.bar.0 - half_width);
         let u = if left <= right {
             u.clamp(left, right)
         } else {
             0.5 * (frame.u.0 + frame.bar.0)
         };
-        let candidate = |shift: f64| LabelBox {
-            u,
-            v: v + shift * height,
-            half_width,
-            half_height: 0.5 * height,
+        // Below the point as wanted, then above it, then further down and up.
+        let candidates: Vec<LabelBox> = std::iter::once(0.0)
+            .chain((1..12).flat_map(|k| [-f64::from(k) - 0.8, f64::from(k)]))
+            .map(|shift| boxed((u, v + shift * height), text))
+            .collect();
+        let clear = |b: &LabelBox, obstacles: &[&[LabelBox]]| {
+            obstacles
+                .iter()
+                .all(|list| list.iter().all(|o| !b.overlaps(o)))
         };
-        let shifts = (0..12).flat_map(|k| [f64::from(k), -f64::from(k)]);
-        let chosen = shifts
-            .map(candidate)
-            .find(|b| placed.iter().all(|p| !b.overlaps(p)))
-            .unwrap_or_else(|| candidate(0.0));
+        // Lines are given up first, then nothing else: a label may only land on another if
+        // there is no room at all.
+        let chosen = [
+            &[&placed[..], &dots[..], &lines[..]][..],
+            &[&placed[..], &dots[..]][..],
+            &[&placed[..]][..],
+        ]
+        .iter()
+        .find_map(|obstacles| candidates.iter().find(|b| clear(b, obstacles)))
+        .copied()
+        .unwrap_or(candidates[0]);
         centres.push((chosen.u, chosen.v));
         placed.push(chosen);
     }
@@ -670,10 +728,10 @@ pub fn log_step(
         stream,
         when,
         format!("{base}/title"),
-        &rerun::Points2D::new(row_anchors)
+        &rerun::Points2D::new(row_anchors.clone())
             .with_radii([rerun::Radius::new_ui_points(0.0)])
             .with_colors(row_colours)
-            .with_labels(row_labels)
+            .with_labels(row_labels.clone())
             .with_show_labels(true),
     )?;
     if !panel.outlines.is_empty() {
@@ -720,7 +778,35 @@ pub fn log_step(
         .iter()
         .map(|(at, text)| (*at, text.as_str()))
         .collect();
-    let centres = place_labels(frame, &requests);
+    // Label centres of the title and legend rows (their anchors are half a label higher).
+    let rows: Vec<((f64, f64), &str)> = row_anchors
+        .iter()
+        .zip(&row_labels)
+        .map(|(a, text)| {
+            (
+                (
+                    f64::from(a[0]),
+                    f64::from(a[1]) + 0.5 * frame.label_height(),
+                ),
+                text.as_str(),
+            )
+        })
+        .collect();
+    let dots: Vec<(f64, f64)> = marks
+        .iter()
+        .map(|(_, e)| (e.u, e.v))
+        .chain(changing.material.iter().copied())
+        .collect();
+    let lines: Vec<(f64, f64)> = panel.outlines.iter().flatten().copied().collect();
+    let centres = place_labels(
+        frame,
+        &requests,
+        &Avoid {
+            labels: &rows,
+            dots: &dots,
+            lines: &lines,
+        },
+    );
     for name in ["maximum", "minimum"] {
         match marks.iter().position(|(n, _)| *n == name) {
             Some(index) => {
@@ -749,7 +835,7 @@ pub fn log_step(
                 let moved = (cv - wanted_v).abs() > 1e-9 || (cu - wanted_u).abs() > 1e-9;
                 let leader = [
                     [e.u as f32, e.v as f32],
-                    [cu as f32, (cv - 0.5 * frame.label_height()) as f32],
+                    frame.leader_end((cu, cv), (e.u, e.v)),
                 ];
                 put(
                     stream,
@@ -783,6 +869,24 @@ pub fn log_step(
                 .with_colors([rerun::Color::from_rgb(20, 20, 20)])
                 .with_labels(labels)
                 .with_show_labels(true),
+        )?;
+        // Leaders from the points to the labels that had to move.
+        let leaders: Vec<[[f32; 2]; 2]> = changing
+            .material
+            .iter()
+            .zip(&centres[marks.len()..])
+            .filter(|(&(x, z), &(cu, cv))| {
+                (cu - x).abs() > 1e-9 || (cv - (z + 0.9 * frame.label_height())).abs() > 1e-9
+            })
+            .map(|(&(x, z), &centre)| [[x as f32, z as f32], frame.leader_end(centre, (x, z))])
+            .collect();
+        put(
+            stream,
+            when,
+            format!("{base}/material_points/leaders"),
+            &rerun::LineStrips2D::new(leaders)
+                .with_colors([rerun::Color::from_rgb(20, 20, 20)])
+                .with_radii([rerun::Radius::new_ui_points(0.5)]),
         )?;
     }
     Ok(())
@@ -835,7 +939,7 @@ mod tests {
             ((0.05, 0.52), "min σvM = 0.001 p0 at x = 0.1a, z = 0.7a"),
             ((0.9, 0.1), "point 0"),
         ];
-        let centres = place_labels(&frame, &wanted);
+        let centres = place_labels(&frame, &wanted, &Avoid::default());
         assert_eq!(centres[0], (0.0, 0.5));
         // The second is moved a label height or more away; the third, far away, stays.
         assert!((centres[1].1 - 0.52).abs() >= LABEL_PX / frame.px - 1e-9);
@@ -855,16 +959,124 @@ mod tests {
     }
 
     #[test]
+    fn labels_never_cover_a_marked_point_and_stay_by_their_own() {
+        // A moving load at x0 = 0 (issue 14): the labels of the two τxz lobes flank the axis,
+        // where two material points sit one above the other. Pushed from below its dot, the
+        // first point's label once landed on the second point's dot.
+        let frame = frame();
+        let h = LABEL_PX / frame.px;
+        let (max_at, min_at) = ((-0.3, 0.5), (0.3, 0.5));
+        let points = [(0.0, 0.5), (0.0, 0.58)];
+        let below = |(u, v): (f64, f64)| (u, v + 0.9 * h);
+        let wanted = [
+            (
+                below(max_at),
+                "max τxz = 0.250 p0 at x = −0.860a, z = 0.500a",
+            ),
+            (
+                below(min_at),
+                "min τxz = −0.250 p0 at x = 0.860a, z = 0.500a",
+            ),
+            (below(points[0]), "point 0"),
+            (below(points[1]), "point 1"),
+        ];
+        let dots = [max_at, min_at, points[0], points[1]];
+        let avoid = Avoid {
+            dots: &dots,
+            ..Avoid::default()
+        };
+        let centres = place_labels(&frame, &wanted, &avoid);
+        let boxed = |k: usize| LabelBox {
+            u: centres[k].0,
+            v: centres[k].1,
+            half_width: 0.5 * (wanted[k].1.chars().count() as f64 * CHAR_PX + 10.0) / frame.px,
+            half_height: 0.5 * h,
+        };
+        for k in 0..wanted.len() {
+            for &(u, v) in &dots {
+                let dot = LabelBox {
+                    u,
+                    v,
+                    half_width: DOT_PX / frame.px,
+                    half_height: DOT_PX / frame.px,
+                };
+                assert!(
+                    !boxed(k).overlaps(&dot),
+                    "label {k} covers the dot at ({u}, {v})"
+                );
+            }
+            for j in 0..k {
+                assert!(!boxed(k).overlaps(&boxed(j)), "{k} covers {j}");
+            }
+        }
+        // Each point's label is nearer its own point than the other one.
+        let distance = |(u, v): (f64, f64), (a, b): (f64, f64)| (u - a).hypot(v - b);
+        for (j, own) in points.iter().enumerate() {
+            let other = points[1 - j];
+            assert!(
+                distance(centres[2 + j], *own) < distance(centres[2 + j], other),
+                "{centres:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn labels_keep_off_rows_and_lines_where_there_is_room() {
+        let frame = frame();
+        let h = LABEL_PX / frame.px;
+        let text = "max p = 2125 MPa at x = 100 µm, y = 107 µm";
+        let half_width = 0.5 * (text.chars().count() as f64 * CHAR_PX + 10.0) / frame.px;
+        let clear_of = |centre: (f64, f64), (u, v): (f64, f64)| {
+            (centre.0 - u).abs() >= half_width || (centre.1 - v).abs() >= 0.5 * h
+        };
+        // A title row where the label is wanted.
+        let rows = [(
+            (0.0, 0.5),
+            "step 1 of 10: W = 0.05 N: 4 spots, 0.543 % in contact",
+        )];
+        let avoid = Avoid {
+            labels: &rows,
+            ..Avoid::default()
+        };
+        let centre = place_labels(&frame, &[((0.0, 0.5), text)], &avoid)[0];
+        assert!((centre.1 - 0.5).abs() >= h - 1e-12, "{centre:?}");
+        // An outline through the wanted place: the label moves off it.
+        let outline: Vec<(f64, f64)> = (0..=40)
+            .map(|i| (-1.0 + 0.05 * f64::from(i), 0.5))
+            .collect();
+        let avoid = Avoid {
+            lines: &outline,
+            ..Avoid::default()
+        };
+        let centre = place_labels(&frame, &[((0.0, 0.5), text)], &avoid)[0];
+        assert!(outline.iter().all(|&p| clear_of(centre, p)), "{centre:?}");
+        // Lines everywhere: the label stays where it is wanted.
+        let everywhere: Vec<(f64, f64)> = (0..=400)
+            .flat_map(|i| {
+                (0..=40).map(move |j| (-1.0 + 0.005 * f64::from(i), -0.8 + 0.05 * f64::from(j)))
+            })
+            .collect();
+        let avoid = Avoid {
+            lines: &everywhere,
+            ..Avoid::default()
+        };
+        assert_eq!(
+            place_labels(&frame, &[((0.0, 0.5), text)], &avoid)[0],
+            (0.0, 0.5)
+        );
+    }
+
+    #[test]
     fn labels_near_a_side_stay_inside_the_map() {
         let frame = frame();
         let text = "max τxz = 0.113 p0 at x = −1.00a, z = 0.680a";
-        let centres = place_labels(&frame, &[((frame.u.0, 0.5), text)]);
+        let centres = place_labels(&frame, &[((frame.u.0, 0.5), text)], &Avoid::default());
         let half_width = 0.5 * (text.chars().count() as f64 * CHAR_PX + 10.0) / frame.px;
         assert!(
             (centres[0].0 - (frame.u.0 + half_width)).abs() < 1e-12,
             "{centres:?}"
         );
-        let centres = place_labels(&frame, &[((frame.u.1, 0.5), text)]);
+        let centres = place_labels(&frame, &[((frame.u.1, 0.5), text)], &Avoid::default());
         assert!(
             centres[0].0 + half_width <= frame.bar.0 + 1e-12,
             "{centres:?}"

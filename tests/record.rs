@@ -115,6 +115,28 @@ impl Contents {
             .collect()
     }
 
+    /// The names of the layout's views, as the viewer shows them on their tabs.
+    fn view_names(&self) -> Vec<String> {
+        use rerun::external::re_sdk_types::blueprint::archetypes::ViewBlueprint;
+        self.layout
+            .values()
+            .flatten()
+            .flat_map(|chunk| {
+                chunk
+                    .iter_component::<rerun::components::Name>(
+                        ViewBlueprint::descriptor_display_name().component,
+                    )
+                    .flat_map(|batch| {
+                        batch
+                            .iter()
+                            .map(|n| n.as_str().to_string())
+                            .collect::<Vec<_>>()
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+
     /// The blueprint entities whose path ends with `suffix`.
     fn layout_paths(&self, suffix: &str) -> Vec<&str> {
         self.layout
@@ -129,6 +151,25 @@ impl Contents {
         self.chunks
             .get(path)
             .map_or(0, |chunks| chunks.iter().map(Chunk::num_rows).sum())
+    }
+
+    /// The times on `timeline` of the rows logged at `path` that are not on `other`, in order.
+    fn times_on(&self, path: &str, timeline: &'static str, other: &'static str) -> Vec<i64> {
+        let (name, other) = (
+            rerun::TimelineName::from(timeline),
+            rerun::TimelineName::from(other),
+        );
+        let mut times: Vec<i64> = self
+            .chunks
+            .get(path)
+            .unwrap_or_else(|| panic!("no entity {path}"))
+            .iter()
+            .filter(|chunk| !chunk.timelines().contains_key(&other))
+            .filter_map(|chunk| chunk.timelines().get(&name))
+            .flat_map(|column| column.times_raw().to_vec())
+            .collect();
+        times.sort_unstable();
+        times
     }
 
     /// The number of rows logged at `path` on `timeline` (static rows, such as a placement,
@@ -354,6 +395,14 @@ material_points = [[0.0, 0.5], [1.0, 0.25]]
         assert!((got - expected).abs() < 1e-12);
     }
     assert!(contents.paths().contains(&"/sections/0/material_points"));
+    // The histories' views name the point and the unit of the stresses.
+    let views = contents.view_names();
+    for name in [
+        "point 0 at x = 0a, z = 0.500a: stresses / p0 by step",
+        "point 1 at x = 1.00a, z = 0.250a: stresses / p0 by step",
+    ] {
+        assert!(views.iter().any(|v| v == name), "{name} not in {views:?}");
+    }
     // Signed: both extremes are marked and plotted, the negative lobe as much as the
     // positive one.
     let minima = contents.scalars("/series/0/minimum", "position");
@@ -612,13 +661,29 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     assert_eq!(contents.rows_on("/contact/field", "load"), 3);
     assert_eq!(contents.rows_on("/charts/contact_fraction", "load"), 3);
     let titles = contents.labels("/contact/title");
-    assert_eq!(titles.len(), 3, "{titles:?}");
+    assert_eq!(titles.len(), 4, "{titles:?}");
     for (k, load) in ["0.05", "0.2", "0.5"].iter().enumerate() {
         assert!(
             titles[k].starts_with(&format!("step {} of 3: W = {load} N: ", k + 1)),
             "{titles:?}"
         );
     }
+    // On the timeline `depth` the load's views are not empty: one row each, at its start and
+    // on that timeline only, the last load with a title that says so.
+    for path in [
+        "/contact/field",
+        "/contact/title",
+        "/charts/contact_fraction",
+        "/charts/spots",
+        "/charts/max_pressure",
+    ] {
+        assert_eq!(contents.times_on(path, "depth", "load"), vec![0], "{path}");
+    }
+    assert!(
+        titles[3].starts_with("step 3 of 3: W = 0.5 N: ")
+            && titles[3].ends_with("(the last load: the timeline `load` steps through the loads)"),
+        "{titles:?}"
+    );
     assert_eq!(
         contents
             .labels("/contact/colorbar/labels")
@@ -629,7 +694,11 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     // The labelled maximum is the step's largest pressure, in MPa.
     let largest = contents.scalars("/series/max_pressure_mpa", "load");
     let labels = contents.labels("/contact/maximum/label");
-    assert_eq!(labels.len(), 3, "{labels:?}");
+    assert_eq!(labels.len(), 4, "{labels:?}");
+    assert_eq!(
+        labels[3], labels[2],
+        "the last load on the timeline `depth`"
+    );
     for (label, (_, value)) in labels.iter().zip(&largest) {
         let shown: f64 = label
             .strip_prefix("max p = ")
@@ -645,11 +714,43 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     // More load, more contact.
     let fraction = contents.scalars("/series/contact_fraction", "load");
     assert!(fraction.windows(2).all(|w| w[1].1 > w[0].1), "{fraction:?}");
-    // The depth steps are on their own timeline only (the load's would show one of them at
-    // the last load and none before).
-    assert!(contents.rows_on("/depth/field", "depth") >= 2);
-    assert_eq!(contents.rows_on("/depth/field", "load"), 0);
-    assert!(contents.labels("/depth/title")[0].starts_with("layer 1 of "));
+    // The depth steps are on their own timeline; on the timeline `load` (which the recording
+    // opens on) the depth view holds the layer of the largest value from the first load on,
+    // not nothing.
+    let layers = contents.rows_on("/depth/field", "depth");
+    assert!(layers >= 2);
+    assert_eq!(
+        contents.times_on("/depth/field", "depth", "load").len(),
+        layers
+    );
+    assert_eq!(contents.times_on("/depth/field", "load", "depth"), vec![0]);
+    let depth_titles = contents.labels("/depth/title");
+    assert!(depth_titles[0].starts_with("layer 1 of "));
+    let preview = depth_titles.last().expect("a title");
+    assert!(
+        preview.starts_with("layer ")
+            && preview.ends_with(
+                ": the layer of the largest σvM (the timeline `depth` steps through depth)"
+            ),
+        "{preview}"
+    );
+    let value = |label: &String| -> f64 {
+        label
+            .strip_prefix("max σvM = ")
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|number| number.parse().ok())
+            .unwrap_or_else(|| panic!("{label}"))
+    };
+    let maxima = contents.labels("/depth/maximum/label");
+    assert_eq!(maxima.len(), layers + 1, "{maxima:?}");
+    let deepest_largest = maxima[..layers].iter().map(value).fold(0.0, f64::max);
+    assert_eq!(value(&maxima[layers]), deepest_largest, "{maxima:?}");
+    let layer: usize = preview["layer ".len()..]
+        .split(' ')
+        .next()
+        .and_then(|n| n.parse().ok())
+        .expect("a layer number");
+    assert_eq!(maxima[layer - 1], maxima[layers], "{preview}");
     // Every 2-D map view opens on its frame.
     assert!(contents.layout_paths("/VisualBounds2D").len() >= 3);
 }

@@ -564,8 +564,15 @@ fn log_charts(
         &figure.value_label,
     );
     chart.x_range = Some(x_range);
-    // A quarter of the span free above the data: the legend's corner.
-    let headroom = |(lo, hi): (f64, f64)| (lo, hi + 0.25 * (hi - lo));
+    // A quarter of the span free above the data (the legend's corner), and a little below a
+    // negative minimum, so that its line is not drawn on the axis.
+    let headroom = |(lo, hi): (f64, f64)| {
+        let span = hi - lo;
+        (
+            if lo < 0.0 { lo - 0.05 * span } else { lo },
+            hi + 0.25 * span,
+        )
+    };
     chart.y_range = Some(headroom((range.0.min(0.0), range.1)));
     chart.width_px = 520;
     chart.height_px = 400;
@@ -696,13 +703,23 @@ fn plan_layout(scene: &Scene, figure: &Figure, frames: &[Frame], levels: &[f64])
         documents.push(Node::View(View::new(ViewKind::TextLog, "steps", "log")));
         let parameter = parameter_axis(scene).map_or(String::new(), |(label, _)| label);
         let parameter = parameter.split(' ').next().unwrap_or("").to_string();
+        // The histories' unit as the colour bar writes it: `/ p0` or `(MPa)`.
+        let unit = match figure.value_label.rsplit_once(" / ") {
+            Some((_, unit)) => format!("/ {unit}"),
+            None => figure
+                .value_label
+                .rfind(" (")
+                .map_or(String::new(), |open| {
+                    figure.value_label[open + 1..].to_string()
+                }),
+        };
         for k in 0..figure.panels.len() {
             for j in 0..sweep.material_points.len() {
                 let (x, z) = sweep.material_points[j];
                 plots.push(Node::View(View::new(
                     ViewKind::TimeSeries,
                     format!(
-                        "point {j} {}: stresses by step",
+                        "point {j} at {}: stresses {unit} by step",
                         section::position_text(scene, x, z)
                     ),
                     format!("history/{k}/point{j}"),

@@ -18,6 +18,10 @@
 //! - Rough scenes, on the timeline `depth` (layers numbered from the surface): the map view
 //!   `depth`, the sheet's stress quantity in planes parallel to the surface from the surface
 //!   down (the depth in its title), under the scene's own load.
+//! - A view shows only what is logged on the timeline the time panel is on, so with a load
+//!   sweep each timeline also holds one step of the other's views: on `load` (at its first
+//!   step) the layer of the largest value, on `depth` (at its first step) the last load with
+//!   its charts; their titles say which timeline steps through them.
 
 use rerun::RecordingStream;
 
@@ -171,9 +175,10 @@ pub fn record(
         steps = log_load_sweep(stream, scene, frame, flush)?.max(1);
     }
     if let Some(frame) = &depth_frame {
-        // The depth steps are at the scene's own load, on their own timeline only.
+        // The depth steps are at the scene's own load, on their own timeline (and, with a load
+        // sweep, the layer of the largest value at the first load: see log_depth_steps).
         stream.disable_timeline("load");
-        log_depth_steps(stream, scene, frame, on_row, flush)?;
+        log_depth_steps(stream, scene, frame, contact_frame.is_some(), on_row, flush)?;
     }
     Ok(Summary {
         steps,
@@ -379,6 +384,7 @@ fn log_load_sweep(
     let range = (0.0, super::round_up(1.03 * highest).max(1e-9));
     let charts = load_charts(&solutions);
     let steps = sweep.values.len();
+    let mut last = None;
     for (k, (solution, &load)) in solutions.iter().zip(&sweep.values).enumerate() {
         stream.set_time_sequence("load", k as i64);
         let indicator = solution
@@ -405,6 +411,7 @@ fn log_load_sweep(
         if k == 0 {
             log_map_static(stream, "contact", frame, &figure, &shown, range)?;
         }
+        let title = format!("step {} of {steps}: {text}", k + 1);
         log_map_step(
             stream,
             When::Step,
@@ -413,7 +420,7 @@ fn log_load_sweep(
             &figure,
             &shown,
             range,
-            &format!("step {} of {steps}: {text}", k + 1),
+            &title,
         )?;
         stream.log("log", &rerun::TextLog::new(format!("step {k}: {text}")))?;
         stream.log("series/load_n", &rerun::Scalars::new([load]))?;
@@ -436,6 +443,32 @@ fn log_load_sweep(
                 &rerun::EncodedImage::from_file_contents(png),
             )?;
         }
+        flush()?;
+        last = Some((figure, shown, title));
+    }
+    // On the timeline `depth` the load's views show the last load and the whole curves, not
+    // nothing (a view shows only what is logged on the timeline the time panel is on).
+    if let Some((figure, shown, title)) = last {
+        stream.disable_timeline("load");
+        stream.set_time_sequence("depth", 0);
+        log_map_step(
+            stream,
+            When::Step,
+            "contact",
+            frame,
+            &figure,
+            &shown,
+            range,
+            &format!("{title} (the last load: the timeline `load` steps through the loads)"),
+        )?;
+        for chart in &charts {
+            let png = chart.png(&sweep.values, steps - 1)?;
+            stream.log(
+                format!("charts/{}", chart.name),
+                &rerun::EncodedImage::from_file_contents(png),
+            )?;
+        }
+        stream.disable_timeline("depth");
         flush()?;
     }
     Ok(solutions.len())
@@ -521,11 +554,13 @@ impl LoadChart {
 }
 
 /// The scene's stress quantity in planes parallel to the surface, stepping down on the
-/// `depth` timeline, in the view framed by `frame`.
+/// `depth` timeline, in the view framed by `frame`; with `on_load`, the layer of the largest
+/// value on the timeline `load` too (at its first step, so that it shows at every load).
 fn log_depth_steps(
     stream: &RecordingStream,
     scene: &Scene,
     frame: &Frame,
+    on_load: bool,
     on_row: &(dyn Fn() + Sync),
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<(), RecordError> {
@@ -567,6 +602,16 @@ fn log_depth_steps(
             (a.min(v), b.max(v))
         });
     let count = maps.len();
+    let layer_max = |m: &ndarray::Array2<f64>| {
+        m.iter()
+            .copied()
+            .filter(|v| v.is_finite())
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let largest = (0..count)
+        .max_by(|&i, &j| layer_max(&maps[i].1).total_cmp(&layer_max(&maps[j].1)))
+        .unwrap_or(0);
+    let mut preview = None;
     for (k, (z, values)) in maps.into_iter().enumerate() {
         stream.set_time_sequence("depth", k as i64);
         let depth_um = z * REFERENCE_LENGTH_M * 1e6;
@@ -614,6 +659,29 @@ fn log_depth_steps(
             &title,
         )?;
         stream.log("series/depth_um", &rerun::Scalars::new([depth_um]))?;
+        flush()?;
+        if k == largest {
+            preview = Some((figure, shown, range, title));
+        }
+    }
+    if let Some((figure, shown, range, title)) = preview.filter(|_| on_load) {
+        stream.disable_timeline("depth");
+        stream.set_time_sequence("load", 0);
+        let title = format!(
+            "{title}: the layer of the largest {} (the timeline `depth` steps through depth)",
+            quantity.symbol()
+        );
+        log_map_step(
+            stream,
+            When::Step,
+            "depth",
+            frame,
+            &figure,
+            &shown,
+            range,
+            &title,
+        )?;
+        stream.disable_timeline("load");
         flush()?;
     }
     Ok(())

@@ -17,9 +17,10 @@ pub struct Args {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Render scenes to PNG (and SVG): every scene in scenes/ when none is named. Recording
-    /// scenes (with a [sweep] or a [volume]) are recorded to out/<scene>.rrd instead.
-    /// A scene's outputs are written all or none.
+    /// Render scenes to PNG (and SVG): every scene in scenes/ when none is named, and then
+    /// the recording scenes (with a [sweep] or a [volume]) are recorded to out/<scene>.rrd
+    /// instead; a named recording scene is drawn (`stressfield record` records it). A scene's
+    /// outputs are written all or none.
     Render(RenderArgs),
     /// Record scenes to Rerun .rrd files (out/<scene>.rrd), or stream them to a Rerun viewer
     /// step by step as they are computed: every scene in scenes/ when none is named. Open them
@@ -105,7 +106,7 @@ pub struct CompareArgs {
     /// Compare each drawn figure with the references DIR/<scene>.png (and the fields
     /// DIR/<scene>.npz where they exist); print one line per scene, a summary, and exit
     /// non-zero if any differs. Differing images get <scene>.diff.png in --out-dir.
-    /// Recording scenes (recorded, not drawn) are not compared.
+    /// Recording scenes recorded rather than drawn (no scene named) are not compared.
     #[arg(long, value_name = "DIR")]
     pub compare: Option<PathBuf>,
     /// How images are judged: per-channel tolerance and a budget of differing pixels

@@ -137,6 +137,25 @@ impl Contents {
             .collect()
     }
 
+    /// The time panel's play state as the layout opens it (Paused at the first step, or
+    /// Following the newest).
+    fn play_state(&self) -> Vec<String> {
+        use rerun::external::re_sdk_types::blueprint::archetypes::TimePanelBlueprint;
+        self.layout
+            .get("/time_panel")
+            .into_iter()
+            .flatten()
+            .flat_map(|chunk| {
+                chunk
+                    .iter_component::<rerun::blueprint::components::PlayState>(
+                        TimePanelBlueprint::descriptor_play_state().component,
+                    )
+                    .flat_map(|batch| batch.iter().map(|s| s.to_string()).collect::<Vec<_>>())
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+
     /// The blueprint entities whose path ends with `suffix`.
     fn layout_paths(&self, suffix: &str) -> Vec<&str> {
         self.layout
@@ -528,8 +547,9 @@ fn a_recording_written_to_a_file_decodes_with_its_entities() {
         .all(|id| id == APPLICATION_ID));
     assert!(contents.paths().contains(&"/sections/0/field"));
     assert_eq!(contents.scalars("/series/0/maximum", "friction").len(), 6);
-    // The file carries its viewer layout.
+    // The file carries its viewer layout, which opens at the first step.
     assert!(contents.blueprints >= 1);
+    assert_eq!(contents.play_state(), vec!["Paused"]);
     // Nothing else was left in the directory (no temporary file).
     let names: Vec<_> = std::fs::read_dir(dir.path())
         .expect("listed")
@@ -955,6 +975,8 @@ fn a_recording_streams_to_standard_output() {
     let contents = Contents::from_messages(messages);
     assert_eq!(contents.scalars("/series/0/maximum", "friction").len(), 2);
     assert!(contents.blueprints >= 1);
+    // Piped into a viewer, the time cursor follows the steps as they arrive.
+    assert_eq!(contents.play_state(), vec!["Following"]);
 }
 
 /// A stand-in for a Rerun viewer's gRPC endpoint (`MessageProxyService/WriteMessages`, the
@@ -1149,6 +1171,7 @@ fn a_recording_streams_to_a_viewer_at_the_given_address() {
     assert_eq!(contents.scalars("/series/0/maximum", "friction").len(), 2);
     assert!(contents.paths().contains(&"/sections/0/colorbar/labels"));
     assert!(contents.blueprints >= 1, "the layout is sent too");
+    assert_eq!(contents.play_state(), vec!["Following"]);
 }
 
 /// `--connect URL` with no viewer there: a clear error naming the address, after the SDK's

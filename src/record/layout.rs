@@ -6,8 +6,8 @@
 //! panels. The viewer reads them from the blueprint store like any other layout.
 
 use rerun::blueprint::components::{
-    ActiveTab, ColumnShare, ContainerKind, Corner2D, IncludedContent, PanelState, QueryExpression,
-    RootContainer, RowShare, TimelineName, ViewClass,
+    ActiveTab, ColumnShare, ContainerKind, Corner2D, IncludedContent, PanelState, PlayState,
+    QueryExpression, RootContainer, RowShare, TimelineName, ViewClass,
 };
 use rerun::external::re_sdk_types::blueprint::archetypes::{
     ContainerBlueprint, EyeControls3D, LineGrid3D, PanelBlueprint, PlotLegend, TimePanelBlueprint,
@@ -207,8 +207,10 @@ fn log_node(stream: &RecordingStream, node: &Node, ids: &mut Ids) -> Result<Stri
 }
 
 /// Sends `layout` to `recording` as its active and default blueprint. The blueprint and
-/// selection panels start collapsed, so that the views get the window.
-pub fn send(recording: &RecordingStream, layout: &Layout) -> Result<(), RecordError> {
+/// selection panels start collapsed, so that the views get the window. The time cursor starts
+/// at the first step of a file, and follows the newest step of a `live` stream (a viewer
+/// watching a run as it arrives).
+pub fn send(recording: &RecordingStream, layout: &Layout, live: bool) -> Result<(), RecordError> {
     let (stream, storage) = rerun::RecordingStreamBuilder::new(super::APPLICATION_ID)
         .blueprint()
         .memory()?;
@@ -252,9 +254,11 @@ pub fn send(recording: &RecordingStream, layout: &Layout) -> Result<(), RecordEr
         Some(timeline) => TimePanelBlueprint::new()
             .with_state(PanelState::Collapsed)
             .with_timeline(TimelineName(timeline.as_str().into()))
-            .with_play_state(
-                rerun::external::re_sdk_types::blueprint::components::PlayState::Paused,
-            ),
+            .with_play_state(if live {
+                PlayState::Following
+            } else {
+                PlayState::Paused
+            }),
         None => TimePanelBlueprint::new().with_state(PanelState::Hidden),
     };
     stream.log("time_panel", &time_panel)?;

@@ -97,7 +97,9 @@ pub fn record_to(
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Summary, RecordError> {
     let output = sink::Output::open(destination, &scene.name)?;
-    let summary = record_with(scene, &output.stream, on_row, &|| output.flush())?;
+    // A stream is watched as it arrives: the time cursor follows the newest step.
+    let live = !matches!(destination, Destination::File(_));
+    let summary = record_with(scene, &output.stream, live, on_row, &|| output.flush())?;
     output.finish()?;
     Ok(summary)
 }
@@ -140,17 +142,19 @@ pub fn record_scene(
     stream: &RecordingStream,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Summary, RecordError> {
-    record_with(scene, stream, on_row, &|| {
+    record_with(scene, stream, false, on_row, &|| {
         stream
             .flush_blocking()
             .map_err(|e| RecordError::Rerun(e.to_string()))
     })
 }
 
-/// Records `scene` into `stream`, calling `flush` after every step.
+/// Records `scene` into `stream`, calling `flush` after every step; a `live` stream (to a
+/// viewer) opens with the time cursor following the newest step, a file at the first step.
 fn record_with(
     scene: &Scene,
     stream: &RecordingStream,
+    live: bool,
     on_row: &(dyn Fn() + Sync),
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<Summary, RecordError> {
@@ -158,9 +162,9 @@ fn record_with(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
     ) {
-        return rough::record(scene, stream, flush);
+        return rough::record(scene, stream, live, flush);
     }
-    record_sections(scene, stream, on_row, flush)
+    record_sections(scene, stream, live, on_row, flush)
 }
 
 /// The window the layout is planned for (the viewer's size when it opens a file varies; the
@@ -248,6 +252,7 @@ fn parameter_axis(scene: &Scene) -> Option<(String, Vec<f64>)> {
 fn record_sections(
     scene: &Scene,
     stream: &RecordingStream,
+    live: bool,
     on_row: &(dyn Fn() + Sync),
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<Summary, RecordError> {
@@ -344,7 +349,7 @@ fn record_sections(
     let levels: &[f64] = volume_setup
         .as_ref()
         .map_or(&[], |(_, levels, _)| levels.as_slice());
-    layout::send(stream, &plan_layout(scene, figure0, &frames, levels))?;
+    layout::send(stream, &plan_layout(scene, figure0, &frames, levels), live)?;
     flush()?;
     let mut volume_triangles = 0;
     let mut history: Vec<Vec<(f64, f64, f64)>> = vec![Vec::new(); panels];

@@ -42,11 +42,13 @@ fn rerun_error(e: impl std::fmt::Display) -> RecordError {
     RecordError::Rerun(e.to_string())
 }
 
-/// Records a surface or rough scene (module doc). Its grid rows are not reported as progress
-/// (how many there are depends on the solved contact); [`super::rows`] counts none.
+/// Records a surface or rough scene (module doc); a `live` stream opens following the newest
+/// step. Its grid rows are not reported as progress (how many there are depends on the solved
+/// contact); [`super::rows`] counts none.
 pub fn record(
     scene: &Scene,
     stream: &RecordingStream,
+    live: bool,
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<Summary, RecordError> {
     let on_row = &|| {};
@@ -168,7 +170,7 @@ pub fn record(
         depth: depth_frame.as_ref(),
         timeline,
     };
-    super::layout::send(stream, &plan_layout(&maps, scene, &frames))?;
+    super::layout::send(stream, &plan_layout(&maps, scene, &frames), live)?;
     flush()?;
     let mut steps = 1;
     if let Some(frame) = &contact_frame {

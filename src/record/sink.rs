@@ -175,10 +175,58 @@ enum Completion {
     },
 }
 
+/// Standard output, held back until the first [`Output::flush`]: the stream's opening (its
+/// description and viewer layout, logged while the first step is prepared) then arrives in
+/// one piece. The Rerun 0.36.3 viewer reading standard input (`rerun -`) stopped reading, and
+/// so blocked this program, when the stream paused between its first message and its layout
+/// (seen with pauses of a second or more; a pause after the layout did no harm).
+struct HeldBack<W: Write> {
+    inner: W,
+    /// The bytes held back, until the gate opens.
+    held: Vec<u8>,
+    open: Arc<std::sync::atomic::AtomicBool>,
+}
+
+impl<W: Write> HeldBack<W> {
+    fn is_open(&self) -> bool {
+        self.open.load(std::sync::atomic::Ordering::Acquire)
+    }
+
+    /// Writes out what was held back, once the gate is open.
+    fn release(&mut self) -> std::io::Result<()> {
+        if self.is_open() && !self.held.is_empty() {
+            self.inner.write_all(&self.held)?;
+            self.held = Vec::new();
+        }
+        Ok(())
+    }
+}
+
+impl<W: Write> Write for HeldBack<W> {
+    fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+        if !self.is_open() {
+            self.held.extend_from_slice(bytes);
+            return Ok(bytes.len());
+        }
+        self.release()?;
+        self.inner.write(bytes)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        if !self.is_open() {
+            return Ok(());
+        }
+        self.release()?;
+        self.inner.flush()
+    }
+}
+
 /// An open recording: its stream, and how to complete it.
 pub struct Output {
     pub stream: RecordingStream,
     writer: Option<SharedWriter>,
+    /// The gate of standard output ([`HeldBack`]), opened by the first flush.
+    gate: Option<Arc<std::sync::atomic::AtomicBool>>,
     completion: Completion,
     /// What the user asked for (for messages).
     destination: Destination,
@@ -198,7 +246,10 @@ impl Output {
             path: path.to_path_buf(),
             message,
         };
-        let with_writer = |write: Box<dyn Write + Send>, completion: Completion, shown: &Path| {
+        let with_writer = |write: Box<dyn Write + Send>,
+                           gate: Option<Arc<std::sync::atomic::AtomicBool>>,
+                           completion: Completion,
+                           shown: &Path| {
             let encoder = Encoder::new_eager(
                 CrateVersion::LOCAL,
                 EncodingOptions::PROTOBUF_COMPRESSED,
@@ -214,6 +265,7 @@ impl Output {
             Ok::<_, RecordError>(Self {
                 stream,
                 writer: Some(writer),
+                gate,
                 completion,
                 destination: destination.clone(),
             })
@@ -237,6 +289,7 @@ impl Output {
                         .map_err(|e| output_error(path, e.to_string()))?;
                     with_writer(
                         Box::new(std::io::BufWriter::new(write)),
+                        None,
                         Completion::Rename {
                             temp,
                             _pending: pending,
@@ -253,6 +306,7 @@ impl Output {
                         .map_err(|e| output_error(path, e.to_string()))?;
                     with_writer(
                         Box::new(std::io::BufWriter::new(file)),
+                        None,
                         Completion::Through,
                         path,
                     )
@@ -263,8 +317,14 @@ impl Output {
                 if std::io::stdout().is_terminal() {
                     return Err(RecordError::Terminal);
                 }
+                let gate = Arc::new(std::sync::atomic::AtomicBool::new(false));
                 with_writer(
-                    Box::new(std::io::BufWriter::new(std::io::stdout())),
+                    Box::new(std::io::BufWriter::new(HeldBack {
+                        inner: std::io::stdout(),
+                        held: Vec::new(),
+                        open: Arc::clone(&gate),
+                    })),
+                    Some(gate),
                     Completion::Stdout,
                     Path::new("standard output"),
                 )
@@ -276,6 +336,7 @@ impl Output {
                 Ok(Self {
                     stream,
                     writer: None,
+                    gate: None,
                     completion: Completion::Viewer {
                         url: DEFAULT_VIEWER_URL.into(),
                     },
@@ -292,6 +353,7 @@ impl Output {
                 Ok(Self {
                     stream,
                     writer: None,
+                    gate: None,
                     completion: Completion::Viewer { url: url.clone() },
                     destination: destination.clone(),
                 })
@@ -299,8 +361,12 @@ impl Output {
         }
     }
 
-    /// Sends what has been logged so far (after each step, so that a viewer shows it).
+    /// Sends what has been logged so far (after each step, so that a viewer shows it); the
+    /// first flush opens standard output's gate ([`HeldBack`]).
     pub fn flush(&self) -> Result<(), RecordError> {
+        if let Some(gate) = &self.gate {
+            gate.store(true, std::sync::atomic::Ordering::Release);
+        }
         self.stream
             .flush_blocking()
             .map_err(|e| self.error(e.to_string()))
@@ -334,6 +400,7 @@ impl Output {
             writer,
             completion,
             destination,
+            ..
         } = self;
         // Every message reaches the sink before the stream is gone.
         drop(stream);
@@ -395,6 +462,27 @@ impl Output {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn standard_output_is_held_back_until_the_first_flush() {
+        let open = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let mut out = HeldBack {
+            inner: Vec::new(),
+            held: Vec::new(),
+            open: Arc::clone(&open),
+        };
+        out.write_all(b"header ").expect("held");
+        out.flush()
+            .expect("a flush before the gate opens keeps the bytes");
+        out.write_all(b"layout ").expect("held");
+        assert!(out.inner.is_empty());
+        open.store(true, std::sync::atomic::Ordering::Release);
+        out.flush().expect("released");
+        assert_eq!(out.inner, b"header layout ");
+        out.write_all(b"step").expect("written through");
+        assert_eq!(out.inner, b"header layout step");
+        assert!(out.held.is_empty());
+    }
 
     #[test]
     fn file_kinds_follow_links_and_refuse_directories() {

@@ -53,6 +53,39 @@ pub fn compact(value: f64) -> String {
     }
 }
 
+/// `value` for a label in a figure or a recording: `digits` significant digits in plain
+/// decimals for magnitudes from 1e-3 up to `below` (an integer part longer than `digits` is
+/// kept whole), otherwise in exponent notation with `digits - 1` decimals; with `trim`,
+/// trailing zeros and a bare point are dropped. Zero prints as `0`; a typographic minus.
+pub fn significant(value: f64, digits: usize, below: f64, trim: bool) -> String {
+    if value == 0.0 || !value.is_finite() {
+        return if value.is_finite() {
+            "0".into()
+        } else {
+            value.to_string()
+        };
+    }
+    let trimmed = |text: &str| -> String {
+        if trim && text.contains('.') {
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            text.to_string()
+        }
+    };
+    let magnitude = value.abs();
+    let text = if (1e-3..below).contains(&magnitude) {
+        let decimals = (digits as i32 - 1 - magnitude.log10().floor() as i32).max(0) as usize;
+        trimmed(&format!("{value:.decimals$}"))
+    } else {
+        let text = format!("{value:.precision$e}", precision = digits.saturating_sub(1));
+        match text.split_once('e') {
+            Some((mantissa, exponent)) => format!("{}e{exponent}", trimmed(mantissa)),
+            None => text,
+        }
+    };
+    text.replace('-', "\u{2212}")
+}
+
 /// At most `max_chars` characters of `text`; a longer text is cut and says how long it was,
 /// e.g. `0,0,1aaaa… (10485760 characters)`.
 pub fn cut(text: &str, max_chars: usize) -> String {

@@ -6,7 +6,8 @@ use std::path::Path;
 use stressfield::scene::Scene;
 use stressfield::{figure, render};
 
-fn shipped_scenes() -> Vec<std::path::PathBuf> {
+/// The shipped scene files, sorted by name.
+pub(crate) fn shipped_scenes() -> Vec<std::path::PathBuf> {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let mut paths: Vec<_> = std::fs::read_dir(dir)
         .expect("scenes/")

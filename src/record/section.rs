@@ -31,21 +31,7 @@ fn colour([r, g, b]: [u8; 3]) -> rerun::Color {
 /// A number with three significant digits, or in exponent form when very small or large;
 /// a typographic minus.
 pub fn short(value: f64) -> String {
-    if value == 0.0 || !value.is_finite() {
-        return if value.is_finite() {
-            "0".into()
-        } else {
-            value.to_string()
-        };
-    }
-    let magnitude = value.abs();
-    let text = if (1e-3..1e5).contains(&magnitude) {
-        let decimals = (2 - magnitude.log10().floor() as i32).max(0) as usize;
-        format!("{value:.decimals$}")
-    } else {
-        format!("{value:.2e}")
-    };
-    text.replace('-', "\u{2212}")
+    crate::text::significant(value, 3, 1e5, false)
 }
 
 /// A stress with its unit: `0.557 p0`, `612 MPa`.

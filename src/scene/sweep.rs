@@ -76,36 +76,7 @@ impl Sweep {
 /// A number with at most four significant digits and no trailing zeros (`0.15`, `800`,
 /// `−0.866`), in exponent form when very small or large; a typographic minus.
 pub fn compact(value: f64) -> String {
-    if value == 0.0 || !value.is_finite() {
-        return if value.is_finite() {
-            "0".into()
-        } else {
-            value.to_string()
-        };
-    }
-    let magnitude = value.abs();
-    let text = if (1e-3..1e6).contains(&magnitude) {
-        let decimals = (3 - magnitude.log10().floor() as i32).max(0) as usize;
-        let fixed = format!("{value:.decimals$}");
-        if fixed.contains('.') {
-            fixed
-                .trim_end_matches('0')
-                .trim_end_matches('.')
-                .to_string()
-        } else {
-            fixed
-        }
-    } else {
-        let text = format!("{value:.3e}");
-        match text.split_once('e') {
-            Some((mantissa, exponent)) if mantissa.contains('.') => format!(
-                "{}e{exponent}",
-                mantissa.trim_end_matches('0').trim_end_matches('.')
-            ),
-            _ => text,
-        }
-    };
-    text.replace('-', "\u{2212}")
+    crate::text::significant(value, 4, 1e6, true)
 }
 
 /// A validated `[volume]`: a box under a point contact recorded as nested iso-surfaces.

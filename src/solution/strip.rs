@@ -28,16 +28,19 @@ use std::f64::consts::PI;
 #[inline]
 pub fn uniform_strip(x: f64, z: f64, s1: f64, s2: f64) -> ([f64; 3], [f64; 3]) {
     let antiderivatives = |big_x: f64| {
-        let r2 = big_x * big_x + z * z;
+        // r, not r², so that neither a tiny depth (z = 1e-200: z² underflows to zero, and the
+        // edge's ln r would be -inf on both sides of a difference) nor a far point overflows.
+        let r = big_x.hypot(z);
         let half_angle = 0.5 * big_x.atan2(z);
-        let zx = if r2 > 0.0 {
-            z * big_x / (2.0 * r2)
+        let (cos, sin) = if r > 0.0 {
+            (z / r, big_x / r)
         } else {
-            0.0
+            (0.0, 0.0)
         };
-        let zz = if r2 > 0.0 { z * z / (2.0 * r2) } else { 0.0 };
-        // (∫X²z/r⁴, ∫z³/r⁴, ∫Xz²/r⁴, ∫X³/r⁴)
-        [half_angle - zx, half_angle + zx, -zz, 0.5 * r2.ln() + zz]
+        let zx = 0.5 * cos * sin;
+        let zz = 0.5 * cos * cos;
+        // (∫X²z/r⁴, ∫z³/r⁴, ∫Xz²/r⁴, ∫X³/r⁴), with ½ ln r² = ln r
+        [half_angle - zx, half_angle + zx, -zz, r.ln() + zz]
     };
     let upper = antiderivatives(x - s1);
     let lower = antiderivatives(x - s2);
@@ -68,6 +71,25 @@ mod tests {
         let (normal, tangential) = uniform_strip(2.0, 0.0, -0.5, 1.0);
         assert!(normal.iter().all(|v| v.abs() < 1e-15));
         assert!(tangential[1].abs() < 1e-15 && tangential[2].abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_vanishing_depth_is_the_surface_and_stays_finite() {
+        // At a strip's edge (X = 0) just below the surface: z² underflows for z = 1e-200,
+        // yet the stresses are those of the surface, with the finite logarithm of ln(z).
+        for z in [1e-200, 5e-324] {
+            let (normal, tangential) = uniform_strip(0.0, z, -0.5, 0.0);
+            assert!(normal.iter().chain(&tangential).all(|v| v.is_finite()));
+            // Half the strip's load at its edge (the mean of the two sides).
+            assert!((normal[1] + 0.5).abs() < 1e-12, "{normal:?}");
+            assert!((tangential[2] + 0.5).abs() < 1e-12, "{tangential:?}");
+            // ∫X³/r⁴ from the near edge (X = 0: ln z + ½) to the far one (X = ½: ln ½).
+            let expected = -2.0 / PI * (0.5f64.ln() - z.ln() - 0.5);
+            assert!(
+                (tangential[0] / expected - 1.0).abs() < 1e-12,
+                "{tangential:?}"
+            );
+        }
     }
 
     #[test]

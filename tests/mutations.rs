@@ -339,3 +339,44 @@ fn a_depth_range_starting_a_hair_below_the_surface_gives_finite_stresses() {
     }
     assert!(tried >= 30, "only {tried} scenes with a depth range");
 }
+
+/// Every extreme number at every key of every shipped scene, not a sample: 6912 mutants today,
+/// a minute and a half, so not part of the suite. Run it after a change to the scene reader
+/// or a solution:
+/// `cargo test --release every_extreme -- --ignored`.
+#[test]
+#[ignore = "an exhaustive search of a few minutes; run on demand"]
+fn every_extreme_number_at_every_key_is_refused_clearly_or_finite() {
+    let mut failures = Vec::new();
+    let mut tried = 0;
+    for (path, text) in shipped_scenes() {
+        let table: toml::Table = toml::from_str(&text).expect("shipped scenes parse");
+        let mut all = Vec::new();
+        paths(&toml::Value::Table(table), &mut Vec::new(), &mut all);
+        for p in 0..all.len() {
+            for k in 0..EXTREMES.len() {
+                let mutation = Mutation::Extreme(p, k);
+                let mutant = mutate(&text, &mutation);
+                let file = path.display().to_string();
+                tried += 1;
+                let problem = match Scene::parse(&mutant, "mutant", &file) {
+                    Err(error) if error.key.is_none() && error.line_column.is_none() => {
+                        Some(format!("the message names no key or line: {error}"))
+                    }
+                    Err(_) => None,
+                    Ok(scene) => check_accepted(&scene).err(),
+                };
+                if let Some(problem) = problem {
+                    failures.push(format!("{mutation:?} of {file}: {problem}\n{mutant}"));
+                }
+            }
+        }
+    }
+    eprintln!("{tried} mutants tried");
+    assert!(
+        failures.is_empty(),
+        "{} of {tried} mutants:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}

@@ -28,7 +28,7 @@ use rerun::RecordingStream;
 use super::layout::{Layout, Node, View, ViewKind};
 use super::section::{self, Changing, Fixed, Frame, Notation, When};
 use super::{RecordError, Summary};
-use crate::contact::rough::{self, Control};
+use crate::contact::rough::{self, Control, RoughSolution};
 use crate::field::{self, Axis, Plane, Section};
 use crate::figure::{self, Drawing};
 use crate::render::chart::{chart_png, Cell, Chart, Series, Style, PALETTE};
@@ -56,7 +56,15 @@ pub fn record(
         .surface
         .as_ref()
         .ok_or_else(|| rerun_error("the scene has no surface"))?;
-    let drawing = figure::draw(scene, on_row).map_err(rerun_error)?;
+    // A rough scene's sheet solves the contact: the report and the depth steps reuse it.
+    let (drawing, solution) = match scene.contact.kind {
+        ContactKind::Rough => {
+            let (sheet, solution) =
+                crate::rough_figure::rough_sheet(scene, on_row).map_err(rerun_error)?;
+            (Drawing::Sheet(sheet), Some(solution))
+        }
+        _ => (figure::draw(scene, on_row).map_err(rerun_error)?, None),
+    };
     let Drawing::Sheet(sheet) = &drawing else {
         return Err(rerun_error("a surface scene draws a sheet"));
     };
@@ -64,14 +72,11 @@ pub fn record(
         crate::render::encode_png(&drawing.png().map_err(rerun_error)?).map_err(rerun_error)?;
     stream.log_static("sheet", &rerun::EncodedImage::from_file_contents(png))?;
     let exaggeration = log_topography(stream, &surface.heights)?;
-    let report = match scene.contact.kind {
-        ContactKind::Rough => {
-            let solution = rough_study::solve(scene, &mut |_, _| {}).map_err(rerun_error)?;
-            ContactReport::new(scene, &solution)
-                .map_err(rerun_error)?
-                .text(scene)
-        }
-        _ => {
+    let report = match &solution {
+        Some(solution) => ContactReport::new(scene, solution)
+            .map_err(rerun_error)?
+            .text(scene),
+        None => {
             let c = crate::rough_figure::characterise(scene).map_err(rerun_error)?;
             let e_star = scene.contact.rough.and_then(|r| r.e_star_pa);
             let hardness = scene.contact.rough.and_then(|r| r.hardness_pa);
@@ -176,11 +181,12 @@ pub fn record(
     if let Some(frame) = &contact_frame {
         steps = log_load_sweep(stream, scene, frame, flush)?.max(1);
     }
-    if let Some(frame) = &depth_frame {
+    if let (Some(frame), Some(solution)) = (&depth_frame, &solution) {
         // The depth steps are at the scene's own load, on their own timeline (and, with a load
         // sweep, the layer of the largest value at the first load: see log_depth_steps).
         stream.disable_timeline("load");
-        log_depth_steps(stream, scene, frame, contact_frame.is_some(), on_row, flush)?;
+        let on_load = contact_frame.is_some();
+        log_depth_steps(stream, scene, solution, frame, on_load, on_row, flush)?;
     }
     Ok(Summary {
         steps,
@@ -558,23 +564,24 @@ impl LoadChart {
 /// The scene's stress quantity in planes parallel to the surface, stepping down on the
 /// `depth` timeline, in the view framed by `frame`; with `on_load`, the layer of the largest
 /// value on the timeline `load` too (at its first step, so that it shows at every load).
+#[allow(clippy::too_many_arguments)]
 fn log_depth_steps(
     stream: &RecordingStream,
     scene: &Scene,
+    solution: &RoughSolution,
     frame: &Frame,
     on_load: bool,
     on_row: &(dyn Fn() + Sync),
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<(), RecordError> {
-    let solution = rough_study::solve(scene, &mut |_, _| {}).map_err(rerun_error)?;
     let stresses =
-        rough_study::stress_solution(&solution, scene.contact.friction, scene.contact.poisson)
+        rough_study::stress_solution(solution, scene.contact.friction, scene.contact.poisson)
             .map_err(rerun_error)?;
     let [dx, dy] = solution.spacing_m;
     let (ny, nx) = solution.pressure_pa.dim();
     let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
     let cell = ax.min(ay);
-    let deepest = search_depth_m(&solution) / REFERENCE_LENGTH_M;
+    let deepest = search_depth_m(solution) / REFERENCE_LENGTH_M;
     let layers = ((deepest / cell).ceil() as usize).clamp(1, 24);
     let step = (deepest / layers as f64).max(cell);
     let quantity = scene.figure.quantity;
@@ -648,7 +655,7 @@ fn log_depth_steps(
             "layer {} of {count}: z = {} µm below the surface, under {}",
             k + 1,
             crate::scene::compact(depth_um),
-            load_text(&solution)
+            load_text(solution)
         );
         log_map_step(
             stream,

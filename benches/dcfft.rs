@@ -2,7 +2,8 @@
 //! qx = 0.3 p) on 256 x 256 cells over [-2a, 2a]^2, all six stress components on 128 depth
 //! layers, in parallel over the layers. Target: under 3 s on two cores.
 //! Also one layer on the calling thread, one xy section through the field layer (its six
-//! components in parallel), and direct summation against DC-FFT on a small grid (both on one
+//! components in parallel), the subsurface maxima search of a rough contact's report, and
+//! direct summation against DC-FFT on a small grid (both on one
 //! thread) for the ratio.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
@@ -88,6 +89,14 @@ fn dcfft(c: &mut Criterion) {
     ];
     group.bench_function(BenchmarkId::new("field_xy_section", "256x256"), |b| {
         b.iter(|| field::evaluate(&solution, &section, &quantities, &|| {}).expect("fits"))
+    });
+    // The subsurface maxima search (σvM and Tresca over every cell of each layer, as the
+    // rough contact report runs it) down to 1.5a: 47 layers (32 one cell apart, then each 8 %
+    // deeper) and the fine ones around the best.
+    let tractions = stressfield::solution::point_numerical::PointTractions::new(grid.clone(), 0.3)
+        .expect("transformed");
+    group.bench_function(BenchmarkId::new("grid_maxima_to_depth", "256x256"), |b| {
+        b.iter(|| stressfield::assess::grid_maxima_to_depth(&tractions, black_box(1.5)))
     });
     // Direct summation against DC-FFT, one layer, one thread, small grid.
     let small = hertz_grid(32);

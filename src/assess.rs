@@ -100,6 +100,14 @@ pub fn grid_maxima(tractions: &PointTractions) -> Result<StressMaxima, DcFftErro
 type LayerMaxima = ([(f64, usize, usize); 2], [bool; 2]);
 
 /// The maxima of each layer at `depths` ([`grid_maxima`]).
+/// The largest ratio of the Tresca shear `(s1 - s3)/2` to the von Mises stress, `1/√3` (pure
+/// shear; uniaxial stress gives the smallest, ½), raised by 1e-9 so that rounding can never
+/// make the bound skip a point that would change a maximum. With `d = s1 - s3` and
+/// `e = s1 - s2` in `[0, d]`, `σvM² = ½ (e² + (d - e)² + d²)` lies between `¾ d²` (`e = d/2`)
+/// and `d²`, so `τ = d/2` lies between `σvM/2` and `σvM/√3` (e.g. Hill, *The Mathematical
+/// Theory of Plasticity*, 1950, ch. II, comparing the two yield criteria).
+const TRESCA_PER_VON_MISES: f64 = (1.0 + 1e-9) / 1.732_050_807_568_877_2;
+
 fn layer_maxima(
     tractions: &PointTractions,
     depths: &[f64],
@@ -123,12 +131,20 @@ fn layer_maxima(
         for row in 0..ny {
             for column in 0..nx {
                 let s = stress(row, column);
-                for (k, quantity) in quantities.iter().enumerate() {
-                    let v = quantity.of(&s);
-                    // Ties go to the later row, the one at larger y.
-                    if v >= best[k].0 {
-                        best[k] = (v, row, column);
-                    }
+                // Ties go to the later point (row-major), the one at larger y.
+                let von_mises = s.von_mises();
+                if von_mises >= best[0].0 {
+                    best[0] = (von_mises, row, column);
+                }
+                // The Tresca shear needs the principal stresses (most of this loop's time),
+                // but it never exceeds σvM/√3 (see `TRESCA_PER_VON_MISES`): a point whose
+                // bound is below the best so far cannot change it and is skipped.
+                if von_mises * TRESCA_PER_VON_MISES < best[1].0 {
+                    continue;
+                }
+                let tresca = s.max_shear();
+                if tresca >= best[1].0 {
+                    best[1] = (tresca, row, column);
                 }
             }
         }
@@ -281,6 +297,103 @@ mod tests {
         );
     }
     use approx::assert_relative_eq;
+
+    /// Stress states from a fixed-seed generator, components in [-1, 1] (some with zero
+    /// shears, some pure shear, some with repeated principal stresses).
+    fn stress_states(count: usize) -> Vec<Stress> {
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+        };
+        let mut states: Vec<Stress> = (0..count)
+            .map(|_| Stress {
+                xx: next(),
+                yy: next(),
+                zz: next(),
+                yz: next(),
+                xz: next(),
+                xy: next(),
+            })
+            .collect();
+        let zero = Stress::default();
+        states.push(Stress { xy: 0.7, ..zero }); // pure shear: τ = σvM/√3
+        states.push(Stress { xx: -1.0, ..zero }); // uniaxial: τ = σvM/2
+        states.push(Stress {
+            xx: 0.3,
+            yy: 0.3,
+            zz: -0.8,
+            ..zero
+        });
+        states
+    }
+
+    #[test]
+    fn tresca_shear_lies_between_half_and_one_over_root_three_of_von_mises() {
+        let (mut lowest, mut highest) = (f64::INFINITY, 0.0f64);
+        for s in stress_states(100_000) {
+            let ratio = s.max_shear() / s.von_mises();
+            assert!(
+                s.max_shear() <= s.von_mises() * TRESCA_PER_VON_MISES,
+                "{s:?}: {ratio}"
+            );
+            (lowest, highest) = (lowest.min(ratio), highest.max(ratio));
+        }
+        // Both ends are reached (uniaxial, pure shear), to rounding.
+        assert!((lowest - 0.5).abs() < 1e-12, "{lowest}");
+        assert!((highest - 1.0 / 3f64.sqrt()).abs() < 1e-12, "{highest}");
+    }
+
+    #[test]
+    fn skipping_points_by_the_tresca_bound_changes_no_layer_maximum() {
+        // Random tractions on 40 x 24 cells (pressure and both shears), a few depths: the
+        // maxima and their cells equal those of evaluating every quantity at every point.
+        let states = stress_states(40 * 24);
+        use ndarray::Array2;
+        let pressure = Array2::from_shape_fn((24, 40), |(r, c)| states[r * 40 + c].xx.abs());
+        let qx = Array2::from_shape_fn((24, 40), |(r, c)| 0.3 * states[r * 40 + c].yy);
+        let qy = Array2::from_shape_fn((24, 40), |(r, c)| 0.3 * states[r * 40 + c].zz);
+        let grid = crate::solution::dcfft::TractionGrid::new(
+            [0.0, 0.0],
+            [0.1, 0.1],
+            Some(pressure),
+            Some(qx),
+            Some(qy),
+        )
+        .expect("a valid grid");
+        let tractions = PointTractions::new(grid, 0.3).expect("transformed");
+        let depths = [0.0, 0.05, 0.1, 0.3, 1.0];
+        let pruned = layer_maxima(&tractions, &depths).expect("layers");
+        let every = std::sync::Mutex::new(vec![[(f64::NEG_INFINITY, 0, 0); 2]; depths.len()]);
+        field::for_each_dcfft_layer(tractions.dcfft(), &depths, |index, _, layer| {
+            let mut best = [(f64::NEG_INFINITY, 0, 0); 2];
+            for row in 0..24 {
+                for column in 0..40 {
+                    let s = Stress {
+                        xx: layer[[0, row, column]],
+                        yy: layer[[1, row, column]],
+                        zz: layer[[2, row, column]],
+                        yz: layer[[3, row, column]],
+                        xz: layer[[4, row, column]],
+                        xy: layer[[5, row, column]],
+                    };
+                    for (k, v) in [s.von_mises(), s.max_shear()].into_iter().enumerate() {
+                        if v >= best[k].0 {
+                            best[k] = (v, row, column);
+                        }
+                    }
+                }
+            }
+            every.lock().expect("no panic")[index] = best;
+        })
+        .expect("layers");
+        let every = every.into_inner().expect("no panic");
+        for (index, (found, _)) in pruned.iter().enumerate() {
+            assert_eq!(*found, every[index], "depth {}", depths[index]);
+        }
+    }
 
     #[test]
     fn frictionless_line_contact_maxima() {

@@ -99,15 +99,16 @@ pub fn grid_maxima(tractions: &PointTractions) -> Result<StressMaxima, DcFftErro
 /// a mirror image in y of the same value.
 type LayerMaxima = ([(f64, usize, usize); 2], [bool; 2]);
 
-/// The maxima of each layer at `depths` ([`grid_maxima`]).
 /// The largest ratio of the Tresca shear `(s1 - s3)/2` to the von Mises stress, `1/√3` (pure
 /// shear; uniaxial stress gives the smallest, ½), raised by 1e-9 so that rounding can never
 /// make the bound skip a point that would change a maximum. With `d = s1 - s3` and
 /// `e = s1 - s2` in `[0, d]`, `σvM² = ½ (e² + (d - e)² + d²)` lies between `¾ d²` (`e = d/2`)
-/// and `d²`, so `τ = d/2` lies between `σvM/2` and `σvM/√3` (e.g. Hill, *The Mathematical
-/// Theory of Plasticity*, 1950, ch. II, comparing the two yield criteria).
+/// and `d²`, so `τ = d/2` lies between `σvM/2` and `σvM/√3`: the classical comparison of the
+/// Tresca and von Mises yield criteria (e.g. R. Hill, *The Mathematical Theory of Plasticity*,
+/// 1950).
 const TRESCA_PER_VON_MISES: f64 = (1.0 + 1e-9) / 1.732_050_807_568_877_2;
 
+/// The maxima of each layer at `depths` ([`grid_maxima`]).
 fn layer_maxima(
     tractions: &PointTractions,
     depths: &[f64],

@@ -1,10 +1,10 @@
 //! Where and how large the extreme stresses are, and what that means for yield.
 
 use crate::field;
-use crate::solution::dcfft::DcFftError;
+use crate::solution::dcfft::{layer_stress, DcFftError};
 use crate::solution::point_numerical::PointTractions;
 use crate::solution::Solution;
-use crate::stress::{Quantity, Stress};
+use crate::stress::Quantity;
 
 /// The largest value of a quantity and where it occurs (units of `p0` and `a`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -119,14 +119,7 @@ fn layer_maxima(
         depths.len()
     ]);
     field::for_each_dcfft_layer(tractions.dcfft(), depths, |index, _, layer| {
-        let stress = |row: usize, column: usize| Stress {
-            xx: layer[[0, row, column]],
-            yy: layer[[1, row, column]],
-            zz: layer[[2, row, column]],
-            yz: layer[[3, row, column]],
-            xz: layer[[4, row, column]],
-            xy: layer[[5, row, column]],
-        };
+        let stress = |row: usize, column: usize| layer_stress(&layer, row, column);
         let quantities = [Quantity::VonMises, Quantity::MaxShear];
         let mut best = [(f64::NEG_INFINITY, 0, 0); 2];
         for row in 0..ny {
@@ -275,6 +268,7 @@ impl StressMaxima {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::stress::Stress;
 
     #[test]
     fn search_depths_are_uniform_near_the_surface_and_sparser_below() {
@@ -372,14 +366,7 @@ mod tests {
             let mut best = [(f64::NEG_INFINITY, 0, 0); 2];
             for row in 0..24 {
                 for column in 0..40 {
-                    let s = Stress {
-                        xx: layer[[0, row, column]],
-                        yy: layer[[1, row, column]],
-                        zz: layer[[2, row, column]],
-                        yz: layer[[3, row, column]],
-                        xz: layer[[4, row, column]],
-                        xy: layer[[5, row, column]],
-                    };
+                    let s = layer_stress(&layer, row, column);
                     for (k, v) in [s.von_mises(), s.max_shear()].into_iter().enumerate() {
                         if v >= best[k].0 {
                             best[k] = (v, row, column);

@@ -386,14 +386,7 @@ fn evaluate_layers<T: Precision>(
         Section::Xz { .. } | Section::Yz { .. } => plane.v.values().collect(),
         Section::Xy { z } => vec![z],
     };
-    let stress = |layer: &ndarray::ArrayView3<f64>, row: usize, column: usize| Stress {
-        xx: layer[[0, row, column]],
-        yy: layer[[1, row, column]],
-        zz: layer[[2, row, column]],
-        yz: layer[[3, row, column]],
-        xz: layer[[4, row, column]],
-        xy: layer[[5, row, column]],
-    };
+    let stress = crate::solution::dcfft::layer_stress;
     let (c0, r0) = (layout.first_column, layout.first_row);
     // Copies what a finished layer (`[component, y, x]`) contributes to the plane.
     let take = |index: usize, layer: ndarray::ArrayView3<f64>| {

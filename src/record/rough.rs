@@ -603,22 +603,26 @@ fn log_depth_steps(
                 .mapv(|v| v * 1e6 * per_pa),
         ));
     }
-    let (lo, hi) = maps
+    // Each layer's finite extremes: the colour range of all, and the layer of the largest.
+    let extremes: Vec<(f64, f64)> = maps
         .iter()
-        .flat_map(|(_, m)| m.iter().copied())
-        .filter(|v| v.is_finite())
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
+        .map(|(_, m)| {
+            m.iter()
+                .copied()
+                .filter(|v| v.is_finite())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                    (a.min(v), b.max(v))
+                })
+        })
+        .collect();
+    let (lo, hi) = extremes
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &(lo, hi)| {
+            (a.min(lo), b.max(hi))
         });
     let count = maps.len();
-    let layer_max = |m: &ndarray::Array2<f64>| {
-        m.iter()
-            .copied()
-            .filter(|v| v.is_finite())
-            .fold(f64::NEG_INFINITY, f64::max)
-    };
     let largest = (0..count)
-        .max_by(|&i, &j| layer_max(&maps[i].1).total_cmp(&layer_max(&maps[j].1)))
+        .max_by(|&i, &j| extremes[i].1.total_cmp(&extremes[j].1))
         .unwrap_or(0);
     let mut preview = None;
     for (k, (z, values)) in maps.into_iter().enumerate() {
@@ -697,7 +701,7 @@ fn log_depth_steps(
 }
 
 /// The load of a solved contact: `W = 0.8 N`.
-fn load_text(solution: &crate::contact::rough::RoughSolution) -> String {
+fn load_text(solution: &RoughSolution) -> String {
     format!("W = {} N", crate::scene::compact(solution.load_n))
 }
 

@@ -741,12 +741,13 @@ pub fn log_step(
     let (largest, smallest) = extremes(panel, changing.mark);
     let (largest, smallest) = (worth(largest), worth(smallest));
     let mut wanted: Vec<((f64, f64), String)> = Vec::new();
-    let below = |e: &Extreme| (e.u, e.v + 0.9 * frame.label_height());
+    // A label is wanted just below its point.
+    let below = |(u, v): (f64, f64)| (u, v + 0.9 * frame.label_height());
     let mut marks = Vec::new();
     for (name, word, extreme) in [("maximum", "max", largest), ("minimum", "min", smallest)] {
         if let Some(e) = extreme {
             wanted.push((
-                below(&e),
+                below((e.u, e.v)),
                 format!(
                     "{word} {} = {} at {}",
                     notation.symbol,
@@ -758,7 +759,7 @@ pub fn log_step(
         }
     }
     for (j, &(x, z)) in changing.material.iter().enumerate() {
-        wanted.push(((x, z + 0.9 * frame.label_height()), format!("point {j}")));
+        wanted.push((below((x, z)), format!("point {j}")));
     }
     let requests: Vec<((f64, f64), &str)> = wanted
         .iter()
@@ -793,6 +794,11 @@ pub fn log_step(
             lines: &lines,
         },
     );
+    // Whether label `k` had to leave the place it was wanted at (it then gets a leader).
+    let moved = |k: usize| {
+        let ((cu, cv), (wu, wv)) = (centres[k], requests[k].0);
+        (cu - wu).abs() > 1e-9 || (cv - wv).abs() > 1e-9
+    };
     for name in ["maximum", "minimum"] {
         match marks.iter().position(|(n, _)| *n == name) {
             Some(index) => {
@@ -817,8 +823,7 @@ pub fn log_step(
                         .with_show_labels(true),
                 )?;
                 // A leader from the mark to a label that had to move.
-                let (wanted_u, wanted_v) = below(&e);
-                let moved = (cv - wanted_v).abs() > 1e-9 || (cu - wanted_u).abs() > 1e-9;
+                let moved = moved(index);
                 let leader = [
                     [e.u as f32, e.v as f32],
                     frame.leader_end((cu, cv), (e.u, e.v)),
@@ -843,8 +848,9 @@ pub fn log_step(
             .iter()
             .map(|&(u, v)| frame.anchor(u, v))
             .collect();
-        let labels: Vec<String> = (0..changing.material.len())
-            .map(|j| format!("point {j}"))
+        let labels: Vec<String> = requests[marks.len()..]
+            .iter()
+            .map(|(_, text)| text.to_string())
             .collect();
         put(
             stream,
@@ -860,11 +866,12 @@ pub fn log_step(
         let leaders: Vec<[[f32; 2]; 2]> = changing
             .material
             .iter()
-            .zip(&centres[marks.len()..])
-            .filter(|(&(x, z), &(cu, cv))| {
-                (cu - x).abs() > 1e-9 || (cv - (z + 0.9 * frame.label_height())).abs() > 1e-9
+            .enumerate()
+            .filter(|&(j, _)| moved(marks.len() + j))
+            .map(|(j, &(x, z))| {
+                let centre = centres[marks.len() + j];
+                [[x as f32, z as f32], frame.leader_end(centre, (x, z))]
             })
-            .map(|(&(x, z), &centre)| [[x as f32, z as f32], frame.leader_end(centre, (x, z))])
             .collect();
         put(
             stream,

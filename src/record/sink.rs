@@ -14,6 +14,7 @@
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
 
 use rerun::external::re_log_encoding::{CrateVersion, EncodeError, Encoder, EncodingOptions};
@@ -184,12 +185,12 @@ struct HeldBack<W: Write> {
     inner: W,
     /// The bytes held back, until the gate opens.
     held: Vec<u8>,
-    open: Arc<std::sync::atomic::AtomicBool>,
+    open: Arc<AtomicBool>,
 }
 
 impl<W: Write> HeldBack<W> {
     fn is_open(&self) -> bool {
-        self.open.load(std::sync::atomic::Ordering::Acquire)
+        self.open.load(Ordering::Acquire)
     }
 
     /// Writes out what was held back, once the gate is open.
@@ -226,7 +227,7 @@ pub struct Output {
     pub stream: RecordingStream,
     writer: Option<SharedWriter>,
     /// The gate of standard output ([`HeldBack`]), opened by the first flush.
-    gate: Option<Arc<std::sync::atomic::AtomicBool>>,
+    gate: Option<Arc<AtomicBool>>,
     completion: Completion,
     /// What the user asked for (for messages).
     destination: Destination,
@@ -247,7 +248,7 @@ impl Output {
             message,
         };
         let with_writer = |write: Box<dyn Write + Send>,
-                           gate: Option<Arc<std::sync::atomic::AtomicBool>>,
+                           gate: Option<Arc<AtomicBool>>,
                            completion: Completion,
                            shown: &Path| {
             let encoder = Encoder::new_eager(
@@ -317,7 +318,7 @@ impl Output {
                 if std::io::stdout().is_terminal() {
                     return Err(RecordError::Terminal);
                 }
-                let gate = Arc::new(std::sync::atomic::AtomicBool::new(false));
+                let gate = Arc::new(AtomicBool::new(false));
                 with_writer(
                     Box::new(std::io::BufWriter::new(HeldBack {
                         inner: std::io::stdout(),
@@ -365,7 +366,7 @@ impl Output {
     /// first flush opens standard output's gate ([`HeldBack`]).
     pub fn flush(&self) -> Result<(), RecordError> {
         if let Some(gate) = &self.gate {
-            gate.store(true, std::sync::atomic::Ordering::Release);
+            gate.store(true, Ordering::Release);
         }
         self.stream
             .flush_blocking()
@@ -465,7 +466,7 @@ mod tests {
 
     #[test]
     fn standard_output_is_held_back_until_the_first_flush() {
-        let open = Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let open = Arc::new(AtomicBool::new(false));
         let mut out = HeldBack {
             inner: Vec::new(),
             held: Vec::new(),
@@ -476,7 +477,7 @@ mod tests {
             .expect("a flush before the gate opens keeps the bytes");
         out.write_all(b"layout ").expect("held");
         assert!(out.inner.is_empty());
-        open.store(true, std::sync::atomic::Ordering::Release);
+        open.store(true, Ordering::Release);
         out.flush().expect("released");
         assert_eq!(out.inner, b"header layout ");
         out.write_all(b"step").expect("written through");

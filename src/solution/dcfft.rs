@@ -125,6 +125,20 @@ fn uniform_stress(mean: [f64; 3], c: usize) -> f64 {
 /// The order of the stress components in a layer: `xx, yy, zz, yz, xz, xy`.
 pub const COMPONENTS: [&str; 6] = ["xx", "yy", "zz", "yz", "xz", "xy"];
 
+/// The stress at cell `[row, column]` of a layer (`[component, y, x]`, components in the order
+/// of [`COMPONENTS`]).
+#[inline]
+pub fn layer_stress(layer: &ndarray::ArrayView3<f64>, row: usize, column: usize) -> Stress {
+    Stress {
+        xx: layer[[0, row, column]],
+        yy: layer[[1, row, column]],
+        zz: layer[[2, row, column]],
+        yz: layer[[3, row, column]],
+        xz: layer[[4, row, column]],
+        xy: layer[[5, row, column]],
+    }
+}
+
 /// Invalid traction grids.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum TractionGridError {

@@ -62,4 +62,5 @@ pub mod study;
 pub mod surface;
 pub mod surface_report;
 pub mod text;
+pub mod thermal;
 pub mod transform;

@@ -19,7 +19,7 @@ pub struct Preset {
 
 /// Presets usable as `material = "steel"` in scenes. Values are typical, not guaranteed for a
 /// particular grade: give `modulus` and `poisson` explicitly for design work.
-pub const PRESETS: [Preset; 7] = [
+pub const PRESETS: [Preset; 8] = [
     Preset {
         name: "steel",
         material: Material {
@@ -75,6 +75,14 @@ pub const PRESETS: [Preset; 7] = [
             poisson: 0.22,
         },
         description: "cemented WC-Co",
+    },
+    Preset {
+        name: "boron_carbide",
+        material: Material {
+            modulus_pa: 450e9,
+            poisson: 0.17,
+        },
+        description: "B4C (the coating of the lecture notes' thermal example)",
     },
 ];
 

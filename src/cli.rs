@@ -71,6 +71,19 @@ pub enum Command {
     /// Characterise a rough surface: a height file (ASCII matrix, XYZ, x3p) or a surface/rough
     /// scene. Prints ISO 25178 parameters, spectra, summits and the Greenwood-Williamson values.
     Surface(SurfaceArgs),
+    /// Frictional heating of a scene with a [thermal] table: Peclet number, heat partition,
+    /// flash temperatures of the bodies, the thermal and total (thermal + contact) stress
+    /// maxima of body 1.
+    Thermal {
+        scene: PathBuf,
+        /// Print one JSON object (SI units) instead of the table.
+        #[arg(long)]
+        json: bool,
+        /// Also write body 1's surface temperature rise (K, float64, [rows, columns] of the
+        /// thermal grid, row = y) as a NumPy .npy file.
+        #[arg(long, value_name = "FILE.npy")]
+        temperature: Option<PathBuf>,
+    },
 }
 
 /// Options of `render`.

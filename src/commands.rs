@@ -71,7 +71,16 @@ pub fn run(command: Command) -> Result<()> {
             match scene.contact.kind {
                 ContactKind::Rough => crate::surface_commands::contact(&scene_path, false, None),
                 ContactKind::Surface => crate::surface_commands::surface_of_scene(&scene_path),
-                _ => print_out(&report::hertz(&scene)),
+                _ => {
+                    let mut text = report::hertz(&scene);
+                    if scene.thermal.is_some() {
+                        let study = crate::thermal_commands::study(&scene, None)?;
+                        text.push_str(
+                            &stressfield::report::thermal::ThermalReport::new(&study).text(&study),
+                        );
+                    }
+                    print_out(&text)
+                }
             }
         }
         Command::Check { scenes } => check(&scenes),
@@ -82,6 +91,11 @@ pub fn run(command: Command) -> Result<()> {
             pressure,
         } => crate::surface_commands::contact(&scene, json, pressure.as_deref()),
         Command::Surface(args) => crate::surface_commands::surface(&args),
+        Command::Thermal {
+            scene,
+            json,
+            temperature,
+        } => crate::thermal_commands::thermal(&scene, json, temperature.as_deref()),
     }
 }
 

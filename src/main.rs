@@ -4,6 +4,7 @@ mod cli;
 mod commands;
 mod compare_run;
 mod surface_commands;
+mod thermal_commands;
 
 use std::process::ExitCode;
 

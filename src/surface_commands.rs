@@ -88,7 +88,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
 }
 
 /// Refuses an output path that does not end in `.npy`.
-fn npy_path(flag: &str, path: &Path) -> Result<()> {
+pub(crate) fn npy_path(flag: &str, path: &Path) -> Result<()> {
     if path.extension().is_none_or(|e| e != "npy") {
         bail!(
             "{flag} writes a NumPy file: give a path ending in .npy, got {}",
@@ -99,7 +99,7 @@ fn npy_path(flag: &str, path: &Path) -> Result<()> {
 }
 
 /// `array` as a NumPy .npy file at `path`, written atomically.
-fn write_npy(path: &Path, array: &ndarray::Array2<f64>, what: &str) -> Result<()> {
+pub(crate) fn write_npy(path: &Path, array: &ndarray::Array2<f64>, what: &str) -> Result<()> {
     let mut bytes = Vec::new();
     ndarray_npy::WriteNpyExt::write_npy(array, &mut bytes)
         .with_context(|| format!("encoding the {what} as .npy"))?;

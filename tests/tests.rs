@@ -15,3 +15,4 @@ mod regression;
 mod rough_contact;
 mod scenes;
 mod surfaces;
+mod thermal;

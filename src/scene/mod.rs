@@ -20,7 +20,8 @@ use raw::RawScene;
 
 pub use spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
-    RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
+    RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec,
+    YieldStrength,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
 
@@ -95,6 +96,8 @@ pub struct Scene {
     pub load_centre_over_a: f64,
     /// The heights of a rough or surface scene.
     pub surface: Option<SurfaceSpec>,
+    /// Frictional heating, when the scene has a `[thermal]` table.
+    pub thermal: Option<ThermalSpec>,
 }
 
 impl Scene {

@@ -20,6 +20,20 @@ pub struct RawScene {
     pub surface: Option<RawSurface>,
     /// The roughness of body 2, added to body 1's (rough scenes).
     pub counter_surface: Option<RawSurface>,
+    /// Frictional heating (line, point, elliptical and rough scenes).
+    pub thermal: Option<RawThermal>,
+}
+
+/// `[thermal]`: sliding speed, the bodies' speeds, the heat partition.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawThermal {
+    pub speed: String,
+    pub body1_speed: Option<String>,
+    pub body2_speed: Option<String>,
+    /// "body1", "blok", or body 1's fraction.
+    pub partition: Option<NumberOrText>,
+    pub coupled: Option<bool>,
 }
 
 /// `[surface]`: a height map read from a file or generated.
@@ -142,6 +156,12 @@ pub struct RawBody {
     pub material: Option<String>,
     pub modulus: Option<String>,
     pub poisson: Option<f64>,
+    /// Thermal properties (scenes with `[thermal]`).
+    pub conductivity: Option<String>,
+    pub diffusivity: Option<String>,
+    pub density: Option<String>,
+    pub specific_heat: Option<String>,
+    pub expansion: Option<String>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -92,6 +92,29 @@ pub struct Scale {
     pub p0_pa: f64,
 }
 
+/// One body's share in frictional heating.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ThermalBody {
+    pub properties: crate::thermal::material::ThermalProperties,
+    /// Elastic constants, for the thermal stress.
+    pub material: crate::contact::material::Material,
+    /// The speed of the contact over this body's surface, m/s (0: the body carries the
+    /// contact with it, a pin).
+    pub speed_m_per_s: f64,
+}
+
+/// `[thermal]`: frictional heating of a sliding contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ThermalSpec {
+    /// The sliding speed `V`: the frictional flux is `μ p V`.
+    pub sliding_speed_m_per_s: f64,
+    pub partition: crate::thermal::heating::Partition,
+    pub coupled: bool,
+    pub body1: ThermalBody,
+    /// Body 2, when its properties are known (required unless all heat enters body 1).
+    pub body2: Option<ThermalBody>,
+}
+
 /// The validated contact of a scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact {

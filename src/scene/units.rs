@@ -9,6 +9,12 @@ pub enum Dimension {
     ForcePerLength,
     Angle,
     Hardness,
+    Speed,
+    Conductivity,
+    Diffusivity,
+    Density,
+    SpecificHeat,
+    Expansion,
 }
 
 impl Dimension {
@@ -51,6 +57,27 @@ impl Dimension {
             ],
             Dimension::Angle => &[("deg", std::f64::consts::PI / 180.0), ("rad", 1.0)],
             Dimension::Hardness => &[("HB", 1.0), ("BHN", 1.0), ("HBW", 1.0), ("HV", 1.0)],
+            Dimension::Speed => &[
+                ("m/s", 1.0),
+                ("mm/s", 1e-3),
+                ("km/h", 1.0 / 3.6),
+                ("m/min", 1.0 / 60.0),
+            ],
+            Dimension::Conductivity => &[
+                ("W/(m K)", 1.0),
+                ("W/(m*K)", 1.0),
+                ("W/mK", 1.0),
+                ("W/m/K", 1.0),
+            ],
+            Dimension::Diffusivity => &[("m^2/s", 1.0), ("mm^2/s", 1e-6), ("m2/s", 1.0)],
+            Dimension::Density => &[("kg/m^3", 1.0), ("kg/m3", 1.0), ("g/cm^3", 1e3)],
+            Dimension::SpecificHeat => &[
+                ("J/(kg K)", 1.0),
+                ("J/(kg*K)", 1.0),
+                ("J/kgK", 1.0),
+                ("J/kg/K", 1.0),
+            ],
+            Dimension::Expansion => &[("/K", 1.0), ("1/K", 1.0), ("/degC", 1.0)],
         }
     }
 
@@ -63,6 +90,12 @@ impl Dimension {
             Dimension::ForcePerLength => "\"40 kN/m\"",
             Dimension::Angle => "\"20 deg\"",
             Dimension::Hardness => "\"300 HB\"",
+            Dimension::Speed => "\"2 m/s\"",
+            Dimension::Conductivity => "\"50 W/(m K)\"",
+            Dimension::Diffusivity => "\"1.4e-5 m^2/s\"",
+            Dimension::Density => "\"7850 kg/m^3\"",
+            Dimension::SpecificHeat => "\"475 J/(kg K)\"",
+            Dimension::Expansion => "\"11.5e-6 /K\"",
         }
     }
 
@@ -75,6 +108,12 @@ impl Dimension {
             Dimension::ForcePerLength => "N/m",
             Dimension::Angle => "rad",
             Dimension::Hardness => "HB",
+            Dimension::Speed => "m/s",
+            Dimension::Conductivity => "W/(m K)",
+            Dimension::Diffusivity => "m^2/s",
+            Dimension::Density => "kg/m^3",
+            Dimension::SpecificHeat => "J/(kg K)",
+            Dimension::Expansion => "/K",
         }
     }
 
@@ -154,6 +193,23 @@ mod tests {
         );
         assert_relative_eq!(parse("-3 mm", Dimension::Length).expect("ok"), -0.003);
         assert_relative_eq!(parse("300 HB", Dimension::Hardness).expect("ok"), 300.0);
+        assert_relative_eq!(parse("2 m/s", Dimension::Speed).expect("ok"), 2.0);
+        assert_relative_eq!(
+            parse("50 W/(m K)", Dimension::Conductivity).expect("ok"),
+            50.0
+        );
+        assert_relative_eq!(
+            parse("1.4e-5 m^2/s", Dimension::Diffusivity).expect("ok"),
+            1.4e-5
+        );
+        assert_relative_eq!(
+            parse("11.5e-6 /K", Dimension::Expansion).expect("ok"),
+            11.5e-6
+        );
+        assert_relative_eq!(
+            parse("475 J/(kg K)", Dimension::SpecificHeat).expect("ok"),
+            475.0
+        );
     }
 
     #[test]

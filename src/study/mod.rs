@@ -10,6 +10,7 @@
 
 mod grid;
 pub mod rough;
+pub mod thermal;
 
 use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::ContactError;

@@ -275,33 +275,40 @@ fn add_band(
     eta_weights.extend(&half_weights);
     let ys: Vec<f64> = (0..2 * ny).map(|r| signed(r, 2 * ny) as f64 * dy).collect();
     let xs: Vec<f64> = (0..2 * nx).map(|c| signed(c, 2 * nx) as f64 * dx).collect();
-    // A[n][component][row] = Σ_η w F(ξn, η) e^(iηy).
+    // Phase tables: e^(iηy) for every η and row, e^(iξx) for every ξ and column.
+    let eta_phase: Vec<C64> = ys
+        .iter()
+        .flat_map(|&y| etas.iter().map(move |&eta| C64::from_polar(1.0, eta * y)))
+        .collect();
+    let xi_phase: Vec<(f64, f64)> = half
+        .iter()
+        .flat_map(|&xi| xs.iter().map(move |&x| (xi * x).sin_cos()))
+        .collect();
+    // partial[n][component][row] = w_n Σ_η w F(ξn, η) e^(iηy).
     let partial: Vec<Vec<Vec<C64>>> = half
         .par_iter()
-        .map(|&xi| {
+        .zip(&half_weights)
+        .map(|(&xi, &w_xi)| {
             let values: Vec<[C64; COMPONENTS]> = etas
                 .iter()
                 .zip(&eta_weights)
                 .map(|(&eta, &w)| {
                     let mut v = f(xi, eta);
                     for c in v.iter_mut() {
-                        *c *= w;
+                        *c *= w * w_xi;
                     }
                     v
                 })
                 .collect();
-            (0..COMPONENTS)
-                .map(|component| {
-                    ys.iter()
-                        .map(|&y| {
-                            etas.iter()
-                                .zip(&values)
-                                .map(|(&eta, v)| v[component] * C64::from_polar(1.0, eta * y))
-                                .sum()
-                        })
-                        .collect()
-                })
-                .collect()
+            let mut rows = vec![vec![C64::new(0.0, 0.0); ys.len()]; COMPONENTS];
+            for (row, phases) in eta_phase.chunks_exact(etas.len()).enumerate() {
+                for (v, phase) in values.iter().zip(phases) {
+                    for (component, value) in v.iter().enumerate() {
+                        rows[component][row] += value * phase;
+                    }
+                }
+            }
+            rows
         })
         .collect();
     let scale = 2.0 / (4.0 * PI * PI);
@@ -312,10 +319,9 @@ fn add_band(
             .into_par_iter()
             .enumerate()
             .for_each(|(row, mut line)| {
-                for (n, (&xi, &w)) in half.iter().zip(&half_weights).enumerate() {
-                    let a = partial[n][component][row] * w;
-                    for (slot, &x) in line.iter_mut().zip(&xs) {
-                        let (s, c) = (xi * x).sin_cos();
+                for (n, phases) in xi_phase.chunks_exact(xs.len()).enumerate() {
+                    let a = partial[n][component][row];
+                    for (slot, &(s, c)) in line.iter_mut().zip(phases) {
                         *slot += scale * (a.re * c - a.im * s);
                     }
                 }

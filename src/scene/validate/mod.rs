@@ -8,6 +8,7 @@ mod numerical;
 mod rough;
 mod surface;
 mod sweep;
+mod thermal;
 mod tractions;
 mod volume;
 
@@ -162,6 +163,7 @@ impl Validator<'_> {
                 ));
             }
         }
+        let thermal = self.thermal(&raw, &contact)?;
         let figure = self.figure(&raw.figure, &contact)?;
         let method = self.method("contact.method", raw.contact.method.as_deref())?;
         let numerical = self.numerical(raw.numerical.as_ref(), &contact)?;
@@ -248,6 +250,7 @@ impl Validator<'_> {
             sweep: None,
             volume: None,
             load_centre_over_a: 0.0,
+            thermal,
             surface: None,
         };
         // The whole figure: every panel's grid and buffers, and the image.

@@ -520,6 +520,7 @@ impl Validator<'_> {
             self.rough_control(rough, &surface.heights)?;
         }
         let figure = self.figure(&raw.figure, &contact)?;
+        let thermal = self.thermal(&raw, &contact)?;
         let [ny, nx] = surface.heights.shape();
         let mut scene = Scene {
             name: name.into(),
@@ -535,6 +536,7 @@ impl Validator<'_> {
             sweep: None,
             volume: None,
             load_centre_over_a: 0.0,
+            thermal,
             surface: Some(surface),
         };
         if let Some(sweep) = &raw.sweep {

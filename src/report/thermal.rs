@@ -1,0 +1,176 @@
+//! The frictional-heating report (`stressfield thermal`, and the thermal block of `hertz` and
+//! `contact`): a readable block or one JSON object with SI values.
+//!
+//! JSON keys (the output contract, SI, body 1 unless named): `peclet`,
+//! `sliding_speed_m_per_s`, `heat_partition_body1`, `max_temperature_rise_k`,
+//! `mean_temperature_rise_k`, `max_temperature_x_m`, `max_temperature_y_m`,
+//! `thermal_von_mises_max_pa`, `total_von_mises_max_pa`, `total_von_mises_max_depth_m`; and
+//! also `body1_speed_m_per_s`, `body2_speed_m_per_s`, `body2_peclet`,
+//! `body2_max_temperature_rise_k`, `body2_mean_temperature_rise_k` (null without body 2),
+//! `thermal_von_mises_max_depth_m`, `contact_von_mises_max_pa`,
+//! `contact_von_mises_max_depth_m`, `contact_von_mises_max_x_m`, `total_von_mises_max_x_m`,
+//! `contact_tresca_max_pa`, `total_tresca_max_pa`, `total_tresca_max_depth_m`, `half_width_m`,
+//! `rows`, `columns`, `spacing_m`. Positions are measured from the contact's centre (a rough
+//! scene: the window's centre); the maxima are searched over the grid at the depths
+//! [`crate::study::thermal::DEPTHS_OVER_A`] times `half_width_m`.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use crate::study::thermal::ThermalStudy;
+use crate::thermal::heating::Partition;
+
+/// What the report says.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ThermalReport {
+    pub peclet: f64,
+    pub sliding_speed_m_per_s: f64,
+    pub heat_partition_body1: f64,
+    pub max_temperature_rise_k: f64,
+    pub mean_temperature_rise_k: f64,
+    pub max_temperature_x_m: f64,
+    pub max_temperature_y_m: f64,
+    pub thermal_von_mises_max_pa: f64,
+    pub total_von_mises_max_pa: f64,
+    pub total_von_mises_max_depth_m: f64,
+    pub body1_speed_m_per_s: f64,
+    pub body2_speed_m_per_s: Option<f64>,
+    pub body2_peclet: Option<f64>,
+    pub body2_max_temperature_rise_k: Option<f64>,
+    pub body2_mean_temperature_rise_k: Option<f64>,
+    pub thermal_von_mises_max_depth_m: f64,
+    pub contact_von_mises_max_pa: f64,
+    pub contact_von_mises_max_depth_m: f64,
+    pub contact_von_mises_max_x_m: f64,
+    pub total_von_mises_max_x_m: f64,
+    pub contact_tresca_max_pa: f64,
+    pub total_tresca_max_pa: f64,
+    pub total_tresca_max_depth_m: f64,
+    pub half_width_m: f64,
+    pub rows: usize,
+    pub columns: usize,
+    pub spacing_m: [f64; 2],
+}
+
+impl ThermalReport {
+    pub fn new(study: &ThermalStudy) -> Self {
+        let body2 = study.body2.as_ref();
+        Self {
+            peclet: study.body1.peclet,
+            sliding_speed_m_per_s: study.spec.sliding_speed_m_per_s,
+            heat_partition_body1: study.body1.share,
+            max_temperature_rise_k: study.body1.max_temperature_rise_k,
+            mean_temperature_rise_k: study.body1.mean_temperature_rise_k,
+            max_temperature_x_m: study.body1.max_at_m[0],
+            max_temperature_y_m: study.body1.max_at_m[1],
+            thermal_von_mises_max_pa: study.thermal_von_mises.value_pa,
+            total_von_mises_max_pa: study.total_von_mises.value_pa,
+            total_von_mises_max_depth_m: study.total_von_mises.depth_m,
+            body1_speed_m_per_s: study.spec.body1.speed_m_per_s,
+            body2_speed_m_per_s: study.spec.body2.map(|b| b.speed_m_per_s),
+            body2_peclet: body2.map(|b| b.peclet),
+            body2_max_temperature_rise_k: body2.map(|b| b.max_temperature_rise_k),
+            body2_mean_temperature_rise_k: body2.map(|b| b.mean_temperature_rise_k),
+            thermal_von_mises_max_depth_m: study.thermal_von_mises.depth_m,
+            contact_von_mises_max_pa: study.contact_von_mises.value_pa,
+            contact_von_mises_max_depth_m: study.contact_von_mises.depth_m,
+            contact_von_mises_max_x_m: study.contact_von_mises.x_m,
+            total_von_mises_max_x_m: study.total_von_mises.x_m,
+            contact_tresca_max_pa: study.contact_tresca.value_pa,
+            total_tresca_max_pa: study.total_tresca.value_pa,
+            total_tresca_max_depth_m: study.total_tresca.depth_m,
+            half_width_m: study.half_width_m,
+            rows: study.shape[0],
+            columns: study.shape[1],
+            spacing_m: study.spacing_m,
+        }
+    }
+
+    /// One JSON object.
+    pub fn json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The readable block.
+    pub fn text(&self, study: &ThermalStudy) -> String {
+        let mut out = String::new();
+        let _ = self.write_text(&mut out, study);
+        out
+    }
+
+    fn write_text(&self, out: &mut String, study: &ThermalStudy) -> std::fmt::Result {
+        let um = |m: f64| m * 1e6;
+        let mpa = |pa: f64| pa * 1e-6;
+        let partition = match study.spec.partition {
+            Partition::Body1 => "all into body 1 (counter-face adiabatic)".to_string(),
+            Partition::Fraction(f) => format!("fraction {f} into body 1, as given"),
+            Partition::Blok => "Blok's (equal mean flash temperatures)".to_string(),
+        };
+        writeln!(out, "frictional heating")?;
+        writeln!(
+            out,
+            "  sliding speed {} m/s; contact over body 1 at {} m/s (Peclet V a/(2 kappa) = {:.4}){}",
+            self.sliding_speed_m_per_s,
+            self.body1_speed_m_per_s,
+            self.peclet,
+            match (self.body2_speed_m_per_s, self.body2_peclet) {
+                (Some(v), Some(pe)) => format!(", over body 2 at {v} m/s (Peclet {pe:.4})"),
+                _ => String::new(),
+            }
+        )?;
+        writeln!(
+            out,
+            "  heat partition: {partition}: {:.4} of q = mu p V into body 1",
+            self.heat_partition_body1
+        )?;
+        writeln!(
+            out,
+            "  body 1 flash temperature: max {:.2} K at x = {:.2} um, y = {:.2} um; mean over the contact {:.2} K",
+            self.max_temperature_rise_k,
+            um(self.max_temperature_x_m),
+            um(self.max_temperature_y_m),
+            self.mean_temperature_rise_k
+        )?;
+        if let (Some(max), Some(mean)) = (
+            self.body2_max_temperature_rise_k,
+            self.body2_mean_temperature_rise_k,
+        ) {
+            writeln!(
+                out,
+                "  body 2 flash temperature: max {max:.2} K; mean over the contact {mean:.2} K"
+            )?;
+        }
+        writeln!(
+            out,
+            "  von Mises maxima (body 1): thermal {:.1} MPa at depth {:.2} um; contact alone {:.1} MPa at depth {:.2} um, x = {:.2} um; total {:.1} MPa at depth {:.2} um, x = {:.2} um",
+            mpa(self.thermal_von_mises_max_pa),
+            um(self.thermal_von_mises_max_depth_m),
+            mpa(self.contact_von_mises_max_pa),
+            um(self.contact_von_mises_max_depth_m),
+            um(self.contact_von_mises_max_x_m),
+            mpa(self.total_von_mises_max_pa),
+            um(self.total_von_mises_max_depth_m),
+            um(self.total_von_mises_max_x_m)
+        )?;
+        writeln!(
+            out,
+            "  Tresca (s1 - s3) maxima: contact alone {:.1} MPa; total {:.1} MPa at depth {:.2} um",
+            mpa(self.contact_tresca_max_pa),
+            mpa(self.total_tresca_max_pa),
+            um(self.total_tresca_max_depth_m)
+        )?;
+        writeln!(
+            out,
+            "  grid: {} x {} cells of {:.3} x {:.3} um; maxima searched at {} depths to {:.2} um",
+            self.columns,
+            self.rows,
+            um(self.spacing_m[0]),
+            um(self.spacing_m[1]),
+            crate::study::thermal::DEPTHS_OVER_A.len(),
+            um(crate::study::thermal::DEPTHS_OVER_A
+                [crate::study::thermal::DEPTHS_OVER_A.len() - 1]
+                * self.half_width_m)
+        )
+    }
+}

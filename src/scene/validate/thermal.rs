@@ -1,0 +1,332 @@
+//! The `[thermal]` table and the bodies' thermal properties (`[contact.bodyN]`).
+
+#[allow(clippy::wildcard_imports)]
+use super::*;
+use crate::scene::raw::RawThermal;
+use crate::scene::spec::{ThermalBody, ThermalSpec};
+use crate::thermal::heating::Partition;
+use crate::thermal::material::{thermal_preset, ThermalProperties, THERMAL_PRESETS};
+
+/// Sliding and body speeds, m/s.
+const SPEED_BOUNDS: Bounds = Bounds {
+    lo: 1e-9,
+    hi: 1e4,
+    why: "from creep (nm/s) to beyond any sliding contact (10 km/s)",
+};
+/// Conductivities, W/(m K).
+const CONDUCTIVITY_BOUNDS: Bounds = Bounds {
+    lo: 1e-3,
+    hi: 1e4,
+    why: "from aerogels to five times diamond",
+};
+/// Diffusivities, m²/s.
+const DIFFUSIVITY_BOUNDS: Bounds = Bounds {
+    lo: 1e-9,
+    hi: 1e-2,
+    why: "from polymers (1e-7) to ten times diamond (1e-3)",
+};
+/// Densities, kg/m³.
+const DENSITY_BOUNDS: Bounds = Bounds {
+    lo: 1.0,
+    hi: 1e5,
+    why: "from foams to five times osmium",
+};
+/// Specific heats, J/(kg K).
+const SPECIFIC_HEAT_BOUNDS: Bounds = Bounds {
+    lo: 1.0,
+    hi: 1e5,
+    why: "from lead (130) to ten times water",
+};
+/// Expansion coefficients, 1/K (0: no thermal stress).
+const EXPANSION_BOUNDS: Bounds = Bounds {
+    lo: 0.0,
+    hi: 1e-3,
+    why: "from Invar (1e-6) to five times soft polymers",
+};
+
+impl Validator<'_> {
+    /// `[thermal]` with the bodies' properties, or `None` without the table.
+    pub(super) fn thermal(
+        &self,
+        raw: &RawScene,
+        contact: &Contact,
+    ) -> Result<Option<ThermalSpec>, SceneError> {
+        let Some(table) = &raw.thermal else {
+            return Ok(None);
+        };
+        match contact.kind {
+            ContactKind::Line | ContactKind::Point | ContactKind::Elliptical => {
+                if contact.scale.is_none() {
+                    return Err(self.error(
+                        "thermal",
+                        "frictional heating needs a dimensional contact",
+                        Some("give contact.load and [contact.body1]/[contact.body2] (or contact.a and contact.p0 with their units)"),
+                    ));
+                }
+                if contact.tangential.is_some() {
+                    return Err(self.error(
+                        "thermal",
+                        "frictional heating is computed for full sliding",
+                        Some("remove contact.tangential (partial slip), or remove [thermal]"),
+                    ));
+                }
+            }
+            ContactKind::Rough => {}
+            ContactKind::Tractions | ContactKind::Surface => {
+                return Err(self.error(
+                    "thermal",
+                    "frictional heating belongs to line, point, elliptical and rough scenes",
+                    Some("remove [thermal]"),
+                ))
+            }
+        }
+        if contact.friction <= 0.0 {
+            return Err(self.error(
+                "contact.friction",
+                "frictional heating needs friction: with friction = 0 no heat is made",
+                Some("give contact.friction > 0, or remove [thermal]"),
+            ));
+        }
+        let sliding = self.bounded("thermal.speed", &table.speed, Dimension::Speed, SPEED_BOUNDS)
+            .map_err(|mut e| {
+                e.hint = Some(format!(
+                    "the sliding speed must be positive (a contact that does not slide makes no frictional heat); {}",
+                    e.hint.unwrap_or_default()
+                ));
+                e
+            })?;
+        let speed = |key: &str, text: &Option<String>, default: f64| match text {
+            None => Ok(default),
+            Some(text) => {
+                let value =
+                    units::parse(text, Dimension::Speed).map_err(|m| self.error(key, m, None))?;
+                if value == 0.0 {
+                    Ok(0.0)
+                } else {
+                    self.within(key, value, text, Dimension::Speed, SPEED_BOUNDS)
+                }
+            }
+        };
+        let body1_speed = speed("thermal.body1_speed", &table.body1_speed, sliding)?;
+        let body2_speed = speed("thermal.body2_speed", &table.body2_speed, 0.0)?;
+        let partition = self.partition(table)?;
+        let coupled = table.coupled.unwrap_or(false);
+        if coupled {
+            return Err(self.error(
+                "thermal.coupled",
+                "the coupled thermo-mechanical solution (thermal distortion fed back into the contact) is not available in this version",
+                Some("set coupled = false: the heating is then computed on the isothermal pressure"),
+            ));
+        }
+        let default_body = RawBody::default();
+        let raw1 = raw.contact.body1.as_ref().unwrap_or(&default_body);
+        let body1 = self
+            .thermal_body("contact.body1", raw1, body1_speed, true)?
+            .ok_or_else(|| self.error("contact.body1", "missing", None))?;
+        let raw2 = raw.contact.body2.as_ref();
+        let needs_body2 = partition.needs_body2();
+        let body2 = match raw2 {
+            Some(raw2) => self.thermal_body("contact.body2", raw2, body2_speed, needs_body2)?,
+            None if needs_body2 => {
+                return Err(self.error(
+                    "contact.body2",
+                    "the heat partition needs body 2's thermal properties",
+                    Some("add [contact.body2] with material = \"steel\" (or conductivity, diffusivity, expansion), or set thermal.partition = \"body1\""),
+                ))
+            }
+            None => None,
+        };
+        if contact.kind == ContactKind::Line {
+            if body1.speed_m_per_s == 0.0 {
+                return Err(self.error(
+                    "thermal.body1_speed",
+                    "a line contact that stays on body 1 (speed 0) has no steady temperature: a stationary band heats a plane problem without bound",
+                    Some("give body 1 a positive speed"),
+                ));
+            }
+            if let Some(b2) = &body2 {
+                if needs_body2 && b2.speed_m_per_s == 0.0 {
+                    return Err(self.error(
+                        "thermal.body2_speed",
+                        "a line contact that stays on body 2 (speed 0, the default) has no steady temperature, so its share cannot be found",
+                        Some("give thermal.body2_speed (e.g. the pinion's rolling speed), or set thermal.partition = \"body1\""),
+                    ));
+                }
+            }
+        }
+        Ok(Some(ThermalSpec {
+            sliding_speed_m_per_s: sliding,
+            partition,
+            coupled,
+            body1,
+            body2,
+        }))
+    }
+
+    fn partition(&self, table: &RawThermal) -> Result<Partition, SceneError> {
+        let key = "thermal.partition";
+        let hint = Some("use partition = \"body1\" (all heat into body 1), \"blok\" (equal mean flash temperatures) or body 1's fraction, e.g. 0.5");
+        match &table.partition {
+            None => Ok(Partition::Body1),
+            Some(NumberOrText::Text(text)) => match text.trim() {
+                "body1" => Ok(Partition::Body1),
+                "blok" => Ok(Partition::Blok),
+                other => Err(self.error(
+                    key,
+                    format!("unknown partition `{}`", crate::text::cut(other, 40)),
+                    hint,
+                )),
+            },
+            Some(NumberOrText::Number(f)) if (0.0..=1.0).contains(f) => Ok(Partition::Fraction(*f)),
+            Some(NumberOrText::Number(f)) => Err(self.error(
+                key,
+                format!(
+                    "body 1's fraction must lie in [0, 1], got {}",
+                    crate::text::number(*f)
+                ),
+                hint,
+            )),
+        }
+    }
+
+    /// A body's thermal and elastic properties: each key, or the material's value. `None` when
+    /// the body names none of them and `required` is false.
+    fn thermal_body(
+        &self,
+        key: &str,
+        raw: &RawBody,
+        speed_m_per_s: f64,
+        required: bool,
+    ) -> Result<Option<ThermalBody>, SceneError> {
+        let preset = match &raw.material {
+            Some(name) => match thermal_preset(name) {
+                Some(p) => Some(p),
+                None => {
+                    let names: Vec<_> = THERMAL_PRESETS.iter().map(|p| p.name).collect();
+                    return Err(self.error(
+                        &format!("{key}.material"),
+                        format!("unknown material `{}`", crate::text::cut(name, 40)),
+                        Some(&format!("use one of: {}", names.join(", "))),
+                    ));
+                }
+            },
+            None => None,
+        };
+        let given =
+            raw.conductivity.is_some() || raw.diffusivity.is_some() || raw.expansion.is_some();
+        if preset.is_none() && !given && !required {
+            return Ok(None);
+        }
+        let value = |name: &str,
+                     text: &Option<String>,
+                     dimension,
+                     bounds|
+         -> Result<Option<f64>, SceneError> {
+            text.as_ref()
+                .map(|t| self.bounded(&format!("{key}.{name}"), t, dimension, bounds))
+                .transpose()
+        };
+        let missing = |name: &str, example: &str| {
+            self.error(
+                &format!("{key}.{name}"),
+                format!("missing thermal property `{name}`"),
+                Some(&format!("add {name} = {example}, or material = \"steel\" (the README lists the materials)")),
+            )
+        };
+        let conductivity = value(
+            "conductivity",
+            &raw.conductivity,
+            Dimension::Conductivity,
+            CONDUCTIVITY_BOUNDS,
+        )?
+        .or(preset.map(|p| p.conductivity_w_per_m_k))
+        .ok_or_else(|| missing("conductivity", "\"50 W/(m K)\""))?;
+        let diffusivity = match (&raw.diffusivity, &raw.density, &raw.specific_heat) {
+            (Some(_), Some(_), _) | (Some(_), _, Some(_)) => {
+                return Err(self.error(
+                    &format!("{key}.diffusivity"),
+                    "give the diffusivity, or the density and specific heat, not both",
+                    Some("remove one of them"),
+                ))
+            }
+            (Some(_), None, None) => value(
+                "diffusivity",
+                &raw.diffusivity,
+                Dimension::Diffusivity,
+                DIFFUSIVITY_BOUNDS,
+            )?
+            .unwrap_or(f64::NAN),
+            (None, Some(_), Some(_)) => {
+                let rho = value("density", &raw.density, Dimension::Density, DENSITY_BOUNDS)?
+                    .unwrap_or(f64::NAN);
+                let c = value(
+                    "specific_heat",
+                    &raw.specific_heat,
+                    Dimension::SpecificHeat,
+                    SPECIFIC_HEAT_BOUNDS,
+                )?
+                .unwrap_or(f64::NAN);
+                conductivity / (rho * c)
+            }
+            (None, Some(_), None) => return Err(missing("specific_heat", "\"475 J/(kg K)\"")),
+            (None, None, Some(_)) => return Err(missing("density", "\"7850 kg/m^3\"")),
+            (None, None, None) => match preset {
+                Some(p) => p.diffusivity_m2_per_s,
+                None => {
+                    return Err(missing(
+                        "diffusivity",
+                        "\"1.4e-5 m^2/s\" (or density and specific_heat)",
+                    ))
+                }
+            },
+        };
+        let expansion = value(
+            "expansion",
+            &raw.expansion,
+            Dimension::Expansion,
+            EXPANSION_BOUNDS,
+        )?
+        .or(preset.map(|p| p.expansion_per_k))
+        .ok_or_else(|| missing("expansion", "\"11.5e-6 /K\""))?;
+        let elastic = raw.material.as_deref().and_then(material::preset);
+        let modulus_pa = match (&raw.modulus, elastic) {
+            (Some(text), _) => self.bounded(
+                &format!("{key}.modulus"),
+                text,
+                Dimension::Pressure,
+                MODULUS_BOUNDS,
+            )?,
+            (None, Some(p)) => p.material.modulus_pa,
+            (None, None) => {
+                return Err(self.error(
+                    &format!("{key}.modulus"),
+                    "missing elastic modulus (the thermal stress is E α times the temperature)",
+                    Some("add modulus = \"210 GPa\" or material = \"steel\""),
+                ))
+            }
+        };
+        let poisson = match (raw.poisson, elastic) {
+            (Some(nu), _) => self.poisson(&format!("{key}.poisson"), nu)?,
+            (None, Some(p)) => p.material.poisson,
+            (None, None) => {
+                return Err(self.error(
+                    &format!("{key}.poisson"),
+                    "missing Poisson's ratio",
+                    Some("add poisson = 0.3 or material = \"steel\""),
+                ))
+            }
+        };
+        Ok(Some(ThermalBody {
+            properties: ThermalProperties {
+                conductivity_w_per_m_k: conductivity,
+                diffusivity_m2_per_s: diffusivity,
+                expansion_per_k: expansion,
+            },
+            material: Material {
+                modulus_pa,
+                poisson,
+            },
+            speed_m_per_s,
+        }))
+    }
+}

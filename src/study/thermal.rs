@@ -1,0 +1,392 @@
+//! What a scene with `[thermal]` computes: the frictional flux on a grid (the Hertz pressure,
+//! or the solved rough pressure), the bodies' flash temperatures and the heat partition, and
+//! body 1's thermal stress added to the contact stress, searched over depth for the maxima.
+//!
+//! Grids: a Hertz contact is gridded over `-2.5a <= x <= 1.5a` (the wake lies behind, at
+//! -x) and `|y| <= 1.5b`, with cells of `a/20` or finer, fine enough that the cell Péclet
+//! number `V dx / (2κ)` stays within [`MAX_CELL_PECLET`]; a line contact (plane problem)
+//! takes the same x range as a row of strips for the temperature, and for the stresses a
+//! band of rows long enough in y (`|y| <= max(6a, 6 √(a/u))`, `u = V/(2κ)`) that the middle
+//! row sees the band as endless. A rough contact uses the surface's own grid, the window
+//! taken as the nominal contact.
+
+use ndarray::{Array2, Array3};
+
+use crate::contact::rough::RoughSolution;
+use crate::scene::{ContactKind, Scene, ThermalBody, ThermalSpec};
+use crate::solution::dcfft::{layer_stress, DcFft, DcFftError, TractionGrid, TractionGridError};
+use crate::thermal::heating::frictional_flux;
+use crate::thermal::kernel::CellGrid;
+use crate::thermal::line::LineTemperature;
+use crate::thermal::stress::ThermalStressOperator;
+use crate::thermal::temperature::{TemperatureOperator, MAX_CELL_PECLET};
+use crate::transform::TransformError;
+
+/// Depths of the stress maxima search, in units of the half-width `a`.
+pub const DEPTHS_OVER_A: [f64; 16] = [
+    0.0, 0.005, 0.01, 0.02, 0.04, 0.07, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.3,
+];
+
+/// The most cells a Hertz contact's thermal grid takes along x.
+pub const MAX_CELLS: usize = 640;
+
+/// Why the heating of a scene cannot be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum ThermalStudyError {
+    #[error("the scene has no [thermal] table")]
+    NoThermal,
+    #[error("thermal.speed: the cell Péclet number V dx / (2κ) of body {body} is {cell_peclet:.3}, more than {MAX_CELL_PECLET} the grid resolves (the heat penetrates less than a cell while the contact crosses one)\nhint: {hint}")]
+    CellPeclet {
+        body: usize,
+        cell_peclet: f64,
+        hint: &'static str,
+    },
+    #[error(transparent)]
+    Transform(#[from] TransformError),
+    #[error(transparent)]
+    DcFft(#[from] DcFftError),
+    #[error(transparent)]
+    Tractions(#[from] TractionGridError),
+}
+
+/// The heating of one body.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BodyHeating {
+    /// `V a / (2κ)`.
+    pub peclet: f64,
+    /// Its share of the heat.
+    pub share: f64,
+    /// The surface temperature rise on the grid (K), `[ny, nx]`, under its share.
+    pub temperature_k: Array2<f64>,
+    pub max_temperature_rise_k: f64,
+    /// The mean over the contact (cells with pressure).
+    pub mean_temperature_rise_k: f64,
+    /// Where the maximum is, m from the contact's centre.
+    pub max_at_m: [f64; 2],
+}
+
+/// A stress maximum and where it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Maximum {
+    pub value_pa: f64,
+    pub x_m: f64,
+    pub y_m: f64,
+    pub depth_m: f64,
+}
+
+impl Maximum {
+    const NONE: Maximum = Maximum {
+        value_pa: f64::NEG_INFINITY,
+        x_m: 0.0,
+        y_m: 0.0,
+        depth_m: 0.0,
+    };
+
+    fn offer(&mut self, value: f64, x: f64, y: f64, depth: f64) {
+        if value > self.value_pa {
+            *self = Maximum {
+                value_pa: value,
+                x_m: x,
+                y_m: y,
+                depth_m: depth,
+            };
+        }
+    }
+}
+
+/// Everything a thermal scene computes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ThermalStudy {
+    pub spec: ThermalSpec,
+    /// The length `a` of the Péclet number (half-width, radius, semi-axis along x, or half the
+    /// rough window), m.
+    pub half_width_m: f64,
+    /// The grid: `[ny, nx]`, `[dx, dy]` (m), and the centre of cell `[0, 0]` relative to the
+    /// contact's centre (m).
+    pub shape: [usize; 2],
+    pub spacing_m: [f64; 2],
+    pub origin_m: [f64; 2],
+    /// The frictional flux (W/m²) on the grid.
+    pub flux_w_per_m2: Array2<f64>,
+    pub body1: BodyHeating,
+    pub body2: Option<BodyHeating>,
+    /// Largest von Mises stress of the thermal stress alone, of the contact stress alone, and
+    /// of their sum, over the grid and [`DEPTHS_OVER_A`].
+    pub thermal_von_mises: Maximum,
+    pub contact_von_mises: Maximum,
+    pub total_von_mises: Maximum,
+    /// Largest Tresca stress (`σ1 - σ3`) of the contact and of the total.
+    pub contact_tresca: Maximum,
+    pub total_tresca: Maximum,
+}
+
+impl ThermalStudy {
+    /// The cell centre `[row, column]`'s position, m from the contact's centre.
+    pub fn position_m(&self, row: usize, column: usize) -> [f64; 2] {
+        [
+            self.origin_m[0] + column as f64 * self.spacing_m[0],
+            self.origin_m[1] + row as f64 * self.spacing_m[1],
+        ]
+    }
+}
+
+/// `u = V / (2κ)` of a body.
+fn inverse_length(body: &ThermalBody) -> f64 {
+    body.speed_m_per_s / (2.0 * body.properties.diffusivity_m2_per_s)
+}
+
+/// The grid and flux of a scene: `(shape, spacing, origin, pressure)`.
+struct Gridded {
+    shape: [usize; 2],
+    spacing_m: [f64; 2],
+    origin_m: [f64; 2],
+    pressure_pa: Array2<f64>,
+    half_width_m: f64,
+    line: bool,
+}
+
+fn hertz_grid(scene: &Scene, spec: &ThermalSpec) -> Result<Gridded, ThermalStudyError> {
+    let contact = &scene.contact;
+    let a = contact.half_width_m();
+    let p0 = contact.p0_pa();
+    let line = contact.kind == ContactKind::Line;
+    let b = a * contact.aspect;
+    // Cells of a/20, or finer so that every heated body's cell Péclet number is at most 1,
+    // or (at most MAX_CELLS cells) at most MAX_CELL_PECLET.
+    let u = std::iter::once(&spec.body1)
+        .chain(spec.body2.iter())
+        .map(inverse_length)
+        .fold(0.0, f64::max);
+    let mut dx = a / 20.0;
+    if u * dx > 1.0 {
+        dx = 1.0 / u;
+    }
+    let mut nx = (4.0 * a / dx).ceil() as usize;
+    if nx > MAX_CELLS {
+        nx = MAX_CELLS;
+        let cell_peclet = u * 4.0 * a / nx as f64;
+        if cell_peclet > MAX_CELL_PECLET {
+            return Err(ThermalStudyError::CellPeclet {
+                body: if inverse_length(&spec.body1) >= u { 1 } else { 2 },
+                cell_peclet,
+                hint: "the Péclet number is beyond what a grid of at most 640 cells across 4a resolves (Pe up to 320); lower thermal.speed (or the bodies' speeds)",
+            });
+        }
+    }
+    let dx = 4.0 * a / nx as f64;
+    let x0 = -2.5 * a + 0.5 * dx;
+    let (ny, dy, y0) = if line {
+        let u1 = inverse_length(&spec.body1);
+        let half = (6.0 * a).max(6.0 * (a / u1).sqrt()).min(40.0 * a);
+        // An odd number of rows, one centred on y = 0, each at least a cell wide.
+        let dy = (half / 24.0).max(dx);
+        let rows = 2 * (half / dy).ceil() as usize + 1;
+        (rows, dy, -((rows / 2) as f64) * dy)
+    } else {
+        // Cells of the contact's aspect: as many across 3b as across 3a.
+        let dy = dx * b / a;
+        let ny = (3.0 * b / dy).ceil() as usize;
+        let dy = 3.0 * b / ny as f64;
+        (ny, dy, -1.5 * b + 0.5 * dy)
+    };
+    let pressure = Array2::from_shape_fn((ny, nx), |(row, column)| {
+        let x = x0 + column as f64 * dx;
+        let y = y0 + row as f64 * dy;
+        let r2 = if line {
+            (x / a).powi(2)
+        } else {
+            (x / a).powi(2) + (y / b).powi(2)
+        };
+        p0 * (1.0 - r2).max(0.0).sqrt()
+    });
+    Ok(Gridded {
+        shape: [ny, nx],
+        spacing_m: [dx, dy],
+        origin_m: [x0, y0],
+        pressure_pa: pressure,
+        half_width_m: a,
+        line,
+    })
+}
+
+fn rough_grid(solution: &RoughSolution) -> Gridded {
+    let [ny, nx] = [solution.pressure_pa.nrows(), solution.pressure_pa.ncols()];
+    let [dx, dy] = solution.spacing_m;
+    Gridded {
+        shape: [ny, nx],
+        spacing_m: [dx, dy],
+        origin_m: [-0.5 * (nx as f64 - 1.0) * dx, -0.5 * (ny as f64 - 1.0) * dy],
+        pressure_pa: solution.pressure_pa.clone(),
+        half_width_m: 0.5 * nx as f64 * dx,
+        line: false,
+    }
+}
+
+/// The heating of one body under `flux` (its whole), scaled to `share` later.
+fn body_temperature(
+    gridded: &Gridded,
+    body: &ThermalBody,
+    flux: &Array2<f64>,
+) -> Result<Array2<f64>, ThermalStudyError> {
+    let u = inverse_length(body);
+    let k = body.properties.conductivity_w_per_m_k;
+    let grid = CellGrid {
+        shape: gridded.shape,
+        spacing_m: gridded.spacing_m,
+    };
+    Ok(if gridded.line {
+        // The plane problem: one row of strips, the same on every row.
+        let middle = gridded.shape[0] / 2;
+        let row: Vec<f64> = flux.row(middle).to_vec();
+        let line = LineTemperature::new(row.len(), gridded.spacing_m[0], 0.0, u, k);
+        let t = line.apply(&row);
+        Array2::from_shape_fn(gridded.shape, |(_, c)| t[c])
+    } else {
+        TemperatureOperator::new(&grid, 0.0, u, k)?.apply(flux.view())?
+    })
+}
+
+fn heating(gridded: &Gridded, temperature: &Array2<f64>, share: f64, peclet: f64) -> BodyHeating {
+    let t = temperature.mapv(|v| v * share);
+    let mut best = (f64::NEG_INFINITY, 0, 0);
+    let (mut sum, mut count) = (0.0, 0usize);
+    let rows: Vec<usize> = if gridded.line {
+        vec![gridded.shape[0] / 2]
+    } else {
+        (0..gridded.shape[0]).collect()
+    };
+    for &row in &rows {
+        for column in 0..gridded.shape[1] {
+            let value = t[[row, column]];
+            if value > best.0 {
+                best = (value, row, column);
+            }
+            if gridded.pressure_pa[[row, column]] > 0.0 {
+                sum += value;
+                count += 1;
+            }
+        }
+    }
+    BodyHeating {
+        peclet,
+        share,
+        max_temperature_rise_k: best.0,
+        mean_temperature_rise_k: if count > 0 { sum / count as f64 } else { 0.0 },
+        max_at_m: [
+            gridded.origin_m[0] + best.2 as f64 * gridded.spacing_m[0],
+            gridded.origin_m[1] + best.1 as f64 * gridded.spacing_m[1],
+        ],
+        temperature_k: t,
+    }
+}
+
+/// Computes the heating of `scene` (with `[thermal]`); `rough` is the solved contact of a
+/// rough scene. `progress(done, total)` after each depth of the stress search.
+pub fn study(
+    scene: &Scene,
+    rough: Option<&RoughSolution>,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<ThermalStudy, ThermalStudyError> {
+    let spec = scene.thermal.ok_or(ThermalStudyError::NoThermal)?;
+    let gridded = match rough {
+        Some(solution) => rough_grid(solution),
+        None => hertz_grid(scene, &spec)?,
+    };
+    let friction = scene.contact.friction;
+    let poisson = spec.body1.material.poisson;
+    let flux = gridded
+        .pressure_pa
+        .mapv(|p| frictional_flux(friction, p, spec.sliding_speed_m_per_s));
+    for (index, body) in std::iter::once(&spec.body1)
+        .chain(spec.body2.iter())
+        .enumerate()
+    {
+        let cell_peclet = inverse_length(body) * gridded.spacing_m[0];
+        if cell_peclet > MAX_CELL_PECLET {
+            return Err(ThermalStudyError::CellPeclet {
+                body: index + 1,
+                cell_peclet,
+                hint: "a rough surface's grid is fixed by its samples: lower thermal.speed, or resample the surface more finely",
+            });
+        }
+    }
+    let a = gridded.half_width_m;
+    let peclet = |body: &ThermalBody| inverse_length(body) * a;
+    let t1 = body_temperature(&gridded, &spec.body1, &flux)?;
+    let whole1 = heating(&gridded, &t1, 1.0, peclet(&spec.body1));
+    let (share, body2) = match &spec.body2 {
+        Some(b2) => {
+            let t2 = body_temperature(&gridded, b2, &flux)?;
+            let whole2 = heating(&gridded, &t2, 1.0, peclet(b2));
+            let share = spec.partition.body1_share(
+                whole1.mean_temperature_rise_k,
+                whole2.mean_temperature_rise_k,
+            );
+            (share, Some(heating(&gridded, &t2, 1.0 - share, peclet(b2))))
+        }
+        None => (spec.partition.body1_share(1.0, 0.0), None),
+    };
+    let body1 = heating(&gridded, &t1, share, peclet(&spec.body1));
+
+    // Stresses: body 1's share of the flux, and the contact tractions (p, q = μ p in +x).
+    let grid = CellGrid {
+        shape: gridded.shape,
+        spacing_m: gridded.spacing_m,
+    };
+    let traction_grid = TractionGrid::new(
+        [0.0, 0.0],
+        [gridded.spacing_m[0] / a, gridded.spacing_m[1] / a],
+        Some(gridded.pressure_pa.clone()),
+        Some(gridded.pressure_pa.mapv(|p| friction * p)),
+        None,
+    )?;
+    let contact_operator = DcFft::new(&traction_grid, poisson)?;
+    let body1_flux = flux.mapv(|q| q * share);
+    let e_alpha_over_k = spec.body1.material.modulus_pa * spec.body1.properties.expansion_per_k
+        / spec.body1.properties.conductivity_w_per_m_k;
+    let u1 = inverse_length(&spec.body1);
+    let rows: Vec<usize> = if gridded.line {
+        vec![gridded.shape[0] / 2]
+    } else {
+        (0..gridded.shape[0]).collect()
+    };
+    let mut maxima = [Maximum::NONE; 5];
+    for (done, depth_over_a) in DEPTHS_OVER_A.iter().enumerate() {
+        let z = depth_over_a * a;
+        let thermal: Array3<f64> =
+            ThermalStressOperator::new(&grid, z, u1, poisson, e_alpha_over_k)?
+                .apply(body1_flux.view())?;
+        let contact: Array3<f64> = contact_operator.layer(depth_over_a * 1.0)?;
+        let total = &thermal + &contact;
+        for &row in &rows {
+            for column in 0..gridded.shape[1] {
+                let x = gridded.origin_m[0] + column as f64 * gridded.spacing_m[0];
+                let y = gridded.origin_m[1] + row as f64 * gridded.spacing_m[1];
+                let th = layer_stress(&thermal.view(), row, column);
+                let co = layer_stress(&contact.view(), row, column);
+                let to = layer_stress(&total.view(), row, column);
+                maxima[0].offer(th.von_mises(), x, y, z);
+                maxima[1].offer(co.von_mises(), x, y, z);
+                maxima[2].offer(to.von_mises(), x, y, z);
+                maxima[3].offer(2.0 * co.max_shear(), x, y, z);
+                maxima[4].offer(2.0 * to.max_shear(), x, y, z);
+            }
+        }
+        progress(done + 1, DEPTHS_OVER_A.len());
+    }
+    Ok(ThermalStudy {
+        spec,
+        half_width_m: a,
+        shape: gridded.shape,
+        spacing_m: gridded.spacing_m,
+        origin_m: gridded.origin_m,
+        flux_w_per_m2: flux,
+        body1,
+        body2,
+        thermal_von_mises: maxima[0],
+        contact_von_mises: maxima[1],
+        total_von_mises: maxima[2],
+        contact_tresca: maxima[3],
+        total_tresca: maxima[4],
+    })
+}

@@ -1,0 +1,63 @@
+//! `thermal`: the frictional heating of a scene reported; the study shared with `hertz` and
+//! `contact`.
+
+use std::path::Path;
+
+use anyhow::{bail, Context, Result};
+
+use crate::commands::{print_out, progress_bar};
+use crate::surface_commands::{npy_path, write_npy};
+use stressfield::contact::rough::RoughSolution;
+use stressfield::report::thermal::ThermalReport;
+use stressfield::scene::{ContactKind, Scene};
+use stressfield::study;
+use stressfield::study::thermal::ThermalStudy;
+
+/// The heating of `scene` (which has `[thermal]`), with a progress bar over the depths.
+pub(crate) fn study(scene: &Scene, rough: Option<&RoughSolution>) -> Result<ThermalStudy> {
+    let bar = progress_bar(study::thermal::DEPTHS_OVER_A.len() as u64);
+    bar.set_message("thermal stress by depth");
+    let result = study::thermal::study(scene, rough, &mut |done, _| bar.set_position(done as u64));
+    bar.finish_and_clear();
+    result.with_context(|| format!("scene {}: frictional heating", scene.name))
+}
+
+/// `thermal SCENE [--json] [--temperature FILE.npy]`.
+pub fn thermal(scene_path: &Path, json: bool, temperature: Option<&Path>) -> Result<()> {
+    let scene = Scene::load(scene_path)?;
+    if scene.thermal.is_none() {
+        bail!(
+            "{} has no [thermal] table\nhint: add [thermal] with speed = \"2 m/s\" and the bodies' thermal properties (material = \"steel\", or conductivity, diffusivity, expansion); see the README's frictional heating section",
+            scene_path.display()
+        );
+    }
+    if let Some(path) = temperature {
+        npy_path("--temperature", path)?;
+    }
+    let rough = if scene.contact.kind == ContactKind::Rough {
+        Some(
+            study::rough::solve(&scene, &mut |_, _| {})
+                .with_context(|| format!("scene {}", scene.name))?,
+        )
+    } else {
+        None
+    };
+    let study = study(&scene, rough.as_ref())?;
+    let report = ThermalReport::new(&study);
+    if let Some(path) = temperature {
+        write_npy(path, &study.body1.temperature_k, "temperature")?;
+    }
+    if json {
+        print_out(&format!("{}\n", report.json()))
+    } else {
+        let mut text = format!("scene {}\n", scene.name);
+        text.push_str(&report.text(&study));
+        if let Some(path) = temperature {
+            text.push_str(&format!(
+                "body 1's surface temperature rise written to {} (K, float64, [rows, columns], row = y)\n",
+                path.display()
+            ));
+        }
+        print_out(&text)
+    }
+}

@@ -70,13 +70,30 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     let report = ContactReport::new(&scene, &solution);
     maxima_bar.finish_and_clear();
     let report = report?;
+    // Frictional heating on the solved pressure, when the scene asks for it.
+    let thermal = match scene.thermal {
+        Some(_) => Some(crate::thermal_commands::study(&scene, Some(&solution))?),
+        None => None,
+    };
     if let Some(path) = pressure {
         write_npy(path, &solution.pressure_pa, "pressure")?;
     }
     if json {
-        print_out(&format!("{}\n", report.json()))
+        let mut text = report.json();
+        if let Some(study) = &thermal {
+            // The heating as one more key, "thermal", after the contact's (their order kept).
+            let block = stressfield::report::thermal::ThermalReport::new(study)
+                .json()
+                .replace('\n', "\n  ");
+            let body = text.trim_end().trim_end_matches('}').trim_end().to_string();
+            text = format!("{body},\n  \"thermal\": {block}\n}}");
+        }
+        print_out(&format!("{text}\n"))
     } else {
         let mut text = report.text(&scene);
+        if let Some(study) = &thermal {
+            text.push_str(&stressfield::report::thermal::ThermalReport::new(study).text(study));
+        }
         if let Some(path) = pressure {
             text.push_str(&format!(
                 "pressure written to {} (Pa, float64, [rows, columns], row = y)\n",

@@ -13,7 +13,7 @@ use stressfield::surface::stats::{characterise, Options};
 
 const WORN: &str = "scenes/surfaces/worn.asc";
 
-fn json(output: &std::process::Output) -> serde_json::Map<String, Value> {
+pub(crate) fn json(output: &std::process::Output) -> serde_json::Map<String, Value> {
     assert!(output.status.success(), "{}", stderr(output));
     match serde_json::from_slice(&output.stdout).expect("one JSON object") {
         Value::Object(map) => map,
@@ -21,7 +21,7 @@ fn json(output: &std::process::Output) -> serde_json::Map<String, Value> {
     }
 }
 
-fn number(map: &serde_json::Map<String, Value>, key: &str) -> f64 {
+pub(crate) fn number(map: &serde_json::Map<String, Value>, key: &str) -> f64 {
     map.get(key)
         .unwrap_or_else(|| panic!("key {key} missing"))
         .as_f64()

@@ -2,29 +2,13 @@
 //! keys in SI, the temperature file), the same values in `hertz`, and bad input refused with
 //! the key and the fix.
 
+use crate::cli::{assert_fails_with, repo, run, stderr};
+use crate::contracts::{json, number};
 use ndarray::Array2;
 use ndarray_npy::read_npy;
-use serde_json::Value;
-
-use crate::cli::{assert_fails_with, repo, run, stderr};
 use stressfield::scene::Scene;
 
 const SLIDING: &str = "scenes/thermal_sliding_sphere.toml";
-
-fn json(output: &std::process::Output) -> serde_json::Map<String, Value> {
-    assert!(output.status.success(), "{}", stderr(output));
-    match serde_json::from_slice(&output.stdout).expect("one JSON object") {
-        Value::Object(map) => map,
-        other => panic!("not an object: {other}"),
-    }
-}
-
-fn number(map: &serde_json::Map<String, Value>, key: &str) -> f64 {
-    map.get(key)
-        .unwrap_or_else(|| panic!("key {key} missing"))
-        .as_f64()
-        .unwrap_or_else(|| panic!("{key} is not a number: {:?}", map[key]))
-}
 
 #[test]
 fn thermal_json_keeps_the_contract_and_the_temperature_file_is_the_map() {

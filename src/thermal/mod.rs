@@ -12,6 +12,7 @@
 //! the frame of the contact body 1's material flows in -x: it enters at the leading edge
 //! `x = +a`, leaves at the trailing edge `x = -a`, and carries the heat behind.
 
+pub mod distortion;
 pub mod heating;
 pub mod kernel;
 pub mod line;

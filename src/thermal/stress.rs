@@ -172,7 +172,7 @@ pub fn stationary_rectangle(x0: f64, x1: f64, y0: f64, y1: f64, z: f64) -> [f64;
     ]
 }
 
-fn sinc(t: f64) -> f64 {
+pub(super) fn sinc(t: f64) -> f64 {
     if t.abs() < 1e-4 {
         1.0 - t * t / 6.0
     } else {
@@ -182,7 +182,7 @@ fn sinc(t: f64) -> f64 {
 
 /// Nodes and weights on `[0, cut]`: panels graded by 4 towards 0 below `cut / 8`, uniform
 /// panels of `7 cut / 128` above, 6 Gauss–Legendre points each.
-fn band_rule(cut: f64) -> (Vec<f64>, Vec<f64>) {
+pub(super) fn band_rule(cut: f64) -> (Vec<f64>, Vec<f64>) {
     let (nodes, weights) = gauss_legendre(6);
     let mut edges = vec![0.0];
     let mut edge = cut / 8.0 / 4f64.powi(6);
@@ -260,11 +260,11 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
 
 /// Adds `(1/4π²) ∫∫ F e^(i(ξx + ηy))` over `|ξ|, |η| <= cut` at every lattice offset, for a
 /// Hermitian `F` (`F(-ξ, -η) = conj F(ξ, η)`): twice the real part of the `ξ > 0` half.
-fn add_band(
+pub(super) fn add_band<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
     cut: f64,
-    f: &(dyn Fn(f64, f64) -> [C64; COMPONENTS] + Sync),
+    f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
 ) {
     let [ny, nx] = grid.shape;
     let [dx, dy] = grid.spacing_m;
@@ -289,7 +289,7 @@ fn add_band(
         .par_iter()
         .zip(&half_weights)
         .map(|(&xi, &w_xi)| {
-            let values: Vec<[C64; COMPONENTS]> = etas
+            let values: Vec<[C64; N]> = etas
                 .iter()
                 .zip(&eta_weights)
                 .map(|(&eta, &w)| {
@@ -300,7 +300,7 @@ fn add_band(
                     v
                 })
                 .collect();
-            let mut rows = vec![vec![C64::new(0.0, 0.0); ys.len()]; COMPONENTS];
+            let mut rows = vec![vec![C64::new(0.0, 0.0); ys.len()]; N];
             for (row, phases) in eta_phase.chunks_exact(etas.len()).enumerate() {
                 for (v, phase) in values.iter().zip(phases) {
                     for (component, value) in v.iter().enumerate() {
@@ -330,12 +330,12 @@ fn add_band(
 
 /// Adds the lattice samples of the inverse transform of `F` (free of a singularity at `k = 0`)
 /// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way.
-fn add_smooth(
+pub(super) fn add_smooth<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
     aliases: i64,
     over: usize,
-    f: &(dyn Fn(f64, f64) -> [C64; COMPONENTS] + Sync),
+    f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
 ) {
     let [ny, nx] = grid.shape;
     let [dx, dy] = grid.spacing_m;
@@ -344,14 +344,14 @@ fn add_smooth(
     let plan = RealFft2::new([my, mx]);
     let [kxs, kys] = plan.spectrum_shape();
     let (px, py) = (mx as f64 * dx, my as f64 * dy);
-    let columns: Vec<Vec<[C64; COMPONENTS]>> = (0..kxs)
+    let columns: Vec<Vec<[C64; N]>> = (0..kxs)
         .into_par_iter()
         .map(|kx| {
             let xi0 = 2.0 * PI * kx as f64 / px;
             (0..kys)
                 .map(|ky| {
                     let eta0 = 2.0 * PI * signed_index(ky, my) as f64 / py;
-                    let mut sum = [C64::new(0.0, 0.0); COMPONENTS];
+                    let mut sum = [C64::new(0.0, 0.0); N];
                     for a in -aliases..=aliases {
                         for b in -aliases..=aliases {
                             let xi = xi0 + 2.0 * PI * a as f64 / dx;
@@ -368,7 +368,7 @@ fn add_smooth(
         .collect();
     let mut work = plan.work();
     let mut periodic = Array2::zeros((my, mx));
-    for component in 0..COMPONENTS {
+    for component in 0..N {
         let mut spectrum = plan.new_spectrum();
         for (kx, column) in columns.iter().enumerate() {
             for (ky, values) in column.iter().enumerate() {

@@ -17,7 +17,15 @@ use stressfield::study::thermal::ThermalStudy;
 pub(crate) fn study(scene: &Scene, rough: Option<&RoughSolution>) -> Result<ThermalStudy> {
     let bar = progress_bar(study::thermal::DEPTHS_OVER_A.len() as u64);
     bar.set_message("thermal stress by depth");
-    let result = study::thermal::study(scene, rough, &mut |done, _| bar.set_position(done as u64));
+    let result = study::thermal::study(scene, rough, &mut |progress| match progress {
+        study::thermal::Progress::Coupled { iteration, change } => bar.set_message(format!(
+            "coupled iteration {iteration}: pressure change {change:.1e}"
+        )),
+        study::thermal::Progress::Depth { done, .. } => {
+            bar.set_message("thermal stress by depth");
+            bar.set_position(done as u64)
+        }
+    });
     bar.finish_and_clear();
     result.with_context(|| format!("scene {}: frictional heating", scene.name))
 }

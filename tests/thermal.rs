@@ -88,6 +88,32 @@ fn a_pin_is_heated_by_a_stationary_source() {
     assert!(number(&report, "max_temperature_x_m").abs() <= dx);
     assert!(number(&report, "max_temperature_y_m").abs() <= dx);
     assert_eq!(number(&report, "thermal_von_mises_max_depth_m"), 0.0);
+    // Coupled (as Liu & Wang's model): the ball's bulge shrinks the contact and raises the
+    // peak pressure; the load is the same, the iteration converged.
+    let coupled = report["coupled"].as_object().expect("a coupled object");
+    for key in [
+        "iterations",
+        "tolerance",
+        "pressure_changes",
+        "isothermal_contact_area_m2",
+        "contact_area_m2",
+        "isothermal_spots",
+        "spots",
+        "isothermal_max_pressure_pa",
+        "max_pressure_pa",
+        "distortion_over_contact_m",
+    ] {
+        assert!(!coupled[key].is_null(), "coupled.{key} missing");
+    }
+    let changes = coupled["pressure_changes"].as_array().expect("changes");
+    assert_eq!(
+        changes.len() as u64,
+        coupled["iterations"].as_u64().expect("n")
+    );
+    assert!(changes.last().and_then(|c| c.as_f64()).expect("last") < 1e-6);
+    assert!(number(coupled, "contact_area_m2") < number(coupled, "isothermal_contact_area_m2"));
+    assert!(number(coupled, "max_pressure_pa") > number(coupled, "isothermal_max_pressure_pa"));
+    assert!(number(coupled, "distortion_over_contact_m") > 0.0);
 }
 
 const BASE: &str = "format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\nfriction = 0.2\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n";
@@ -100,7 +126,11 @@ fn bad_thermal_input_names_the_key_and_the_fix() {
         (format!("{BASE}[thermal]\nspeed = \"2 m\"\n"), "thermal.speed", "unknown unit"),
         (format!("{BASE}[thermal]\nspeed = \"2 m/s\"\npartition = \"half\"\n"), "thermal.partition", "blok"),
         (format!("{BASE}[thermal]\nspeed = \"2 m/s\"\npartition = 1.5\n"), "thermal.partition", "[0, 1]"),
-        (format!("{BASE}[thermal]\nspeed = \"2 m/s\"\ncoupled = true\n"), "thermal.coupled", "coupled = false"),
+        (
+            "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\nfriction = 0.1\n[contact.body1]\nradius = \"20 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"20 mm\"\nmaterial = \"steel\"\n[thermal]\nspeed = \"1 m/s\"\ncoupled = true\n".to_string(),
+            "thermal.coupled",
+            "coupled = false",
+        ),
         (
             "format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\nfriction = 0.2\n[contact.body1]\nradius = \"flat\"\nmodulus = \"210 GPa\"\npoisson = 0.3\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[thermal]\nspeed = \"2 m/s\"\n".to_string(),
             "contact.body1.conductivity",

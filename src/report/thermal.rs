@@ -10,7 +10,11 @@
 //! `thermal_von_mises_max_depth_m`, `contact_von_mises_max_pa`,
 //! `contact_von_mises_max_depth_m`, `contact_von_mises_max_x_m`, `total_von_mises_max_x_m`,
 //! `contact_tresca_max_pa`, `total_tresca_max_pa`, `total_tresca_max_depth_m`, `half_width_m`,
-//! `rows`, `columns`, `spacing_m`. Positions are measured from the contact's centre (a rough
+//! `rows`, `columns`, `spacing_m`; `coupled` (null unless `coupled = true`): an object with
+//! `iterations`, `tolerance`, `pressure_changes`, `isothermal_contact_area_m2`,
+//! `contact_area_m2`, `isothermal_spots`, `spots`, `isothermal_max_pressure_pa`,
+//! `max_pressure_pa`, `distortion_over_contact_m` (the range of the thermal bulge over the
+//! heated contact: what the contact feels). Positions are measured from the contact's centre (a rough
 //! scene: the window's centre); the maxima are searched over the grid at the depths
 //! [`crate::study::thermal::DEPTHS_OVER_A`] times `half_width_m`.
 
@@ -51,6 +55,50 @@ pub struct ThermalReport {
     pub rows: usize,
     pub columns: usize,
     pub spacing_m: [f64; 2],
+    pub coupled: Option<CoupledReport>,
+}
+
+/// The coupled solution against the isothermal one.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CoupledReport {
+    pub iterations: usize,
+    pub tolerance: f64,
+    pub pressure_changes: Vec<f64>,
+    pub isothermal_contact_area_m2: f64,
+    pub contact_area_m2: f64,
+    pub isothermal_spots: usize,
+    pub spots: usize,
+    pub isothermal_max_pressure_pa: f64,
+    pub max_pressure_pa: f64,
+    pub distortion_over_contact_m: f64,
+}
+
+impl CoupledReport {
+    fn new(coupled: &crate::study::coupled::CoupledContact) -> Self {
+        let area = |s: &crate::contact::rough::RoughSolution| {
+            let (ny, nx) = s.pressure_pa.dim();
+            s.contact_fraction * (nx as f64 * s.spacing_m[0]) * (ny as f64 * s.spacing_m[1])
+        };
+        let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+        for (&w, &p) in coupled.distortion_m.iter().zip(&coupled.heated.pressure_pa) {
+            if p > 0.0 {
+                lo = lo.min(w);
+                hi = hi.max(w);
+            }
+        }
+        Self {
+            iterations: coupled.iterations,
+            tolerance: crate::study::coupled::TOLERANCE,
+            pressure_changes: coupled.changes.clone(),
+            isothermal_contact_area_m2: area(&coupled.isothermal),
+            contact_area_m2: area(&coupled.heated),
+            isothermal_spots: coupled.isothermal.spots,
+            spots: coupled.heated.spots,
+            isothermal_max_pressure_pa: coupled.isothermal.max_pressure_pa,
+            max_pressure_pa: coupled.heated.max_pressure_pa,
+            distortion_over_contact_m: if hi >= lo { hi - lo } else { 0.0 },
+        }
+    }
 }
 
 impl ThermalReport {
@@ -84,6 +132,7 @@ impl ThermalReport {
             rows: study.shape[0],
             columns: study.shape[1],
             spacing_m: study.spacing_m,
+            coupled: study.coupled.as_ref().map(CoupledReport::new),
         }
     }
 
@@ -108,6 +157,29 @@ impl ThermalReport {
             Partition::Blok => "Blok's (equal mean flash temperatures)".to_string(),
         };
         writeln!(out, "frictional heating")?;
+        if let Some(c) = &self.coupled {
+            let percent = |new: f64, old: f64| 100.0 * (new - old) / old;
+            writeln!(
+                out,
+                "  coupled thermo-mechanical contact: converged in {} iterations (pressure change {:.1e} < {:.0e}); thermal bulge over the contact {:.3} um",
+                c.iterations,
+                c.pressure_changes.last().copied().unwrap_or(0.0),
+                c.tolerance,
+                um(c.distortion_over_contact_m)
+            )?;
+            writeln!(
+                out,
+                "    heating changes the contact: area {:.4e} -> {:.4e} m^2 ({:+.2} %), spots {} -> {}, peak pressure {:.1} -> {:.1} MPa ({:+.2} %)",
+                c.isothermal_contact_area_m2,
+                c.contact_area_m2,
+                percent(c.contact_area_m2, c.isothermal_contact_area_m2),
+                c.isothermal_spots,
+                c.spots,
+                mpa(c.isothermal_max_pressure_pa),
+                mpa(c.max_pressure_pa),
+                percent(c.max_pressure_pa, c.isothermal_max_pressure_pa)
+            )?;
+        }
         writeln!(
             out,
             "  sliding speed {} m/s; contact over body 1 at {} m/s (Peclet V a/(2 kappa) = {:.4}){}",

@@ -8,6 +8,7 @@
 //! kind adds its arm to [`centred_solution`] (its tractions, or the solver that finds them) and,
 //! if it is drawn on its own grid, to [`plane`].
 
+pub mod coupled;
 mod grid;
 pub mod rough;
 pub mod thermal;

@@ -12,9 +12,12 @@
 
 use ndarray::{Array2, Array3};
 
-use crate::contact::rough::RoughSolution;
+use crate::contact::rough::{self, Control, RoughContactProblem, RoughSolution};
+use crate::scene::Hertz;
 use crate::scene::{ContactKind, Scene, ThermalBody, ThermalSpec};
 use crate::solution::dcfft::{layer_stress, DcFft, DcFftError, TractionGrid, TractionGridError};
+use crate::solution::elastic::Periodicity;
+use crate::study::coupled::{self, CoupledContact, CoupledError};
 use crate::thermal::heating::frictional_flux;
 use crate::thermal::kernel::CellGrid;
 use crate::thermal::line::LineTemperature;
@@ -41,6 +44,10 @@ pub enum ThermalStudyError {
         cell_peclet: f64,
         hint: &'static str,
     },
+    #[error("thermal.coupled: the coupled solution of a {0} contact needs its bodies (radii and materials) and load\nhint: give contact.load with [contact.body1] and [contact.body2], or set coupled = false")]
+    CoupledNeedsBodies(&'static str),
+    #[error(transparent)]
+    Coupled(#[from] CoupledError),
     #[error(transparent)]
     Transform(#[from] TransformError),
     #[error(transparent)]
@@ -118,6 +125,18 @@ pub struct ThermalStudy {
     /// Largest Tresca stress (`σ1 - σ3`) of the contact and of the total.
     pub contact_tresca: Maximum,
     pub total_tresca: Maximum,
+    /// The coupled thermo-mechanical contact (`coupled = true`): the heating and stresses
+    /// above are those of its heated pressure.
+    pub coupled: Option<CoupledContact>,
+}
+
+/// What the study reports while it works.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Progress {
+    /// A coupled iteration done, with its relative change of pressure.
+    Coupled { iteration: usize, change: f64 },
+    /// Depths of the stress search done, of `total`.
+    Depth { done: usize, total: usize },
 }
 
 impl ThermalStudy {
@@ -285,14 +304,63 @@ fn heating(gridded: &Gridded, temperature: &Array2<f64>, share: f64, peclet: f64
 pub fn study(
     scene: &Scene,
     rough: Option<&RoughSolution>,
-    progress: &mut dyn FnMut(usize, usize),
+    progress: &mut dyn FnMut(Progress),
 ) -> Result<ThermalStudy, ThermalStudyError> {
     let spec = scene.thermal.ok_or(ThermalStudyError::NoThermal)?;
-    let gridded = match rough {
-        Some(solution) => rough_grid(solution),
-        None => hertz_grid(scene, &spec)?,
-    };
     let friction = scene.contact.friction;
+    let mut on_coupled =
+        |iteration: usize, change: f64| progress(Progress::Coupled { iteration, change });
+    let (gridded, coupled) = match (rough, spec.coupled) {
+        (Some(solution), false) => (rough_grid(solution), None),
+        (None, false) => (hertz_grid(scene, &spec)?, None),
+        (Some(solution), true) => {
+            let problem = crate::study::rough::problem(scene)
+                .ok_or(ThermalStudyError::CoupledNeedsBodies("rough"))?;
+            let solved =
+                coupled::solve(&problem, solution.clone(), &spec, friction, &mut on_coupled)?;
+            (rough_grid(&solved.heated), Some(solved))
+        }
+        (None, true) => {
+            let mut gridded = hertz_grid(scene, &spec)?;
+            let (curvature, e_star, load) = match scene.contact.dimensional.map(|d| d.hertz) {
+                Some(Hertz::Point(point)) => {
+                    let c = 0.5 / point.effective_radius_m;
+                    ([c, c], point.effective_modulus_pa, point.load_n)
+                }
+                Some(Hertz::Elliptical(e)) => (
+                    [
+                        e.curvature.half_curvature_x_per_m,
+                        e.curvature.half_curvature_y_per_m,
+                    ],
+                    e.effective_modulus_pa,
+                    e.load_n,
+                ),
+                Some(Hertz::Line(_)) => return Err(ThermalStudyError::CoupledNeedsBodies("line")),
+                None => return Err(ThermalStudyError::CoupledNeedsBodies("Hertz")),
+            };
+            let heights = coupled::paraboloid(
+                gridded.shape,
+                gridded.spacing_m,
+                gridded.origin_m,
+                curvature,
+            );
+            let problem = RoughContactProblem {
+                heights_m: heights.view(),
+                spacing_m: gridded.spacing_m,
+                e_star_pa: e_star,
+                periodicity: Periodicity::NonPeriodic,
+                control: Control::Load { newtons: load },
+                hardness_pa: None,
+                tolerance: rough::DEFAULT_TOLERANCE,
+                max_iterations: rough::DEFAULT_MAX_ITERATIONS,
+                memory_limit_bytes: crate::field::memory_limit_bytes(),
+            };
+            let isothermal = rough::solve(&problem, &mut |_, _| {}).map_err(CoupledError::from)?;
+            let solved = coupled::solve(&problem, isothermal, &spec, friction, &mut on_coupled)?;
+            gridded.pressure_pa = solved.heated.pressure_pa.clone();
+            (gridded, Some(solved))
+        }
+    };
     let poisson = spec.body1.material.poisson;
     let flux = gridded
         .pressure_pa
@@ -372,7 +440,10 @@ pub fn study(
                 maxima[4].offer(2.0 * to.max_shear(), x, y, z);
             }
         }
-        progress(done + 1, DEPTHS_OVER_A.len());
+        progress(Progress::Depth {
+            done: done + 1,
+            total: DEPTHS_OVER_A.len(),
+        });
     }
     Ok(ThermalStudy {
         spec,
@@ -388,5 +459,6 @@ pub fn study(
         total_von_mises: maxima[2],
         contact_tresca: maxima[3],
         total_tresca: maxima[4],
+        coupled,
     })
 }

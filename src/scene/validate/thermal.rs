@@ -111,11 +111,30 @@ impl Validator<'_> {
         let body2_speed = speed("thermal.body2_speed", &table.body2_speed, 0.0)?;
         let partition = self.partition(table)?;
         let coupled = table.coupled.unwrap_or(false);
-        if coupled {
+        if coupled && contact.kind == ContactKind::Line {
             return Err(self.error(
                 "thermal.coupled",
-                "the coupled thermo-mechanical solution (thermal distortion fed back into the contact) is not available in this version",
-                Some("set coupled = false: the heating is then computed on the isothermal pressure"),
+                "the coupled thermo-mechanical solution is computed on a gridded contact (point, elliptical or rough), not on a line contact's plane problem",
+                Some("set coupled = false: the heating is then computed on the Hertz pressure"),
+            ));
+        }
+        if coupled && contact.kind != ContactKind::Rough && contact.dimensional.is_none() {
+            return Err(self.error(
+                "thermal.coupled",
+                "the coupled solution solves the contact again, which needs the bodies' radii, materials and the load",
+                Some("give contact.load with [contact.body1] and [contact.body2], or set coupled = false"),
+            ));
+        }
+        if coupled
+            && matches!(
+                contact.rough.and_then(|r| r.control),
+                Some(crate::contact::rough::Control::Approach { .. })
+            )
+        {
+            return Err(self.error(
+                "thermal.coupled",
+                "the coupled solution needs a given load or mean pressure, not an approach (the bulge of a stationary source is defined only up to a constant)",
+                Some("give contact.load (or contact.mean_pressure) instead of contact.approach, or set coupled = false"),
             ));
         }
         let default_body = RawBody::default();

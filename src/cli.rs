@@ -83,6 +83,11 @@ pub enum Command {
         /// thermal grid, row = y) as a NumPy .npy file.
         #[arg(long, value_name = "FILE.npy")]
         temperature: Option<PathBuf>,
+        /// Also draw the heating sheet (surface temperature, sections of the temperature and of
+        /// the thermal and total von Mises stress, flash temperature against speed) as a PNG
+        /// (or SVG, by the extension).
+        #[arg(long, value_name = "FILE.png")]
+        figure: Option<PathBuf>,
     },
 }
 

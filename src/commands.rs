@@ -95,7 +95,13 @@ pub fn run(command: Command) -> Result<()> {
             scene,
             json,
             temperature,
-        } => crate::thermal_commands::thermal(&scene, json, temperature.as_deref()),
+            figure,
+        } => crate::thermal_commands::thermal(
+            &scene,
+            json,
+            temperature.as_deref(),
+            figure.as_deref(),
+        ),
     }
 }
 

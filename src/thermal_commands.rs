@@ -31,7 +31,12 @@ pub(crate) fn study(scene: &Scene, rough: Option<&RoughSolution>) -> Result<Ther
 }
 
 /// `thermal SCENE [--json] [--temperature FILE.npy]`.
-pub fn thermal(scene_path: &Path, json: bool, temperature: Option<&Path>) -> Result<()> {
+pub fn thermal(
+    scene_path: &Path,
+    json: bool,
+    temperature: Option<&Path>,
+    figure: Option<&Path>,
+) -> Result<()> {
     let scene = Scene::load(scene_path)?;
     if scene.thermal.is_none() {
         bail!(
@@ -42,6 +47,15 @@ pub fn thermal(scene_path: &Path, json: bool, temperature: Option<&Path>) -> Res
     if let Some(path) = temperature {
         npy_path("--temperature", path)?;
     }
+    let svg = match figure.and_then(|p| p.extension()).and_then(|e| e.to_str()) {
+        None if figure.is_none() => false,
+        Some("png") => false,
+        Some("svg") => true,
+        _ => bail!(
+            "--figure {}: the figure is written as .png or .svg\nhint: give a file name ending in .png or .svg",
+            figure.map(|p| p.display().to_string()).unwrap_or_default()
+        ),
+    };
     let rough = if scene.contact.kind == ContactKind::Rough {
         Some(
             study::rough::solve(&scene, &mut |_, _| {})
@@ -52,14 +66,41 @@ pub fn thermal(scene_path: &Path, json: bool, temperature: Option<&Path>) -> Res
     };
     let study = study(&scene, rough.as_ref())?;
     let report = ThermalReport::new(&study);
+    let drawing = match figure {
+        Some(_) => {
+            let bar = progress_bar(study::thermal_sections::SECTION_STEPS as u64 + 1);
+            bar.set_message("thermal sections by depth");
+            let sections = study::thermal_sections::sections(
+                &study,
+                scene.contact.friction,
+                &mut |done, _| bar.set_position(done as u64),
+            );
+            bar.finish_and_clear();
+            let sections =
+                sections.with_context(|| format!("scene {}: heating sections", scene.name))?;
+            let sheet = stressfield::figure::thermal::thermal_sheet(&scene.name, &study, &sections);
+            Some(if svg {
+                stressfield::render::chart::sheet_svg(&sheet)?.into_bytes()
+            } else {
+                stressfield::render::encode_png(&stressfield::render::chart::sheet_png(&sheet)?)?
+            })
+        }
+        None => None,
+    };
     if let Some(path) = temperature {
         write_npy(path, &study.body1.temperature_k, "temperature")?;
+    }
+    if let (Some(path), Some(bytes)) = (figure, &drawing) {
+        stressfield::output::write_atomic(path, bytes)?;
     }
     if json {
         print_out(&format!("{}\n", report.json()))
     } else {
         let mut text = format!("scene {}\n", scene.name);
         text.push_str(&report.text(&study));
+        if let Some(path) = figure {
+            text.push_str(&format!("heating sheet written to {}\n", path.display()));
+        }
         if let Some(path) = temperature {
             text.push_str(&format!(
                 "body 1's surface temperature rise written to {} (K, float64, [rows, columns], row = y)\n",

@@ -116,6 +116,30 @@ fn a_pin_is_heated_by_a_stationary_source() {
     assert!(number(coupled, "distortion_over_contact_m") > 0.0);
 }
 
+#[test]
+fn the_heating_sheet_is_written_and_a_bad_figure_name_refused() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let png = dir.path().join("heating.png");
+    let output = run(&[
+        "thermal",
+        "scenes/thermal_ball_on_disc.toml",
+        "--figure",
+        png.to_str().expect("utf-8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let image = image::open(&png).expect("a PNG").to_rgb8();
+    assert!(image.width() > 800 && image.height() > 800);
+    let bad = dir.path().join("heating.jpg");
+    let output = run(&[
+        "thermal",
+        "scenes/thermal_ball_on_disc.toml",
+        "--figure",
+        bad.to_str().expect("utf-8"),
+    ]);
+    assert_fails_with(&output, &["--figure", ".png or .svg"]);
+    assert!(!bad.exists());
+}
+
 const BASE: &str = "format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\nfriction = 0.2\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n";
 
 #[test]

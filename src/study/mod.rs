@@ -12,6 +12,7 @@ pub mod coupled;
 mod grid;
 pub mod rough;
 pub mod thermal;
+pub mod thermal_sections;
 
 use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::ContactError;

@@ -128,6 +128,8 @@ pub struct ThermalStudy {
     /// The coupled thermo-mechanical contact (`coupled = true`): the heating and stresses
     /// above are those of its heated pressure.
     pub coupled: Option<CoupledContact>,
+    /// A line contact (plane problem): every row is the same.
+    pub line: bool,
 }
 
 /// What the study reports while it works.
@@ -460,5 +462,6 @@ pub fn study(
         contact_tresca: maxima[3],
         total_tresca: maxima[4],
         coupled,
+        line: gridded.line,
     })
 }

@@ -1,6 +1,8 @@
 //! From a scene to a drawable figure: evaluates each panel's field on the grid and converts
 //! everything to the figure's display units.
 
+pub mod thermal;
+
 use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};

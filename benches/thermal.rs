@@ -1,0 +1,110 @@
+//! Frictional heating (issue 21): the flash temperature of a 512² gridded flux at Pe = 1 and
+//! 100 (the operator built and applied: influence coefficients, then one DC-FFT), and one
+//! coupled thermo-mechanical rough solve (isothermal solve, then the coupled iteration) at 256²
+//! and 512². Compare with the isothermal solve of `rough_contact` (512²).
+//!
+//! Temperature: a Hertzian flux `q0 √(1 - r²/a²)` over a grid of `4a` square (cells of
+//! `a/128`), `u = Pe / a`. Coupled: the self-affine roughness of `rough_contact` (Hurst 0.8,
+//! rms slope 1) scaled to Sq 0.05 um on a steel ball of radius 2 mm (the `rough_ball_on_flat`
+//! scene's kind, cells of 0.5 um at 256²; 0.25 um at 512²) on a steel flat under 0.5 N,
+//! μ = 0.1 at 1 m/s, all heat into the flat.
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use ndarray::Array2;
+use stressfield::contact::material::Material;
+use stressfield::contact::rough::{self, Control, RoughContactProblem, DEFAULT_TOLERANCE};
+use stressfield::scene::{ThermalBody, ThermalSpec};
+use stressfield::solution::elastic::Periodicity;
+use stressfield::study::coupled;
+use stressfield::surface::generate::{generate, Amplitude, Form, Generator, Spectrum};
+use stressfield::thermal::heating::Partition;
+use stressfield::thermal::kernel::CellGrid;
+use stressfield::thermal::material::thermal_preset;
+use stressfield::thermal::temperature::TemperatureOperator;
+
+const STEEL: Material = Material {
+    modulus_pa: 210e9,
+    poisson: 0.3,
+};
+
+fn temperature(c: &mut Criterion) {
+    let mut group = c.benchmark_group("thermal_temperature");
+    group.sample_size(10);
+    let n = 512;
+    let a = 1e-4;
+    let d = 4.0 * a / n as f64;
+    let grid = CellGrid {
+        shape: [n, n],
+        spacing_m: [d, d],
+    };
+    let flux = Array2::from_shape_fn((n, n), |(row, column)| {
+        let x = (column as f64 + 0.5) * d - 2.0 * a;
+        let y = (row as f64 + 0.5) * d - 2.0 * a;
+        1e8 * (1.0 - (x * x + y * y) / (a * a)).max(0.0).sqrt()
+    });
+    for peclet in [1.0, 100.0] {
+        group.bench_with_input(BenchmarkId::new("512", peclet), &peclet, |b, &peclet| {
+            b.iter(|| {
+                let mut operator =
+                    TemperatureOperator::new(&grid, 0.0, peclet / a, 50.0).expect("operator");
+                operator.apply(flux.view()).expect("apply")
+            })
+        });
+    }
+    group.finish();
+}
+
+fn coupled_solve(c: &mut Criterion) {
+    let mut group = c.benchmark_group("thermal_coupled");
+    group.sample_size(10);
+    let steel = thermal_preset("steel").expect("steel");
+    let spec = ThermalSpec {
+        sliding_speed_m_per_s: 1.0,
+        partition: Partition::Body1,
+        coupled: true,
+        body1: ThermalBody {
+            properties: steel,
+            material: STEEL,
+            speed_m_per_s: 1.0,
+        },
+        body2: None,
+    };
+    let e_star = STEEL.modulus_pa / (2.0 * (1.0 - STEEL.poisson * STEEL.poisson));
+    for n in [256, 512] {
+        let spacing = 128e-6 / n as f64;
+        let map = generate(&Generator {
+            shape: [n, n],
+            spacing_m: [spacing, spacing],
+            spectrum: Spectrum::SelfAffine {
+                hurst: 0.8,
+                rolloff_wavelength_m: 32e-6,
+                cutoff_wavelength_m: 4.0 * spacing,
+            },
+            amplitude: Amplitude::RmsHeight(0.05e-6),
+            form: Form::Sphere { radius_m: 2e-3 },
+            seed: 3,
+        })
+        .expect("surface");
+        let problem = RoughContactProblem {
+            heights_m: map.heights_m().view(),
+            spacing_m: map.spacing_m(),
+            e_star_pa: e_star,
+            periodicity: Periodicity::NonPeriodic,
+            control: Control::Load { newtons: 0.5 },
+            hardness_pa: None,
+            tolerance: DEFAULT_TOLERANCE,
+            max_iterations: 5000,
+            memory_limit_bytes: 4 << 30,
+        };
+        group.bench_with_input(BenchmarkId::new("rough_ball", n), &n, |b, _| {
+            b.iter(|| {
+                let isothermal = rough::solve(&problem, &mut |_, _| {}).expect("isothermal");
+                coupled::solve(&problem, isothermal, &spec, 0.1, &mut |_, _| {}).expect("coupled")
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, temperature, coupled_solve);
+criterion_main!(benches);

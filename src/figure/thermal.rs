@@ -1,0 +1,220 @@
+//! The frictional-heating sheet: body 1's surface temperature with the contact outlined, the
+//! xz section of the temperature under its hottest point, the thermal and total von Mises
+//! sections there, and the maximum flash temperature against the Péclet number with its
+//! asymptotes. Draws what [`crate::study::thermal`] and [`crate::study::thermal_sections`]
+//! computed; computes nothing itself.
+
+use ndarray::Array2;
+
+use crate::field::Axis;
+use crate::render::chart::{Cell, Chart, Scale, Series, Sheet, Style};
+use crate::render::{ColorMap, Figure, Levels, Mark, Panel};
+use crate::study::thermal::ThermalStudy;
+use crate::study::thermal_sections::ThermalSections;
+
+const MAP_WIDTH: u32 = 520;
+
+/// A map in µm (x across, y or depth down), values already in display units.
+#[allow(clippy::too_many_arguments)]
+fn map(
+    title: &str,
+    subtitle: String,
+    x: Axis,
+    z: Axis,
+    values: Array2<f64>,
+    value_label: &str,
+    colormap: ColorMap,
+    depth: bool,
+    outlines: Vec<Vec<(f64, f64)>>,
+) -> Figure {
+    Figure {
+        title: title.into(),
+        panels: vec![Panel {
+            subtitle,
+            x,
+            z,
+            values,
+            traction: Vec::new(),
+            half_width: 0.0,
+            outlines,
+            scale: None,
+        }],
+        value_label: value_label.into(),
+        x_label: "x (µm)".into(),
+        z_label: if depth { "z (µm)" } else { "y (µm)" }.into(),
+        vertical_is_depth: depth,
+        traction_label: String::new(),
+        colormap,
+        levels: Levels::Count(8),
+        mark: Mark::Max,
+        panel_width_px: MAP_WIDTH,
+    }
+}
+
+/// The contact's outline (µm): the isoline where the pressure (hence the flux) falls to zero,
+/// at a level just above it.
+fn contact_outline(study: &ThermalStudy, x: &Axis, y: &Axis) -> Vec<Vec<(f64, f64)>> {
+    let max = study.flux_w_per_m2.iter().fold(0.0f64, |m, &q| m.max(q));
+    crate::render::contour_lines(study.flux_w_per_m2.view(), x, y, 1e-6 * max)
+}
+
+/// The sheet of a scene's heating.
+pub fn thermal_sheet(name: &str, study: &ThermalStudy, sections: &ThermalSections) -> Sheet {
+    let [ny, nx] = study.shape;
+    let [dx, dy] = study.spacing_m;
+    let um = |v: f64| v * 1e6;
+    let x_axis = Axis::new(
+        um(study.origin_m[0]),
+        um(study.origin_m[0] + (nx - 1) as f64 * dx),
+        nx,
+    );
+    let pe = study.body1.peclet;
+    let peclet_text = format!("Pe = {pe:.2}, V = {} m/s", study.spec.sliding_speed_m_per_s);
+    // A line contact: its band of rows repeats one profile; show a strip of ±1.5 a.
+    let (surface_values, y_axis) = if study.line {
+        let rows = 31;
+        let half = 1.5 * study.half_width_m;
+        let row = study.body1.temperature_k.row(ny / 2).to_owned();
+        (
+            Array2::from_shape_fn((rows, nx), |(_, c)| row[c]),
+            Axis::new(-um(half), um(half), rows),
+        )
+    } else {
+        (
+            study.body1.temperature_k.clone(),
+            Axis::new(
+                um(study.origin_m[1]),
+                um(study.origin_m[1] + (ny - 1) as f64 * dy),
+                ny,
+            ),
+        )
+    };
+    let outline = if study.line {
+        let (a, half) = (um(study.half_width_m), 1.5 * um(study.half_width_m));
+        vec![vec![(-a, -half), (-a, half)], vec![(a, -half), (a, half)]]
+    } else {
+        contact_outline(study, &x_axis, &y_axis)
+    };
+    let surface = map(
+        "Body 1's surface temperature rise (contact outlined)",
+        if pe > 0.0 {
+            format!("{peclet_text}; the contact moves in +x, the wake trails at −x")
+        } else {
+            format!("{peclet_text}; a stationary source: body 1 carries the contact")
+        },
+        x_axis,
+        y_axis,
+        surface_values,
+        "ΔT (K)",
+        ColorMap::Inferno,
+        false,
+        outline,
+    );
+    let depth = Axis::new(
+        0.0,
+        um(*sections.depths_m.last().unwrap_or(&0.0)),
+        sections.depths_m.len(),
+    );
+    let at_row = format!("y = {:.1} µm", um(sections.y_m));
+    let temperature = map(
+        "Temperature rise under the hottest point",
+        format!("xz section at {at_row}; {peclet_text}"),
+        x_axis,
+        depth,
+        sections.temperature_k.clone(),
+        "ΔT (K)",
+        ColorMap::Inferno,
+        true,
+        Vec::new(),
+    );
+    let mpa = |a: &Array2<f64>| a.mapv(|v| v * 1e-6);
+    let thermal = map(
+        "Thermal stress alone: von Mises",
+        format!(
+            "{at_row}; E α = {:.3} MPa/K",
+            study.spec.body1.material.modulus_pa
+                * study.spec.body1.properties.expansion_per_k
+                * 1e-6
+        ),
+        x_axis,
+        depth,
+        mpa(&sections.thermal_von_mises_pa),
+        "σvM (MPa)",
+        ColorMap::Magma,
+        true,
+        Vec::new(),
+    );
+    let total = map(
+        "Contact + thermal stress: von Mises",
+        format!(
+            "{at_row}; contact alone peaks at {:.0} MPa",
+            sections
+                .contact_von_mises_pa
+                .iter()
+                .fold(0.0f64, |m, &v| m.max(v))
+                * 1e-6
+        ),
+        x_axis,
+        depth,
+        mpa(&sections.total_von_mises_pa),
+        "σvM (MPa)",
+        ColorMap::Magma,
+        true,
+        Vec::new(),
+    );
+    let mut chart = Chart::new(
+        "Maximum flash temperature of body 1 against speed",
+        "Péclet number V a / (2κ)",
+        "ΔT max (K), all heat into body 1",
+    );
+    chart.x_scale = Scale::Log;
+    chart.y_scale = Scale::Log;
+    let (lo, hi) = (
+        sections.sweep.first().map_or(0.1, |p| p.0),
+        sections.sweep.last().map_or(100.0, |p| p.0),
+    );
+    let line = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
+        (0..=40)
+            .map(|k| {
+                let pe = lo * (hi / lo).powf(k as f64 / 40.0);
+                (pe, f(pe))
+            })
+            .collect()
+    };
+    chart.series.push(Series {
+        label: "computed (DC-FFT)".into(),
+        points: sections.sweep.clone(),
+        style: Style::Markers,
+        colour: [31, 119, 180],
+    });
+    if let Some(slow) = sections.slow_per_peclet {
+        chart.series.push(Series {
+            label: "stationary limit ∝ Pe".into(),
+            points: line(&|pe| slow * pe),
+            style: Style::Dashed,
+            colour: [44, 160, 44],
+        });
+    }
+    chart.series.push(Series {
+        label: "fast limit ∝ √Pe (Jaeger, Blok)".into(),
+        points: line(&|pe| sections.fast_per_root_peclet * pe.sqrt()),
+        style: Style::Dashed,
+        colour: [214, 39, 40],
+    });
+    if pe >= lo && pe <= hi && study.body1.share > 0.0 {
+        chart.series.push(Series {
+            label: "this scene".into(),
+            points: vec![(pe, study.body1.max_temperature_rise_k / study.body1.share)],
+            style: Style::Markers,
+            colour: [0, 0, 0],
+        });
+    }
+    Sheet {
+        title: format!("{name}: frictional heating"),
+        rows: vec![
+            vec![Cell::Map(surface), Cell::Map(temperature)],
+            vec![Cell::Map(thermal), Cell::Map(total)],
+            vec![Cell::Chart(chart)],
+        ],
+    }
+}

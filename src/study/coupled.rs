@@ -78,7 +78,7 @@ struct Body {
 impl Body {
     fn new(grid: &CellGrid, body: &ThermalBody, blok: bool) -> Result<Self, TransformError> {
         let properties = &body.properties;
-        let u = body.speed_m_per_s / (2.0 * properties.diffusivity_m2_per_s);
+        let u = super::thermal::inverse_length(body);
         let k = properties.conductivity_w_per_m_k;
         let scale = (1.0 + body.material.poisson) * properties.expansion_per_k / k;
         Ok(Self {

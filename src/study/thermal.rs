@@ -152,7 +152,7 @@ impl ThermalStudy {
 }
 
 /// `u = V / (2κ)` of a body.
-fn inverse_length(body: &ThermalBody) -> f64 {
+pub(crate) fn inverse_length(body: &ThermalBody) -> f64 {
     body.speed_m_per_s / (2.0 * body.properties.diffusivity_m2_per_s)
 }
 

@@ -112,7 +112,7 @@ pub fn sections(
             .clamp(0.0, (ny - 1) as f64) as usize
     };
     let body1 = &study.spec.body1;
-    let u1 = body1.speed_m_per_s / (2.0 * body1.properties.diffusivity_m2_per_s);
+    let u1 = super::thermal::inverse_length(body1);
     let share = study.body1.share;
     let flux1 = study.flux_w_per_m2.mapv(|q| q * share);
     let speed = study.spec.sliding_speed_m_per_s;

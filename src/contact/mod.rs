@@ -127,6 +127,32 @@ impl LineContact {
     pub fn load_for_peak_pressure(&self, p0_pa: f64) -> f64 {
         self.load_n_per_m * (p0_pa / self.p0_pa).powi(2)
     }
+
+    /// The normal approach of the axes of two cylinders (`body1`, `body2`, this contact's
+    /// bodies), m: the sum over the bodies of
+    /// `δ_i = P (1 - ν_i²) / (π E_i) (2 ln(4 R_i / a) - 1)`, `a` the half-width.
+    /// `None` unless both bodies are convex cylinders: a plane problem defines the approach only
+    /// relative to points at a finite distance, here the axes (a flat or concave body has none).
+    ///
+    /// ## Reference
+    /// Johnson (1985), *Contact Mechanics*, ch. 5, the approach of the axes of two cylinders in
+    /// line contact: each cylinder's centre moves towards the contact by the half-space strain
+    /// under the Hertz pressure, integrated from the surface to the depth `R`, plus the
+    /// correction of a disc compressed along a diameter (Timoshenko & Goodier, the disc under
+    /// two opposite point loads), in which the Poisson terms cancel. The test derives it again by
+    /// quadrature of the crate's Hertz stress field.
+    pub fn approach_of_axes_m(&self, body1: &Body, body2: &Body) -> Option<f64> {
+        let a = self.half_width_m;
+        let one = |body: &Body| {
+            let r = body.radius_m;
+            (r.is_finite() && r > 0.0).then(|| {
+                let m = &body.material;
+                self.load_n_per_m * (1.0 - m.poisson * m.poisson) / (PI * m.modulus_pa)
+                    * (2.0 * (4.0 * r / a).ln() - 1.0)
+            })
+        };
+        Some(one(body1)? + one(body2)?)
+    }
 }
 
 /// Hertz point contact (two spheres, or a sphere on a flat).
@@ -189,6 +215,75 @@ mod tests {
             modulus_pa: 210e9,
             poisson: 0.3,
         }
+    }
+
+    /// The approach of a cylinder's axis derived again: the plane-strain strain `ε_zz` on the
+    /// axis under the Hertz pressure (the crate's closed-form field, McEwen) integrated by
+    /// quadrature from the surface to the depth `R`, plus the difference between a disc
+    /// compressed along a diameter by two opposite loads `P` (Timoshenko & Goodier: on the
+    /// loaded diameter `σ_zz = -(2P/π)(1/r1 + 1/r2 - 1/(2R))`, `σ_xx = P/(πR)`) and the
+    /// half-space under one (`σ_zz = -2P/(π r)`, `σ_xx = 0`), also by quadrature.
+    #[test]
+    fn cylinder_approach_from_the_strain_on_the_axis() {
+        use crate::thermal::special::integrate;
+        for (radius, nu) in [(0.017, 0.3), (0.034, 0.25), (0.002, 0.45)] {
+            let cylinder = Body {
+                radius_m: radius,
+                material: Material {
+                    modulus_pa: 210e9,
+                    poisson: nu,
+                },
+            };
+            let rigid_flat = Body {
+                radius_m: f64::INFINITY,
+                material: Material {
+                    modulus_pa: 1e30,
+                    poisson: 0.0,
+                },
+            };
+            let line = LineContact::new(&cylinder, &rigid_flat, 40e3).unwrap();
+            let (a, p0, p) = (line.half_width_m, line.p0_pa, line.load_n_per_m);
+            let e = cylinder.material.modulus_pa;
+            let strain = |sxx: f64, szz: f64| ((1.0 - nu * nu) * szz - nu * (1.0 + nu) * sxx) / e;
+            // z = a sinh t spreads the logarithmic decay evenly.
+            let half_space = integrate(
+                |t| {
+                    let z = t.sinh();
+                    let s = crate::solution::line_hertz::stress_over_p0(0.0, z, 0.0, nu);
+                    strain(s.xx * p0, s.zz * p0) * a * t.cosh()
+                },
+                0.0,
+                (radius / a).asinh(),
+                1e-13,
+            );
+            let disc = integrate(
+                |r| {
+                    let dszz = -2.0 * p / PI * (1.0 / (2.0 * radius - r) - 0.5 / radius);
+                    strain(p / (PI * radius), dszz)
+                },
+                0.0,
+                radius,
+                1e-13,
+            );
+            let by_quadrature = -(half_space + disc);
+            // Only the cylinder deforms: its own term of the formula.
+            let formula = p * (1.0 - nu * nu) / (PI * e) * (2.0 * (4.0 * radius / a).ln() - 1.0);
+            // The formula keeps the terms that survive R/a -> ∞; the rest is O((a/R)²) (here
+            // R/a from 100 to 390: relative differences of 6e-6 to 3e-7).
+            assert_relative_eq!(by_quadrature, formula, max_relative = 2e-5);
+        }
+        // Flats and concave bodies have no axis.
+        let line = LineContact::from_effective(40e3, 115e9, 0.01);
+        let flat = Body {
+            radius_m: f64::INFINITY,
+            material: steel(),
+        };
+        let cylinder = Body {
+            radius_m: 0.01,
+            material: steel(),
+        };
+        assert!(line.approach_of_axes_m(&cylinder, &flat).is_none());
+        assert!(line.approach_of_axes_m(&cylinder, &cylinder).is_some());
     }
 
     #[test]

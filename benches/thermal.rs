@@ -68,6 +68,7 @@ fn coupled_solve(c: &mut Criterion) {
             speed_m_per_s: 1.0,
         },
         body2: None,
+        gear: None,
     };
     let e_star = STEEL.modulus_pa / (2.0 * (1.0 - STEEL.poisson * STEEL.poisson));
     for n in [256, 512] {

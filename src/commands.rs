@@ -74,10 +74,8 @@ pub fn run(command: Command) -> Result<()> {
                 _ => {
                     let mut text = report::hertz(&scene);
                     if scene.thermal.is_some() {
-                        let study = crate::thermal_commands::study(&scene, None)?;
-                        text.push_str(
-                            &stressfield::report::thermal::ThermalReport::new(&study).text(&study),
-                        );
+                        let (report, study) = crate::thermal_commands::hertz_heating(&scene)?;
+                        text.push_str(&report.text(&study));
                     }
                     print_out(&text)
                 }

@@ -11,6 +11,7 @@ use stressfield::contact::rough::RoughSolution;
 use stressfield::report::thermal::ThermalReport;
 use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;
+use stressfield::study::gear_heating::GearHeating;
 use stressfield::study::thermal::ThermalStudy;
 
 /// The heating of `scene` (which has `[thermal]`), with a progress bar over the depths.
@@ -25,9 +26,40 @@ pub(crate) fn study(scene: &Scene, rough: Option<&RoughSolution>) -> Result<Ther
             bar.set_message("thermal stress by depth");
             bar.set_position(done as u64)
         }
+        study::thermal::Progress::Path { .. } => {}
     });
     bar.finish_and_clear();
     result.with_context(|| format!("scene {}: frictional heating", scene.name))
+}
+
+/// The heating of running spur gears along the path of contact, with a progress bar.
+fn gear_heating(scene: &Scene) -> Result<GearHeating> {
+    let total = (study::gear_heating::PATH_POINTS + study::thermal::DEPTHS_OVER_A.len()) as u64;
+    let bar = progress_bar(total);
+    bar.set_message("flash temperature along the path of contact");
+    let result = study::gear_heating::gear_heating(scene, &mut |progress| match progress {
+        study::thermal::Progress::Path { done, .. } => bar.set_position(done as u64),
+        study::thermal::Progress::Depth { done, .. } => {
+            bar.set_message("thermal stress by depth at the hottest point");
+            bar.set_position((study::gear_heating::PATH_POINTS + done) as u64)
+        }
+        study::thermal::Progress::Coupled { .. } => {}
+    });
+    bar.finish_and_clear();
+    result.with_context(|| format!("scene {}: frictional heating of the gears", scene.name))
+}
+
+/// The heating of a Hertz scene with `[thermal]` (gears along their path) as reported by
+/// `hertz` and `thermal`, and the study its stresses come from.
+pub(crate) fn hertz_heating(scene: &Scene) -> Result<(ThermalReport, ThermalStudy)> {
+    let with_gears = scene.thermal.and_then(|t| t.gear).is_some();
+    Ok(if with_gears {
+        let gear = gear_heating(scene)?;
+        (ThermalReport::for_gears(&gear), gear.study)
+    } else {
+        let study = study(scene, None)?;
+        (ThermalReport::new(&study), study)
+    })
 }
 
 /// `thermal SCENE [--json] [--temperature FILE.npy]`.
@@ -64,17 +96,25 @@ pub fn thermal(
     } else {
         None
     };
-    let study = study(&scene, rough.as_ref())?;
-    let report = ThermalReport::new(&study);
+    let (report, study) = match &rough {
+        Some(solution) => {
+            let study = study(&scene, Some(solution))?;
+            (ThermalReport::new(&study), study)
+        }
+        None => hertz_heating(&scene)?,
+    };
+    // The friction that made the heat (a gear mesh's own coefficient).
+    let friction = scene
+        .thermal
+        .and_then(|t| t.gear)
+        .map_or(scene.contact.friction, |g| g.friction);
     let drawing = match figure {
         Some(_) => {
             let bar = progress_bar(study::thermal_sections::SECTION_STEPS as u64 + 1);
             bar.set_message("thermal sections by depth");
-            let sections = study::thermal_sections::sections(
-                &study,
-                scene.contact.friction,
-                &mut |done, _| bar.set_position(done as u64),
-            );
+            let sections = study::thermal_sections::sections(&study, friction, &mut |done, _| {
+                bar.set_position(done as u64)
+            });
             bar.finish_and_clear();
             let sections =
                 sections.with_context(|| format!("scene {}: heating sections", scene.name))?;

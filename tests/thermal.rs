@@ -10,6 +10,20 @@ use stressfield::scene::Scene;
 
 const SLIDING: &str = "scenes/thermal_sliding_sphere.toml";
 
+/// The `thermal --json` keys the output contract names.
+const CONTRACT: [&str; 10] = [
+    "peclet",
+    "sliding_speed_m_per_s",
+    "heat_partition_body1",
+    "max_temperature_rise_k",
+    "mean_temperature_rise_k",
+    "max_temperature_x_m",
+    "max_temperature_y_m",
+    "thermal_von_mises_max_pa",
+    "total_von_mises_max_pa",
+    "total_von_mises_max_depth_m",
+];
+
 #[test]
 fn thermal_json_keeps_the_contract_and_the_temperature_file_is_the_map() {
     let dir = tempfile::tempdir().expect("temporary directory");
@@ -22,18 +36,7 @@ fn thermal_json_keeps_the_contract_and_the_temperature_file_is_the_map() {
         file.to_str().expect("utf-8"),
     ]);
     let report = json(&output);
-    for key in [
-        "peclet",
-        "sliding_speed_m_per_s",
-        "heat_partition_body1",
-        "max_temperature_rise_k",
-        "mean_temperature_rise_k",
-        "max_temperature_x_m",
-        "max_temperature_y_m",
-        "thermal_von_mises_max_pa",
-        "total_von_mises_max_pa",
-        "total_von_mises_max_depth_m",
-    ] {
+    for key in CONTRACT {
         assert!(number(&report, key).is_finite(), "{key}");
     }
     // The Péclet number is V a / (2κ) of body 1, from the scene's own Hertz radius.
@@ -221,4 +224,78 @@ fn a_line_contact_report_has_a_steady_band_temperature() {
     assert!((share - limit).abs() < 0.03, "{share} vs {limit}");
     assert!(number(&report, "max_temperature_x_m") < 0.0);
     assert!(number(&report, "thermal_von_mises_max_pa") > 0.0);
+}
+
+#[test]
+fn running_gears_report_the_path_of_contact_and_refuse_what_does_not_belong() {
+    // The lecture notes' spur gears (Problem 1) at 1500 rpm: the contract keys at the hottest
+    // point of the path and the path itself, zero heat at the pitch point.
+    let report = json(&run(&["thermal", "scenes/gear_pitch_point.toml", "--json"]));
+    for key in CONTRACT {
+        assert!(number(&report, key).is_finite(), "{key}");
+    }
+    let path = report.get("gear_path").expect("gear_path");
+    let array = |key: &str| -> Vec<f64> {
+        path.get(key)
+            .and_then(|v| v.as_array())
+            .unwrap_or_else(|| panic!("gear_path.{key}"))
+            .iter()
+            .map(|v| v.as_f64().expect("number"))
+            .collect()
+    };
+    let s = array("s_m");
+    let sliding = array("sliding_speed_m_per_s");
+    let t1 = array("max_temperature_rise_k");
+    let pitch = s.iter().position(|&s| s == 0.0).expect("pitch point");
+    assert_eq!(sliding[pitch], 0.0);
+    assert_eq!(t1[pitch], 0.0);
+    let hottest = path
+        .get("hottest_s_m")
+        .and_then(|v| v.as_f64())
+        .expect("hottest");
+    let max = t1.iter().cloned().fold(0.0, f64::max);
+    assert!((number(&report, "max_temperature_rise_k") - max).abs() < 1e-12 * max);
+    assert!(hottest != 0.0);
+    // `hertz` answers the homework's normal approach (two cylinders) and prints the path.
+    let output = run(&["hertz", "scenes/gear_pitch_point.toml"]);
+    assert!(output.status.success());
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(text.contains("approach of the axes"), "{text}");
+    assert!(
+        text.contains("<- hottest") && text.contains("<- pitch point"),
+        "{text}"
+    );
+
+    let gears = "format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.gears]\nmodule = \"5 mm\"\nteeth = [20, 40]\npressure_angle = \"20 deg\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n";
+    let cases = [
+        (format!("{gears}[thermal]\nfriction = 0.05\n"), "thermal.pinion_speed", "rpm"),
+        (
+            format!("{gears}[thermal]\npinion_speed = \"1500 rpm\"\nspeed = \"2 m/s\"\nfriction = 0.05\n"),
+            "thermal.speed",
+            "pinion_speed",
+        ),
+        (format!("{gears}[thermal]\npinion_speed = \"1500 rpm\"\n"), "thermal.friction", "pitch point"),
+        (
+            format!("{gears}[thermal]\npinion_speed = \"1500 m/s\"\nfriction = 0.05\n"),
+            "thermal.pinion_speed",
+            "unknown unit",
+        ),
+        (
+            format!("{BASE}[thermal]\nspeed = \"2 m/s\"\npinion_speed = \"1500 rpm\"\n"),
+            "thermal.pinion_speed",
+            "[contact.gears]",
+        ),
+        (
+            gears.replace("[20, 40]", "[12, 200]").replace("5 mm", "1 mm")
+                + "[thermal]\npinion_speed = \"1500 rpm\"\nfriction = 0.05\n",
+            "contact.gears",
+            "interfere",
+        ),
+    ];
+    let dir = tempfile::tempdir().expect("temporary directory");
+    for (k, (text, key, fix)) in cases.iter().enumerate() {
+        let path = dir.path().join(format!("gears{k}.toml"));
+        std::fs::write(&path, text).expect("write");
+        assert_fails_with(&run(&["check", path.to_str().expect("utf-8")]), &[key, fix]);
+    }
 }

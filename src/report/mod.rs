@@ -287,7 +287,14 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                         "mean pressure                pm = {} MPa (= π p0 / 4)",
                         text::fixed(line.mean_pressure_pa * 1e-6, 2)
                     )?;
-                    writeln!(out, "approach                     not defined by a 2-D line contact alone (it depends on the bodies' size)")?;
+                    match line.approach_of_axes_m(&d.body1, &d.body2) {
+                        Some(delta) => writeln!(
+                            out,
+                            "approach of the axes         δ  = {} µm (two cylinders: Σ P (1 − ν²)/(π E) (2 ln(4R/a) − 1), Johnson 1985 ch. 5)",
+                            text::fixed(delta * 1e6, 4)
+                        )?,
+                        None => writeln!(out, "approach                     not defined by a 2-D line contact with a flat or concave body (it depends on the bodies' size)")?,
+                    }
                 }
                 Hertz::Point(point) => {
                     writeln!(

@@ -14,7 +14,14 @@
 //! `iterations`, `tolerance`, `pressure_changes`, `isothermal_contact_area_m2`,
 //! `contact_area_m2`, `isothermal_spots`, `spots`, `isothermal_max_pressure_pa`,
 //! `max_pressure_pa`, `distortion_over_contact_m` (the range of the thermal bulge over the
-//! heated contact: what the contact feels). Positions are measured from the contact's centre (a rough
+//! heated contact: what the contact feels); `gear_path` (null unless the scene is a pair of
+//! running spur gears: the contract keys are then those of the hottest point of the path of
+//! contact): an object with `pinion_speed_rad_per_s`, `friction`, `contact_ratio`,
+//! `path_start_m`, `path_end_m`, `hottest_s_m`, and per point of the path the arrays `s_m`,
+//! `pairs`, `load_n_per_m`, `pinion_radius_m`, `gear_radius_m`, `half_width_m`,
+//! `max_pressure_pa`, `pinion_flank_speed_m_per_s`, `gear_flank_speed_m_per_s`,
+//! `sliding_speed_m_per_s`, `peclet`, `heat_partition_body1`, `max_temperature_rise_k`,
+//! `body2_max_temperature_rise_k`, `blok_temperature_rise_k`. Positions are measured from the contact's centre (a rough
 //! scene: the window's centre); the maxima are searched over the grid at the depths
 //! [`crate::study::thermal::DEPTHS_OVER_A`] times `half_width_m`.
 
@@ -22,6 +29,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use crate::study::gear_heating::{GearHeating, PathPoint};
 use crate::study::thermal::ThermalStudy;
 use crate::thermal::heating::Partition;
 
@@ -56,6 +64,142 @@ pub struct ThermalReport {
     pub columns: usize,
     pub spacing_m: [f64; 2],
     pub coupled: Option<CoupledReport>,
+    pub gear_path: Option<GearPathReport>,
+}
+
+/// Spur gears: the heating along the path of contact. The contract keys above are those of
+/// the hottest point of the path (`hottest_s_m`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GearPathReport {
+    pub pinion_speed_rad_per_s: f64,
+    pub friction: f64,
+    pub contact_ratio: f64,
+    pub path_start_m: f64,
+    pub path_end_m: f64,
+    pub hottest_s_m: f64,
+    /// Per point of the path (m from the pitch point, + towards the pinion's tip).
+    pub s_m: Vec<f64>,
+    pub pairs: Vec<usize>,
+    pub load_n_per_m: Vec<f64>,
+    pub pinion_radius_m: Vec<f64>,
+    pub gear_radius_m: Vec<f64>,
+    pub half_width_m: Vec<f64>,
+    pub max_pressure_pa: Vec<f64>,
+    pub pinion_flank_speed_m_per_s: Vec<f64>,
+    pub gear_flank_speed_m_per_s: Vec<f64>,
+    pub sliding_speed_m_per_s: Vec<f64>,
+    pub peclet: Vec<f64>,
+    pub heat_partition_body1: Vec<f64>,
+    pub max_temperature_rise_k: Vec<f64>,
+    pub body2_max_temperature_rise_k: Vec<f64>,
+    pub blok_temperature_rise_k: Vec<f64>,
+}
+
+impl GearPathReport {
+    fn new(gear: &GearHeating) -> Self {
+        let of = |f: &dyn Fn(&PathPoint) -> f64| gear.points.iter().map(f).collect::<Vec<f64>>();
+        Self {
+            pinion_speed_rad_per_s: gear.mesh.pinion_rad_per_s,
+            friction: gear.mesh.friction,
+            contact_ratio: gear.contact_ratio,
+            path_start_m: gear.path_m[0],
+            path_end_m: gear.path_m[1],
+            hottest_s_m: gear.points[gear.hottest].s_m,
+            s_m: of(&|p| p.s_m),
+            pairs: gear.points.iter().map(|p| p.pairs).collect(),
+            load_n_per_m: of(&|p| p.load_n_per_m),
+            pinion_radius_m: of(&|p| p.radii_m[0]),
+            gear_radius_m: of(&|p| p.radii_m[1]),
+            half_width_m: of(&|p| p.half_width_m),
+            max_pressure_pa: of(&|p| p.p0_pa),
+            pinion_flank_speed_m_per_s: of(&|p| p.flank_speeds_m_per_s[0]),
+            gear_flank_speed_m_per_s: of(&|p| p.flank_speeds_m_per_s[1]),
+            sliding_speed_m_per_s: of(&|p| p.sliding_speed_m_per_s),
+            peclet: of(&|p| p.peclet[0]),
+            heat_partition_body1: of(&|p| p.body1_share),
+            max_temperature_rise_k: of(&|p| p.max_temperature_rise_k[0]),
+            body2_max_temperature_rise_k: of(&|p| p.max_temperature_rise_k[1]),
+            blok_temperature_rise_k: of(&|p| p.blok_k),
+        }
+    }
+
+    fn write_text(&self, out: &mut String) -> std::fmt::Result {
+        writeln!(
+            out,
+            "spur gears running: pinion at {:.1} rpm, mesh friction {}; path of contact from {:.3} to {:.3} mm about the pitch point, contact ratio {:.4}",
+            self.pinion_speed_rad_per_s * 30.0 / std::f64::consts::PI,
+            self.friction,
+            self.path_start_m * 1e3,
+            self.path_end_m * 1e3,
+            self.contact_ratio
+        )?;
+        writeln!(
+            out,
+            "  (load shared equally by the pairs in contact; s from the pitch point, + towards the pinion's tip; Blok: 1.11 mu w Vs / (sqrt(2a) (b1 sqrt V1 + b2 sqrt V2)))"
+        )?;
+        writeln!(
+            out,
+            "  {:>8} {:>5} {:>8} {:>7} {:>8} {:>7} {:>7} {:>7} {:>7} {:>9} {:>9} {:>9}",
+            "s (mm)",
+            "pairs",
+            "w (N/mm)",
+            "a (um)",
+            "p0 (MPa)",
+            "V1",
+            "V2",
+            "Vs",
+            "Pe1",
+            "T1 (K)",
+            "T2 (K)",
+            "Blok (K)"
+        )?;
+        let n = self.s_m.len();
+        let step = (n - 1).div_ceil(10).max(1);
+        let hottest = self
+            .s_m
+            .iter()
+            .position(|&s| s == self.hottest_s_m)
+            .unwrap_or(0);
+        let pitch = self
+            .s_m
+            .iter()
+            .enumerate()
+            .fold((0, f64::INFINITY), |b, (k, s)| {
+                if s.abs() < b.1 {
+                    (k, s.abs())
+                } else {
+                    b
+                }
+            })
+            .0;
+        for k in 0..n {
+            if k % step != 0 && k != n - 1 && k != hottest && k != pitch {
+                continue;
+            }
+            writeln!(
+                out,
+                "  {:>8.3} {:>5} {:>8.2} {:>7.2} {:>8.1} {:>7.3} {:>7.3} {:>7.3} {:>7.2} {:>9.2} {:>9.2} {:>9.2}{}",
+                self.s_m[k] * 1e3,
+                self.pairs[k],
+                self.load_n_per_m[k] * 1e-3,
+                self.half_width_m[k] * 1e6,
+                self.max_pressure_pa[k] * 1e-6,
+                self.pinion_flank_speed_m_per_s[k],
+                self.gear_flank_speed_m_per_s[k],
+                self.sliding_speed_m_per_s[k],
+                self.peclet[k],
+                self.max_temperature_rise_k[k],
+                self.body2_max_temperature_rise_k[k],
+                self.blok_temperature_rise_k[k],
+                if k == hottest { "  <- hottest" } else if k == pitch { "  <- pitch point" } else { "" }
+            )?;
+        }
+        writeln!(
+            out,
+            "the hottest point of the path, s = {:.3} mm, in full:",
+            self.hottest_s_m * 1e3
+        )
+    }
 }
 
 /// The coupled solution against the isothermal one.
@@ -133,6 +277,15 @@ impl ThermalReport {
             columns: study.shape[1],
             spacing_m: study.spacing_m,
             coupled: study.coupled.as_ref().map(CoupledReport::new),
+            gear_path: None,
+        }
+    }
+
+    /// The report of running spur gears: the path, and the contract keys at its hottest point.
+    pub fn for_gears(gear: &GearHeating) -> Self {
+        Self {
+            gear_path: Some(GearPathReport::new(gear)),
+            ..Self::new(&gear.study)
         }
     }
 
@@ -151,12 +304,16 @@ impl ThermalReport {
     fn write_text(&self, out: &mut String, study: &ThermalStudy) -> std::fmt::Result {
         let um = |m: f64| m * 1e6;
         let mpa = |pa: f64| pa * 1e-6;
+        let speed = |v: f64| crate::text::significant(v, 5, 1e6, true);
         let partition = match study.spec.partition {
             Partition::Body1 => "all into body 1 (counter-face adiabatic)".to_string(),
             Partition::Fraction(f) => format!("fraction {f} into body 1, as given"),
             Partition::Blok => "Blok's (equal mean flash temperatures)".to_string(),
         };
         writeln!(out, "frictional heating")?;
+        if let Some(gear) = &self.gear_path {
+            gear.write_text(out)?;
+        }
         if let Some(c) = &self.coupled {
             let percent = |new: f64, old: f64| 100.0 * (new - old) / old;
             writeln!(
@@ -183,11 +340,11 @@ impl ThermalReport {
         writeln!(
             out,
             "  sliding speed {} m/s; contact over body 1 at {} m/s (Peclet V a/(2 kappa) = {:.4}){}",
-            self.sliding_speed_m_per_s,
-            self.body1_speed_m_per_s,
+            speed(self.sliding_speed_m_per_s),
+            speed(self.body1_speed_m_per_s),
             self.peclet,
             match (self.body2_speed_m_per_s, self.body2_peclet) {
-                (Some(v), Some(pe)) => format!(", over body 2 at {v} m/s (Peclet {pe:.4})"),
+                (Some(v), Some(pe)) => format!(", over body 2 at {} m/s (Peclet {pe:.4})", speed(v)),
                 _ => String::new(),
             }
         )?;
@@ -204,9 +361,10 @@ impl ThermalReport {
             um(self.max_temperature_y_m),
             self.mean_temperature_rise_k
         )?;
-        if let (Some(max), Some(mean)) = (
+        if let (Some(max), Some(mean), true) = (
             self.body2_max_temperature_rise_k,
             self.body2_mean_temperature_rise_k,
+            self.heat_partition_body1 < 1.0,
         ) {
             writeln!(
                 out,

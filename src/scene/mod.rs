@@ -19,8 +19,8 @@ use crate::solution::dcfft::TractionGrid;
 use raw::RawScene;
 
 pub use spec::{
-    Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
-    RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec,
+    Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit, Method, Numerical,
+    PanelSpec, RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec,
     YieldStrength,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS};

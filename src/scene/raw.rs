@@ -28,7 +28,11 @@ pub struct RawScene {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RawThermal {
-    pub speed: String,
+    pub speed: Option<String>,
+    /// Spur gears: the pinion's rotational speed (the speeds follow along the path of contact)
+    /// and the mesh's friction coefficient when it differs from `contact.friction`.
+    pub pinion_speed: Option<String>,
+    pub friction: Option<f64>,
     pub body1_speed: Option<String>,
     pub body2_speed: Option<String>,
     /// "body1", "blok", or body 1's fraction.

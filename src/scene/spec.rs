@@ -113,6 +113,18 @@ pub struct ThermalSpec {
     pub body1: ThermalBody,
     /// Body 2, when its properties are known (required unless all heat enters body 1).
     pub body2: Option<ThermalBody>,
+    /// Spur gears (`[contact.gears]`): the heating along the path of contact. The speeds
+    /// above are then those at the pitch point (no sliding).
+    pub gear: Option<GearMesh>,
+}
+
+/// The running gears of a scene with `[contact.gears]` and `[thermal]`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GearMesh {
+    /// The pinion's (body 1's) angular speed, rad/s.
+    pub pinion_rad_per_s: f64,
+    /// The friction coefficient of the mesh along the path of contact.
+    pub friction: f64,
 }
 
 /// The validated contact of a scene.

@@ -15,6 +15,8 @@ pub enum Dimension {
     Density,
     SpecificHeat,
     Expansion,
+    /// Rotational speed (rad/s).
+    RotationalSpeed,
 }
 
 impl Dimension {
@@ -78,6 +80,12 @@ impl Dimension {
                 ("J/kg/K", 1.0),
             ],
             Dimension::Expansion => &[("/K", 1.0), ("1/K", 1.0), ("/degC", 1.0)],
+            Dimension::RotationalSpeed => &[
+                ("rpm", std::f64::consts::PI / 30.0),
+                ("1/min", std::f64::consts::PI / 30.0),
+                ("rad/s", 1.0),
+                ("rev/s", 2.0 * std::f64::consts::PI),
+            ],
         }
     }
 
@@ -96,6 +104,7 @@ impl Dimension {
             Dimension::Density => "\"7850 kg/m^3\"",
             Dimension::SpecificHeat => "\"475 J/(kg K)\"",
             Dimension::Expansion => "\"11.5e-6 /K\"",
+            Dimension::RotationalSpeed => "\"1500 rpm\"",
         }
     }
 
@@ -114,6 +123,7 @@ impl Dimension {
             Dimension::Density => "kg/m^3",
             Dimension::SpecificHeat => "J/(kg K)",
             Dimension::Expansion => "/K",
+            Dimension::RotationalSpeed => "rad/s",
         }
     }
 

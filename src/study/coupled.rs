@@ -266,6 +266,7 @@ mod tests {
                 speed_m_per_s: speed,
             },
             body2: None,
+            gear: None,
         };
         let isothermal = rough::solve(&problem, &mut |_, _| {})?;
         solve(&problem, isothermal, &spec, 0.1, &mut |_, _| {})

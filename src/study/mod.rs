@@ -9,6 +9,7 @@
 //! if it is drawn on its own grid, to [`plane`].
 
 pub mod coupled;
+pub mod gear_heating;
 mod grid;
 pub mod rough;
 pub mod thermal;

@@ -38,6 +38,10 @@ pub const MAX_CELLS: usize = 640;
 pub enum ThermalStudyError {
     #[error("the scene has no [thermal] table")]
     NoThermal,
+    #[error("a spur-gear scene is heated along its path of contact (study::gear_heating), not at the pitch point, where the teeth roll")]
+    GearScene,
+    #[error("the scene is not a pair of running spur gears ([contact.gears] with [thermal] pinion_speed)")]
+    NotGears,
     #[error("thermal.speed: the cell Péclet number V dx / (2κ) of body {body} is {cell_peclet:.3}, more than {MAX_CELL_PECLET} the grid resolves (the heat penetrates less than a cell while the contact crosses one)\nhint: {hint}")]
     CellPeclet {
         body: usize,
@@ -139,6 +143,8 @@ pub enum Progress {
     Coupled { iteration: usize, change: f64 },
     /// Depths of the stress search done, of `total`.
     Depth { done: usize, total: usize },
+    /// Points of a gear's path of contact done, of `total`.
+    Path { done: usize, total: usize },
 }
 
 impl ThermalStudy {
@@ -301,6 +307,63 @@ fn heating(gridded: &Gridded, temperature: &Array2<f64>, share: f64, peclet: f64
     }
 }
 
+/// The flux and the bodies' flash temperatures on a grid.
+struct Heated {
+    flux: Array2<f64>,
+    body1: BodyHeating,
+    body2: Option<BodyHeating>,
+}
+
+/// The frictional flux `μ p V` on `gridded` and each body's temperature under its share (the
+/// partition of `spec`; Blok's found from the bodies' mean temperatures under the whole flux).
+fn heat(gridded: &Gridded, spec: &ThermalSpec, friction: f64) -> Result<Heated, ThermalStudyError> {
+    let flux = gridded
+        .pressure_pa
+        .mapv(|p| frictional_flux(friction, p, spec.sliding_speed_m_per_s));
+    for (index, body) in std::iter::once(&spec.body1)
+        .chain(spec.body2.iter())
+        .enumerate()
+    {
+        let cell_peclet = inverse_length(body) * gridded.spacing_m[0];
+        if cell_peclet > MAX_CELL_PECLET {
+            return Err(ThermalStudyError::CellPeclet {
+                body: index + 1,
+                cell_peclet,
+                hint: "a rough surface's grid is fixed by its samples: lower thermal.speed, or resample the surface more finely",
+            });
+        }
+    }
+    let a = gridded.half_width_m;
+    let peclet = |body: &ThermalBody| inverse_length(body) * a;
+    let t1 = body_temperature(gridded, &spec.body1, &flux)?;
+    let whole1 = heating(gridded, &t1, 1.0, peclet(&spec.body1));
+    let (share, body2) = match &spec.body2 {
+        Some(b2) => {
+            let t2 = body_temperature(gridded, b2, &flux)?;
+            let whole2 = heating(gridded, &t2, 1.0, peclet(b2));
+            let share = spec.partition.body1_share(
+                whole1.mean_temperature_rise_k,
+                whole2.mean_temperature_rise_k,
+            );
+            (share, Some(heating(gridded, &t2, 1.0 - share, peclet(b2))))
+        }
+        None => (spec.partition.body1_share(1.0, 0.0), None),
+    };
+    let body1 = heating(gridded, &t1, share, peclet(&spec.body1));
+    Ok(Heated { flux, body1, body2 })
+}
+
+/// The flash temperatures of a Hertz scene (line, point or elliptical, with `[thermal]`) on
+/// the study's grid, without the stresses: `(half-width, body 1, body 2)`.
+pub(crate) fn hertz_flash(
+    scene: &Scene,
+    spec: &ThermalSpec,
+) -> Result<(f64, BodyHeating, Option<BodyHeating>), ThermalStudyError> {
+    let gridded = hertz_grid(scene, spec)?;
+    let heated = heat(&gridded, spec, scene.contact.friction)?;
+    Ok((gridded.half_width_m, heated.body1, heated.body2))
+}
+
 /// Computes the heating of `scene` (with `[thermal]`); `rough` is the solved contact of a
 /// rough scene. `progress(done, total)` after each depth of the stress search.
 pub fn study(
@@ -309,6 +372,9 @@ pub fn study(
     progress: &mut dyn FnMut(Progress),
 ) -> Result<ThermalStudy, ThermalStudyError> {
     let spec = scene.thermal.ok_or(ThermalStudyError::NoThermal)?;
+    if spec.gear.is_some() {
+        return Err(ThermalStudyError::GearScene);
+    }
     let friction = scene.contact.friction;
     let mut on_coupled =
         |iteration: usize, change: f64| progress(Progress::Coupled { iteration, change });
@@ -364,39 +430,9 @@ pub fn study(
         }
     };
     let poisson = spec.body1.material.poisson;
-    let flux = gridded
-        .pressure_pa
-        .mapv(|p| frictional_flux(friction, p, spec.sliding_speed_m_per_s));
-    for (index, body) in std::iter::once(&spec.body1)
-        .chain(spec.body2.iter())
-        .enumerate()
-    {
-        let cell_peclet = inverse_length(body) * gridded.spacing_m[0];
-        if cell_peclet > MAX_CELL_PECLET {
-            return Err(ThermalStudyError::CellPeclet {
-                body: index + 1,
-                cell_peclet,
-                hint: "a rough surface's grid is fixed by its samples: lower thermal.speed, or resample the surface more finely",
-            });
-        }
-    }
+    let Heated { flux, body1, body2 } = heat(&gridded, &spec, friction)?;
+    let share = body1.share;
     let a = gridded.half_width_m;
-    let peclet = |body: &ThermalBody| inverse_length(body) * a;
-    let t1 = body_temperature(&gridded, &spec.body1, &flux)?;
-    let whole1 = heating(&gridded, &t1, 1.0, peclet(&spec.body1));
-    let (share, body2) = match &spec.body2 {
-        Some(b2) => {
-            let t2 = body_temperature(&gridded, b2, &flux)?;
-            let whole2 = heating(&gridded, &t2, 1.0, peclet(b2));
-            let share = spec.partition.body1_share(
-                whole1.mean_temperature_rise_k,
-                whole2.mean_temperature_rise_k,
-            );
-            (share, Some(heating(&gridded, &t2, 1.0 - share, peclet(b2))))
-        }
-        None => (spec.partition.body1_share(1.0, 0.0), None),
-    };
-    let body1 = heating(&gridded, &t1, share, peclet(&spec.body1));
 
     // Stresses: body 1's share of the flux, and the contact tractions (p, q = μ p in +x).
     let grid = CellGrid {

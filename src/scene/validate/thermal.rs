@@ -3,7 +3,7 @@
 #[allow(clippy::wildcard_imports)]
 use super::*;
 use crate::scene::raw::RawThermal;
-use crate::scene::spec::{ThermalBody, ThermalSpec};
+use crate::scene::spec::{GearMesh, ThermalBody, ThermalSpec};
 use crate::thermal::heating::Partition;
 use crate::thermal::material::{thermal_preset, ThermalProperties, THERMAL_PRESETS};
 
@@ -13,6 +13,14 @@ const SPEED_BOUNDS: Bounds = Bounds {
     hi: 1e4,
     why: "from creep (nm/s) to beyond any sliding contact (10 km/s)",
 };
+/// Pinion speeds, rad/s.
+const PINION_SPEED_BOUNDS: Bounds = Bounds {
+    lo: 1e-3,
+    hi: 1e5,
+    why: "from a creeping drive (0.01 rpm) to beyond turbine gears (1e6 rpm)",
+};
+/// Friction coefficients of a gear mesh.
+const MAX_FRICTION: f64 = 1.0;
 /// Conductivities, W/(m K).
 const CONDUCTIVITY_BOUNDS: Bounds = Bounds {
     lo: 1e-3,
@@ -80,21 +88,73 @@ impl Validator<'_> {
                 ))
             }
         }
-        if contact.friction <= 0.0 {
+        let gears = contact.dimensional.and_then(|d| d.gears);
+        let friction = match (gears, table.friction) {
+            (Some(_), Some(f)) if f > 0.0 && f <= MAX_FRICTION => f,
+            (Some(_), Some(f)) => {
+                return Err(self.error(
+                    "thermal.friction",
+                    format!(
+                        "the mesh's friction coefficient must lie in (0, {MAX_FRICTION}], got {}",
+                        crate::text::number(f)
+                    ),
+                    Some("gears run with about 0.03 to 0.08 when lubricated"),
+                ))
+            }
+            (None, Some(_)) => {
+                return Err(self.error(
+                    "thermal.friction",
+                    "a separate friction coefficient for the heat belongs to gear scenes",
+                    Some("set contact.friction, which makes both the traction and the heat"),
+                ))
+            }
+            (_, None) => contact.friction,
+        };
+        if friction <= 0.0 {
             return Err(self.error(
-                "contact.friction",
+                if gears.is_some() { "thermal.friction" } else { "contact.friction" },
                 "frictional heating needs friction: with friction = 0 no heat is made",
-                Some("give contact.friction > 0, or remove [thermal]"),
+                Some(if gears.is_some() {
+                    "give thermal.friction > 0 (the mesh's friction along the path; the pitch point itself rolls), or remove [thermal]"
+                } else {
+                    "give contact.friction > 0, or remove [thermal]"
+                }),
             ));
         }
-        let sliding = self.bounded("thermal.speed", &table.speed, Dimension::Speed, SPEED_BOUNDS)
-            .map_err(|mut e| {
-                e.hint = Some(format!(
-                    "the sliding speed must be positive (a contact that does not slide makes no frictional heat); {}",
-                    e.hint.unwrap_or_default()
-                ));
-                e
-            })?;
+        let gear = match gears {
+            Some(pair) => Some(self.gear_mesh(table, &pair, friction)?),
+            None => {
+                if table.pinion_speed.is_some() {
+                    return Err(self.error(
+                        "thermal.pinion_speed",
+                        "a pinion speed belongs to gear scenes",
+                        Some("add [contact.gears], or give the sliding speed as thermal.speed"),
+                    ));
+                }
+                None
+            }
+        };
+        let sliding = match (&gear, &table.speed) {
+            // At the pitch point the teeth roll: the path's sliding speeds are computed from
+            // the pinion's speed.
+            (Some(_), _) => 0.0,
+            (None, None) => {
+                return Err(self.error(
+                    "thermal.speed",
+                    "missing the sliding speed",
+                    Some("add speed = \"2 m/s\" to [thermal] (the speed of the contact over body 1)"),
+                ))
+            }
+            (None, Some(text)) => self
+                .bounded("thermal.speed", text, Dimension::Speed, SPEED_BOUNDS)
+                .map_err(|mut e| {
+                    e.hint = Some(format!(
+                        "the sliding speed must be positive (a contact that does not slide makes no frictional heat); {}",
+                        e.hint.unwrap_or_default()
+                    ));
+                    e
+                })?,
+        };
         let speed = |key: &str, text: &Option<String>, default: f64| match text {
             None => Ok(default),
             Some(text) => {
@@ -107,8 +167,16 @@ impl Validator<'_> {
                 }
             }
         };
-        let body1_speed = speed("thermal.body1_speed", &table.body1_speed, sliding)?;
-        let body2_speed = speed("thermal.body2_speed", &table.body2_speed, 0.0)?;
+        let (body1_speed, body2_speed) = match (&gear, gears) {
+            (Some(mesh), Some(pair)) => {
+                let [v1, v2] = pair.flank_speeds_m_per_s(0.0, mesh.pinion_rad_per_s);
+                (v1, v2)
+            }
+            _ => (
+                speed("thermal.body1_speed", &table.body1_speed, sliding)?,
+                speed("thermal.body2_speed", &table.body2_speed, 0.0)?,
+            ),
+        };
         let partition = self.partition(table)?;
         let coupled = table.coupled.unwrap_or(false);
         if coupled && contact.kind == ContactKind::Line {
@@ -179,7 +247,65 @@ impl Validator<'_> {
             coupled,
             body1,
             body2,
+            gear,
         }))
+    }
+
+    /// The running gears: the pinion's speed, and a path of contact that the teeth can run.
+    fn gear_mesh(
+        &self,
+        table: &RawThermal,
+        pair: &crate::contact::gear::SpurGearPair,
+        friction: f64,
+    ) -> Result<GearMesh, SceneError> {
+        for (key, given) in [
+            ("thermal.speed", table.speed.is_some()),
+            ("thermal.body1_speed", table.body1_speed.is_some()),
+            ("thermal.body2_speed", table.body2_speed.is_some()),
+        ] {
+            if given {
+                return Err(self.error(
+                    key,
+                    "the speeds of gears follow from the pinion's speed along the path of contact (no sliding at the pitch point)",
+                    Some("remove it and give thermal.pinion_speed, e.g. \"1500 rpm\""),
+                ));
+            }
+        }
+        let text = table.pinion_speed.as_ref().ok_or_else(|| {
+            self.error(
+                "thermal.pinion_speed",
+                "gears need the pinion's speed: the sliding and rolling speeds along the path of contact follow from it",
+                Some("add pinion_speed = \"1500 rpm\" to [thermal]"),
+            )
+        })?;
+        let pinion_rad_per_s = self.bounded(
+            "thermal.pinion_speed",
+            text,
+            Dimension::RotationalSpeed,
+            PINION_SPEED_BOUNDS,
+        )?;
+        if pair.interferes() {
+            return Err(self.error(
+                "contact.gears",
+                "the gear's tip reaches inside the pinion's base circle: the teeth interfere (the pinion is undercut), so the path of contact is not involute throughout",
+                Some("give the pinion more teeth (at least 17 at 20 deg with standard teeth) or a larger pressure_angle"),
+            ));
+        }
+        let ratio = pair.contact_ratio();
+        if ratio < 1.0 {
+            return Err(self.error(
+                "contact.gears",
+                format!(
+                    "the contact ratio is {}: one pair of teeth leaves contact before the next engages",
+                    crate::text::approx(ratio)
+                ),
+                Some("give more teeth or a smaller pressure_angle"),
+            ));
+        }
+        Ok(GearMesh {
+            pinion_rad_per_s,
+            friction,
+        })
     }
 
     fn partition(&self, table: &RawThermal) -> Result<Partition, SceneError> {

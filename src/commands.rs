@@ -493,6 +493,18 @@ fn render_scene(
         Drawing::Figure(figure) => Some(PanelField::of_figure(figure)),
         Drawing::Sheet(_) => None,
     };
+    // A Hertz or gear scene with [thermal] also gets its heating sheet (a rough scene's:
+    // `stressfield thermal SCENE --figure`, which solves its contact once).
+    if scene.thermal.is_some()
+        && !matches!(
+            scene.contact.kind,
+            ContactKind::Rough | ContactKind::Surface
+        )
+    {
+        let heating_path = out_dir.join(format!("{}_heating.png", scene.name));
+        staged.add(&heating_path, &crate::thermal_commands::heating_png(scene)?)?;
+        written.push(heating_path.display().to_string());
+    }
     let mut lines = Vec::new();
     if options.save_field {
         match &field {

@@ -52,14 +52,61 @@ fn gear_heating(scene: &Scene) -> Result<GearHeating> {
 /// The heating of a Hertz scene with `[thermal]` (gears along their path) as reported by
 /// `hertz` and `thermal`, and the study its stresses come from.
 pub(crate) fn hertz_heating(scene: &Scene) -> Result<(ThermalReport, ThermalStudy)> {
+    let (report, study, _) = heating(scene)?;
+    Ok((report, study))
+}
+
+/// As [`hertz_heating`], with the gears' path when there is one.
+fn heating(scene: &Scene) -> Result<(ThermalReport, ThermalStudy, Option<GearHeating>)> {
     let with_gears = scene.thermal.and_then(|t| t.gear).is_some();
     Ok(if with_gears {
         let gear = gear_heating(scene)?;
-        (ThermalReport::for_gears(&gear), gear.study)
+        (
+            ThermalReport::for_gears(&gear),
+            gear.study.clone(),
+            Some(gear),
+        )
     } else {
         let study = study(scene, None)?;
-        (ThermalReport::new(&study), study)
+        (ThermalReport::new(&study), study, None)
     })
+}
+
+/// The heating sheet of `study` (with the gears' path), its sections computed with a
+/// progress bar.
+fn heating_sheet(
+    scene: &Scene,
+    study: &ThermalStudy,
+    gear: Option<&GearHeating>,
+) -> Result<stressfield::render::chart::Sheet> {
+    // The friction that made the heat (a gear mesh's own coefficient).
+    let friction = scene
+        .thermal
+        .and_then(|t| t.gear)
+        .map_or(scene.contact.friction, |g| g.friction);
+    let bar = progress_bar(study::thermal_sections::SECTION_STEPS as u64 + 1);
+    bar.set_message("thermal sections by depth");
+    let sections = study::thermal_sections::sections(study, friction, &mut |done, _| {
+        bar.set_position(done as u64)
+    });
+    bar.finish_and_clear();
+    let sections = sections.with_context(|| format!("scene {}: heating sections", scene.name))?;
+    Ok(stressfield::figure::thermal::thermal_sheet(
+        &scene.name,
+        study,
+        &sections,
+        gear,
+    ))
+}
+
+/// The heating sheet of a Hertz or gear scene with `[thermal]` as a PNG, for `render`'s
+/// batch (`NAME_heating.png` beside the scene's figure).
+pub(crate) fn heating_png(scene: &Scene) -> Result<Vec<u8>> {
+    let (_, study, gear) = heating(scene)?;
+    let sheet = heating_sheet(scene, &study, gear.as_ref())?;
+    Ok(stressfield::render::encode_png(
+        &stressfield::render::chart::sheet_png(&sheet)?,
+    )?)
 }
 
 /// `thermal SCENE [--json] [--temperature FILE.npy]`.
@@ -96,29 +143,16 @@ pub fn thermal(
     } else {
         None
     };
-    let (report, study) = match &rough {
+    let (report, study, gear) = match &rough {
         Some(solution) => {
             let study = study(&scene, Some(solution))?;
-            (ThermalReport::new(&study), study)
+            (ThermalReport::new(&study), study, None)
         }
-        None => hertz_heating(&scene)?,
+        None => heating(&scene)?,
     };
-    // The friction that made the heat (a gear mesh's own coefficient).
-    let friction = scene
-        .thermal
-        .and_then(|t| t.gear)
-        .map_or(scene.contact.friction, |g| g.friction);
     let drawing = match figure {
         Some(_) => {
-            let bar = progress_bar(study::thermal_sections::SECTION_STEPS as u64 + 1);
-            bar.set_message("thermal sections by depth");
-            let sections = study::thermal_sections::sections(&study, friction, &mut |done, _| {
-                bar.set_position(done as u64)
-            });
-            bar.finish_and_clear();
-            let sections =
-                sections.with_context(|| format!("scene {}: heating sections", scene.name))?;
-            let sheet = stressfield::figure::thermal::thermal_sheet(&scene.name, &study, &sections);
+            let sheet = heating_sheet(&scene, &study, gear.as_ref())?;
             Some(if svg {
                 stressfield::render::chart::sheet_svg(&sheet)?.into_bytes()
             } else {

@@ -9,6 +9,7 @@ use ndarray::Array2;
 use crate::field::Axis;
 use crate::render::chart::{Cell, Chart, Scale, Series, Sheet, Style};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel};
+use crate::study::gear_heating::{GearHeating, PathPoint};
 use crate::study::thermal::ThermalStudy;
 use crate::study::thermal_sections::ThermalSections;
 
@@ -59,7 +60,14 @@ fn contact_outline(study: &ThermalStudy, x: &Axis, y: &Axis) -> Vec<Vec<(f64, f6
 }
 
 /// The sheet of a scene's heating.
-pub fn thermal_sheet(name: &str, study: &ThermalStudy, sections: &ThermalSections) -> Sheet {
+/// The sheet; running gears (`gear`) add the flash temperatures along the path of contact,
+/// and the maps and sections are then those of its hottest point.
+pub fn thermal_sheet(
+    name: &str,
+    study: &ThermalStudy,
+    sections: &ThermalSections,
+    gear: Option<&GearHeating>,
+) -> Sheet {
     let [ny, nx] = study.shape;
     let [dx, dy] = study.spacing_m;
     let um = |v: f64| v * 1e6;
@@ -69,7 +77,14 @@ pub fn thermal_sheet(name: &str, study: &ThermalStudy, sections: &ThermalSection
         nx,
     );
     let pe = study.body1.peclet;
-    let peclet_text = format!("Pe = {pe:.2}, V = {} m/s", study.spec.sliding_speed_m_per_s);
+    let peclet_text = format!(
+        "Pe = {pe:.2}, V = {} m/s{}",
+        crate::text::significant(study.spec.sliding_speed_m_per_s, 4, 1e6, true),
+        gear.map_or(String::new(), |g| format!(
+            " at s = {:.2} mm on the path",
+            g.points[g.hottest].s_m * 1e3
+        ))
+    );
     // A line contact: its band of rows repeats one profile; show a strip of ±1.5 a.
     let (surface_values, y_axis) = if study.line {
         let rows = 31;
@@ -202,19 +217,92 @@ pub fn thermal_sheet(name: &str, study: &ThermalStudy, sections: &ThermalSection
         colour: [214, 39, 40],
     });
     if pe >= lo && pe <= hi && study.body1.share > 0.0 {
+        // The sweep slides at body 1's speed; the scene's flux scaled to it.
+        let to_sweep = study.spec.body1.speed_m_per_s / study.spec.sliding_speed_m_per_s;
         chart.series.push(Series {
             label: "this scene".into(),
-            points: vec![(pe, study.body1.max_temperature_rise_k / study.body1.share)],
+            points: vec![(
+                pe,
+                study.body1.max_temperature_rise_k / study.body1.share * to_sweep,
+            )],
             style: Style::Markers,
             colour: [0, 0, 0],
         });
     }
+    let mut rows = vec![
+        vec![Cell::Map(surface), Cell::Map(temperature)],
+        vec![Cell::Map(thermal), Cell::Map(total)],
+        vec![Cell::Chart(chart)],
+    ];
+    if let Some(gear) = gear {
+        rows.insert(0, gear_charts(gear));
+    }
     Sheet {
         title: format!("{name}: frictional heating"),
-        rows: vec![
-            vec![Cell::Map(surface), Cell::Map(temperature)],
-            vec![Cell::Map(thermal), Cell::Map(total)],
-            vec![Cell::Chart(chart)],
-        ],
+        rows,
     }
+}
+
+/// Running gears: the flash temperatures along the path of contact (each body's, and Blok's
+/// formula), and the sliding speed with the load per unit width.
+fn gear_charts(gear: &GearHeating) -> Vec<Cell> {
+    let mm = |p: &PathPoint| p.s_m * 1e3;
+    let series = |label: &str, f: &dyn Fn(&PathPoint) -> f64, style, colour| Series {
+        label: label.into(),
+        points: gear.points.iter().map(|p| (mm(p), f(p))).collect(),
+        style,
+        colour,
+    };
+    let rpm = gear.mesh.pinion_rad_per_s * 30.0 / std::f64::consts::PI;
+    let mut temperature = Chart::new(
+        &format!(
+            "Flash temperature along the path ({rpm:.0} rpm, μ = {})",
+            gear.mesh.friction
+        ),
+        "s from the pitch point (mm), + towards the pinion's tip",
+        "ΔT max (K)",
+    );
+    temperature.series = vec![
+        series(
+            "pinion (body 1)",
+            &|p| p.max_temperature_rise_k[0],
+            Style::Line,
+            [31, 119, 180],
+        ),
+        series(
+            "gear (body 2)",
+            &|p| p.max_temperature_rise_k[1],
+            Style::Line,
+            [255, 127, 14],
+        ),
+        series(
+            "Blok 1.11 μ w Vs / (√(2a) Σ β √V)",
+            &|p| p.blok_k,
+            Style::Dashed,
+            [120, 120, 120],
+        ),
+    ];
+    let mut kinematics = Chart::new(
+        &format!(
+            "Sliding speed and load per pair (contact ratio {:.3})",
+            gear.contact_ratio
+        ),
+        "s from the pitch point (mm), + towards the pinion's tip",
+        "Vs (m/s); w (10 N/mm)",
+    );
+    kinematics.series = vec![
+        series(
+            "sliding speed Vs (m/s)",
+            &|p| p.sliding_speed_m_per_s,
+            Style::Line,
+            [214, 39, 40],
+        ),
+        series(
+            "load per pair w (10 N/mm)",
+            &|p| p.load_n_per_m * 1e-4,
+            Style::Line,
+            [44, 160, 44],
+        ),
+    ];
+    vec![Cell::Chart(temperature), Cell::Chart(kinematics)]
 }

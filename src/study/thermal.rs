@@ -5,9 +5,9 @@
 //! Grids: a Hertz contact is gridded over `-2.5a <= x <= 1.5a` (the wake lies behind, at
 //! -x) and `|y| <= 1.5b`, with cells of `a/20` or finer, fine enough that the cell Péclet
 //! number `V dx / (2κ)` stays within [`MAX_CELL_PECLET`]; a line contact (plane problem)
-//! takes the same x range as a row of strips for the temperature, and for the stresses a
-//! band of rows long enough in y (`|y| <= max(6a, 6 √(a/u))`, `u = V/(2κ)`) that the middle
-//! row sees the band as endless. A rough contact uses the surface's own grid, the window
+//! takes the same x range as a row of strips for the temperature and the thermal stress
+//! (plane strain), and for the contact stress a band of rows long enough in y
+//! (`|y| <= max(6a, 6 √(a/u))`, `u = V/(2κ)`) that the middle row sees the band as endless. A rough contact uses the surface's own grid, the window
 //! taken as the nominal contact.
 
 use ndarray::{Array2, Array3};
@@ -21,6 +21,7 @@ use crate::study::coupled::{self, CoupledContact, CoupledError};
 use crate::thermal::heating::frictional_flux;
 use crate::thermal::kernel::CellGrid;
 use crate::thermal::line::LineTemperature;
+use crate::thermal::line_stress::LineThermalStress;
 use crate::thermal::stress::ThermalStressOperator;
 use crate::thermal::temperature::{TemperatureOperator, MAX_CELL_PECLET};
 use crate::transform::TransformError;
@@ -307,6 +308,29 @@ fn heating(gridded: &Gridded, temperature: &Array2<f64>, share: f64, peclet: f64
     }
 }
 
+/// Body 1's thermal stress `[6, ny, nx]` (Pa) at depth `z` under `flux` (W/m²): a line
+/// contact's plane strain from its middle row ([`LineThermalStress`], the same on every row),
+/// otherwise the 3-D operator.
+pub(crate) fn thermal_stress_layer(
+    grid: &CellGrid,
+    line: bool,
+    z: f64,
+    u: f64,
+    poisson: f64,
+    e_alpha_over_k: f64,
+    flux: &Array2<f64>,
+) -> Result<Array3<f64>, ThermalStudyError> {
+    let [ny, nx] = grid.shape;
+    Ok(if line {
+        let row: Vec<f64> = flux.row(ny / 2).to_vec();
+        let layer = LineThermalStress::new(nx, grid.spacing_m[0], z, u, poisson, e_alpha_over_k)
+            .apply(&row);
+        Array3::from_shape_fn((layer.nrows(), ny, nx), |(c, _, i)| layer[[c, i]])
+    } else {
+        ThermalStressOperator::new(grid, z, u, poisson, e_alpha_over_k)?.apply(flux.view())?
+    })
+}
+
 /// The flux and the bodies' flash temperatures on a grid.
 struct Heated {
     flux: Array2<f64>,
@@ -459,9 +483,15 @@ pub fn study(
     let mut maxima = [Maximum::NONE; 5];
     for (done, depth_over_a) in DEPTHS_OVER_A.iter().enumerate() {
         let z = depth_over_a * a;
-        let thermal: Array3<f64> =
-            ThermalStressOperator::new(&grid, z, u1, poisson, e_alpha_over_k)?
-                .apply(body1_flux.view())?;
+        let thermal = thermal_stress_layer(
+            &grid,
+            gridded.line,
+            z,
+            u1,
+            poisson,
+            e_alpha_over_k,
+            &body1_flux,
+        )?;
         let contact: Array3<f64> = contact_operator.layer(depth_over_a * 1.0)?;
         let total = &thermal + &contact;
         for &row in &rows {

@@ -17,7 +17,6 @@ use super::thermal::{ThermalStudy, ThermalStudyError};
 use crate::solution::dcfft::{layer_stress, DcFft, TractionGrid};
 use crate::thermal::kernel::CellGrid;
 use crate::thermal::line::LineTemperature;
-use crate::thermal::stress::ThermalStressOperator;
 use crate::thermal::temperature::{TemperatureOperator, MAX_CELL_PECLET};
 
 /// Depths of the sections: `0..=SECTION_DEPTH_OVER_A a` in this many steps.
@@ -144,8 +143,15 @@ pub fn sections(
     ];
     for (k, &z) in depths_m.iter().enumerate() {
         let t = temperature(study, &flux1, z, u1)?;
-        let thermal = ThermalStressOperator::new(&grid, z, u1, poisson, e_alpha_over_k)?
-            .apply(flux1.view())?;
+        let thermal = super::thermal::thermal_stress_layer(
+            &grid,
+            study.line,
+            z,
+            u1,
+            poisson,
+            e_alpha_over_k,
+            &flux1,
+        )?;
         let contact = contact_operator.layer(z / a)?;
         for column in 0..nx {
             let th = layer_stress(&thermal.view(), row, column);

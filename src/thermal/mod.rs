@@ -4,6 +4,7 @@
 //! - [`material`]: conductivity, diffusivity, expansion; the materials library.
 //! - [`temperature`]: the 3-D moving (or stationary) source over gridded cells, by DC-FFT.
 //! - [`line`]: the 2-D moving band (line contacts), Jaeger's line source over strips.
+//! - [`line_stress`]: the 2-D (plane-strain) thermal stress of a moving band over strips.
 //! - [`stress`]: thermoelastic stress and surface displacement of the half-space, from the
 //!   frequency-response functions, turned into influence coefficients.
 //! - [`heating`]: the frictional flux and its partition between the bodies (Blok).
@@ -16,6 +17,7 @@ pub mod distortion;
 pub mod heating;
 pub mod kernel;
 pub mod line;
+pub mod line_stress;
 pub mod material;
 pub mod special;
 pub mod stress;

@@ -443,3 +443,69 @@ fn gaussian_reference_at(x: f64, y: f64, z: f64, s: f64, two_u: f64, nu: f64) ->
     }
     out.map(|v| v / (4.0 * PI * PI))
 }
+
+/// The plane problem of a line contact: the strips' influence coefficients
+/// ([`LineThermalStress`]: low wavenumbers by a graded rule, the rest on a lattice) against
+/// the plane-strain stresses of the same Hertzian band of strips by adaptive 1-D quadrature of
+/// the response functions at η = 0 at each point, `σ(x) = (1/2π) ∫ H(ξ, 0, z) Q(ξ) e^(iξx) dξ`,
+/// `Q = Σ q_j dx sinc(ξ dx/2) e^(-iξ x_j)` (ξ = ±t² for the 1/√ξ of γ near 0). The strips are
+/// those of a line contact's study (a/20 over -2.5a..1.5a). Tolerance 1e-3 of the largest
+/// component (measured values in the output).
+#[test]
+fn line_thermal_stress_matches_the_plane_strain_inverse_transform() {
+    use super::line_stress::LineThermalStress;
+    use rustfft::num_complex::Complex;
+    let a = 1.0;
+    let nu = 0.3;
+    for (peclet, z) in [
+        (1.0, 0.25),
+        (10.0, 0.1),
+        (0.1, 0.25),
+        (1.0, 0.0),
+        (30.0, 0.02),
+    ] {
+        let u: f64 = peclet / a;
+        let dx = a / 20.0;
+        let nx = 80;
+        let x0 = -2.5 * a + 0.5 * dx;
+        let xs: Vec<f64> = (0..nx).map(|i| x0 + i as f64 * dx).collect();
+        let q: Vec<f64> = xs.iter().map(|x| (1.0 - x * x).max(0.0).sqrt()).collect();
+        let stress = LineThermalStress::new(nx, dx, z, u, nu, 1.0).apply(&q);
+        let sinc = |t: f64| if t.abs() < 1e-8 { 1.0 } else { t.sin() / t };
+        let reference = |x: f64, component: usize| {
+            let integrand = |xi: f64| {
+                let h = response(xi, 0.0, z, 2.0 * u, nu)[component];
+                let mut spectrum = Complex::new(0.0, 0.0);
+                for (&xj, &qj) in xs.iter().zip(&q) {
+                    if qj != 0.0 {
+                        spectrum +=
+                            qj * dx * sinc(0.5 * xi * dx) * Complex::from_polar(1.0, -xi * xj);
+                    }
+                }
+                (h * spectrum * Complex::from_polar(1.0, xi * x)).re / (2.0 * PI)
+            };
+            // e^(-|ξ| z) below 1e-26, or (on the surface) |H S| ~ 1/ξ² below 1e-8 of its start.
+            let top = if z > 0.0 { (60.0 / z).sqrt() } else { 1e4 };
+            integrate(
+                |t| 2.0 * t * (integrand(t * t) + integrand(-t * t)),
+                0.0,
+                top,
+                1e-11,
+            )
+        };
+        let mut largest: f64 = 0.0;
+        let mut errors = Vec::new();
+        for column in (0..nx).step_by(6) {
+            for component in [0, 1, 2, 4] {
+                let expected = reference(xs[column], component);
+                largest = largest.max(expected.abs());
+                errors.push((stress[[component, column]] - expected).abs());
+            }
+        }
+        let worst = errors.iter().fold(0.0f64, |m, &e| m.max(e)) / largest;
+        eprintln!(
+            "measured: line thermal stress vs plane-strain quadrature at Pe {peclet}, z = {z}a: {worst:.2e} of the largest"
+        );
+        assert!(worst < 1e-3, "Pe {peclet}, z {z}: {worst}");
+    }
+}

@@ -91,6 +91,9 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         print_out(&format!("{text}\n"))
     } else {
         let mut text = report.text(&scene);
+        if thermal.as_ref().is_some_and(|s| s.coupled.is_some()) {
+            text.push_str("(the contact above is the isothermal one; the heated contact of the coupled solution follows in the heating block, whose temperatures and stresses are its own)\n");
+        }
         if let Some(study) = &thermal {
             text.push_str(&stressfield::report::thermal::ThermalReport::new(study).text(study));
         }

@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 use rerun::external::re_log_encoding::DecoderApp;
 use rerun::log::{Chunk, LogMsg};
 use stressfield::record::{self, APPLICATION_ID};
-use stressfield::scene::Scene;
+use stressfield::scene::{Scene, SweepParameter};
 use stressfield::solution::line_hertz;
 
 /// What a recording holds: per entity path, its chunks.
@@ -584,9 +584,20 @@ fn every_shipped_recording_scene_records() {
         let (summary, contents) = record_in_memory(&scene);
         let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
         assert_eq!(summary.steps, steps, "{}", path.display());
+        let speed_sweep = scene
+            .sweep
+            .as_ref()
+            .is_some_and(|s| s.parameter == SweepParameter::Peclet);
         // A rough contact's load sweep logs its pressure map at every load (and places it
-        // once, statically).
-        if scene.contact.kind == stressfield::scene::ContactKind::Rough {
+        // once, statically); a speed sweep its surface temperature at every speed.
+        if speed_sweep {
+            assert_eq!(
+                contents.rows_on("/surface/field", "peclet"),
+                steps,
+                "{}",
+                path.display()
+            );
+        } else if scene.contact.kind == stressfield::scene::ContactKind::Rough {
             let timeline = record::timeline(&scene);
             assert_eq!(
                 contents.rows_on("/contact/field", timeline),
@@ -773,6 +784,226 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     assert_eq!(maxima[layer - 1], maxima[layers], "{preview}");
     // Every 2-D map view opens on its frame.
     assert!(contents.layout_paths("/VisualBounds2D").len() >= 3);
+}
+
+/// A steel ball sliding on a steel flat, its speed swept over two decades of the flat's Péclet
+/// number in three steps (Blok's partition).
+const SPEED_SWEEP: &str = r#"
+format = 1
+title = "speed sweep"
+[contact]
+kind = "point"
+load = "50 N"
+friction = 0.1
+[contact.body1]
+radius = "flat"
+material = "steel"
+[contact.body2]
+radius = "10 mm"
+material = "steel"
+[thermal]
+speed = "1 m/s"
+partition = "blok"
+[sweep]
+parameter = "peclet"
+from = 0.1
+to = 10.0
+steps = 3
+"#;
+
+#[test]
+fn a_speed_sweep_records_the_temperature_sweeping_back_on_the_peclet_timeline() {
+    let scene = scene(SPEED_SWEEP);
+    assert_eq!(record::timeline(&scene), "peclet");
+    let (summary, contents) = record_in_memory(&scene);
+    assert_eq!(summary.steps, 3);
+    for path in [
+        "/description",
+        "/log",
+        "/surface/field",
+        "/surface/border",
+        "/surface/outline",
+        "/surface/title",
+        "/surface/maximum/label",
+        "/surface/colorbar/image",
+        "/surface/colorbar/labels",
+        "/section/field",
+        "/section/surface",
+        "/section/title",
+        "/section/colorbar/labels",
+        "/charts/max_temperature",
+        "/charts/max_position",
+        "/charts/share",
+        "/series/peclet",
+        "/series/sliding_speed_m_per_s",
+        "/series/max_temperature_rise_k",
+        "/series/mean_temperature_rise_k",
+        "/series/max_x_over_a",
+        "/series/body1_share",
+    ] {
+        assert!(
+            contents.paths().contains(&path),
+            "{path} missing from {:?}",
+            contents.paths()
+        );
+    }
+    // Three steps on the timeline `peclet`, spaced geometrically; each view, its colour bar
+    // (a range per step) and each chart once per step.
+    let peclets = contents.scalars("/series/peclet", "peclet");
+    for ((t, pe), (k, expected)) in peclets.iter().zip([(0, 0.1), (1, 1.0), (2, 10.0)]) {
+        assert_eq!(*t, k);
+        assert!((pe / expected - 1.0).abs() < 1e-12, "{peclets:?}");
+    }
+    for path in [
+        "/surface/field",
+        "/section/field",
+        "/surface/colorbar/labels",
+        "/section/colorbar/labels",
+        "/charts/max_temperature",
+        "/charts/max_position",
+        "/charts/share",
+    ] {
+        assert_eq!(contents.rows_on(path, "peclet"), 3, "{path}");
+    }
+    // The speed scales with Pe; the flux with it, so the maximum grows (faster than √V,
+    // slower than V); the hottest point moves back behind the centre; the flat, over which
+    // the contact moves, takes more of the heat as it moves faster (Blok).
+    let speeds = contents.scalars("/series/sliding_speed_m_per_s", "peclet");
+    assert!(
+        (speeds[2].1 / speeds[0].1 - 100.0).abs() < 1e-9,
+        "{speeds:?}"
+    );
+    let maxima = contents.scalars("/series/max_temperature_rise_k", "peclet");
+    let means = contents.scalars("/series/mean_temperature_rise_k", "peclet");
+    for k in 0..2 {
+        let ratio = maxima[k + 1].1 / maxima[k].1;
+        assert!(ratio > 10f64.sqrt() && ratio < 10.0, "{maxima:?}");
+        assert!(means[k].1 < maxima[k].1, "{means:?} {maxima:?}");
+    }
+    let x = contents.scalars("/series/max_x_over_a", "peclet");
+    assert!(x[2].1 < x[1].1 && x[1].1 < x[0].1 && x[1].1 < 0.0, "{x:?}");
+    let share = contents.scalars("/series/body1_share", "peclet");
+    assert!(share[0].1 > 0.5 && share[2].1 > share[0].1, "{share:?}");
+    // The title names the step's Pe and V once, and the step's colour range; the labelled
+    // maximum is the series' in K.
+    let titles = contents.labels("/surface/title");
+    assert_eq!(titles.len(), 3, "{titles:?}");
+    assert!(
+        titles[0].starts_with("step 1 of 3: Pe = 0.1 (V = ")
+            && titles[0].ends_with(" m/s); body 1 takes 51.4 % of the heat"),
+        "{titles:?}"
+    );
+    // The section's title gives the step's colour range: 0 to its maximum rounded up.
+    let section_titles = contents.labels("/section/title");
+    assert_eq!(section_titles.len(), 3, "{section_titles:?}");
+    for (title, (_, max)) in section_titles.iter().zip(&maxima) {
+        let top: f64 = title
+            .split("; colours 0 to ")
+            .nth(1)
+            .and_then(|rest| rest.strip_suffix(" K (this step's range)"))
+            .and_then(|number| number.parse().ok())
+            .unwrap_or_else(|| panic!("{title}"));
+        assert!(top >= *max && top < 1.1 * max, "{title} vs {max}");
+    }
+    for title in &titles {
+        assert_eq!(title.matches("Pe = ").count(), 1, "{title}");
+    }
+    let labels = contents.labels("/surface/maximum/label");
+    for (label, (_, value)) in labels.iter().zip(&maxima) {
+        let shown: f64 = label
+            .strip_prefix("max ΔT = ")
+            .and_then(|rest| rest.split(' ').next())
+            .and_then(|number| number.parse().ok())
+            .unwrap_or_else(|| panic!("{label}"));
+        assert!(((shown - value) / value).abs() < 5e-3, "{label} vs {value}");
+    }
+    // A colour bar per step, captioned with the unit, its top tick below the step's maximum
+    // rounded up.
+    let bar = contents.labels("/surface/colorbar/labels");
+    assert_eq!(bar.iter().filter(|l| *l == "ΔT (K)").count(), 3, "{bar:?}");
+    // The layout: the two maps framed, the charts, opening at the first step.
+    let views = contents.view_names();
+    for name in [
+        "body 1's surface temperature rise (K): timeline `peclet`",
+        "xz section through the contact's centre (K), depth down",
+        "max ΔT against Pe",
+        "hottest point against Pe",
+        "share against Pe",
+    ] {
+        assert!(views.iter().any(|v| v == name), "{name} not in {views:?}");
+    }
+    assert_eq!(contents.layout_paths("/VisualBounds2D").len(), 2);
+}
+
+/// Case: a speed sweep the scene cannot make is refused before anything is written, with the
+/// key and the fix.
+#[test]
+fn a_bad_speed_sweep_names_the_key_and_leaves_no_file() {
+    let rough = ROUGH_SWEEP
+        .replace("periodic = true", "periodic = true\nfriction = 0.2")
+        .replace(
+            "[sweep]\nparameter = \"load\"\nvalues = [\"0.05 N\", \"0.2 N\", \"0.5 N\"]",
+            "[thermal]\nspeed = \"1 m/s\"\n[sweep]\nparameter = \"peclet\"\nvalues = [1.0, 10.0]",
+        );
+    assert!(rough.contains("peclet"));
+    let no_thermal =
+        SPEED_SWEEP.replace("[thermal]\nspeed = \"1 m/s\"\npartition = \"blok\"\n", "");
+    let cases: [(String, &[&str]); 5] = [
+        (
+            rough,
+            &[
+                "sweep.parameter",
+                "not for a rough contact",
+                "stressfield thermal",
+            ],
+        ),
+        (no_thermal, &["sweep.parameter", "add [thermal]"]),
+        (
+            SPEED_SWEEP.replace("from = 0.1", "from = 0.0"),
+            &[
+                "sweep.from",
+                "geometrically",
+                "three decades",
+                "from = 0.1, to = 100",
+            ],
+        ),
+        (
+            SPEED_SWEEP.replace("to = 10.0", "to = 500.0"),
+            &[
+                "sweep.to",
+                "Pe = 500 is beyond what the sweep's grid resolves",
+                "106.7",
+            ],
+        ),
+        (
+            SPEED_SWEEP.replace("from = 0.1\nto = 10.0\nsteps = 3", "values = [1.0, 0.0]"),
+            &["sweep.values[1]", "at least 0.001"],
+        ),
+    ];
+    for (text, fragments) in cases {
+        let (dir, path) = scene_file(&text);
+        let out = dir.path().join("out");
+        std::fs::create_dir(&out).expect("out/");
+        let output = stressfield()
+            .args(["record", path.to_str().expect("utf8"), "-o"])
+            .arg(out.join("case.rrd"))
+            .output()
+            .expect("the binary runs");
+        assert!(!output.status.success(), "{text}");
+        let message = stderr_of(&output);
+        for fragment in fragments {
+            assert!(
+                message.contains(fragment),
+                "`{fragment}` not in:\n{message}"
+            );
+        }
+        assert!(message.contains("hint:"), "{message}");
+        assert!(
+            names_in(&out).is_empty(),
+            "left behind: {:?}",
+            names_in(&out)
+        );
+    }
 }
 
 // --- The command line: where recordings go, and what is left behind (issue 13, cases 8, 11

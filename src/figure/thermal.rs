@@ -17,7 +17,7 @@ const MAP_WIDTH: u32 = 520;
 
 /// A map in µm (x across, y or depth down), values already in display units.
 #[allow(clippy::too_many_arguments)]
-fn map(
+pub(crate) fn map(
     title: &str,
     subtitle: String,
     x: Axis,
@@ -52,15 +52,93 @@ fn map(
     }
 }
 
-/// The contact's outline (µm): the isoline where the pressure (hence the flux) falls to zero,
-/// at a level just above it.
-fn contact_outline(study: &ThermalStudy, x: &Axis, y: &Axis) -> Vec<Vec<(f64, f64)>> {
-    let max = study.flux_w_per_m2.iter().fold(0.0f64, |m, &q| m.max(q));
-    crate::render::contour_lines(study.flux_w_per_m2.view(), x, y, 1e-6 * max)
+/// A surface temperature map as drawn, in µm.
+pub(crate) struct SurfaceMap {
+    pub(crate) x: Axis,
+    pub(crate) y: Axis,
+    /// `[rows, columns]`, K.
+    pub(crate) values: Array2<f64>,
+    /// The contact's outline.
+    pub(crate) outlines: Vec<Vec<(f64, f64)>>,
 }
 
-/// The sheet of a scene's heating.
-/// The sheet; running gears (`gear`) add the flash temperatures along the path of contact,
+/// A surface temperature map as drawn, in µm: the x axis, the y axis, the values (K) and the
+/// contact's outline. `temperature` and `flux` are on cells `spacing_m` apart from `origin_m`
+/// (the centre of cell `[0, 0]`); a line contact's band of identical rows is shown as a strip
+/// of ±1.5a with the edges x = ±a drawn, a gridded contact with the isoline where the flux (so
+/// the pressure) falls to zero, at a level just above it.
+pub(crate) fn surface_map(
+    temperature: &Array2<f64>,
+    flux: &Array2<f64>,
+    origin_m: [f64; 2],
+    spacing_m: [f64; 2],
+    half_width_m: f64,
+    line: bool,
+) -> SurfaceMap {
+    let (ny, nx) = temperature.dim();
+    let um = |v: f64| v * 1e6;
+    let x = Axis::new(
+        um(origin_m[0]),
+        um(origin_m[0] + (nx - 1) as f64 * spacing_m[0]),
+        nx,
+    );
+    if line {
+        let rows = 31;
+        let (a, half) = (um(half_width_m), 1.5 * um(half_width_m));
+        let row = temperature.row(ny / 2).to_owned();
+        return SurfaceMap {
+            x,
+            y: Axis::new(-half, half, rows),
+            values: Array2::from_shape_fn((rows, nx), |(_, c)| row[c]),
+            outlines: vec![vec![(-a, -half), (-a, half)], vec![(a, -half), (a, half)]],
+        };
+    }
+    let y = Axis::new(
+        um(origin_m[1]),
+        um(origin_m[1] + (ny - 1) as f64 * spacing_m[1]),
+        ny,
+    );
+    let max = flux.iter().fold(0.0f64, |m, &q| m.max(q));
+    let outlines = crate::render::contour_lines(flux.view(), &x, &y, 1e-6 * max);
+    SurfaceMap {
+        x,
+        y,
+        values: temperature.clone(),
+        outlines,
+    }
+}
+
+/// The two asymptotes of body 1's maximum flash temperature against the Péclet number from
+/// `lo` to `hi`, dashed: stationary `θ = slow Pe` (none for a line contact) and fast
+/// `θ = fast √Pe` (Jaeger 1942; Blok 1937; see [`crate::study::thermal_sections`]).
+pub(crate) fn asymptotes(slow: Option<f64>, fast: f64, lo: f64, hi: f64) -> Vec<Series> {
+    let line = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
+        (0..=40)
+            .map(|k| {
+                let pe = lo * (hi / lo).powf(k as f64 / 40.0);
+                (pe, f(pe))
+            })
+            .collect()
+    };
+    let mut series = Vec::new();
+    if let Some(slow) = slow {
+        series.push(Series {
+            label: "stationary limit ∝ Pe".into(),
+            points: line(&|pe| slow * pe),
+            style: Style::Dashed,
+            colour: [44, 160, 44],
+        });
+    }
+    series.push(Series {
+        label: "fast limit ∝ √Pe (Jaeger, Blok)".into(),
+        points: line(&|pe| fast * pe.sqrt()),
+        style: Style::Dashed,
+        colour: [214, 39, 40],
+    });
+    series
+}
+
+/// The sheet of a scene's heating; running gears (`gear`) add the flash temperatures along the path of contact,
 /// and the maps and sections are then those of its hottest point.
 pub fn thermal_sheet(
     name: &str,
@@ -68,13 +146,19 @@ pub fn thermal_sheet(
     sections: &ThermalSections,
     gear: Option<&GearHeating>,
 ) -> Sheet {
-    let [ny, nx] = study.shape;
-    let [dx, dy] = study.spacing_m;
     let um = |v: f64| v * 1e6;
-    let x_axis = Axis::new(
-        um(study.origin_m[0]),
-        um(study.origin_m[0] + (nx - 1) as f64 * dx),
-        nx,
+    let SurfaceMap {
+        x: x_axis,
+        y: y_axis,
+        values: surface_values,
+        outlines: outline,
+    } = surface_map(
+        &study.body1.temperature_k,
+        &study.flux_w_per_m2,
+        study.origin_m,
+        study.spacing_m,
+        study.half_width_m,
+        study.line,
     );
     let pe = study.body1.peclet;
     let peclet_text = format!(
@@ -85,31 +169,6 @@ pub fn thermal_sheet(
             g.points[g.hottest].s_m * 1e3
         ))
     );
-    // A line contact: its band of rows repeats one profile; show a strip of ±1.5 a.
-    let (surface_values, y_axis) = if study.line {
-        let rows = 31;
-        let half = 1.5 * study.half_width_m;
-        let row = study.body1.temperature_k.row(ny / 2).to_owned();
-        (
-            Array2::from_shape_fn((rows, nx), |(_, c)| row[c]),
-            Axis::new(-um(half), um(half), rows),
-        )
-    } else {
-        (
-            study.body1.temperature_k.clone(),
-            Axis::new(
-                um(study.origin_m[1]),
-                um(study.origin_m[1] + (ny - 1) as f64 * dy),
-                ny,
-            ),
-        )
-    };
-    let outline = if study.line {
-        let (a, half) = (um(study.half_width_m), 1.5 * um(study.half_width_m));
-        vec![vec![(-a, -half), (-a, half)], vec![(a, -half), (a, half)]]
-    } else {
-        contact_outline(study, &x_axis, &y_axis)
-    };
     let surface = map(
         "Body 1's surface temperature rise (contact outlined)",
         if pe > 0.0 {
@@ -188,34 +247,18 @@ pub fn thermal_sheet(
         sections.sweep.first().map_or(0.1, |p| p.0),
         sections.sweep.last().map_or(100.0, |p| p.0),
     );
-    let line = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
-        (0..=40)
-            .map(|k| {
-                let pe = lo * (hi / lo).powf(k as f64 / 40.0);
-                (pe, f(pe))
-            })
-            .collect()
-    };
     chart.series.push(Series {
         label: "computed (DC-FFT)".into(),
         points: sections.sweep.clone(),
         style: Style::Markers,
         colour: [31, 119, 180],
     });
-    if let Some(slow) = sections.slow_per_peclet {
-        chart.series.push(Series {
-            label: "stationary limit ∝ Pe".into(),
-            points: line(&|pe| slow * pe),
-            style: Style::Dashed,
-            colour: [44, 160, 44],
-        });
-    }
-    chart.series.push(Series {
-        label: "fast limit ∝ √Pe (Jaeger, Blok)".into(),
-        points: line(&|pe| sections.fast_per_root_peclet * pe.sqrt()),
-        style: Style::Dashed,
-        colour: [214, 39, 40],
-    });
+    chart.series.extend(asymptotes(
+        sections.slow_per_peclet,
+        sections.fast_per_root_peclet,
+        lo,
+        hi,
+    ));
     if pe >= lo && pe <= hi && study.body1.share > 0.0 {
         // The sweep slides at body 1's speed; the scene's flux scaled to it.
         let to_sweep = study.spec.body1.speed_m_per_s / study.spec.sliding_speed_m_per_s;

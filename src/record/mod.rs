@@ -24,15 +24,21 @@
 //!   shaded by the pressure), `volume/maximum`, `volume/surface` (the box's top face).
 //! - `log`: one line per step.
 //!
+//! Rough and surface scenes are recorded by [`rough`]; speed sweeps (`parameter = "peclet"`,
+//! scenes with `[thermal]`: `surface`, `section`, `charts/...` and `series/...` of body 1's
+//! flash temperature) by [`thermal`].
+//!
 //! Steps are time points of a sequence timeline named after the sweep's parameter (`friction`,
-//! `load`, `position`), or `step` (a single point) for a scene without a sweep. The viewer
-//! layout ([`layout`]) gives the maps most of the window, the plots and documents tabs beside.
+//! `load`, `position`, `peclet`), or `step` (a single point) for a scene without a sweep. The
+//! viewer layout ([`layout`]) gives the maps most of the window, the plots and documents tabs
+//! beside.
 
 mod isosurface;
 mod layout;
 mod rough;
 mod section;
 pub mod sink;
+mod thermal;
 mod volume;
 
 use std::path::{Path, PathBuf};
@@ -58,6 +64,8 @@ pub const APPLICATION_ID: &str = "stressfield";
 pub enum RecordError {
     #[error(transparent)]
     Field(#[from] FieldError),
+    #[error(transparent)]
+    Thermal(#[from] crate::study::thermal::ThermalStudyError),
     #[error("sweep step {step}: {message}")]
     Step { step: usize, message: String },
     #[error("rerun: {0}")]
@@ -118,12 +126,22 @@ pub fn timeline(scene: &Scene) -> &'static str {
     scene.sweep.as_ref().map_or("step", |s| s.parameter.key())
 }
 
-/// Grid rows a recording of `scene` evaluates (its sections at every step), for progress.
+/// Whether `scene` sweeps the sliding speed (a Péclet sweep, recorded by [`thermal`]).
+fn is_speed_sweep(scene: &Scene) -> bool {
+    scene
+        .sweep
+        .as_ref()
+        .is_some_and(|s| s.parameter == SweepParameter::Peclet)
+}
+
+/// Grid rows a recording of `scene` evaluates (its sections at every step), for progress;
+/// recordings of rough and surface scenes and speed sweeps report none.
 pub fn rows(scene: &Scene) -> usize {
     if matches!(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
-    ) {
+    ) || is_speed_sweep(scene)
+    {
         return 0;
     }
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
@@ -163,6 +181,9 @@ fn record_with(
         ContactKind::Rough | ContactKind::Surface
     ) {
         return rough::record(scene, stream, live, flush);
+    }
+    if is_speed_sweep(scene) {
+        return thermal::record(scene, stream, live, flush);
     }
     record_sections(scene, stream, live, on_row, flush)
 }
@@ -245,6 +266,7 @@ fn parameter_axis(scene: &Scene) -> Option<(String, Vec<f64>)> {
             scene.figure.length_unit.axis_label("x0"),
             sweep.values.clone(),
         ),
+        SweepParameter::Peclet => ("Pe".into(), sweep.values.clone()),
     })
 }
 
@@ -330,7 +352,7 @@ fn record_sections(
             &section::Fixed {
                 map: section::panel_colormap(figure0, panel),
                 caption: &caption,
-                range: ranges[k],
+                range: Some(ranges[k]),
                 surface: figure0.vertical_is_depth,
                 material: &material,
             },
@@ -610,10 +632,7 @@ fn log_charts(
     };
     add(&format!("max {symbol}"), 0, PALETTE[1], &mut chart);
     add(&format!("min {symbol}"), 1, PALETTE[0], &mut chart);
-    let png = |chart: &Chart| -> Result<Vec<u8>, RecordError> {
-        let image = chart_png(chart).map_err(|e| RecordError::Rerun(e.to_string()))?;
-        crate::render::encode_png(&image).map_err(|e| RecordError::Rerun(e.to_string()))
-    };
+    let png = chart_png_bytes;
     stream.log(
         format!("charts/{k}/maximum"),
         &rerun::EncodedImage::from_file_contents(png(&chart)?),
@@ -635,6 +654,12 @@ fn log_charts(
         )?;
     }
     Ok(())
+}
+
+/// A chart drawn as PNG bytes, for an `EncodedImage`.
+fn chart_png_bytes(chart: &Chart) -> Result<Vec<u8>, RecordError> {
+    let image = chart_png(chart).map_err(|e| RecordError::Rerun(e.to_string()))?;
+    crate::render::encode_png(&image).map_err(|e| RecordError::Rerun(e.to_string()))
 }
 
 /// The viewer layout: the section maps (and the 3-D volume) take most of the window; beside

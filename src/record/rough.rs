@@ -31,14 +31,14 @@ use super::{RecordError, Summary};
 use crate::contact::rough::{self, Control, RoughSolution};
 use crate::field::{self, Axis, Plane, Section};
 use crate::figure::{self, Drawing};
-use crate::render::chart::{chart_png, Cell, Chart, Series, Style, PALETTE};
+use crate::render::chart::{Cell, Chart, Series, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::rough_report::{search_depth_m, ContactReport};
 use crate::scene::{ContactKind, Scene};
 use crate::study::rough::{self as rough_study, REFERENCE_LENGTH_M};
 use crate::surface::HeightMap;
 
-fn rerun_error(e: impl std::fmt::Display) -> RecordError {
+pub(super) fn rerun_error(e: impl std::fmt::Display) -> RecordError {
     RecordError::Rerun(e.to_string())
 }
 
@@ -122,7 +122,7 @@ pub fn record(
             panel.subtitle.clone()
         };
         let base = format!("maps/{k}");
-        log_map_static(stream, &base, &frame, map, &shown, range)?;
+        log_map_static(stream, &base, &frame, map, &shown, Some(range))?;
         log_map_step(
             stream,
             When::Static,
@@ -196,7 +196,7 @@ pub fn record(
 }
 
 /// The size of a view in the main area (tabs beside the side column) in the planned window.
-fn main_view_px(has_timeline: bool) -> (f64, f64) {
+pub(super) fn main_view_px(has_timeline: bool) -> (f64, f64) {
     let (width, height) = super::WINDOW_PX;
     let share = f64::from(super::MAIN_SHARE / (super::MAIN_SHARE + super::SIDE_SHARE));
     let chrome = if has_timeline { 130.0 } else { 90.0 };
@@ -227,14 +227,14 @@ fn map_frame(map: &Figure, shown: &Panel, range: (f64, f64), view_px: (f64, f64)
     Frame::new(shown, false, view_px, ticks)
 }
 
-/// Logs a map's static parts: placement, border and colour bar.
-fn log_map_static(
+/// Logs a map's static parts: placement, border and, with a fixed range, the colour bar.
+pub(super) fn log_map_static(
     stream: &RecordingStream,
     base: &str,
     frame: &Frame,
     map: &Figure,
     shown: &Panel,
-    range: (f64, f64),
+    range: Option<(f64, f64)>,
 ) -> Result<(), RecordError> {
     let caption = section::panel_caption(map, shown);
     section::log_static(
@@ -254,7 +254,7 @@ fn log_map_static(
 
 /// Logs a map (as [`section::displayed`]) with its title row and labelled maximum.
 #[allow(clippy::too_many_arguments)]
-fn log_map_step(
+pub(super) fn log_map_step(
     stream: &RecordingStream,
     when: When,
     base: &str,
@@ -417,7 +417,7 @@ fn log_load_sweep(
         });
         let shown = section::displayed(&figure, &figure.panels[0]);
         if k == 0 {
-            log_map_static(stream, "contact", frame, &figure, &shown, range)?;
+            log_map_static(stream, "contact", frame, &figure, &shown, Some(range))?;
         }
         let title = format!("step {} of {steps}: {text}", k + 1);
         log_map_step(
@@ -556,8 +556,7 @@ impl LoadChart {
             style: Style::Markers,
             colour: self.colour,
         });
-        let image = chart_png(&chart).map_err(rerun_error)?;
-        crate::render::encode_png(&image).map_err(rerun_error)
+        super::chart_png_bytes(&chart)
     }
 }
 
@@ -653,7 +652,7 @@ fn log_depth_steps(
         let range = map_range(&figure, &figure.panels[0], Some((lo, hi)));
         let shown = section::displayed(&figure, &figure.panels[0]);
         if k == 0 {
-            log_map_static(stream, "depth", frame, &figure, &shown, range)?;
+            log_map_static(stream, "depth", frame, &figure, &shown, Some(range))?;
         }
         let title = format!(
             "layer {} of {count}: z = {} µm below the surface, under {}",

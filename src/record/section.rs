@@ -437,7 +437,9 @@ pub struct Fixed<'a> {
     pub map: ColorMap,
     /// The colour bar's caption, with its unit.
     pub caption: &'a str,
-    pub range: (f64, f64),
+    /// The colour range of every step, or `None` when it changes from step to step (the
+    /// caller then logs the bar at each step with [`log_colour_bar`]).
+    pub range: Option<(f64, f64)>,
     /// A line along the surface (z = 0), for a section in depth.
     pub surface: bool,
     /// Material points (displayed coordinates), marked with a dot.
@@ -445,7 +447,8 @@ pub struct Fixed<'a> {
 }
 
 /// Logs what does not change from step to step: the field's placement, a thin border around
-/// it, the colour bar with its ticks and caption, the surface line, and the material points.
+/// it, the colour bar with its ticks and caption (with a fixed range), the surface line, and
+/// the material points.
 pub fn log_static(
     stream: &RecordingStream,
     base: &str,
@@ -474,77 +477,17 @@ pub fn log_static(
             .with_colors([rerun::Color::from_rgb(110, 110, 110)])
             .with_radii([rerun::Radius::new_ui_points(0.5)]),
     )?;
-    // The colour bar: the same colour map and range as the field, high values at the top.
-    const BAR_ROWS: usize = 256;
-    let (lo, hi) = fixed.range;
-    let bar = ndarray::Array2::from_shape_fn((BAR_ROWS, 1), |(row, _)| {
-        (hi - (hi - lo) * (row as f64 + 0.5) / BAR_ROWS as f64) as f32
-    });
-    // The image is a child entity: the ticks and labels beside it are not scaled by its
-    // placement.
-    stream.log_static(
-        format!("{base}/colorbar/image"),
-        &rerun::Transform3D::from_translation_scale(
-            [frame.bar.0 as f32, frame.v.0 as f32, 0.0],
-            [
-                (frame.bar.1 - frame.bar.0) as f32,
-                ((frame.v.1 - frame.v.0) / BAR_ROWS as f64) as f32,
-                1.0,
-            ],
-        ),
-    )?;
-    stream.log_static(
-        format!("{base}/colorbar/image"),
-        &rerun::DepthImage::try_from(bar)
-            .map_err(|e| RecordError::Rerun(e.to_string()))?
-            .with_meter(1.0)
-            .with_colormap(rerun_colormap(fixed.map))
-            .with_depth_range(rerun::components::ValueRange::new(lo, hi)),
-    )?;
-    let to_v = |value: f64| frame.v.1 - (value - lo) / (hi - lo) * (frame.v.1 - frame.v.0);
-    let bar_px = (frame.v.1 - frame.v.0) * frame.px;
-    let most = ((bar_px / (2.0 * LABEL_PX)).floor() as usize).clamp(2, 8);
-    let ticks = nice_ticks(lo, hi, most);
-    let tick_length = 5.0 / frame.px;
-    let strips: Vec<Vec<[f32; 2]>> = ticks
-        .iter()
-        .map(|&t| {
-            let v = to_v(t) as f32;
-            vec![
-                [frame.bar.1 as f32, v],
-                [(frame.bar.1 + tick_length) as f32, v],
-            ]
-        })
-        .collect();
-    stream.log_static(
-        format!("{base}/colorbar/ticks"),
-        &rerun::LineStrips2D::new(strips)
-            .with_colors([rerun::Color::from_rgb(220, 220, 220)])
-            .with_radii([rerun::Radius::new_ui_points(0.75)]),
-    )?;
-    let texts = tick_texts(&ticks);
-    let longest = texts.iter().map(|t| t.chars().count()).max().unwrap_or(1);
-    let label_u =
-        frame.bar.1 + tick_length + (3.0 + 0.5 * (longest as f64 * CHAR_PX + 10.0)) / frame.px;
-    let mut anchors: Vec<[f32; 2]> = ticks
-        .iter()
-        .map(|&t| frame.anchor(label_u, to_v(t)))
-        .collect();
-    let mut labels = texts;
-    // The caption: the quantity and its unit, above the bar.
-    anchors.push(frame.anchor(
-        0.5 * (frame.bar.0 + frame.bar.1),
-        frame.v.0 - 1.2 * frame.label_height(),
-    ));
-    labels.push(fixed.caption.to_string());
-    stream.log_static(
-        format!("{base}/colorbar/labels"),
-        &rerun::Points2D::new(anchors)
-            .with_radii([rerun::Radius::new_ui_points(0.0)])
-            .with_colors([rerun::Color::from_rgb(230, 230, 230)])
-            .with_labels(labels)
-            .with_show_labels(true),
-    )?;
+    if let Some(range) = fixed.range {
+        log_colour_bar(
+            stream,
+            When::Static,
+            base,
+            frame,
+            fixed.map,
+            fixed.caption,
+            range,
+        )?;
+    }
     if fixed.surface {
         let surface = [[frame.u.0 as f32, 0.0], [frame.u.1 as f32, 0.0]];
         stream.log_static(
@@ -567,6 +510,100 @@ pub fn log_static(
                 .with_colors([rerun::Color::from_rgb(20, 20, 20)]),
         )?;
     }
+    Ok(())
+}
+
+/// Logs a colour bar beside the field (statically, or at the current step when the range
+/// changes from step to step): the colour map over `range` as an image, high values at the
+/// top, its ticks and their labels, and `caption` (the quantity and its unit) above it.
+pub fn log_colour_bar(
+    stream: &RecordingStream,
+    when: When,
+    base: &str,
+    frame: &Frame,
+    map: ColorMap,
+    caption: &str,
+    range: (f64, f64),
+) -> Result<(), RecordError> {
+    // The colour bar: the same colour map and range as the field, high values at the top.
+    const BAR_ROWS: usize = 256;
+    let (lo, hi) = range;
+    let bar = ndarray::Array2::from_shape_fn((BAR_ROWS, 1), |(row, _)| {
+        (hi - (hi - lo) * (row as f64 + 0.5) / BAR_ROWS as f64) as f32
+    });
+    // The image is a child entity: the ticks and labels beside it are not scaled by its
+    // placement.
+    put(
+        stream,
+        when,
+        format!("{base}/colorbar/image"),
+        &rerun::Transform3D::from_translation_scale(
+            [frame.bar.0 as f32, frame.v.0 as f32, 0.0],
+            [
+                (frame.bar.1 - frame.bar.0) as f32,
+                ((frame.v.1 - frame.v.0) / BAR_ROWS as f64) as f32,
+                1.0,
+            ],
+        ),
+    )?;
+    put(
+        stream,
+        when,
+        format!("{base}/colorbar/image"),
+        &rerun::DepthImage::try_from(bar)
+            .map_err(|e| RecordError::Rerun(e.to_string()))?
+            .with_meter(1.0)
+            .with_colormap(rerun_colormap(map))
+            .with_depth_range(rerun::components::ValueRange::new(lo, hi)),
+    )?;
+    let to_v = |value: f64| frame.v.1 - (value - lo) / (hi - lo) * (frame.v.1 - frame.v.0);
+    let bar_px = (frame.v.1 - frame.v.0) * frame.px;
+    let most = ((bar_px / (2.0 * LABEL_PX)).floor() as usize).clamp(2, 8);
+    let ticks = nice_ticks(lo, hi, most);
+    let tick_length = 5.0 / frame.px;
+    let strips: Vec<Vec<[f32; 2]>> = ticks
+        .iter()
+        .map(|&t| {
+            let v = to_v(t) as f32;
+            vec![
+                [frame.bar.1 as f32, v],
+                [(frame.bar.1 + tick_length) as f32, v],
+            ]
+        })
+        .collect();
+    put(
+        stream,
+        when,
+        format!("{base}/colorbar/ticks"),
+        &rerun::LineStrips2D::new(strips)
+            .with_colors([rerun::Color::from_rgb(220, 220, 220)])
+            .with_radii([rerun::Radius::new_ui_points(0.75)]),
+    )?;
+    let texts = tick_texts(&ticks);
+    let longest = texts.iter().map(|t| t.chars().count()).max().unwrap_or(1);
+    let label_u =
+        frame.bar.1 + tick_length + (3.0 + 0.5 * (longest as f64 * CHAR_PX + 10.0)) / frame.px;
+    let mut anchors: Vec<[f32; 2]> = ticks
+        .iter()
+        .map(|&t| frame.anchor(label_u, to_v(t)))
+        .collect();
+    let mut labels = texts;
+    // The caption: the quantity and its unit, above the bar.
+    anchors.push(frame.anchor(
+        0.5 * (frame.bar.0 + frame.bar.1),
+        frame.v.0 - 1.2 * frame.label_height(),
+    ));
+    labels.push(caption.to_string());
+    put(
+        stream,
+        when,
+        format!("{base}/colorbar/labels"),
+        &rerun::Points2D::new(anchors)
+            .with_radii([rerun::Radius::new_ui_points(0.0)])
+            .with_colors([rerun::Color::from_rgb(230, 230, 230)])
+            .with_labels(labels)
+            .with_show_labels(true),
+    )?;
     Ok(())
 }
 

@@ -1,7 +1,8 @@
-//! Recording scenes: a `[sweep]` of friction, load or the load's position (one step per time
-//! point of a recording), and a `[volume]` recorded as 3-D iso-surfaces.
+//! Recording scenes: a `[sweep]` of friction, load, the load's position or the sliding speed
+//! as a Péclet number (one step per time point of a recording), and a `[volume]` recorded as
+//! 3-D iso-surfaces.
 
-use super::{ContactKind, Scene};
+use super::{ContactKind, Scene, ThermalSpec};
 use crate::contact::{ContactError, LineContact, PointContact};
 use crate::stress::Quantity;
 
@@ -18,6 +19,11 @@ pub enum SweepParameter {
     /// The x position of the contact's centre on the body's surface: the field in a fixed body
     /// frame as the load passes.
     Position,
+    /// The sliding speed, given as body 1's Péclet number `Pe = V1 a / (2κ1)` (scenes with
+    /// `[thermal]`): every speed of the scene scaled by the same factor, so the frictional
+    /// flux `q = μ p V` grows with it. Values from `from`/`to`/`steps` are spaced
+    /// geometrically (Pe 0.1 to 100 is three decades).
+    Peclet,
 }
 
 impl SweepParameter {
@@ -26,6 +32,7 @@ impl SweepParameter {
             "friction" => Some(Self::Friction),
             "load" => Some(Self::Load),
             "position" => Some(Self::Position),
+            "peclet" => Some(Self::Peclet),
             _ => None,
         }
     }
@@ -36,6 +43,7 @@ impl SweepParameter {
             Self::Friction => "friction",
             Self::Load => "load",
             Self::Position => "position",
+            Self::Peclet => "peclet",
         }
     }
 }
@@ -45,7 +53,7 @@ impl SweepParameter {
 pub struct Sweep {
     pub parameter: SweepParameter,
     /// Friction coefficients; loads in N/m (line) or N (point); positions in the figure's
-    /// length unit.
+    /// length unit; body 1's Péclet numbers.
     pub values: Vec<f64>,
     /// Material points `(x, z)` (figure length unit, body frame, in the plane of the section)
     /// whose stresses are recorded at every step: the stress history as the load passes.
@@ -53,7 +61,8 @@ pub struct Sweep {
 }
 
 impl Sweep {
-    /// A text of step `k`'s value with its unit, e.g. `μ = 0.25`, `W = 500 N`, `x0 = 1.2a`.
+    /// A text of step `k`'s value with its unit, e.g. `μ = 0.25`, `W = 500 N`, `x0 = 1.2a`,
+    /// `Pe = 3.16 (V = 1.9 m/s)` (`V` the sliding speed).
     pub fn describe(&self, k: usize, scene: &Scene) -> String {
         let value = self.values[k];
         match self.parameter {
@@ -69,7 +78,48 @@ impl Sweep {
                     scene.figure.length_unit.suffix()
                 )
             }
+            SweepParameter::Peclet => {
+                let three = |v: f64| crate::text::significant(v, 3, 1e6, true);
+                match &scene.thermal {
+                    Some(spec) => {
+                        let stepped = spec.at_body1_peclet(value, scene.contact.half_width_m());
+                        format!(
+                            "Pe = {} (V = {} m/s)",
+                            three(value),
+                            three(stepped.sliding_speed_m_per_s)
+                        )
+                    }
+                    None => format!("Pe = {}", three(value)),
+                }
+            }
         }
+    }
+}
+
+impl ThermalSpec {
+    /// Body 1's Péclet number `Pe = V1 a / (2κ1)` for the length `a` (m): how far the contact
+    /// moves over body 1 in the time heat diffuses across it (Carslaw & Jaeger 1959, §10.7;
+    /// Jaeger 1942). 0 when body 1 carries the contact.
+    pub fn body1_peclet(&self, half_width_m: f64) -> f64 {
+        self.body1.speed_m_per_s * half_width_m / (2.0 * self.body1.properties.diffusivity_m2_per_s)
+    }
+
+    /// The same contact slid faster or slower, so that body 1's Péclet number is `peclet`:
+    /// the sliding speed and both bodies' speeds scaled by one factor (their ratios kept).
+    /// Body 1 must move (`body1_peclet > 0`); otherwise the speeds are left as they are.
+    pub fn at_body1_peclet(&self, peclet: f64, half_width_m: f64) -> Self {
+        let now = self.body1_peclet(half_width_m);
+        if now <= 0.0 {
+            return *self;
+        }
+        let factor = peclet / now;
+        let mut stepped = *self;
+        stepped.sliding_speed_m_per_s *= factor;
+        stepped.body1.speed_m_per_s *= factor;
+        if let Some(body2) = &mut stepped.body2 {
+            body2.speed_m_per_s *= factor;
+        }
+        stepped
     }
 }
 

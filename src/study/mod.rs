@@ -14,6 +14,7 @@ mod grid;
 pub mod rough;
 pub mod thermal;
 pub mod thermal_sections;
+pub mod thermal_sweep;
 
 use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::ContactError;
@@ -139,7 +140,8 @@ pub fn closed_form(scene: &Scene, panel: &PanelSpec) -> Option<Solution> {
 }
 
 /// The scene at step `k` of its sweep (the scene itself when it has none): the friction of
-/// every panel, the load (Hertz recomputed at fixed geometry), or the load's position.
+/// every panel, the load (Hertz recomputed at fixed geometry), the load's position, or the
+/// speeds of `[thermal]` (scaled together to body 1's Péclet number).
 pub fn at_step(scene: &Scene, k: usize) -> Result<Scene, ContactError> {
     let Some(sweep) = &scene.sweep else {
         return Ok(scene.clone());
@@ -156,6 +158,10 @@ pub fn at_step(scene: &Scene, k: usize) -> Result<Scene, ContactError> {
         SweepParameter::Load => stepped.contact = scene.contact.with_load(value)?,
         SweepParameter::Position => {
             stepped.load_centre_over_a = value * length_unit_over_a(scene);
+        }
+        SweepParameter::Peclet => {
+            let a = scene.contact.half_width_m();
+            stepped.thermal = scene.thermal.map(|t| t.at_body1_peclet(value, a));
         }
     }
     Ok(stepped)

@@ -2,12 +2,14 @@
 //! or the solved rough pressure), the bodies' flash temperatures and the heat partition, and
 //! body 1's thermal stress added to the contact stress, searched over depth for the maxima.
 //!
-//! Grids: a Hertz contact is gridded over `-2.5a <= x <= 1.5a` (the wake lies behind, at
-//! -x) and `|y| <= 1.5b`, with cells of `a/20` or finer, fine enough that the cell Péclet
-//! number `V dx / (2κ)` stays within [`MAX_CELL_PECLET`]; a line contact (plane problem)
-//! takes the same x range as a row of strips for the temperature and the thermal stress
-//! (plane strain), and for the contact stress a band of rows long enough in y
-//! (`|y| <= max(6a, 6 √(a/u))`, `u = V/(2κ)`) that the middle row sees the band as endless. A rough contact uses the surface's own grid, the window
+//! Grids: a Hertz contact is gridded over a [`Window`], here [`STUDY_WINDOW`]:
+//! `-2.5a <= x <= 1.5a` (the wake lies behind, at -x) and `|y| <= 1.5b`, with cells of `a/20`
+//! or finer, fine enough that the cell Péclet number `V dx / (2κ)` stays within
+//! [`MAX_CELL_PECLET`] (the speed sweep, [`crate::study::thermal_sweep`], takes a wider
+//! window); a line contact (plane problem) takes the same x range as a row of strips for the
+//! temperature and the thermal stress (plane strain), and for the contact stress a band of
+//! rows long enough in y (`|y| <= max(6a, 6 √(a/u))`, `u = V/(2κ)`) that the middle row sees
+//! the band as endless. A rough contact uses the surface's own grid, the window
 //! taken as the nominal contact.
 
 use ndarray::{Array2, Array3};
@@ -43,10 +45,16 @@ pub enum ThermalStudyError {
     GearScene,
     #[error("the scene is not a pair of running spur gears ([contact.gears] with [thermal] pinion_speed)")]
     NotGears,
-    #[error("thermal.speed: the cell Péclet number V dx / (2κ) of body {body} is {cell_peclet:.3}, more than {MAX_CELL_PECLET} the grid resolves (the heat penetrates less than a cell while the contact crosses one)\nhint: {hint}")]
+    #[error("{key}: the cell Péclet number V dx / (2κ) of body {body} is {cell_peclet:.3}, more than {MAX_CELL_PECLET} the grid resolves (the heat penetrates less than a cell while the contact crosses one)\nhint: {hint}")]
     CellPeclet {
+        key: &'static str,
         body: usize,
         cell_peclet: f64,
+        hint: &'static str,
+    },
+    #[error("sweep.parameter: {message}\nhint: {hint}")]
+    PecletSweep {
+        message: &'static str,
         hint: &'static str,
     },
     #[error("thermal.coupled: the coupled solution of a {0} contact needs its bodies (radii and materials) and load\nhint: give contact.load with [contact.body1] and [contact.body2], or set coupled = false")]
@@ -163,46 +171,83 @@ pub(crate) fn inverse_length(body: &ThermalBody) -> f64 {
     body.speed_m_per_s / (2.0 * body.properties.diffusivity_m2_per_s)
 }
 
-/// The grid and flux of a scene: `(shape, spacing, origin, pressure)`.
-struct Gridded {
-    shape: [usize; 2],
-    spacing_m: [f64; 2],
-    origin_m: [f64; 2],
-    pressure_pa: Array2<f64>,
-    half_width_m: f64,
-    line: bool,
+/// The grid and pressure of a scene.
+pub(super) struct Gridded {
+    pub(super) shape: [usize; 2],
+    pub(super) spacing_m: [f64; 2],
+    pub(super) origin_m: [f64; 2],
+    pub(super) pressure_pa: Array2<f64>,
+    pub(super) half_width_m: f64,
+    pub(super) line: bool,
 }
 
-fn hertz_grid(scene: &Scene, spec: &ThermalSpec) -> Result<Gridded, ThermalStudyError> {
+/// Where and how finely a Hertz contact is gridded.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Window {
+    /// The x range in units of `a` (the wake trails at -x).
+    pub(super) x_over_a: [f64; 2],
+    /// `|y| <=` this times `b` (point and elliptical contacts).
+    pub(super) y_over_b: f64,
+    /// The most cells along x.
+    pub(super) max_cells: usize,
+    /// An odd number of rows, the middle one centred on `y = 0` (point and elliptical).
+    pub(super) centre_row: bool,
+    /// The key a too high speed is reported under, and the fix.
+    pub(super) key: &'static str,
+    pub(super) hint: &'static str,
+}
+
+/// The study's window: `-2.5a <= x <= 1.5a`, `|y| <= 1.5b`, at most [`MAX_CELLS`] cells.
+pub(super) const STUDY_WINDOW: Window = Window {
+    x_over_a: [-2.5, 1.5],
+    y_over_b: 1.5,
+    max_cells: MAX_CELLS,
+    centre_row: false,
+    key: "thermal.speed",
+    hint: "the Péclet number is beyond what a grid of at most 640 cells across 4a resolves (Pe up to 320); lower thermal.speed (or the bodies' speeds)",
+};
+
+/// The Hertz pressure of `scene` on `window`, with cells of `a/20`, or finer so that every
+/// heated body of `spec` has a cell Péclet number of at most 1, or (at most
+/// `window.max_cells` cells along x) at most [`MAX_CELL_PECLET`].
+pub(super) fn hertz_grid(
+    scene: &Scene,
+    spec: &ThermalSpec,
+    window: &Window,
+) -> Result<Gridded, ThermalStudyError> {
     let contact = &scene.contact;
     let a = contact.half_width_m();
     let p0 = contact.p0_pa();
     let line = contact.kind == ContactKind::Line;
     let b = a * contact.aspect;
-    // Cells of a/20, or finer so that every heated body's cell Péclet number is at most 1,
-    // or (at most MAX_CELLS cells) at most MAX_CELL_PECLET.
     let u = std::iter::once(&spec.body1)
         .chain(spec.body2.iter())
         .map(inverse_length)
         .fold(0.0, f64::max);
+    let width = (window.x_over_a[1] - window.x_over_a[0]) * a;
     let mut dx = a / 20.0;
     if u * dx > 1.0 {
         dx = 1.0 / u;
     }
-    let mut nx = (4.0 * a / dx).ceil() as usize;
-    if nx > MAX_CELLS {
-        nx = MAX_CELLS;
-        let cell_peclet = u * 4.0 * a / nx as f64;
+    let mut nx = (width / dx).ceil() as usize;
+    if nx > window.max_cells {
+        nx = window.max_cells;
+        let cell_peclet = u * width / nx as f64;
         if cell_peclet > MAX_CELL_PECLET {
             return Err(ThermalStudyError::CellPeclet {
-                body: if inverse_length(&spec.body1) >= u { 1 } else { 2 },
+                key: window.key,
+                body: if inverse_length(&spec.body1) >= u {
+                    1
+                } else {
+                    2
+                },
                 cell_peclet,
-                hint: "the Péclet number is beyond what a grid of at most 640 cells across 4a resolves (Pe up to 320); lower thermal.speed (or the bodies' speeds)",
+                hint: window.hint,
             });
         }
     }
-    let dx = 4.0 * a / nx as f64;
-    let x0 = -2.5 * a + 0.5 * dx;
+    let dx = width / nx as f64;
+    let x0 = window.x_over_a[0] * a + 0.5 * dx;
     let (ny, dy, y0) = if line {
         let u1 = inverse_length(&spec.body1);
         let half = (6.0 * a).max(6.0 * (a / u1).sqrt()).min(40.0 * a);
@@ -211,11 +256,16 @@ fn hertz_grid(scene: &Scene, spec: &ThermalSpec) -> Result<Gridded, ThermalStudy
         let rows = 2 * (half / dy).ceil() as usize + 1;
         (rows, dy, -((rows / 2) as f64) * dy)
     } else {
-        // Cells of the contact's aspect: as many across 3b as across 3a.
+        // Cells of the contact's aspect: as many across the window's height in b as across
+        // its width in a.
+        let height = 2.0 * window.y_over_b * b;
         let dy = dx * b / a;
-        let ny = (3.0 * b / dy).ceil() as usize;
-        let dy = 3.0 * b / ny as f64;
-        (ny, dy, -1.5 * b + 0.5 * dy)
+        let mut ny = (height / dy).ceil() as usize;
+        if window.centre_row && ny.is_multiple_of(2) {
+            ny += 1;
+        }
+        let dy = height / ny as f64;
+        (ny, dy, -window.y_over_b * b + 0.5 * dy)
     };
     let pressure = Array2::from_shape_fn((ny, nx), |(row, column)| {
         let x = x0 + column as f64 * dx;
@@ -251,7 +301,7 @@ fn rough_grid(solution: &RoughSolution) -> Gridded {
 }
 
 /// The heating of one body under `flux` (its whole), scaled to `share` later.
-fn body_temperature(
+pub(super) fn body_temperature(
     gridded: &Gridded,
     body: &ThermalBody,
     flux: &Array2<f64>,
@@ -274,7 +324,12 @@ fn body_temperature(
     })
 }
 
-fn heating(gridded: &Gridded, temperature: &Array2<f64>, share: f64, peclet: f64) -> BodyHeating {
+pub(super) fn heating(
+    gridded: &Gridded,
+    temperature: &Array2<f64>,
+    share: f64,
+    peclet: f64,
+) -> BodyHeating {
     let t = temperature.mapv(|v| v * share);
     let mut best = (f64::NEG_INFINITY, 0, 0);
     let (mut sum, mut count) = (0.0, 0usize);
@@ -351,6 +406,7 @@ fn heat(gridded: &Gridded, spec: &ThermalSpec, friction: f64) -> Result<Heated, 
         let cell_peclet = inverse_length(body) * gridded.spacing_m[0];
         if cell_peclet > MAX_CELL_PECLET {
             return Err(ThermalStudyError::CellPeclet {
+                key: "thermal.speed",
                 body: index + 1,
                 cell_peclet,
                 hint: "a rough surface's grid is fixed by its samples: lower thermal.speed, or resample the surface more finely",
@@ -383,7 +439,7 @@ pub(crate) fn hertz_flash(
     scene: &Scene,
     spec: &ThermalSpec,
 ) -> Result<(f64, BodyHeating, Option<BodyHeating>), ThermalStudyError> {
-    let gridded = hertz_grid(scene, spec)?;
+    let gridded = hertz_grid(scene, spec, &STUDY_WINDOW)?;
     let heated = heat(&gridded, spec, scene.contact.friction)?;
     Ok((gridded.half_width_m, heated.body1, heated.body2))
 }
@@ -404,7 +460,7 @@ pub fn study(
         |iteration: usize, change: f64| progress(Progress::Coupled { iteration, change });
     let (gridded, coupled) = match (rough, spec.coupled) {
         (Some(solution), false) => (rough_grid(solution), None),
-        (None, false) => (hertz_grid(scene, &spec)?, None),
+        (None, false) => (hertz_grid(scene, &spec, &STUDY_WINDOW)?, None),
         (Some(solution), true) => {
             let problem = crate::study::rough::problem(scene)
                 .ok_or(ThermalStudyError::CoupledNeedsBodies("rough"))?;
@@ -413,7 +469,7 @@ pub fn study(
             (rough_grid(&solved.heated), Some(solved))
         }
         (None, true) => {
-            let mut gridded = hertz_grid(scene, &spec)?;
+            let mut gridded = hertz_grid(scene, &spec, &STUDY_WINDOW)?;
             let (curvature, e_star, load) = match scene.contact.dimensional.map(|d| d.hertz) {
                 Some(Hertz::Point(point)) => {
                     let c = 0.5 / point.effective_radius_m;

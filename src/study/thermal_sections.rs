@@ -68,13 +68,13 @@ fn temperature(
     }
 }
 
-/// The fast asymptote's largest temperature per `1/√u` (K m^-1/2): `max over the grid of
-/// (1/K) √(1/(2π)) Σ q ∫ dx'/√(x' - x)`, so that `θ = value / √u`.
-fn fast_limit(study: &ThermalStudy) -> f64 {
-    let k = study.spec.body1.properties.conductivity_w_per_m_k;
-    let dx = study.spacing_m[0];
+/// The fast asymptote's largest temperature per `1/√u` (K m^-1/2) of a body of conductivity
+/// `K` under `flux` on cells `dx` long in x: `max over the grid of (1/K) √(1/(2π)) Σ q ∫
+/// dx'/√(x' - x)`, so that `θ = value / √u`.
+pub(super) fn fast_limit(flux: &Array2<f64>, dx: f64, conductivity_w_per_m_k: f64) -> f64 {
+    let k = conductivity_w_per_m_k;
     let mut best: f64 = 0.0;
-    for row in study.flux_w_per_m2.rows() {
+    for row in flux.rows() {
         for i in 0..row.len() {
             // Cell i from its centre forwards, then the cells ahead.
             let mut sum = row[i] * 2.0 * (0.5 * dx).sqrt();
@@ -188,7 +188,12 @@ pub fn sections(
         Some(t.iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v)) * per_speed(1.0))
     };
     // θ_fast = fast_limit(q) / √u with q scaled by V/speed: per √Pe, u = Pe/a.
-    let fast_per_root_peclet = fast_limit(study) * per_speed(1.0) * a.sqrt();
+    let fast_per_root_peclet = fast_limit(
+        &study.flux_w_per_m2,
+        dx,
+        body1.properties.conductivity_w_per_m_k,
+    ) * per_speed(1.0)
+        * a.sqrt();
     Ok(ThermalSections {
         row,
         y_m: study.origin_m[1] + row as f64 * dy,

@@ -43,6 +43,24 @@ impl CellGrid {
             });
         lattice
     }
+
+    /// `value(i, j)` for the column offsets `-nx < i < nx` (column `i + nx - 1`) and the row
+    /// offsets `rows` (one row each, in their order), rows evaluated in parallel: the
+    /// coefficients that one row of a convolution needs.
+    pub fn offset_rows(&self, rows: &[i64], value: impl Fn(i64, i64) -> f64 + Sync) -> Array2<f64> {
+        let nx = self.shape[1] as i64;
+        let mut lattice = Array2::zeros((rows.len(), (2 * nx - 1).max(0) as usize));
+        lattice
+            .axis_iter_mut(ndarray::Axis(0))
+            .into_par_iter()
+            .zip(rows.par_iter())
+            .for_each(|(mut line, &j)| {
+                for (column, slot) in line.iter_mut().enumerate() {
+                    *slot = value(column as i64 - nx + 1, j);
+                }
+            });
+        lattice
+    }
 }
 
 /// The signed offset stored at `index` of a wrap-around axis of length `n` (`n` even).

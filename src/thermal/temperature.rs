@@ -200,3 +200,52 @@ impl TemperatureOperator {
         Ok(out)
     }
 }
+
+/// The temperature rise (K) along row `row` of the grid at depth `z` under `flux` (W/m²,
+/// `[ny, nx]`) moving with `u = V / (2κ)`, for conductivity `K`: row `row` of
+/// [`TemperatureOperator`]'s result, summed directly, `θ_i = (1/K) Σ q_jc C(i - c, row - j)`.
+/// Only the influence coefficients of the offsets from the rows that carry flux are computed,
+/// once for `±j` (a cell's coefficient is even in `y`), so a section through a contact (one
+/// row at many depths) costs a few percent of the whole grid's lattice.
+pub fn row_temperature(
+    grid: &CellGrid,
+    flux: ArrayView2<f64>,
+    row: usize,
+    z: f64,
+    u: f64,
+    conductivity_w_per_m_k: f64,
+) -> Vec<f64> {
+    let [ny, nx] = grid.shape;
+    let heated: Vec<usize> = (0..ny)
+        .filter(|&j| flux.row(j).iter().any(|&q| q != 0.0))
+        .collect();
+    let distance = |j: usize| (j as i64 - row as i64).abs();
+    let mut offsets: Vec<i64> = heated.iter().map(|&j| distance(j)).collect();
+    offsets.sort_unstable();
+    offsets.dedup();
+    // The lattice row of each offset.
+    let mut index = vec![0; ny];
+    for (k, &d) in offsets.iter().enumerate() {
+        index[d as usize] = k;
+    }
+    let rules = Rules::new();
+    let lattice = grid.offset_rows(&offsets, |i, j| {
+        cell_temperature_with(grid, i, j, z, u, &rules)
+    });
+    let mut out = vec![0.0; nx];
+    for &j in &heated {
+        let line = lattice.row(index[distance(j) as usize]);
+        for (c, &q) in flux.row(j).iter().enumerate() {
+            if q == 0.0 {
+                continue;
+            }
+            // Target column i sees the source column c at offset i - c, stored at i - c + nx - 1.
+            for (i, slot) in out.iter_mut().enumerate() {
+                *slot += q * line[i + nx - 1 - c];
+            }
+        }
+    }
+    let scale = 1.0 / conductivity_w_per_m_k;
+    out.iter_mut().for_each(|t| *t *= scale);
+    out
+}

@@ -9,7 +9,9 @@ use super::kernel::CellGrid;
 use super::line::LineTemperature;
 use super::special::integrate;
 use super::stress::{response, stationary_response, ThermalStressOperator};
-use super::temperature::{cell_temperature, stationary_rectangle, TemperatureOperator};
+use super::temperature::{
+    cell_temperature, row_temperature, stationary_rectangle, TemperatureOperator,
+};
 
 /// A square grid of `n x n` cells covering `[-half, half]²` (m): the grid and cell centres.
 fn square_grid(n: usize, half: f64) -> (CellGrid, Vec<f64>) {
@@ -102,6 +104,40 @@ fn stationary_disc_centre_and_mean_temperatures_match_carslaw_and_jaeger() {
         ((mean - expected) / expected).abs() < 2e-3,
         "mean {mean} vs {expected}"
     );
+}
+
+#[test]
+fn one_row_summed_directly_is_the_operators_row() {
+    // row_temperature against the DC-FFT operator's row (the same coefficients, summed in
+    // another order): an elliptical Hertz flux on a grid of unequal cells, rows through and
+    // off the contact, on the surface and below it, stationary and moving; tolerance 1e-12 of
+    // the largest value.
+    let grid = CellGrid {
+        shape: [23, 40],
+        spacing_m: [0.1, 0.07],
+    };
+    let flux = Array2::from_shape_fn((23, 40), |(row, column)| {
+        let x = (column as f64 - 24.5) * 0.1;
+        let y = (row as f64 - 11.0) * 0.07;
+        (1.0 - (x / 1.2).powi(2) - (y / 0.6).powi(2))
+            .max(0.0)
+            .sqrt()
+    });
+    for (z, u) in [(0.0, 0.0), (0.0, 6.0), (0.35, 6.0), (0.2, 0.5)] {
+        let mut operator = TemperatureOperator::new(&grid, z, u, 2.0).expect("operator");
+        let whole = operator.apply(flux.view()).expect("apply");
+        let largest = whole.iter().copied().fold(0.0, f64::max);
+        for row in [11, 3, 22] {
+            let direct = row_temperature(&grid, flux.view(), row, z, u, 2.0);
+            for (column, value) in direct.iter().enumerate() {
+                assert!(
+                    (value - whole[[row, column]]).abs() < 1e-12 * largest,
+                    "z {z}, u {u}, row {row}, column {column}: {value} vs {}",
+                    whole[[row, column]]
+                );
+            }
+        }
+    }
 }
 
 #[test]

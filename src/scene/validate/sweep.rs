@@ -9,9 +9,14 @@ impl Validator<'_> {
             self.error(
                 "sweep.parameter",
                 format!("unknown sweep parameter `{}`", raw.parameter),
-                Some("use \"friction\", \"load\" or \"position\""),
+                Some("use \"friction\", \"load\", \"position\" or \"peclet\""),
             )
         })?;
+        if parameter == SweepParameter::Peclet {
+            if let Some((message, hint)) = crate::study::thermal_sweep::refusal(scene) {
+                return Err(self.error("sweep.parameter", message, Some(hint)));
+            }
+        }
         let contact = &scene.contact;
         let values: Vec<f64> = match (&raw.values, raw.from, raw.to, raw.steps) {
             (Some(values), None, None, None) => {
@@ -32,7 +37,7 @@ impl Validator<'_> {
                             return Err(self.error(
                                 &key,
                                 format!("expected a number, got `{text}`"),
-                                Some("friction and position values are plain numbers"),
+                                Some("friction, position and Péclet values are plain numbers"),
                             ))
                         }
                     });
@@ -71,9 +76,28 @@ impl Validator<'_> {
                     ));
                 }
                 let n = steps as usize;
-                (0..n)
-                    .map(|k| from + (to - from) * k as f64 / (n - 1) as f64)
-                    .collect()
+                if parameter == SweepParameter::Peclet {
+                    // Geometric steps: Pe 0.1 to 100 is three decades.
+                    for (key, value) in [("sweep.from", from), ("sweep.to", to)] {
+                        if value <= 0.0 {
+                            return Err(self.error(
+                                key,
+                                format!(
+                                    "Péclet numbers are spaced geometrically from `from` to `to` (Pe 0.1 to 100 is three decades), so both must be positive, got {}",
+                                    crate::text::number(value)
+                                ),
+                                Some("e.g. from = 0.1, to = 100, steps = 13 (four steps a decade)"),
+                            ));
+                        }
+                    }
+                    (0..n)
+                        .map(|k| from * (to / from).powf(k as f64 / (n - 1) as f64))
+                        .collect()
+                } else {
+                    (0..n)
+                        .map(|k| from + (to - from) * k as f64 / (n - 1) as f64)
+                        .collect()
+                }
             }
             _ => {
                 return Err(self.error(
@@ -143,6 +167,7 @@ impl Validator<'_> {
                         }
                     }
                 }
+                SweepParameter::Peclet => self.peclet(key, value, scene)?,
                 SweepParameter::Position => {
                     // In units of a, like every figure range.
                     let over_a = value * crate::study::length_unit_over_a(scene);
@@ -275,5 +300,38 @@ impl Validator<'_> {
             values,
             material_points,
         })
+    }
+
+    /// A Péclet number of a speed sweep: positive, at least [`MIN_PECLET`], and within what
+    /// the sweep's grid resolves ([`peclet_limit`]).
+    ///
+    /// [`MIN_PECLET`]: crate::study::thermal_sweep::MIN_PECLET
+    /// [`peclet_limit`]: crate::study::thermal_sweep::peclet_limit
+    fn peclet(&self, key: &str, value: f64, scene: &Scene) -> Result<(), SceneError> {
+        use crate::study::thermal_sweep::{peclet_limit, MIN_PECLET, SWEEP_CELLS};
+        let written = crate::text::number(value);
+        if !(value.is_finite() && value >= MIN_PECLET) {
+            return Err(self.error(
+                key,
+                format!("a Péclet number must be at least {MIN_PECLET}, got {written}"),
+                Some("below it the temperature is the stationary one, scaled with the speed; sweep e.g. from 0.1 to 100"),
+            ));
+        }
+        let Some(spec) = &scene.thermal else {
+            return Ok(());
+        };
+        // A hair below the limit, so that rounding in the grid cannot exceed it.
+        let limit = peclet_limit(spec) * (1.0 - 1e-9);
+        if value > limit {
+            return Err(self.error(
+                key,
+                format!(
+                    "Pe = {written} is beyond what the sweep's grid resolves: at most {} for these bodies ({SWEEP_CELLS} cells across 6a, a cell Péclet number V dx / (2κ) of at most 2 for every heated body)",
+                    crate::text::significant(limit, 4, 1e6, true)
+                ),
+                Some("lower it: beyond, the maximum temperature follows the fast (Jaeger, Blok) limit, growing as √Pe"),
+            ));
+        }
+        Ok(())
     }
 }

@@ -948,7 +948,10 @@ fn a_bad_speed_sweep_names_the_key_and_leaves_no_file() {
     assert!(rough.contains("peclet"));
     let no_thermal =
         SPEED_SWEEP.replace("[thermal]\nspeed = \"1 m/s\"\npartition = \"blok\"\n", "");
-    let cases: [(String, &[&str]); 5] = [
+    let gears = std::fs::read_to_string("scenes/gear_pitch_point.toml").expect("gear scene")
+        + "\n[sweep]\nparameter = \"peclet\"\nfrom = 0.1\nto = 10.0\nsteps = 3\n";
+    let cases: [(String, &[&str]); 6] = [
+        (gears, &["sweep.parameter", "path of contact"]),
         (
             rough,
             &[

@@ -103,6 +103,12 @@ pub fn refusal(scene: &Scene) -> Option<(&'static str, &'static str)> {
             "`stressfield thermal SCENE` reports a rough scene's heating (and --figure FILE.png charts its maximum against Pe); sweep the load of a rough scene",
         ));
     }
+    if spec.gear.is_some() {
+        return Some((
+            "running gears are heated along their path of contact at the pinion's speed; their speeds are not swept",
+            "`stressfield thermal SCENE` reports the path (and --figure FILE.png draws it); sweep the pinion's speed by copying the scene",
+        ));
+    }
     if spec.coupled {
         return Some((
             "a Péclet sweep heats the Hertz pressure; the coupled solution (thermal.coupled = true) solves the pressure again at every speed and is not swept",

@@ -241,7 +241,8 @@ mod tests {
                     poisson: 0.0,
                 },
             };
-            let line = LineContact::new(&cylinder, &rigid_flat, 40e3).unwrap();
+            let line =
+                LineContact::new(&cylinder, &rigid_flat, 40e3).expect("a cylinder on a flat");
             let (a, p0, p) = (line.half_width_m, line.p0_pa, line.load_n_per_m);
             let e = cylinder.material.modulus_pa;
             let strain = |sxx: f64, szz: f64| ((1.0 - nu * nu) * szz - nu * (1.0 + nu) * sxx) / e;

@@ -44,8 +44,8 @@ const LOW_NODES: usize = 16;
 #[derive(Clone, Debug)]
 pub struct LineThermalStress {
     n: usize,
-    /// `[component][offset + n - 1]`, per unit flux, per `E α / K`.
-    coefficients: Vec<Vec<f64>>,
+    /// `[offset + n - 1][component]`, per unit flux, per `E α / K`.
+    coefficients: Vec<[f64; COMPONENTS]>,
     scale: f64,
 }
 
@@ -59,7 +59,7 @@ impl LineThermalStress {
         let kw = 8.0 * PI / (2.0 * n as f64 * dx);
         let w = |xi: f64| (-(xi / kw).powi(2)).exp();
         let offsets = 2 * n - 1;
-        let mut coefficients = vec![vec![0.0; offsets]; COMPONENTS];
+        let mut coefficients = vec![[0.0; COMPONENTS]; offsets];
 
         // Near ξ = 0: (1/2π) ∫ W H S e^(iξX) dξ, ξ = ±t², dξ = 2t dt.
         let (nodes, weights) = gauss_legendre(LOW_NODES);
@@ -75,9 +75,9 @@ impl LineThermalStress {
                     // e^(iξX) for X = m dx, m from -(n-1), by rotation.
                     let step = C64::from_polar(1.0, xi * dx);
                     let mut phase = C64::from_polar(1.0, -xi * dx * (n as f64 - 1.0));
-                    for m in 0..offsets {
-                        for (component, hc) in h.iter().enumerate() {
-                            coefficients[component][m] += factor * (hc * phase).re;
+                    for coefficient in coefficients.iter_mut() {
+                        for (c, hc) in coefficient.iter_mut().zip(&h) {
+                            *c += factor * (hc * phase).re;
                         }
                         phase *= step;
                     }
@@ -93,8 +93,8 @@ impl LineThermalStress {
         } else {
             64
         };
-        let mut spectra = vec![vec![C64::new(0.0, 0.0); lattice]; COMPONENTS];
-        for j in 0..lattice {
+        let mut spectra = vec![[C64::new(0.0, 0.0); COMPONENTS]; lattice];
+        for (j, spectrum) in spectra.iter_mut().enumerate() {
             let signed = if j < lattice.div_ceil(2) {
                 j as f64
             } else {
@@ -108,18 +108,19 @@ impl LineThermalStress {
                 }
                 let h = response(xi, 0.0, z, two_u, nu);
                 let factor = (1.0 - w(xi)) * s(xi);
-                for (component, hc) in h.iter().enumerate() {
-                    spectra[component][j] += hc * factor;
+                for (sum, hc) in spectrum.iter_mut().zip(&h) {
+                    *sum += hc * factor;
                 }
             }
         }
         let fft = FftPlanner::<f64>::new().plan_fft_inverse(lattice);
-        for (component, spectrum) in spectra.iter_mut().enumerate() {
-            fft.process(spectrum);
-            for m in 0..offsets {
+        for component in 0..COMPONENTS {
+            let mut spectrum: Vec<C64> = spectra.iter().map(|s| s[component]).collect();
+            fft.process(&mut spectrum);
+            for (m, coefficient) in coefficients.iter_mut().enumerate() {
                 let offset = m as i64 - (n as i64 - 1);
                 let index = offset.rem_euclid(lattice as i64) as usize;
-                coefficients[component][m] += spectrum[index].re / (lattice as f64 * dx);
+                coefficient[component] += spectrum[index].re / (lattice as f64 * dx);
             }
         }
         Self {
@@ -134,16 +135,18 @@ impl LineThermalStress {
         let n = self.n;
         assert_eq!(flux.len(), n, "one flux per strip");
         let mut out = Array2::zeros((COMPONENTS, n));
-        for (component, coefficients) in self.coefficients.iter().enumerate() {
-            for i in 0..n {
-                let mut sum = 0.0;
-                for (j, &q) in flux.iter().enumerate() {
-                    if q != 0.0 {
-                        // Offset of the point from the strip: i - j.
-                        sum += q * coefficients[i + n - 1 - j];
+        for i in 0..n {
+            let mut sum = [0.0; COMPONENTS];
+            for (j, &q) in flux.iter().enumerate() {
+                if q != 0.0 {
+                    // Offset of the point from the strip: i - j.
+                    for (s, c) in sum.iter_mut().zip(&self.coefficients[i + n - 1 - j]) {
+                        *s += q * c;
                     }
                 }
-                out[[component, i]] = sum * self.scale;
+            }
+            for (component, s) in sum.iter().enumerate() {
+                out[[component, i]] = s * self.scale;
             }
         }
         out

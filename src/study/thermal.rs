@@ -126,7 +126,9 @@ pub struct ThermalStudy {
     pub shape: [usize; 2],
     pub spacing_m: [f64; 2],
     pub origin_m: [f64; 2],
-    /// The frictional flux (W/m²) on the grid.
+    /// The contact pressure (Pa) on the grid (the heated one when coupled) and the frictional
+    /// flux (W/m²) it makes.
+    pub pressure_pa: Array2<f64>,
     pub flux_w_per_m2: Array2<f64>,
     pub body1: BodyHeating,
     pub body2: Option<BodyHeating>,
@@ -386,6 +388,31 @@ pub(crate) fn thermal_stress_layer(
     })
 }
 
+/// The DC-FFT layers of the contact tractions on the thermal grid: the pressure and `q = μ p`
+/// in +x, lengths in units of `a`.
+pub(crate) fn contact_operator(
+    pressure_pa: &Array2<f64>,
+    spacing_m: [f64; 2],
+    a: f64,
+    friction: f64,
+    poisson: f64,
+) -> Result<DcFft, ThermalStudyError> {
+    let traction_grid = TractionGrid::new(
+        [0.0, 0.0],
+        [spacing_m[0] / a, spacing_m[1] / a],
+        Some(pressure_pa.clone()),
+        Some(pressure_pa.mapv(|p| friction * p)),
+        None,
+    )?;
+    Ok(DcFft::new(&traction_grid, poisson)?)
+}
+
+/// `E α / K` of a body: the thermal stress per unit flux scale (Pa m/W).
+pub(crate) fn e_alpha_over_k(body: &ThermalBody) -> f64 {
+    body.material.modulus_pa * body.properties.expansion_per_k
+        / body.properties.conductivity_w_per_m_k
+}
+
 /// The flux and the bodies' flash temperatures on a grid.
 struct Heated {
     flux: Array2<f64>,
@@ -519,17 +546,15 @@ pub fn study(
         shape: gridded.shape,
         spacing_m: gridded.spacing_m,
     };
-    let traction_grid = TractionGrid::new(
-        [0.0, 0.0],
-        [gridded.spacing_m[0] / a, gridded.spacing_m[1] / a],
-        Some(gridded.pressure_pa.clone()),
-        Some(gridded.pressure_pa.mapv(|p| friction * p)),
-        None,
+    let contact_operator = contact_operator(
+        &gridded.pressure_pa,
+        gridded.spacing_m,
+        a,
+        friction,
+        poisson,
     )?;
-    let contact_operator = DcFft::new(&traction_grid, poisson)?;
     let body1_flux = flux.mapv(|q| q * share);
-    let e_alpha_over_k = spec.body1.material.modulus_pa * spec.body1.properties.expansion_per_k
-        / spec.body1.properties.conductivity_w_per_m_k;
+    let e_alpha_over_k = e_alpha_over_k(&spec.body1);
     let u1 = inverse_length(&spec.body1);
     let rows: Vec<usize> = if gridded.line {
         vec![gridded.shape[0] / 2]
@@ -575,6 +600,7 @@ pub fn study(
         shape: gridded.shape,
         spacing_m: gridded.spacing_m,
         origin_m: gridded.origin_m,
+        pressure_pa: gridded.pressure_pa,
         flux_w_per_m2: flux,
         body1,
         body2,

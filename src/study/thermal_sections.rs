@@ -14,7 +14,7 @@
 use ndarray::Array2;
 
 use super::thermal::{ThermalStudy, ThermalStudyError};
-use crate::solution::dcfft::{layer_stress, DcFft, TractionGrid};
+use crate::solution::dcfft::layer_stress;
 use crate::thermal::kernel::CellGrid;
 use crate::thermal::line::LineTemperature;
 use crate::thermal::temperature::{TemperatureOperator, MAX_CELL_PECLET};
@@ -115,22 +115,19 @@ pub fn sections(
     let share = study.body1.share;
     let flux1 = study.flux_w_per_m2.mapv(|q| q * share);
     let speed = study.spec.sliding_speed_m_per_s;
-    let pressure = study.flux_w_per_m2.mapv(|q| q / (friction * speed));
-    let traction_grid = TractionGrid::new(
-        [0.0, 0.0],
-        [dx / a, dy / a],
-        Some(pressure.clone()),
-        Some(pressure.mapv(|p| friction * p)),
-        None,
-    )?;
     let poisson = body1.material.poisson;
-    let contact_operator = DcFft::new(&traction_grid, poisson)?;
+    let contact_operator = super::thermal::contact_operator(
+        &study.pressure_pa,
+        study.spacing_m,
+        a,
+        friction,
+        poisson,
+    )?;
     let grid = CellGrid {
         shape: study.shape,
         spacing_m: study.spacing_m,
     };
-    let e_alpha_over_k = body1.material.modulus_pa * body1.properties.expansion_per_k
-        / body1.properties.conductivity_w_per_m_k;
+    let e_alpha_over_k = super::thermal::e_alpha_over_k(body1);
     let depths_m: Vec<f64> = (0..=SECTION_STEPS)
         .map(|k| SECTION_DEPTH_OVER_A * a * k as f64 / SECTION_STEPS as f64)
         .collect();

@@ -68,6 +68,18 @@ impl Validator<'_> {
             }
             (Some(text), false) => self.radius(&format!("{key}.radius"), text)?,
         };
+        let material = self.elastic(key, raw, "missing elastic modulus")?;
+        Ok(Body { radius_m, material })
+    }
+
+    /// A body's elastic constants: `modulus` and `poisson`, or its `material`'s; `missing` is
+    /// the message when neither gives the modulus.
+    pub(super) fn elastic(
+        &self,
+        key: &str,
+        raw: &RawBody,
+        missing: &str,
+    ) -> Result<Material, SceneError> {
         let preset = match &raw.material {
             Some(name) => Some(material::preset(name).ok_or_else(|| {
                 let names: Vec<_> = material::PRESETS.iter().map(|p| p.name).collect();
@@ -93,7 +105,7 @@ impl Validator<'_> {
             (None, None) => {
                 return Err(self.error(
                     &format!("{key}.modulus"),
-                    "missing elastic modulus",
+                    missing,
                     Some("add modulus = \"210 GPa\" or material = \"steel\""),
                 ))
             }
@@ -109,12 +121,9 @@ impl Validator<'_> {
                 ))
             }
         };
-        Ok(Body {
-            radius_m,
-            material: Material {
-                modulus_pa,
-                poisson,
-            },
+        Ok(Material {
+            modulus_pa,
+            poisson,
         })
     }
 }

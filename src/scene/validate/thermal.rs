@@ -433,44 +433,18 @@ impl Validator<'_> {
         )?
         .or(preset.map(|p| p.expansion_per_k))
         .ok_or_else(|| missing("expansion", "\"11.5e-6 /K\""))?;
-        let elastic = raw.material.as_deref().and_then(material::preset);
-        let modulus_pa = match (&raw.modulus, elastic) {
-            (Some(text), _) => self.bounded(
-                &format!("{key}.modulus"),
-                text,
-                Dimension::Pressure,
-                MODULUS_BOUNDS,
-            )?,
-            (None, Some(p)) => p.material.modulus_pa,
-            (None, None) => {
-                return Err(self.error(
-                    &format!("{key}.modulus"),
-                    "missing elastic modulus (the thermal stress is E α times the temperature)",
-                    Some("add modulus = \"210 GPa\" or material = \"steel\""),
-                ))
-            }
-        };
-        let poisson = match (raw.poisson, elastic) {
-            (Some(nu), _) => self.poisson(&format!("{key}.poisson"), nu)?,
-            (None, Some(p)) => p.material.poisson,
-            (None, None) => {
-                return Err(self.error(
-                    &format!("{key}.poisson"),
-                    "missing Poisson's ratio",
-                    Some("add poisson = 0.3 or material = \"steel\""),
-                ))
-            }
-        };
+        let material = self.elastic(
+            key,
+            raw,
+            "missing elastic modulus (the thermal stress is E α times the temperature)",
+        )?;
         Ok(Some(ThermalBody {
             properties: ThermalProperties {
                 conductivity_w_per_m_k: conductivity,
                 diffusivity_m2_per_s: diffusivity,
                 expansion_per_k: expansion,
             },
-            material: Material {
-                modulus_pa,
-                poisson,
-            },
+            material,
             speed_m_per_s,
         }))
     }

@@ -1,7 +1,7 @@
 //! The frictional-heating sheet: body 1's surface temperature with the contact outlined, the
-//! xz section of the temperature under its hottest point, the thermal and total von Mises
-//! sections there, and the maximum flash temperature against the Péclet number with its
-//! asymptotes. Draws what [`crate::study::thermal`] and [`crate::study::thermal_sections`]
+//! xz section of the temperature under its hottest point, the von Mises and Tresca sections
+//! of the thermal, contact and total stress there, and the maximum flash temperature against
+//! the Péclet number with its asymptotes. Draws what [`crate::study::thermal`] and [`crate::study::thermal_sections`]
 //! computed; computes nothing itself.
 
 use ndarray::Array2;
@@ -202,40 +202,74 @@ pub fn thermal_sheet(
         Vec::new(),
     );
     let mpa = |a: &Array2<f64>| a.mapv(|v| v * 1e-6);
-    let thermal = map(
-        "Thermal stress alone: von Mises",
-        format!(
-            "{at_row}; E α = {:.3} MPa/K",
-            study.spec.body1.material.modulus_pa
-                * study.spec.body1.properties.expansion_per_k
-                * 1e-6
-        ),
-        x_axis,
-        depth,
-        mpa(&sections.thermal_von_mises_pa),
-        "σvM (MPa)",
-        ColorMap::Magma,
-        true,
-        Vec::new(),
+    let peak = |a: &Array2<f64>| a.iter().fold(0.0f64, |m, &v| m.max(v)) * 1e-6;
+    let section = |title: &str, subtitle: String, values: &Array2<f64>, label: &str| {
+        map(
+            title,
+            subtitle,
+            x_axis,
+            depth,
+            mpa(values),
+            label,
+            ColorMap::Magma,
+            true,
+            Vec::new(),
+        )
+    };
+    let e_alpha = format!(
+        "{at_row}; E α = {:.3} MPa/K",
+        study.spec.body1.material.modulus_pa * study.spec.body1.properties.expansion_per_k * 1e-6
     );
-    let total = map(
-        "Contact + thermal stress: von Mises",
-        format!(
-            "{at_row}; contact alone peaks at {:.0} MPa",
-            sections
-                .contact_von_mises_pa
-                .iter()
-                .fold(0.0f64, |m, &v| m.max(v))
-                * 1e-6
-        ),
-        x_axis,
-        depth,
-        mpa(&sections.total_von_mises_pa),
-        "σvM (MPa)",
-        ColorMap::Magma,
-        true,
-        Vec::new(),
-    );
+    let stresses = [
+        [
+            section(
+                "Thermal stress alone: von Mises",
+                e_alpha.clone(),
+                &sections.thermal_von_mises_pa,
+                "σvM (MPa)",
+            ),
+            section(
+                "Thermal stress alone: Tresca σ1 − σ3",
+                e_alpha,
+                &sections.thermal_tresca_pa,
+                "σ1 − σ3 (MPa)",
+            ),
+        ],
+        [
+            section(
+                "Contact stress alone: von Mises",
+                format!("{at_row}; p and q = μ p in +x"),
+                &sections.contact_von_mises_pa,
+                "σvM (MPa)",
+            ),
+            section(
+                "Contact stress alone: Tresca σ1 − σ3",
+                format!("{at_row}; p and q = μ p in +x"),
+                &sections.contact_tresca_pa,
+                "σ1 − σ3 (MPa)",
+            ),
+        ],
+        [
+            section(
+                "Contact + thermal stress: von Mises",
+                format!(
+                    "{at_row}; contact alone peaks at {:.0} MPa",
+                    peak(&sections.contact_von_mises_pa)
+                ),
+                &sections.total_von_mises_pa,
+                "σvM (MPa)",
+            ),
+            section(
+                "Contact + thermal stress: Tresca σ1 − σ3",
+                format!(
+                    "{at_row}; contact alone peaks at {:.0} MPa",
+                    peak(&sections.contact_tresca_pa)
+                ),
+                &sections.total_tresca_pa,
+                "σ1 − σ3 (MPa)",
+            ),
+        ],
+    ];
     let mut chart = Chart::new(
         "Maximum flash temperature of body 1 against speed",
         "Péclet number V a / (2κ)",
@@ -272,11 +306,11 @@ pub fn thermal_sheet(
             colour: [0, 0, 0],
         });
     }
-    let mut rows = vec![
-        vec![Cell::Map(surface), Cell::Map(temperature)],
-        vec![Cell::Map(thermal), Cell::Map(total)],
-        vec![Cell::Chart(chart)],
-    ];
+    let mut rows = vec![vec![Cell::Map(surface), Cell::Map(temperature)]];
+    for [von_mises, tresca] in stresses {
+        rows.push(vec![Cell::Map(von_mises), Cell::Map(tresca)]);
+    }
+    rows.push(vec![Cell::Chart(chart)]);
     if let Some(gear) = gear {
         rows.insert(0, gear_charts(gear));
     }

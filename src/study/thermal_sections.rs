@@ -32,12 +32,16 @@ pub struct ThermalSections {
     pub y_m: f64,
     /// Section depths (m), evenly spaced from 0.
     pub depths_m: Vec<f64>,
-    /// `[depths, columns]`: body 1's temperature rise (K) under its share, and the von Mises
-    /// stress (Pa) of the thermal, contact and total stress.
+    /// `[depths, columns]`: body 1's temperature rise (K) under its share, the von Mises
+    /// stress (Pa) of the thermal, contact and total stress, and their Tresca stress
+    /// `σ1 - σ3` (Pa).
     pub temperature_k: Array2<f64>,
     pub thermal_von_mises_pa: Array2<f64>,
     pub contact_von_mises_pa: Array2<f64>,
     pub total_von_mises_pa: Array2<f64>,
+    pub thermal_tresca_pa: Array2<f64>,
+    pub contact_tresca_pa: Array2<f64>,
+    pub total_tresca_pa: Array2<f64>,
     /// Body 1's maximum temperature rise (K) under the whole flux at the scene's pressure, at
     /// `(Pe, θ)` of body 1 for speeds around the scene's.
     pub sweep: Vec<(f64, f64)>,
@@ -137,6 +141,9 @@ pub fn sections(
         Array2::zeros((rows, nx)),
         Array2::zeros((rows, nx)),
         Array2::zeros((rows, nx)),
+        Array2::zeros((rows, nx)),
+        Array2::zeros((rows, nx)),
+        Array2::zeros((rows, nx)),
     ];
     for (k, &z) in depths_m.iter().enumerate() {
         let t = temperature(study, &flux1, z, u1)?;
@@ -156,7 +163,11 @@ pub fn sections(
             out[0][[k, column]] = t[[row, column]];
             out[1][[k, column]] = th.von_mises();
             out[2][[k, column]] = co.von_mises();
-            out[3][[k, column]] = (th + co).von_mises();
+            let total = th + co;
+            out[3][[k, column]] = total.von_mises();
+            out[4][[k, column]] = 2.0 * th.max_shear();
+            out[5][[k, column]] = 2.0 * co.max_shear();
+            out[6][[k, column]] = 2.0 * total.max_shear();
         }
         progress(k + 1, rows);
     }
@@ -199,6 +210,9 @@ pub fn sections(
         thermal_von_mises_pa: out[1].clone(),
         contact_von_mises_pa: out[2].clone(),
         total_von_mises_pa: out[3].clone(),
+        thermal_tresca_pa: out[4].clone(),
+        contact_tresca_pa: out[5].clone(),
+        total_tresca_pa: out[6].clone(),
         sweep,
         slow_per_peclet,
         fast_per_root_peclet,

@@ -1,25 +1,21 @@
 //! The `stressfield` command: parse arguments, run, print errors once, exit non-zero on failure.
 
 mod cli;
-mod commands;
-mod compare_run;
-mod surface_commands;
-mod thermal_commands;
 
 use std::process::ExitCode;
 
 use clap::Parser;
 
 fn main() -> ExitCode {
-    let args = cli::Args::parse();
+    let args = cli::args::Args::parse();
     // An interruption (Ctrl-C, kill) removes the temporary files of unfinished outputs.
     if let Err(e) = stressfield::output::remove_pending_on_interrupt() {
         eprintln!("warning: cannot watch for interruptions ({e}): an interrupted run may leave .stressfield-*.part files");
     }
-    match commands::run(args.command) {
+    match cli::run(args.command) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            commands::print_err(&format!("error: {error:#}"));
+            cli::console::print_err(&format!("error: {error:#}"));
             ExitCode::FAILURE
         }
     }

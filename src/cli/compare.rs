@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
-use crate::cli::{CompareArgs, MeasureArg};
+use super::args::{CompareArgs, MeasureArg};
 use stressfield::compare::{self, Tolerance};
 use stressfield::field_file::{self, PanelField};
 use stressfield::input::{self, InputError};

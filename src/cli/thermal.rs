@@ -5,8 +5,8 @@ use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 
-use crate::commands::{print_out, progress_bar};
-use crate::surface_commands::{npy_path, write_npy};
+use super::console::{print_out, progress_bar};
+use super::npy::{npy_path, write_npy};
 use stressfield::contact::rough::RoughSolution;
 use stressfield::report::thermal::ThermalReport;
 use stressfield::scene::{ContactKind, Scene};

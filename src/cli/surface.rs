@@ -3,11 +3,10 @@
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
-use indicatif::ProgressBar;
 
-use crate::cli::SurfaceArgs;
-use crate::commands::{print_out, progress_bar};
-use stressfield::output::write_atomic;
+use super::args::SurfaceArgs;
+use super::console::{print_out, solver_bar, spinner};
+use super::npy::{npy_path, write_npy};
 use stressfield::rough_report::ContactReport;
 use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;
@@ -15,33 +14,6 @@ use stressfield::surface::read::{self, Fill, ReadOptions};
 use stressfield::surface::stats::{self, FormRemoval, Options};
 use stressfield::surface::MIN_SPACING_M;
 use stressfield::surface_report::SurfaceReport;
-
-/// A solver progress bar: iterations as they come (the total is not known).
-fn solver_bar() -> ProgressBar {
-    let bar = progress_bar(0);
-    if !bar.is_hidden() {
-        if let Ok(style) = indicatif::ProgressStyle::with_template(
-            "{spinner} solving: iteration {pos}, {msg} {elapsed}",
-        ) {
-            bar.set_style(style);
-        }
-    }
-    bar
-}
-
-/// A spinner with a message and the elapsed time, for work of unknown length (hidden where
-/// progress bars are).
-fn spinner(message: &str) -> ProgressBar {
-    let bar = progress_bar(0);
-    if !bar.is_hidden() {
-        if let Ok(style) = indicatif::ProgressStyle::with_template("{spinner} {msg} {elapsed}") {
-            bar.set_style(style);
-        }
-        bar.set_message(message.to_string());
-        bar.enable_steady_tick(std::time::Duration::from_millis(200));
-    }
-    bar
-}
 
 /// `contact SCENE [--json] [--pressure FILE.npy]`.
 pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()> {
@@ -72,7 +44,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     let report = report?;
     // Frictional heating on the solved pressure, when the scene asks for it.
     let thermal = match scene.thermal {
-        Some(_) => Some(crate::thermal_commands::study(&scene, Some(&solution))?),
+        Some(_) => Some(super::thermal::study(&scene, Some(&solution))?),
         None => None,
     };
     if let Some(path) = pressure {
@@ -105,26 +77,6 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         }
         print_out(&text)
     }
-}
-
-/// Refuses an output path that does not end in `.npy`.
-pub(crate) fn npy_path(flag: &str, path: &Path) -> Result<()> {
-    if path.extension().is_none_or(|e| e != "npy") {
-        bail!(
-            "{flag} writes a NumPy file: give a path ending in .npy, got {}",
-            path.display()
-        );
-    }
-    Ok(())
-}
-
-/// `array` as a NumPy .npy file at `path`, written atomically.
-pub(crate) fn write_npy(path: &Path, array: &ndarray::Array2<f64>, what: &str) -> Result<()> {
-    let mut bytes = Vec::new();
-    ndarray_npy::WriteNpyExt::write_npy(array, &mut bytes)
-        .with_context(|| format!("encoding the {what} as .npy"))?;
-    write_atomic(path, &bytes)?;
-    Ok(())
 }
 
 fn length(flag: &str, text: &str) -> Result<f64> {

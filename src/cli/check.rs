@@ -1,0 +1,55 @@
+//! `check`: validate scenes and say what each would draw.
+
+use std::path::PathBuf;
+
+use anyhow::{bail, Result};
+
+use super::console::{print_err, print_out};
+use stressfield::scene::{ContactKind, Scene};
+use stressfield::study;
+
+pub(super) fn check(paths: &[PathBuf]) -> Result<()> {
+    let mut failed = 0;
+    for path in paths {
+        match Scene::load(path) {
+            Ok(scene) => print_out(&format!(
+                "ok {} ({})\n",
+                path.display(),
+                check_summary(&scene)
+            ))?,
+            Err(e) => {
+                print_err(&format!("error: {e}"));
+                failed += 1;
+            }
+        }
+    }
+    if failed > 0 {
+        bail!("{failed} of {} scenes are invalid", paths.len());
+    }
+    Ok(())
+}
+
+/// What `check` says of a valid scene: its panels and grid, or its surface.
+fn check_summary(scene: &Scene) -> String {
+    match (&scene.surface, scene.panels.first()) {
+        (Some(surface), _) => {
+            let [ny, nx] = surface.heights.shape();
+            let kind = if scene.contact.kind == ContactKind::Rough {
+                "rough contact"
+            } else {
+                "surface"
+            };
+            format!("{kind}, {nx} x {ny} samples")
+        }
+        (None, Some(panel)) => {
+            let plane = study::plane(scene, panel);
+            format!(
+                "{} panel(s), {} x {} points each",
+                scene.panels.len(),
+                plane.u.count,
+                plane.v.count
+            )
+        }
+        (None, None) => "no panels".into(),
+    }
+}

@@ -209,7 +209,7 @@ fn check_accepted(scene: &Scene) -> Result<(), String> {
         };
         if let Ok(c) = stressfield::surface::stats::characterise(&surface.heights, &options) {
             let rough = contact.rough.as_ref();
-            let report = stressfield::surface_report::SurfaceReport::new(
+            let report = stressfield::report::surface::SurfaceReport::new(
                 &c,
                 rough.and_then(|r| r.e_star_pa),
                 rough.and_then(|r| r.hardness_pa),

@@ -7,13 +7,13 @@ use anyhow::{bail, Context, Result};
 use super::args::SurfaceArgs;
 use super::console::{print_out, solver_bar, spinner};
 use super::npy::{npy_path, write_npy};
-use stressfield::rough_report::ContactReport;
+use stressfield::report::rough::ContactReport;
+use stressfield::report::surface::SurfaceReport;
 use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;
 use stressfield::surface::read::{self, Fill, ReadOptions};
 use stressfield::surface::stats::{self, FormRemoval, Options};
 use stressfield::surface::MIN_SPACING_M;
-use stressfield::surface_report::SurfaceReport;
 
 /// `contact SCENE [--json] [--pressure FILE.npy]`.
 pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()> {
@@ -37,7 +37,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     let solution = solution.with_context(|| format!("scene {}", scene.name))?;
     let maxima_bar = spinner(&format!(
         "subsurface maxima: DC-FFT layers down to {:.1} um",
-        stressfield::rough_report::search_depth_m(&solution) * 1e6
+        stressfield::report::rough::search_depth_m(&solution) * 1e6
     ));
     let report = ContactReport::new(&scene, &solution);
     maxima_bar.finish_and_clear();

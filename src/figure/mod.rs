@@ -1,6 +1,7 @@
 //! From a scene to a drawable figure: evaluates each panel's field on the grid and converts
 //! everything to the figure's display units.
 
+pub mod rough;
 pub mod thermal;
 
 use crate::field::{self, Axis, FieldError, Plane, Section};
@@ -94,14 +95,14 @@ pub enum DrawError {
     #[error(transparent)]
     Field(#[from] FieldError),
     #[error(transparent)]
-    Sheet(#[from] crate::rough_figure::SheetError),
+    Sheet(#[from] crate::figure::rough::SheetError),
 }
 
 /// Draws any scene: a figure ([`build`]) or the sheet of a surface or rough scene.
 pub fn draw(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Drawing, DrawError> {
     Ok(match scene.contact.kind {
-        ContactKind::Rough => Drawing::Sheet(crate::rough_figure::rough_sheet(scene, on_row)?.0),
-        ContactKind::Surface => Drawing::Sheet(crate::rough_figure::surface_sheet(scene)?),
+        ContactKind::Rough => Drawing::Sheet(crate::figure::rough::rough_sheet(scene, on_row)?.0),
+        ContactKind::Surface => Drawing::Sheet(crate::figure::rough::surface_sheet(scene)?),
         _ => Drawing::Figure(build(scene, on_row)?),
     })
 }

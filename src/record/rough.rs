@@ -33,7 +33,7 @@ use crate::field::{self, Axis, Plane, Section};
 use crate::figure::{self, Drawing};
 use crate::render::chart::{Cell, Chart, Series, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Mark, Panel};
-use crate::rough_report::{search_depth_m, ContactReport};
+use crate::report::rough::{search_depth_m, ContactReport};
 use crate::scene::{ContactKind, Scene};
 use crate::study::rough::{self as rough_study, REFERENCE_LENGTH_M};
 use crate::surface::HeightMap;
@@ -60,7 +60,7 @@ pub fn record(
     let (drawing, solution) = match scene.contact.kind {
         ContactKind::Rough => {
             let (sheet, solution) =
-                crate::rough_figure::rough_sheet(scene, on_row).map_err(rerun_error)?;
+                crate::figure::rough::rough_sheet(scene, on_row).map_err(rerun_error)?;
             (Drawing::Sheet(sheet), Some(solution))
         }
         _ => (figure::draw(scene, on_row).map_err(rerun_error)?, None),
@@ -77,10 +77,10 @@ pub fn record(
             .map_err(rerun_error)?
             .text(scene),
         None => {
-            let c = crate::rough_figure::characterise(scene).map_err(rerun_error)?;
+            let c = crate::figure::rough::characterise(scene).map_err(rerun_error)?;
             let e_star = scene.contact.rough.and_then(|r| r.e_star_pa);
             let hardness = scene.contact.rough.and_then(|r| r.hardness_pa);
-            crate::surface_report::SurfaceReport::new(&c, e_star, hardness)
+            crate::report::surface::SurfaceReport::new(&c, e_star, hardness)
                 .text(&c, &surface.source)
         }
     };

@@ -1,5 +1,7 @@
 //! The `hertz` report: contact parameters, stress maxima and the yield assessment, as text.
 
+pub mod rough;
+pub mod surface;
 pub mod thermal;
 
 use std::fmt::Write;

@@ -26,14 +26,14 @@ use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::chart::{Cell, Chart, Scale as ChartScale, Series, Sheet, Style, PALETTE};
 use crate::render::table::Table;
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
-use crate::rough_report::search_depth_m;
+use crate::report::rough::search_depth_m;
+use crate::report::surface::SurfaceReport;
 use crate::scene::{ContactKind, Scene};
 use crate::study::rough::{self as rough_study, RoughStudyError, REFERENCE_LENGTH_M};
 use crate::surface::generate::Form;
 use crate::surface::gw::GreenwoodWilliamson;
 use crate::surface::stats::{self, Characterisation, Options, StatsError};
 use crate::surface::HeightMap;
-use crate::surface_report::SurfaceReport;
 
 /// What can go wrong building these figures.
 #[derive(Debug, thiserror::Error)]

@@ -26,9 +26,10 @@
 //! - [`figure`], [`render`]: display units, then pixels; renderers do no I/O.
 //! - [`assess`], [`report`]: stress maxima, yield assessment, the `hertz` report.
 //! - [`probe`]: stresses at given points, CSV in and out.
-//! - [`input`], [`text`]: reading user files within limits; numbers and echoes for messages.
-//! - [`output`], [`compare`], [`regression`], [`field_file`]: atomic file writes, regression
-//!   comparison of images and fields, the HTML report.
+//! - [`io`]: reading user files within limits, atomic writes, grid tables, numbers and echoes
+//!   for messages.
+//! - [`regression`]: comparison of images and fields with references, field files, the HTML
+//!   report.
 //!
 //! ## Conventions
 //! - z >= 0 points into the body; depth is drawn downwards.
@@ -39,14 +40,10 @@
 //! - SI units internally; solutions work in units of the half-width `a` and peak pressure `p0`.
 
 pub mod assess;
-pub mod compare;
 pub mod contact;
 pub mod field;
-pub mod field_file;
 pub mod figure;
-pub mod grid_table;
-pub mod input;
-pub mod output;
+pub mod io;
 pub mod probe;
 #[cfg(feature = "rerun")]
 pub mod record;
@@ -58,6 +55,5 @@ pub mod solution;
 pub mod stress;
 pub mod study;
 pub mod surface;
-pub mod text;
 pub mod thermal;
 pub mod transform;

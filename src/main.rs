@@ -9,7 +9,7 @@ use clap::Parser;
 fn main() -> ExitCode {
     let args = cli::args::Args::parse();
     // An interruption (Ctrl-C, kill) removes the temporary files of unfinished outputs.
-    if let Err(e) = stressfield::output::remove_pending_on_interrupt() {
+    if let Err(e) = stressfield::io::output::remove_pending_on_interrupt() {
         eprintln!("warning: cannot watch for interruptions ({e}): an interrupted run may leave .stressfield-*.part files");
     }
     match cli::run(args.command) {

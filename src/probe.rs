@@ -16,9 +16,9 @@ pub enum ProbeError {
         text: String,
         reason: String,
     },
-    #[error("line {line}: z = {} lies outside the body; z >= 0 points into the body", crate::text::number(*.z))]
+    #[error("line {line}: z = {} lies outside the body; z >= 0 points into the body", crate::io::text::number(*.z))]
     OutsideBody { line: usize, z: f64 },
-    #[error("line {line}: the point ({}, {}, {}) lies {} a from the contact, farther than the {} a a probe reaches\nhint: beyond it every stress is below 1e-9 p0 (they fall as a/r for a line contact, (a/r)² for a point contact); probe nearer", crate::text::number(.point[0]), crate::text::number(.point[1]), crate::text::number(.point[2]), crate::text::number(*.distance), crate::text::compact(MAX_DISTANCE_OVER_A))]
+    #[error("line {line}: the point ({}, {}, {}) lies {} a from the contact, farther than the {} a a probe reaches\nhint: beyond it every stress is below 1e-9 p0 (they fall as a/r for a line contact, (a/r)² for a point contact); probe nearer", crate::io::text::number(.point[0]), crate::io::text::number(.point[1]), crate::io::text::number(.point[2]), crate::io::text::number(*.distance), crate::io::text::compact(MAX_DISTANCE_OVER_A))]
     TooFar {
         line: usize,
         point: [f64; 3],
@@ -39,12 +39,16 @@ pub const MAX_DISTANCE_OVER_A: f64 = 1e9;
 const ECHO_CHARS: usize = 80;
 
 /// Reads rows `x,y,z`; blank lines and `#` comments are skipped, and a first row `x,y,z` is
-/// taken as a header. At most [`crate::input::POINTS_LIMIT`] bytes in all and
-/// [`crate::input::LINE_LIMIT`] a line; points within [`MAX_DISTANCE_OVER_A`] of the origin.
+/// taken as a header. At most [`crate::io::input::POINTS_LIMIT`] bytes in all and
+/// [`crate::io::input::LINE_LIMIT`] a line; points within [`MAX_DISTANCE_OVER_A`] of the origin.
 pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
     let mut points = Vec::new();
     let mut seen_row = false;
-    let lines = crate::input::lines(input, crate::input::POINTS_LIMIT, crate::input::LINE_LIMIT);
+    let lines = crate::io::input::lines(
+        input,
+        crate::io::input::POINTS_LIMIT,
+        crate::io::input::LINE_LIMIT,
+    );
     for line in lines {
         let (line_number, line) = line.map_err(|e| ProbeError::Read(e.to_string()))?;
         let text = line.trim();
@@ -64,7 +68,7 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
         seen_row = true;
         let bad = |reason: &str| ProbeError::BadRow {
             line: line_number,
-            text: crate::text::cut(text, ECHO_CHARS),
+            text: crate::io::text::cut(text, ECHO_CHARS),
             reason: reason.into(),
         };
         if fields.len() != 3 {
@@ -72,7 +76,7 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
         }
         let mut point = [0.0_f64; 3];
         for (value, field) in point.iter_mut().zip(&fields) {
-            let shown = crate::text::cut(field, 30);
+            let shown = crate::io::text::cut(field, 30);
             *value = field
                 .parse()
                 .map_err(|_| bad(&format!("`{shown}` is not a number")))?;
@@ -105,7 +109,7 @@ pub fn read_points(input: impl BufRead) -> Result<Vec<[f64; 3]>, ProbeError> {
 /// Writes the header and one row per point ([`Solution::finite_stress_over_p0`]: on a strip
 /// or cell edge at the surface of a numerical solution, the mean of the neighbouring centres),
 /// every value in shortest round-trip form (17 significant digits at most, exact to the last
-/// bit; exponent notation where it is shorter, see [`crate::text::number`]).
+/// bit; exponent notation where it is shorter, see [`crate::io::text::number`]).
 pub fn write_csv(
     out: &mut impl Write,
     solution: &Solution,
@@ -131,7 +135,7 @@ pub fn write_csv(
             s.von_mises(),
             s.max_shear(),
         ];
-        let row: Vec<String> = values.iter().map(|v| crate::text::number(*v)).collect();
+        let row: Vec<String> = values.iter().map(|v| crate::io::text::number(*v)).collect();
         writeln!(out, "{}", row.join(","))?;
     }
     Ok(())

@@ -6,7 +6,7 @@
 
 use std::path::{Path, PathBuf};
 
-use stressfield::compare::{compare, diff_image, Tolerance};
+use stressfield::regression::compare::{compare, diff_image, Tolerance};
 use stressfield::scene::Scene;
 use stressfield::{figure, render};
 
@@ -24,7 +24,7 @@ fn check_golden(name: &str) {
     let reference = golden_dir().join(format!("{name}.png"));
     if std::env::var_os("UPDATE_GOLDEN").is_some() {
         let bytes = render::encode_png(&actual).expect("encodes");
-        stressfield::output::write_atomic(&reference, &bytes).expect("writes the reference");
+        stressfield::io::output::write_atomic(&reference, &bytes).expect("writes the reference");
         return;
     }
     let expected = image::open(&reference)

@@ -313,7 +313,7 @@ fn the_image_measure_is_selectable() {
     ws.change_b("0.25");
     assert_success(&ws.render("new", &[]));
     let after = image::open(ws.path("new/b.png")).expect("png").to_rgb8();
-    let rms = stressfield::compare::rms_difference(&after, &before);
+    let rms = stressfield::regression::compare::rms_difference(&after, &before);
     assert!(rms > 0.1, "the change shows: RMS {rms}");
     let reference = ws.path("ref");
     let reference = utf8(&reference);

@@ -6,10 +6,10 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 
 use super::args::{CompareArgs, MeasureArg};
-use stressfield::compare::{self, Tolerance};
-use stressfield::field_file::{self, PanelField};
-use stressfield::input::{self, InputError};
-use stressfield::output::{write_atomic, Staged};
+use stressfield::io::input::{self, InputError};
+use stressfield::io::output::{write_atomic, Staged};
+use stressfield::regression::compare::{self, Tolerance};
+use stressfield::regression::field_file::{self, PanelField};
 use stressfield::regression::{self, FieldCheck, ImageCheck, ImageMeasure, SceneOutcome, Status};
 use stressfield::render;
 
@@ -61,7 +61,7 @@ impl CompareOptions {
                 if !(max.is_finite() && max >= 0.0) {
                     bail!(
                         "--rms-tolerance must be a finite number >= 0 (levels of 255), got {}",
-                        stressfield::text::number(max)
+                        stressfield::io::text::number(max)
                     );
                 }
                 ImageMeasure::Rms { max }
@@ -71,7 +71,7 @@ impl CompareOptions {
         if !(field_tolerance.is_finite() && field_tolerance >= 0.0) {
             bail!(
                 "--field-tolerance must be a finite number >= 0 (in the figure's stress unit), got {}",
-                stressfield::text::number(field_tolerance)
+                stressfield::io::text::number(field_tolerance)
             );
         }
         if args.update {

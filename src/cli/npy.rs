@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
-use stressfield::output::write_atomic;
+use stressfield::io::output::write_atomic;
 
 /// Refuses an output path that does not end in `.npy`.
 pub(crate) fn npy_path(flag: &str, path: &Path) -> Result<()> {

@@ -6,11 +6,11 @@ use anyhow::{bail, Context, Result};
 
 use super::args::{ContactArg, MethodArg, ProbeArgs};
 use super::console::with_stdout;
+use stressfield::io::text;
 use stressfield::probe;
 use stressfield::scene::{ContactKind, Method, PanelSpec, Scene};
 use stressfield::solution::Solution;
 use stressfield::study;
-use stressfield::text;
 
 pub(super) fn probe_command(args: &ProbeArgs) -> Result<()> {
     let ProbeArgs {

@@ -165,7 +165,7 @@ pub fn thermal(
         write_npy(path, &study.body1.temperature_k, "temperature")?;
     }
     if let (Some(path), Some(bytes)) = (figure, &drawing) {
-        stressfield::output::write_atomic(path, bytes)?;
+        stressfield::io::output::write_atomic(path, bytes)?;
     }
     if json {
         print_out(&format!("{}\n", report.json()))

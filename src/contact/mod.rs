@@ -33,7 +33,7 @@ pub enum ContactError {
     NotConvex { curvature_per_m: f64 },
     #[error("both bodies are flat: Hertz theory needs at least one curved body")]
     BothFlat,
-    #[error("{name} must be {requirement}, got {}", crate::text::number(*.value))]
+    #[error("{name} must be {requirement}, got {}", crate::io::text::number(*.value))]
     InvalidParameter {
         name: &'static str,
         requirement: &'static str,

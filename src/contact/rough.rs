@@ -81,7 +81,7 @@ pub const DEFAULT_MAX_ITERATIONS: usize = 5000;
 /// Why a rough contact has no solution here.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum RoughContactError {
-    #[error("{name} {requirement}, got {}", crate::text::number(*.value))]
+    #[error("{name} {requirement}, got {}", crate::io::text::number(*.value))]
     Parameter {
         name: &'static str,
         requirement: &'static str,

@@ -5,10 +5,10 @@ pub mod rough;
 pub mod thermal;
 
 use crate::field::{self, Axis, FieldError, Plane, Section};
+use crate::io::text;
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
 use crate::study;
-use crate::text;
 
 /// Number of samples of the traction profile across the figure.
 const TRACTION_SAMPLES: usize = 601;

@@ -163,7 +163,7 @@ pub fn thermal_sheet(
     let pe = study.body1.peclet;
     let peclet_text = format!(
         "Pe = {pe:.2}, V = {} m/s{}",
-        crate::text::significant(study.spec.sliding_speed_m_per_s, 4, 1e6, true),
+        crate::io::text::significant(study.spec.sliding_speed_m_per_s, 4, 1e6, true),
         gear.map_or(String::new(), |g| format!(
             " at s = {:.2} mm on the path",
             g.points[g.hottest].s_m * 1e3

@@ -31,7 +31,7 @@ fn colour([r, g, b]: [u8; 3]) -> rerun::Color {
 /// A number with three significant digits, or in exponent form when very small or large;
 /// a typographic minus.
 pub fn short(value: f64) -> String {
-    crate::text::significant(value, 3, 1e5, false)
+    crate::io::text::significant(value, 3, 1e5, false)
 }
 
 /// A stress with its unit: `0.557 p0`, `612 MPa`.

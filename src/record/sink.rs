@@ -5,7 +5,7 @@
 //! file and the system's reason ("No space left on device") and no rename ever replaces
 //! something that is not a regular file:
 //! - a new path or a regular file: written into a temporary file beside it (registered with
-//!   [`crate::output::Pending`], so that an interruption removes it) and renamed over it once
+//!   [`crate::io::output::Pending`], so that an interruption removes it) and renamed over it once
 //!   complete;
 //! - a symbolic link: followed; its target is treated by these rules (the link stays);
 //! - a character device or a FIFO (`/dev/null`, a named pipe): written through, as a shell's
@@ -23,7 +23,7 @@ use rerun::sink::{LogSink, SinkFlushError};
 use rerun::RecordingStream;
 
 use super::{RecordError, APPLICATION_ID};
-use crate::output::Pending;
+use crate::io::output::Pending;
 
 /// The address `--connect` uses when none is given: a viewer on this machine, default port.
 pub const DEFAULT_VIEWER_URL: &str = rerun::DEFAULT_CONNECT_URL;

@@ -7,9 +7,9 @@ pub mod thermal;
 use std::fmt::Write;
 
 use crate::assess::{grid_maxima, Extreme, StressMaxima};
+use crate::io::text;
 use crate::scene::{ContactKind, Hertz, Method, PanelSpec, Scene};
 use crate::solution::Solution;
-use crate::text;
 
 /// The report of a traction scene: the figure's units and the resultants of the file's
 /// tractions.
@@ -22,10 +22,10 @@ fn write_tractions(out: &mut String, scene: &Scene) -> std::fmt::Result {
             "figure units: lengths in a = {:.3} µm, stresses in p0 = {:.2} MPa; body ν = {}",
             a_m * 1e6,
             p0_pa * 1e-6,
-            crate::text::number(scene.contact.poisson)
+            crate::io::text::number(scene.contact.poisson)
         )?;
     } else {
-        writeln!(out, "normalised: the file gives lengths in units of a and tractions in units of p0; body ν = {}", crate::text::number(scene.contact.poisson))?;
+        writeln!(out, "normalised: the file gives lengths in units of a and tractions in units of p0; body ν = {}", crate::io::text::number(scene.contact.poisson))?;
     }
     let Some(grid) = &scene.tractions else {
         return Ok(());
@@ -115,7 +115,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     writeln!(
         out,
         "contact: {geometry}; friction μ = {} (q = μ p on body 1 in +x, trailing edge at x = -a)",
-        crate::text::number(contact.friction)
+        crate::io::text::number(contact.friction)
     )?;
     let a_name = if point {
         "contact radius              "
@@ -127,14 +127,14 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             writeln!(
                 out,
                 "normalised contact: lengths in units of a, stresses in units of p0; body 1 ν = {}",
-                crate::text::number(contact.poisson)
+                crate::io::text::number(contact.poisson)
             )?;
         }
         (None, Some(scale)) => {
             writeln!(
                 out,
                 "contact given by its size; body 1 ν = {}",
-                crate::text::number(contact.poisson)
+                crate::io::text::number(contact.poisson)
             )?;
             let (a, p0) = (scale.half_width_m, scale.p0_pa);
             writeln!(out, "{a_name} a  = {} µm", text::fixed(a * 1e6, 3))?;
@@ -208,7 +208,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
                     out,
                     "{name}: radius {radius}, E = {} GPa, ν = {}",
                     text::fixed(body.material.modulus_pa * 1e-9, 1),
-                    crate::text::number(body.material.poisson)
+                    crate::io::text::number(body.material.poisson)
                 )?;
             }
             match d.hertz {
@@ -426,7 +426,7 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
     writeln!(
         out,
         "stress maxima in {body} (ν = {}):",
-        crate::text::number(contact.poisson)
+        crate::io::text::number(contact.poisson)
     )?;
     writeln!(
         out,
@@ -472,7 +472,7 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
         return Ok(());
     };
     match y.from_hardness {
-        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, crate::text::number(h), h * 9.80665)?,
+        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, crate::io::text::number(h), h * 9.80665)?,
         None => writeln!(out, "yield strength               Y  = {:.0} MPa", y.pa * 1e-6)?,
     }
     let ratio_vm = vm * p0_pa / y.pa;

@@ -304,7 +304,7 @@ impl ThermalReport {
     fn write_text(&self, out: &mut String, study: &ThermalStudy) -> std::fmt::Result {
         let um = |m: f64| m * 1e6;
         let mpa = |pa: f64| pa * 1e-6;
-        let speed = |v: f64| crate::text::significant(v, 5, 1e6, true);
+        let speed = |v: f64| crate::io::text::significant(v, 5, 1e6, true);
         let partition = match study.spec.partition {
             Partition::Body1 => "all into body 1 (counter-face adiabatic)".to_string(),
             Partition::Fraction(f) => format!("fraction {f} into body 1, as given"),

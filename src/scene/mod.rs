@@ -40,7 +40,7 @@ pub fn friction_requirement(mu: f64) -> Option<String> {
     }
     Some(format!(
         "the coefficient of friction must lie in 0..={MAX_FRICTION}, got {}",
-        crate::text::number(mu)
+        crate::io::text::number(mu)
     ))
 }
 
@@ -104,18 +104,15 @@ impl Scene {
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Self, SceneError> {
         let file = path.display().to_string();
-        let text =
-            crate::input::read_to_string(path, crate::input::SCENE_FILE_LIMIT).map_err(|e| {
-                SceneError {
-                    file: file.clone(),
-                    key: None,
-                    line_column: None,
-                    message: format!("cannot read the scene: {e}"),
-                    hint: Some(
-                        "check the path; scenes are TOML files such as scenes/line_tau1.toml"
-                            .into(),
-                    ),
-                }
+        let text = crate::io::input::read_to_string(path, crate::io::input::SCENE_FILE_LIMIT)
+            .map_err(|e| SceneError {
+                file: file.clone(),
+                key: None,
+                line_column: None,
+                message: format!("cannot read the scene: {e}"),
+                hint: Some(
+                    "check the path; scenes are TOML files such as scenes/line_tau1.toml".into(),
+                ),
             })?;
         let name = path
             .file_stem()

@@ -79,7 +79,7 @@ impl Sweep {
                 )
             }
             SweepParameter::Peclet => {
-                let three = |v: f64| crate::text::significant(v, 3, 1e6, true);
+                let three = |v: f64| crate::io::text::significant(v, 3, 1e6, true);
                 match &scene.thermal {
                     Some(spec) => {
                         let stepped = spec.at_body1_peclet(value, scene.contact.half_width_m());
@@ -126,7 +126,7 @@ impl ThermalSpec {
 /// A number with at most four significant digits and no trailing zeros (`0.15`, `800`,
 /// `−0.866`), in exponent form when very small or large; a typographic minus.
 pub fn compact(value: f64) -> String {
-    crate::text::significant(value, 4, 1e6, true)
+    crate::io::text::significant(value, 4, 1e6, true)
 }
 
 /// A validated `[volume]`: a box under a point contact recorded as nested iso-surfaces.

@@ -34,18 +34,18 @@ pub struct TractionTable {
 /// Reads the table. The header names the columns (`x`, `y`, `p`, and optionally `qx`, `qy`, in
 /// any order); `#` comments and blank lines are skipped; the rows may come in any order but must
 /// cover every node of a regular grid (at least 2 x 2) exactly once. `p >= 0` (compressive
-/// contact pressure). Lines are at most [`crate::input::LINE_LIMIT`] bytes, and the grid at
+/// contact pressure). Lines are at most [`crate::io::input::LINE_LIMIT`] bytes, and the grid at
 /// most [`MAX_NODES_PER_SIDE`] nodes along each side. Errors name the line and the fix.
 pub fn read(text: &str) -> Result<TractionTable, String> {
     if let Some((number, _)) = text
         .lines()
         .enumerate()
-        .find(|(_, l)| l.len() > crate::input::LINE_LIMIT)
+        .find(|(_, l)| l.len() > crate::io::input::LINE_LIMIT)
     {
         return Err(format!(
             "line {}: longer than the {} allowed for a line: is it the right file?",
             number + 1,
-            crate::text::bytes(crate::input::LINE_LIMIT as u64)
+            crate::io::text::bytes(crate::io::input::LINE_LIMIT as u64)
         ));
     }
     let mut lines = text
@@ -61,7 +61,7 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
     let (Some(ix), Some(iy), Some(ip)) = (column("x"), column("y"), column("p")) else {
         return Err(format!(
             "line {header_line}: the header must name the columns x, y and p (and optionally qx, qy), got `{}`",
-            crate::text::cut(header, 60)
+            crate::io::text::cut(header, 60)
         ));
     };
     if let Some(unknown) = names
@@ -70,7 +70,7 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
     {
         return Err(format!(
             "line {header_line}: unknown column `{}`; the columns are x, y, p, qx, qy",
-            crate::text::cut(unknown, 40)
+            crate::io::text::cut(unknown, 40)
         ));
     }
     if let Some((second, name)) = names
@@ -111,7 +111,7 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
             let v: f64 = fields[index].parse().map_err(|_| {
                 format!(
                     "line {number}: {name} = `{}` is not a number",
-                    crate::text::cut(fields[index], 40)
+                    crate::io::text::cut(fields[index], 40)
                 )
             })?;
             if !v.is_finite() {
@@ -144,7 +144,7 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
         rows.push(row);
     }
     let points: Vec<[f64; 2]> = rows.iter().map(|r| [r[0], r[1]]).collect();
-    let grid = crate::grid_table::assemble(&points)?;
+    let grid = crate::io::grid_table::assemble(&points)?;
     let [ny, nx] = grid.shape;
     if nx > MAX_NODES_PER_SIDE || ny > MAX_NODES_PER_SIDE {
         return Err(format!(

@@ -99,7 +99,7 @@ pub struct Generator {
 /// Parameters that cannot make a surface.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum GenerateError {
-    #[error("{name} {requirement}, got {}", crate::text::number(*.value))]
+    #[error("{name} {requirement}, got {}", crate::io::text::number(*.value))]
     Parameter {
         name: &'static str,
         requirement: &'static str,

@@ -19,9 +19,9 @@ use rayon::prelude::*;
 pub enum SurfaceError {
     #[error("a height map needs at least 2 x 2 samples, got {rows} row(s) of {columns}")]
     TooSmall { rows: usize, columns: usize },
-    #[error("the sample spacing must lie between {} m and {} m, got dx = {} m, dy = {} m", crate::text::compact(MIN_SPACING_M), crate::text::compact(MAX_SPACING_M), crate::text::number(*.dx), crate::text::number(*.dy))]
+    #[error("the sample spacing must lie between {} m and {} m, got dx = {} m, dy = {} m", crate::io::text::compact(MIN_SPACING_M), crate::io::text::compact(MAX_SPACING_M), crate::io::text::number(*.dx), crate::io::text::number(*.dy))]
     Spacing { dx: f64, dy: f64 },
-    #[error("the height at row {row}, column {column} is {} m, more than the {} m a surface's height may reach (are the height unit and the spacing right?)", crate::text::number(*.value), crate::text::compact(MAX_HEIGHT_M))]
+    #[error("the height at row {row}, column {column} is {} m, more than the {} m a surface's height may reach (are the height unit and the spacing right?)", crate::io::text::number(*.value), crate::io::text::compact(MAX_HEIGHT_M))]
     TooHigh {
         row: usize,
         column: usize,

@@ -17,7 +17,7 @@
 //!
 //! ## XYZ (`.xyz`)
 //! Three numbers per line, x, y and z, the nodes of a regular grid in any order (as the
-//! traction CSV reader takes them, [`crate::grid_table`]); x and y in the length unit and z in
+//! traction CSV reader takes them, [`crate::io::grid_table`]); x and y in the length unit and z in
 //! the height unit of [`ReadOptions`] (both default to metres).
 //!
 //! ## Missing points
@@ -141,9 +141,9 @@ fn read_text(path: &Path) -> Result<String, ReadError> {
         });
     }
     // Counted as read too: a device or a pipe (`/dev/zero`) has no size beforehand.
-    crate::input::read_to_string(path, limit).map_err(|e| match e {
-        crate::input::InputError::Io(source) => io(source),
-        crate::input::InputError::TooLarge { limit } => ReadError::TooLarge {
+    crate::io::input::read_to_string(path, limit).map_err(|e| match e {
+        crate::io::input::InputError::Io(source) => io(source),
+        crate::io::input::InputError::TooLarge { limit } => ReadError::TooLarge {
             path: name.clone(),
             size_mib: (limit >> 20) + 1,
             limit_mib: limit >> 20,
@@ -391,7 +391,7 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
         points.push([xyz[0], xyz[1]]);
         values.push(xyz[2]);
     }
-    let grid = crate::grid_table::assemble(&points).map_err(|m| {
+    let grid = crate::io::grid_table::assemble(&points).map_err(|m| {
         format(m.replace(
             "give the tractions at the centres of a regular grid",
             "give the heights on a regular grid",

@@ -59,7 +59,7 @@ impl Validator<'_> {
                     "contact.tangential",
                     format!(
                         "the tangential force over mu P must lie in (0, 1], got {}",
-                        crate::text::number(ratio)
+                        crate::io::text::number(ratio)
                     ),
                     Some("1 is full sliding; 0.5 leaves a stick circle of radius 0.79a"),
                 ))
@@ -130,7 +130,7 @@ impl Validator<'_> {
                     "contact.aspect",
                     format!(
                         "the semi-axis ratio b/a must lie in {MIN_ASPECT}..={MAX_ASPECT}, got {}",
-                        crate::text::number(ratio)
+                        crate::io::text::number(ratio)
                     ),
                     Some("b is the semi-axis along y, a along x (the sliding direction)"),
                 ))
@@ -237,9 +237,9 @@ impl Validator<'_> {
                         "contact.gears",
                         format!(
                             "the {name}'s radius of curvature at the pitch point is {} m, outside {} m to {} m",
-                            crate::text::approx(radius),
-                            crate::text::compact(RADIUS_BOUNDS.lo),
-                            crate::text::compact(RADIUS_BOUNDS.hi)
+                            crate::io::text::approx(radius),
+                            crate::io::text::compact(RADIUS_BOUNDS.lo),
+                            crate::io::text::compact(RADIUS_BOUNDS.hi)
                         ),
                         Some("check module, teeth and pressure_angle (20 deg is standard)"),
                     ));
@@ -272,9 +272,9 @@ impl Validator<'_> {
                         "contact.body2.radius_y",
                         format!(
                             "the radii give an ellipse with b/a = {} (b = {} m along y, a = {} m along x); b/a must lie in {MIN_ASPECT}..={MAX_ASPECT}",
-                            crate::text::approx(aspect),
-                            crate::text::approx(ellipse.semi_axis_y_m),
-                            crate::text::approx(ellipse.semi_axis_x_m)
+                            crate::io::text::approx(aspect),
+                            crate::io::text::approx(ellipse.semi_axis_y_m),
+                            crate::io::text::approx(ellipse.semi_axis_x_m)
                         ),
                         Some("the relative curvatures in x and y (1/radius_x and 1/radius_y of both bodies, added) must not differ by more than about 1000; a nearly conforming groove gives a very long ellipse: check radius_y"),
                     ));
@@ -357,7 +357,7 @@ impl Validator<'_> {
                     "contact.load",
                     format!(
                         "with these bodies the load gives {name} = {}: every Hertz value must be finite and positive",
-                        crate::text::approx(value)
+                        crate::io::text::approx(value)
                     ),
                     Some("check the load, the radii and the moduli (and their units)"),
                 ));
@@ -374,7 +374,7 @@ impl Validator<'_> {
                 key,
                 format!(
                     "a bare number means normalised units and must be 1, got {}",
-                    crate::text::number(*n)
+                    crate::io::text::number(*n)
                 ),
                 Some(&format!(
                     "write it with a unit for a dimensional scale, e.g. {}",

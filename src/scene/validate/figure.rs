@@ -33,8 +33,8 @@ impl Validator<'_> {
                 key,
                 format!(
                     "`{}` lies more than {} a from the contact, as far as figures, sections and points may reach",
-                    crate::text::cut(written, 40),
-                    crate::text::compact(REACH_OVER_A)
+                    crate::io::text::cut(written, 40),
+                    crate::io::text::compact(REACH_OVER_A)
                 ),
                 Some("there the stresses have fallen below 1e-4 p0 (line contact) or 1e-8 p0 (point contact): draw nearer to the contact"),
             ));
@@ -52,7 +52,7 @@ impl Validator<'_> {
         suffix: &str,
     ) -> Result<(), SceneError> {
         for end in [lo, hi] {
-            let written = format!("{}{suffix}", crate::text::number(end));
+            let written = format!("{}{suffix}", crate::io::text::number(end));
             self.within_reach(key, end * unit_over_a, &written)?;
         }
         if (hi - lo) * unit_over_a < MIN_SPAN_OVER_A {
@@ -60,10 +60,10 @@ impl Validator<'_> {
                 key,
                 format!(
                     "the range [{}, {}] spans {} a, less than the {} a a figure can resolve",
-                    crate::text::number(lo),
-                    crate::text::number(hi),
-                    crate::text::number((hi - lo) * unit_over_a),
-                    crate::text::compact(MIN_SPAN_OVER_A)
+                    crate::io::text::number(lo),
+                    crate::io::text::number(hi),
+                    crate::io::text::number((hi - lo) * unit_over_a),
+                    crate::io::text::compact(MIN_SPAN_OVER_A)
                 ),
                 Some("widen the range"),
             ));
@@ -87,7 +87,10 @@ impl Validator<'_> {
         if !at.is_finite() {
             return Err(self.error(
                 key,
-                format!("must be a finite {normal}, got {}", crate::text::number(at)),
+                format!(
+                    "must be a finite {normal}, got {}",
+                    crate::io::text::number(at)
+                ),
                 None,
             ));
         }
@@ -95,7 +98,7 @@ impl Validator<'_> {
             figure.length_unit.metres(contact.half_width_m()) / contact.half_width_m();
         let written = format!(
             "{}{}",
-            crate::text::number(at),
+            crate::io::text::number(at),
             unit_after(figure.length_unit)
         );
         self.within_reach(key, at * unit_over_a, &written)?;
@@ -111,7 +114,7 @@ impl Validator<'_> {
                 key,
                 format!(
                     "the depth of an xy section must be >= 0 (z points into the body), got {}",
-                    crate::text::number(at)
+                    crate::io::text::number(at)
                 ),
                 Some("0 is the surface"),
             ));
@@ -254,7 +257,7 @@ impl Validator<'_> {
                 "figure.z",
                 format!(
                     "depth must be >= 0 (z points into the body), got {}",
-                    crate::text::number(vertical.0)
+                    crate::io::text::number(vertical.0)
                 ),
                 Some("start the range at 0 for the surface"),
             ));
@@ -276,9 +279,9 @@ impl Validator<'_> {
                 &format!("figure.{key}"),
                 format!(
                     "at equal scale the section would be drawn {} times as tall as it is wide ({} by {}{suffix}); keep the ratio between 1/{MAX_ASPECT} and {MAX_ASPECT}",
-                    crate::text::number((aspect * 1000.0).round() / 1000.0),
-                    crate::text::number(horizontal.1 - horizontal.0),
-                    crate::text::number(vertical.1 - vertical.0),
+                    crate::io::text::number((aspect * 1000.0).round() / 1000.0),
+                    crate::io::text::number(horizontal.1 - horizontal.0),
+                    crate::io::text::number(vertical.1 - vertical.0),
                 ),
                 Some(&format!(
                     "adjust figure.{horizontal_name} or figure.{vertical_name}, or split the section into several panels"

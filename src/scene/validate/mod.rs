@@ -308,7 +308,7 @@ impl Validator<'_> {
                 key,
                 format!(
                     "Poisson's ratio must lie in (-1, 0.5], got {}",
-                    crate::text::number(nu)
+                    crate::io::text::number(nu)
                 ),
                 Some("steel is about 0.3"),
             ));
@@ -344,9 +344,9 @@ impl Validator<'_> {
                 key,
                 format!(
                     "must lie between {} {unit} and {} {unit}, got `{}`",
-                    crate::text::compact(bounds.lo),
-                    crate::text::compact(bounds.hi),
-                    crate::text::cut(text, 40)
+                    crate::io::text::compact(bounds.lo),
+                    crate::io::text::compact(bounds.hi),
+                    crate::io::text::cut(text, 40)
                 ),
                 Some(bounds.why),
             ));

@@ -51,7 +51,7 @@ impl Validator<'_> {
             (Some(e), _) => {
                 return Err(self.error(
                     "numerical.extent",
-                    format!("must lie in 1..=20 semi-axes, got {}", crate::text::number(e)),
+                    format!("must lie in 1..=20 semi-axes, got {}", crate::io::text::number(e)),
                     Some("the grid must cover the contact, -a..a (and -b..b across); 2 leaves room around it"),
                 ))
             }

@@ -287,7 +287,7 @@ impl Validator<'_> {
                 if !(hurst > 0.0 && hurst <= 1.0) {
                     return Err(self.error(
                         &format!("{key}.hurst"),
-                        format!("must lie in (0, 1], got {}", crate::text::number(hurst)),
+                        format!("must lie in (0, 1], got {}", crate::io::text::number(hurst)),
                         Some("measured surfaces have Hurst exponents of 0.5 to 1; 0.8 is common"),
                     ));
                 }
@@ -299,7 +299,7 @@ impl Validator<'_> {
                         rolloff_wavelength_m: rolloff,
                         cutoff_wavelength_m: cutoff,
                     },
-                    format!("self-affine, H = {}, roll-off {:.4} um, cutoff {:.4} um", crate::text::number(hurst), rolloff * 1e6, cutoff * 1e6),
+                    format!("self-affine, H = {}, roll-off {:.4} um, cutoff {:.4} um", crate::io::text::number(hurst), rolloff * 1e6, cutoff * 1e6),
                 )
             }
             (None, Some(length)) => {
@@ -343,8 +343,8 @@ impl Validator<'_> {
                     &format!("{key}.rms_slope"),
                     format!(
                         "must lie between {} and {MAX_RMS_SLOPE}, got {}",
-                        crate::text::compact(MIN_RMS_SLOPE),
-                        crate::text::number(slope)
+                        crate::io::text::compact(MIN_RMS_SLOPE),
+                        crate::io::text::number(slope)
                     ),
                     Some("machined and worn surfaces have rms slopes of 0.01 to 0.5"),
                 ))
@@ -409,10 +409,10 @@ impl Validator<'_> {
                     "contact.load",
                     format!(
                         "{} N over the map's {} m² is a mean pressure of {} Pa, more than the combined modulus E* = {} Pa",
-                        crate::text::approx(newtons),
-                        crate::text::approx(area_m2),
-                        crate::text::approx(newtons / area_m2),
-                        crate::text::approx(e_star)
+                        crate::io::text::approx(newtons),
+                        crate::io::text::approx(area_m2),
+                        crate::io::text::approx(newtons / area_m2),
+                        crate::io::text::approx(e_star)
                     ),
                     Some("rough contact is elastic (up to a hardness cap): give a load whose mean pressure over the map is a small fraction of E*, or a larger map"),
                 ))
@@ -421,8 +421,8 @@ impl Validator<'_> {
                 "contact.mean_pressure",
                 format!(
                     "{} Pa is more than the combined modulus E* = {} Pa",
-                    crate::text::approx(pa),
-                    crate::text::approx(e_star)
+                    crate::io::text::approx(pa),
+                    crate::io::text::approx(e_star)
                 ),
                 Some("rough contact is elastic (up to a hardness cap): give a small fraction of E*"),
             )),
@@ -438,8 +438,8 @@ impl Validator<'_> {
                         "contact.approach",
                         format!(
                             "{} m is more than the surface's peak-to-valley height {} m: the surfaces would overlap everywhere",
-                            crate::text::approx(m),
-                            crate::text::approx(high - low)
+                            crate::io::text::approx(m),
+                            crate::io::text::approx(high - low)
                         ),
                         Some("the approach is counted from first contact: give a fraction of the peak-to-valley height"),
                     ))
@@ -499,7 +499,7 @@ impl Validator<'_> {
                 if !(t > 0.0 && t < 1e-2) {
                     return Err(self.error(
                         "numerical.tolerance",
-                        format!("must lie in (0, 0.01), got {}", crate::text::number(t)),
+                        format!("must lie in (0, 0.01), got {}", crate::io::text::number(t)),
                         Some("the default is 1e-8"),
                     ));
                 }

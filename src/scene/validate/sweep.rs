@@ -51,7 +51,7 @@ impl Validator<'_> {
                             key,
                             format!(
                                 "must be a finite number, got {}",
-                                crate::text::number(value)
+                                crate::io::text::number(value)
                             ),
                             None,
                         ));
@@ -62,8 +62,8 @@ impl Validator<'_> {
                         "sweep.to",
                         format!(
                             "the span from {} to {} is beyond double precision",
-                            crate::text::number(from),
-                            crate::text::number(to)
+                            crate::io::text::number(from),
+                            crate::io::text::number(to)
                         ),
                         Some("give a sweep of sizes a user could mean"),
                     ));
@@ -84,7 +84,7 @@ impl Validator<'_> {
                                 key,
                                 format!(
                                     "Péclet numbers are spaced geometrically from `from` to `to` (Pe 0.1 to 100 is three decades), so both must be positive, got {}",
-                                    crate::text::number(value)
+                                    crate::io::text::number(value)
                                 ),
                                 Some("e.g. from = 0.1, to = 100, steps = 13 (four steps a decade)"),
                             ));
@@ -138,7 +138,7 @@ impl Validator<'_> {
         };
         for (key, value, text) in checked {
             let key = key.as_str();
-            let written = text.map_or_else(|| crate::text::number(value), str::to_string);
+            let written = text.map_or_else(|| crate::io::text::number(value), str::to_string);
             match parameter {
                 SweepParameter::Friction => {
                     self.friction(key, value)?;
@@ -271,7 +271,7 @@ impl Validator<'_> {
                         let unit_over_a = crate::study::length_unit_over_a(scene);
                         let suffix = unit_after(scene.figure.length_unit);
                         for value in [*x, *z] {
-                            let written = format!("{}{suffix}", crate::text::number(value));
+                            let written = format!("{}{suffix}", crate::io::text::number(value));
                             self.within_reach(&key, value * unit_over_a, &written)?;
                         }
                         material_points.push((*x, *z));
@@ -309,7 +309,7 @@ impl Validator<'_> {
     /// [`peclet_limit`]: crate::study::thermal_sweep::peclet_limit
     fn peclet(&self, key: &str, value: f64, scene: &Scene) -> Result<(), SceneError> {
         use crate::study::thermal_sweep::{peclet_limit, MIN_PECLET, SWEEP_CELLS};
-        let written = crate::text::number(value);
+        let written = crate::io::text::number(value);
         if !(value.is_finite() && value >= MIN_PECLET) {
             return Err(self.error(
                 key,
@@ -327,7 +327,7 @@ impl Validator<'_> {
                 key,
                 format!(
                     "Pe = {written} is beyond what the sweep's grid resolves: at most {} for these bodies ({SWEEP_CELLS} cells across 6a, a cell Péclet number V dx / (2κ) of at most 2 for every heated body)",
-                    crate::text::significant(limit, 4, 1e6, true)
+                    crate::io::text::significant(limit, 4, 1e6, true)
                 ),
                 Some("lower it: beyond, the maximum temperature follows the fast (Jaeger, Blok) limit, growing as √Pe"),
             ));

@@ -96,7 +96,7 @@ impl Validator<'_> {
                     "thermal.friction",
                     format!(
                         "the mesh's friction coefficient must lie in (0, {MAX_FRICTION}], got {}",
-                        crate::text::number(f)
+                        crate::io::text::number(f)
                     ),
                     Some("gears run with about 0.03 to 0.08 when lubricated"),
                 ))
@@ -297,7 +297,7 @@ impl Validator<'_> {
                 "contact.gears",
                 format!(
                     "the contact ratio is {}: one pair of teeth leaves contact before the next engages",
-                    crate::text::approx(ratio)
+                    crate::io::text::approx(ratio)
                 ),
                 Some("give more teeth or a smaller pressure_angle"),
             ));
@@ -318,7 +318,7 @@ impl Validator<'_> {
                 "blok" => Ok(Partition::Blok),
                 other => Err(self.error(
                     key,
-                    format!("unknown partition `{}`", crate::text::cut(other, 40)),
+                    format!("unknown partition `{}`", crate::io::text::cut(other, 40)),
                     hint,
                 )),
             },
@@ -327,7 +327,7 @@ impl Validator<'_> {
                 key,
                 format!(
                     "body 1's fraction must lie in [0, 1], got {}",
-                    crate::text::number(*f)
+                    crate::io::text::number(*f)
                 ),
                 hint,
             )),
@@ -350,7 +350,7 @@ impl Validator<'_> {
                     let names: Vec<_> = THERMAL_PRESETS.iter().map(|p| p.name).collect();
                     return Err(self.error(
                         &format!("{key}.material"),
-                        format!("unknown material `{}`", crate::text::cut(name, 40)),
+                        format!("unknown material `{}`", crate::io::text::cut(name, 40)),
                         Some(&format!("use one of: {}", names.join(", "))),
                     ));
                 }

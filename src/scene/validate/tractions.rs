@@ -75,15 +75,14 @@ impl Validator<'_> {
             .parent()
             .unwrap_or_else(|| std::path::Path::new(""))
             .join(&table.file);
-        let text = crate::input::read_to_string(&path, crate::input::TRACTION_FILE_LIMIT).map_err(
-            |e| {
-                self.error(
-                    "tractions.file",
-                    format!("cannot read {}: {e}", path.display()),
-                    Some("the path is relative to the scene file"),
-                )
-            },
-        )?;
+        let text = crate::io::input::read_to_string(&path, crate::io::input::TRACTION_FILE_LIMIT)
+            .map_err(|e| {
+            self.error(
+                "tractions.file",
+                format!("cannot read {}: {e}", path.display()),
+                Some("the path is relative to the scene file"),
+            )
+        })?;
         let read = traction_csv::read(&text)
             .map_err(|m| self.error("tractions.file", format!("{}: {m}", path.display()), None))?;
         let a_m = contact.half_width_m();
@@ -101,11 +100,11 @@ impl Validator<'_> {
                     path.display(),
                     largest.line,
                     largest.column,
-                    crate::text::number(largest.magnitude),
+                    crate::io::text::number(largest.magnitude),
                     table.stress_unit.as_deref().unwrap_or("p0"),
-                    crate::text::number(over_p0),
-                    crate::text::number(p0_pa),
-                    crate::text::compact(MAX_TRACTION_OVER_P0)
+                    crate::io::text::number(over_p0),
+                    crate::io::text::number(p0_pa),
+                    crate::io::text::compact(MAX_TRACTION_OVER_P0)
                 ),
                 Some("check the value and tractions.stress_unit; contact.p0 should be near the size of the tractions"),
             ));
@@ -124,7 +123,7 @@ impl Validator<'_> {
             let first = read.first_centre[axis];
             let last = first + (shape[axis] - 1) as f64 * read.cell[axis];
             for node in [first, last] {
-                let written = format!("{name} = {}{suffix}", crate::text::number(node));
+                let written = format!("{name} = {}{suffix}", crate::io::text::number(node));
                 self.within_reach(key, node * length, &written)?;
             }
             if cell[axis].is_nan() || cell[axis] < MIN_SPAN_OVER_A {
@@ -133,9 +132,9 @@ impl Validator<'_> {
                     format!(
                         "{}: the {name} spacing {} is {} a, less than the {} a a figure can resolve",
                         path.display(),
-                        crate::text::number(read.cell[axis]),
-                        crate::text::number(cell[axis]),
-                        crate::text::compact(MIN_SPAN_OVER_A)
+                        crate::io::text::number(read.cell[axis]),
+                        crate::io::text::number(cell[axis]),
+                        crate::io::text::compact(MIN_SPAN_OVER_A)
                     ),
                     Some("check tractions.length_unit"),
                 ));

@@ -49,7 +49,7 @@ impl Validator<'_> {
                 "volume.z",
                 format!(
                     "depths must be >= 0 (z points into the body), got {}",
-                    crate::text::number(z.0)
+                    crate::io::text::number(z.0)
                 ),
                 None,
             ));
@@ -73,7 +73,7 @@ impl Validator<'_> {
                     "volume.threshold",
                     format!(
                         "must lie in [0, 1) (a fraction of the largest |value|), got {}",
-                        crate::text::number(t)
+                        crate::io::text::number(t)
                     ),
                     None,
                 ))

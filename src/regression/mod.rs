@@ -2,12 +2,16 @@
 //! one-line verdicts a CI log shows, and the self-contained HTML report (`--report DIR`).
 //!
 //! No file I/O here: the caller renders, reads the references, writes the report.
+//! [`compare`] compares images, [`field_file`] saves and compares fields.
+
+pub mod compare;
+pub mod field_file;
 
 use std::fmt::Write as _;
 
 use base64::Engine as _;
 
-use crate::compare::{Comparison, Tolerance};
+use crate::regression::compare::{Comparison, Tolerance};
 
 /// How two images are judged equal.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -15,7 +19,7 @@ pub enum ImageMeasure {
     /// Per-channel tolerance and a budget of differing pixels ([`Tolerance`]).
     Pixels(Tolerance),
     /// The root mean square channel difference (levels of 255) at most `max`, matplotlib's
-    /// measure ([`crate::compare::rms_difference`]).
+    /// measure ([`crate::regression::compare::rms_difference`]).
     Rms { max: f64 },
 }
 

@@ -7,7 +7,7 @@
 use std::io::{BufRead, Read};
 use std::path::Path;
 
-use crate::text;
+use crate::io::text;
 
 /// The largest scene file: scenes are a few KiB of TOML.
 pub const SCENE_FILE_LIMIT: u64 = 1 << 20;

@@ -11,6 +11,7 @@
 pub mod coupled;
 pub mod gear_heating;
 mod grid;
+pub mod memory;
 pub mod rough;
 pub mod thermal;
 pub mod thermal_sections;

@@ -254,7 +254,7 @@ impl Validator<'_> {
             surface: None,
         };
         // The whole figure: every panel's grid and buffers, and the image.
-        let bytes = crate::figure::memory_estimate_bytes(&scene);
+        let bytes = crate::study::memory::figure_bytes(&scene);
         if bytes > crate::field::MAX_FIELD_BYTES {
             let points: usize = scene
                 .panels
@@ -267,7 +267,8 @@ impl Validator<'_> {
                     "{points} points in {} panel(s) need about {} MiB to draw (the grids at about {} bytes a point, and the image), more than the {} MiB allowed",
                     scene.panels.len(),
                     bytes >> 20,
-                    crate::figure::KEPT_BYTES_PER_POINT + crate::figure::WORKING_BYTES_PER_POINT,
+                    crate::study::memory::KEPT_BYTES_PER_POINT
+                        + crate::study::memory::WORKING_BYTES_PER_POINT,
                     crate::field::MAX_FIELD_BYTES >> 20
                 ),
                 Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),

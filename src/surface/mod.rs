@@ -8,6 +8,7 @@
 pub mod generate;
 pub mod gw;
 pub mod read;
+pub mod samples;
 pub mod stats;
 pub mod x3p;
 

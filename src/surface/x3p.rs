@@ -23,7 +23,7 @@ use std::path::Path;
 use md5::{Digest, Md5};
 use ndarray::Array2;
 
-use super::read::{interpolate_missing, Fill, ReadError};
+use super::samples::{interpolate_missing, Fill, ReadError};
 use super::HeightMap;
 
 fn format(path: &str, message: impl Into<String>) -> ReadError {

@@ -7,7 +7,7 @@
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use stressfield::contact::rough::{solve, Control, RoughContactProblem, DEFAULT_TOLERANCE};
-use stressfield::solution::elastic::Periodicity;
+use stressfield::operator::elastic::Periodicity;
 use stressfield::surface::generate::{generate, Amplitude, Form, Generator, Spectrum};
 use stressfield::surface::HeightMap;
 

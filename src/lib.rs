@@ -21,8 +21,9 @@
 //! - [`solution`]: stress solutions as pure functions of a point, in units of `a` and `p0`.
 //! - [`stress`]: the stress tensor and derived measures (principal, von Mises, Tresca, τ1).
 //! - [`surface`]: height maps of rough surfaces.
-//! - [`field`]: grids, and the one place where rayon evaluates them; [`transform`]: the shared
-//!   parallel 2-D FFT.
+//! - [`field`]: grids, and the one place where rayon evaluates them.
+//! - [`operator`]: below both contact and solution: the shared parallel 2-D FFT and the
+//!   elastic half-space's surface-displacement operator.
 //! - [`figure`], [`render`]: display units, then pixels; renderers do no I/O.
 //! - [`assess`], [`report`]: stress maxima, yield assessment, the `hertz` report.
 //! - [`probe`]: stresses at given points, CSV in and out.
@@ -44,6 +45,7 @@ pub mod contact;
 pub mod field;
 pub mod figure;
 pub mod io;
+pub mod operator;
 pub mod probe;
 #[cfg(feature = "rerun")]
 pub mod record;
@@ -56,4 +58,3 @@ pub mod stress;
 pub mod study;
 pub mod surface;
 pub mod thermal;
-pub mod transform;

@@ -8,8 +8,8 @@ use stressfield::assess::{self, grid_maxima};
 use stressfield::contact::rough::{
     solve, Control, RoughContactError, RoughContactProblem, RoughSolution, DEFAULT_TOLERANCE,
 };
+use stressfield::operator::elastic::Periodicity;
 use stressfield::solution::dcfft::TractionGrid;
-use stressfield::solution::elastic::Periodicity;
 use stressfield::solution::point_numerical::PointTractions;
 use stressfield::solution::Solution;
 use stressfield::stress::Quantity;

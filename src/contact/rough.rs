@@ -1,6 +1,6 @@
 //! Rough contact: the pressure between a rough surface and a flat (or two rough surfaces),
 //! solved on the grid of the heights by the conjugate-gradient method of Polonsky & Keer
-//! (1999), with the elastic integral operator of [`crate::solution::elastic`] (non-periodic
+//! (1999), with the elastic integral operator of [`crate::operator::elastic`] (non-periodic
 //! DC-FFT or periodic).
 //!
 //! ## The problem
@@ -39,8 +39,8 @@
 
 use ndarray::{Array2, ArrayView2, Zip};
 
-use crate::solution::elastic::{ElasticOperator, Periodicity};
-use crate::transform::TransformError;
+use crate::operator::elastic::{ElasticOperator, Periodicity};
+use crate::operator::transform::TransformError;
 
 /// What fixes the solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -276,7 +276,7 @@ pub fn solve(
     )?;
     // Local stiffness: a cell's own displacement per unit pressure (Love's centre value).
     let own_compliance =
-        crate::solution::elastic::uniform_patch_displacement(0.0, 0.0, dx / 2.0, dy / 2.0)
+        crate::operator::elastic::uniform_patch_displacement(0.0, 0.0, dx / 2.0, dy / 2.0)
             / (std::f64::consts::PI * problem.e_star_pa);
 
     let approach_given = match problem.control {

@@ -61,7 +61,7 @@ pub fn search_depth_m(solution: &RoughSolution) -> f64 {
     let [dx, dy] = solution.spacing_m;
     let spot_radius = (solution.largest_spot_cells as f64 * dx * dy / PI).sqrt();
     let mut depth = 2.5 * spot_radius;
-    if solution.periodicity == crate::solution::elastic::Periodicity::NonPeriodic {
+    if solution.periodicity == crate::operator::elastic::Periodicity::NonPeriodic {
         let (mut x0, mut x1, mut y0, mut y1) = (usize::MAX, 0, usize::MAX, 0);
         for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
             if p > 0.0 {

@@ -37,8 +37,8 @@ use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 use rustfft::num_complex::Complex;
 use rustfft::{Fft, FftPlanner};
 
-use super::elastic::Periodicity;
 use super::patch::{uniform_patch, uniform_patch_offset_rows, PatchStresses, Rectangle};
+use crate::operator::elastic::Periodicity;
 use crate::stress::Stress;
 
 /// Periodic tractions: the images of each cell summed exactly in each direction, on each side

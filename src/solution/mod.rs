@@ -2,7 +2,6 @@
 //! stress tensor (in units of the peak pressure). No I/O, no threads.
 
 pub mod dcfft;
-pub mod elastic;
 pub mod line_hertz;
 pub mod line_numerical;
 pub mod patch;

@@ -8,7 +8,7 @@
 use ndarray::Array2;
 
 use super::dcfft::{DcFft, DcFftError, TractionGrid, TractionGridError};
-use super::elastic::Periodicity;
+use crate::operator::elastic::Periodicity;
 use crate::stress::Stress;
 
 /// Errors building a numerical point contact.

@@ -27,12 +27,12 @@
 use ndarray::{Array2, Zip};
 
 use crate::contact::rough::{self, Control, RoughContactError, RoughContactProblem, RoughSolution};
+use crate::operator::transform::TransformError;
 use crate::scene::{ThermalBody, ThermalSpec};
 use crate::thermal::distortion::DisplacementOperator;
 use crate::thermal::heating::{frictional_flux, Partition};
 use crate::thermal::kernel::CellGrid;
 use crate::thermal::temperature::TemperatureOperator;
-use crate::transform::TransformError;
 
 /// Convergence of the coupled iteration: relative change of pressure.
 pub const TOLERANCE: f64 = 1e-6;
@@ -220,7 +220,7 @@ pub fn paraboloid(
 mod tests {
     use super::*;
     use crate::contact::material::Material;
-    use crate::solution::elastic::Periodicity;
+    use crate::operator::elastic::Periodicity;
     use crate::thermal::material::thermal_preset;
 
     const STEEL: Material = Material {

@@ -7,9 +7,9 @@
 use std::sync::Arc;
 
 use crate::contact::rough::{self, RoughContactError, RoughContactProblem, RoughSolution};
+use crate::operator::elastic::Periodicity;
 use crate::scene::{ContactKind, Scene};
 use crate::solution::dcfft::TractionGrid;
-use crate::solution::elastic::Periodicity;
 use crate::solution::point_numerical::{NumericalError, PointTractions};
 use crate::solution::Solution;
 

@@ -15,10 +15,11 @@
 use ndarray::{Array2, Array3};
 
 use crate::contact::rough::{self, Control, RoughContactProblem, RoughSolution};
+use crate::operator::elastic::Periodicity;
+use crate::operator::transform::TransformError;
 use crate::scene::Hertz;
 use crate::scene::{ContactKind, Scene, ThermalBody, ThermalSpec};
 use crate::solution::dcfft::{layer_stress, DcFft, DcFftError, TractionGrid, TractionGridError};
-use crate::solution::elastic::Periodicity;
 use crate::study::coupled::{self, CoupledContact, CoupledError};
 use crate::thermal::heating::frictional_flux;
 use crate::thermal::kernel::CellGrid;
@@ -26,7 +27,6 @@ use crate::thermal::line::LineTemperature;
 use crate::thermal::line_stress::LineThermalStress;
 use crate::thermal::stress::ThermalStressOperator;
 use crate::thermal::temperature::{TemperatureOperator, MAX_CELL_PECLET};
-use crate::transform::TransformError;
 
 /// Depths of the stress maxima search, in units of the half-width `a`.
 pub const DEPTHS_OVER_A: [f64; 16] = [

@@ -7,7 +7,7 @@
 //!    turned into normal deviates by the Box–Muller transform, `sqrt(-2 ln u1) cos(2π u2)` and
 //!    `sqrt(-2 ln u1) sin(2π u2)`, with `u = (k + 1) 2⁻⁵³` from the top 53 bits `k` of each
 //!    64-bit output (so `u` lies in (0, 1]).
-//! 2. Its 2-D discrete Fourier transform ([`crate::transform::RealFft2`]) is multiplied by the
+//! 2. Its 2-D discrete Fourier transform ([`crate::operator::transform::RealFft2`]) is multiplied by the
 //!    square root of the target isotropic power spectrum `C(q)`, at `q = |(qx, qy)|`,
 //!    `qx = 2π kx / Lx`, `qy = 2π ky / Ly` with signed FFT indices and the periods `Lx = nx dx`,
 //!    `Ly = ny dy`. The mean (q = 0) and the Nyquist rows and columns are set to zero, so the
@@ -41,7 +41,7 @@ use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 
 use super::{HeightMap, SurfaceError};
-use crate::transform::{signed_index, RealFft2, TransformError};
+use crate::operator::transform::{signed_index, RealFft2, TransformError};
 
 /// The power spectrum of a generated surface.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -60,7 +60,7 @@ use ndarray::{Array2, Axis, Zip};
 use rayon::prelude::*;
 
 use super::HeightMap;
-use crate::transform::{signed_index, RealFft2, TransformError};
+use crate::operator::transform::{signed_index, RealFft2, TransformError};
 
 /// What is removed before the statistics: always the least-squares mean plane.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -60,7 +60,7 @@ use super::special::{
     exponential_integral_e1, exponential_integral_series, gauss_legendre, integrate,
 };
 use super::stress::{add_band, add_smooth, sinc};
-use crate::transform::TransformError;
+use crate::operator::transform::TransformError;
 
 type C64 = Complex<f64>;
 

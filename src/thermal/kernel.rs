@@ -8,7 +8,7 @@ use ndarray::{Array2, ArrayView2, ArrayViewMut2};
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 
-use crate::transform::{Fft2Work, RealFft2, TransformError};
+use crate::operator::transform::{Fft2Work, RealFft2, TransformError};
 
 /// A grid of `[ny, nx]` rectangular cells `dx x dy` (row = y); cell `(0, 0)` is centred at the
 /// grid's origin, offsets are counted in cells.

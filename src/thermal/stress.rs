@@ -67,7 +67,7 @@ use rustfft::num_complex::Complex;
 
 use super::kernel::{signed, CellGrid, Convolution};
 use super::special::gauss_legendre;
-use crate::transform::{signed_index, RealFft2, TransformError};
+use crate::operator::transform::{signed_index, RealFft2, TransformError};
 
 type C64 = Complex<f64>;
 

@@ -44,7 +44,7 @@ use ndarray::{Array2, ArrayView2};
 
 use super::kernel::{CellGrid, Convolution};
 use super::special::gauss_legendre;
-use crate::transform::TransformError;
+use crate::operator::transform::TransformError;
 
 /// The largest cell Péclet number `u dx = V dx / (2κ)` that the cell rules resolve: a finer
 /// grid is needed beyond it (the heat penetrates less than a cell in the time the contact

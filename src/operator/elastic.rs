@@ -63,7 +63,7 @@ use std::f64::consts::PI;
 use ndarray::{Array2, ArrayView2, ArrayViewMut2};
 use rustfft::num_complex::Complex;
 
-use crate::transform::{Fft2Work, RealFft2, TransformError};
+use crate::operator::transform::{Fft2Work, RealFft2, TransformError};
 
 /// `g(X, Y) = X asinh(Y/|X|) + Y asinh(X/|Y|)`, a term 0 where its factor is 0.
 #[inline]
@@ -276,8 +276,8 @@ fn periodic_kernel_with_images(
         let j2 = 4.0 * ((2.0 * c - c.powi(3)) / b - (s - s.powi(3)) / a);
         let factor = dx * dy / (2.0 * lx * ly);
         for ((j, i), k) in kernel.indexed_iter_mut() {
-            let ox = crate::transform::signed_index(i, nx) as f64 * dx;
-            let oy = crate::transform::signed_index(j, ny) as f64 * dy;
+            let ox = crate::operator::transform::signed_index(i, nx) as f64 * dx;
+            let oy = crate::operator::transform::signed_index(j, ny) as f64 * dy;
             *k += factor * (ox * ox * j1 + oy * oy * j2);
         }
     }

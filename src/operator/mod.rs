@@ -1,0 +1,7 @@
+//! Operators on gridded surfaces that the contact solver, the stress layers, the thermal
+//! operators and the surface statistics share: the parallel 2-D real FFT ([`transform`]) and
+//! the elastic half-space's surface displacement under cells of pressure ([`elastic`]). Uses
+//! nothing of the crate above it.
+
+pub mod elastic;
+pub mod transform;

@@ -439,3 +439,42 @@ fn bad_input_is_refused_with_the_reason() {
         "{error}"
     );
 }
+
+/// Compute once (issue 20): every command solves a rough scene's own contact once, whatever it
+/// draws, reports or records (`render --rrd` draws the sheet and records from one solve; the
+/// area-against-load curve solves other loads, not counted). The binary prints its count when
+/// `STRESSFIELD_COUNT_SOLVES` is set.
+#[test]
+fn each_command_solves_a_rough_scene_once() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let scene = "scenes/rough_ball_on_flat.toml";
+    let out = dir.path().join("out");
+    let rrd = dir.path().join("ball.rrd");
+    let out_dir = out.to_str().expect("utf-8");
+    let commands: Vec<Vec<&str>> = vec![
+        vec!["contact", scene, "--json"],
+        vec!["hertz", scene],
+        vec![
+            "render",
+            scene,
+            "--out-dir",
+            out_dir,
+            "--rrd",
+            rrd.to_str().expect("utf-8"),
+        ],
+        vec!["record", scene, "--out-dir", out_dir],
+    ];
+    for args in commands {
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_stressfield"))
+            .args(&args)
+            .env("STRESSFIELD_COUNT_SOLVES", "1")
+            .output()
+            .expect("the binary runs");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(output.status.success(), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains("rough contact solves: 1\n"),
+            "{args:?}: {stderr}"
+        );
+    }
+}

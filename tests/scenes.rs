@@ -35,8 +35,12 @@ fn every_shipped_scene_renders() {
     assert!(paths.len() >= 5, "{paths:?}");
     for path in paths {
         let scene = Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
-        let drawing =
-            figure::draw(&scene, &|| {}).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let rough = (scene.contact.kind == stressfield::scene::ContactKind::Rough).then(|| {
+            stressfield::study::rough::solve(&scene, &mut |_, _| {})
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+        });
+        let drawing = figure::draw(&scene, rough.as_ref(), &|| {})
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let image = drawing
             .png()
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));

@@ -7,6 +7,7 @@ use indicatif::ProgressBar;
 
 use super::console::{progress_bar, say};
 use super::render::{create_out_dir, fail_if_any, load_scenes};
+use stressfield::contact::rough::RoughSolution;
 use stressfield::scene::Scene;
 
 /// Records a scene and says so, or reports its error and adds it to `failures`.
@@ -103,7 +104,7 @@ fn summary_text(scene: &Scene, summary: &stressfield::record::Summary) -> String
 /// Records one scene to `path` (atomically, or through a device or FIFO); returns the line to
 /// print.
 fn record_scene(scene: &Scene, path: &Path, bar: &ProgressBar) -> Result<String> {
-    record_scene_as(scene, path, path, bar)
+    record_scene_as(scene, path, path, bar, None)
 }
 
 /// Records one scene into `file` (atomically, or through a device or FIFO), saying it was
@@ -114,8 +115,10 @@ pub(super) fn record_scene_as(
     file: &Path,
     shown: &Path,
     bar: &ProgressBar,
+    rough: Option<&RoughSolution>,
 ) -> Result<String> {
-    let summary = stressfield::record::record_to_file(scene, file, &|| bar.inc(1));
+    let destination = stressfield::record::Destination::File(file.to_path_buf());
+    let summary = stressfield::record::record_to_with(scene, &destination, &|| bar.inc(1), rough);
     let summary = if file == shown {
         summary?
     } else {
@@ -153,6 +156,7 @@ pub(super) fn record_scene_as(
     _file: &Path,
     _shown: &Path,
     _bar: &ProgressBar,
+    _rough: Option<&RoughSolution>,
 ) -> Result<String> {
     anyhow::bail!(
         "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",

@@ -167,7 +167,15 @@ fn render_scene(
         None => None,
     };
     let on_row = || bar.inc(1);
-    let drawing = figure::draw(scene, &on_row)?;
+    // A rough scene's contact is solved once, for the sheet and the recording.
+    let rough = match scene.contact.kind {
+        ContactKind::Rough => Some(
+            study::rough::solve(scene, &mut |_, _| {})
+                .with_context(|| format!("scene {}", scene.name))?,
+        ),
+        _ => None,
+    };
+    let drawing = figure::draw(scene, rough.as_ref(), &on_row)?;
     let image = drawing.png()?;
     let png = render::encode_png(&image)?;
     let png_path = out_dir.join(format!("{}.png", scene.name));
@@ -210,7 +218,7 @@ fn render_scene(
     }
     lines.insert(0, format!("rendered {}", written.join(", ")));
     if let Some((file, path)) = recording {
-        lines.push(record_scene_as(scene, &file, path, bar)?);
+        lines.push(record_scene_as(scene, &file, path, bar, rough.as_ref())?);
     }
     staged.commit()?;
     Ok(SceneOutput {

@@ -47,12 +47,26 @@ pub enum DrawError {
     Field(#[from] FieldError),
     #[error(transparent)]
     Sheet(#[from] crate::figure::rough::SheetError),
+    #[error(
+        "a rough scene's sheet draws its solved contact: solve it first (study::rough::solve)"
+    )]
+    Unsolved,
 }
 
-/// Draws any scene: a figure ([`build`]) or the sheet of a surface or rough scene.
-pub fn draw(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Drawing, DrawError> {
+/// Draws any scene: a figure ([`build`]) or the sheet of a surface or rough scene; a rough
+/// scene draws its contact as solved by the study (`rough`, from
+/// [`crate::study::rough::solve`]).
+pub fn draw(
+    scene: &Scene,
+    rough: Option<&crate::contact::rough::RoughSolution>,
+    on_row: &(dyn Fn() + Sync),
+) -> Result<Drawing, DrawError> {
     Ok(match scene.contact.kind {
-        ContactKind::Rough => Drawing::Sheet(crate::figure::rough::rough_sheet(scene, on_row)?.0),
+        ContactKind::Rough => Drawing::Sheet(crate::figure::rough::rough_sheet(
+            scene,
+            rough.ok_or(DrawError::Unsolved)?,
+            on_row,
+        )?),
         ContactKind::Surface => Drawing::Sheet(crate::figure::rough::surface_sheet(scene)?),
         _ => Drawing::Figure(build(scene, on_row)?),
     })

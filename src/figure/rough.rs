@@ -21,7 +21,7 @@ use std::f64::consts::PI;
 
 use ndarray::Array2;
 
-use crate::contact::rough::{self, Control, RoughSolution};
+use crate::contact::rough::RoughSolution;
 use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::render::chart::{Cell, Chart, Scale as ChartScale, Series, Sheet, Style, PALETTE};
 use crate::render::table::Table;
@@ -396,16 +396,18 @@ fn spot_outlines(solution: &RoughSolution) -> Vec<Vec<(f64, f64)>> {
     crate::render::contour_lines(indicator.view(), &x, &y, 0.5)
 }
 
-/// The rough scene's sheet and the solved contact. `on_row` is called per evaluated grid row.
+/// The rough scene's sheet of its solved contact (`solution`, solved by the study; the area
+/// against load, of a nominally flat surface, solved by [`rough_study::area_curve`]). `on_row`
+/// is called per evaluated grid row.
 pub fn rough_sheet(
     scene: &Scene,
+    solution: &RoughSolution,
     on_row: &(dyn Fn() + Sync),
-) -> Result<(Sheet, RoughSolution), SheetError> {
+) -> Result<Sheet, SheetError> {
     if scene.contact.kind != ContactKind::Rough {
         return Err(SheetError::NoSurface);
     }
     let surface = scene.surface.as_ref().ok_or(SheetError::NoSurface)?;
-    let solution = rough_study::solve(scene, &mut |_, _| {})?;
     let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
     let unit = scene.figure.stress_unit.label("");
     let unit = unit.trim();
@@ -563,8 +565,13 @@ pub fn rough_sheet(
     // A rough ball or cylinder: its pressure against the smooth body's (Hertz); a nominally
     // flat surface: its real area against load.
     let area_chart = match surface.shape {
-        Form::None => area_against_load(scene, &solution)?,
-        shape => pressure_against_hertz(scene, &solution, shape)?,
+        Form::None => {
+            let e_star = rough_study::problem(scene)
+                .ok_or(SheetError::NoSurface)?
+                .e_star_pa;
+            area_against_load(scene, rough_study::area_curve(scene, solution)?, e_star)?
+        }
+        shape => pressure_against_hertz(scene, solution, shape)?,
     };
     let sheet = Sheet {
         title: scene
@@ -577,36 +584,16 @@ pub fn rough_sheet(
             vec![Cell::Map(depth_map), Cell::Chart(area_chart)],
         ],
     };
-    Ok((sheet, solution))
+    Ok(sheet)
 }
 
 /// Real area against mean pressure: the solver at fractions and multiples of the scene's mean
 /// pressure, the GW prediction and the linear law.
-fn area_against_load(scene: &Scene, solution: &RoughSolution) -> Result<Chart, SheetError> {
-    let problem = rough_study::problem(scene).ok_or(SheetError::NoSurface)?;
-    let e_star = problem.e_star_pa;
-    let mut solved = Vec::new();
-    for factor in [0.25, 0.5, 2.0, 4.0] {
-        let mut scaled = problem.clone();
-        scaled.control = Control::MeanPressure {
-            pa: factor * solution.mean_pressure_pa,
-        };
-        // Full contact or a spot reaching the edge ends the series there; others are errors.
-        match rough::solve(&scaled, &mut |_, _| {}) {
-            Ok(s) => solved.push((s.mean_pressure_pa / e_star, s.contact_fraction)),
-            Err(
-                rough::RoughContactError::FullContact { .. }
-                | rough::RoughContactError::PressureAtEdge { .. }
-                | rough::RoughContactError::HardnessTooLow { .. },
-            ) => {}
-            Err(e) => return Err(RoughStudyError::from(e).into()),
-        }
-    }
-    solved.push((
-        solution.mean_pressure_pa / e_star,
-        solution.contact_fraction,
-    ));
-    solved.sort_by(|a, b| a.0.total_cmp(&b.0));
+fn area_against_load(
+    scene: &Scene,
+    solved: Vec<(f64, f64)>,
+    e_star: f64,
+) -> Result<Chart, SheetError> {
     let mut chart = Chart::new(
         "Real area against load",
         "mean pressure p / E*",

@@ -45,6 +45,7 @@ use std::path::{Path, PathBuf};
 
 use rerun::RecordingStream;
 
+use crate::contact::rough::RoughSolution;
 use crate::field::FieldError;
 use crate::figure;
 use crate::render::chart::{chart_png, Chart, Series, Style, PALETTE};
@@ -104,10 +105,28 @@ pub fn record_to(
     destination: &Destination,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Summary, RecordError> {
+    record_to_with(scene, destination, on_row, None)
+}
+
+/// As [`record_to`], with a rough scene's contact already solved (`rough`, by
+/// [`crate::study::rough::solve`]; `None`: solved here, once).
+pub fn record_to_with(
+    scene: &Scene,
+    destination: &Destination,
+    on_row: &(dyn Fn() + Sync),
+    rough: Option<&RoughSolution>,
+) -> Result<Summary, RecordError> {
     let output = sink::Output::open(destination, &scene.name)?;
     // A stream is watched as it arrives: the time cursor follows the newest step.
     let live = !matches!(destination, Destination::File(_));
-    let summary = record_with(scene, &output.stream, live, on_row, &|| output.flush())?;
+    let summary = record_with(
+        scene,
+        &output.stream,
+        live,
+        on_row,
+        &|| output.flush(),
+        rough,
+    )?;
     output.finish()?;
     Ok(summary)
 }
@@ -160,27 +179,36 @@ pub fn record_scene(
     stream: &RecordingStream,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Summary, RecordError> {
-    record_with(scene, stream, false, on_row, &|| {
-        stream
-            .flush_blocking()
-            .map_err(|e| RecordError::Rerun(e.to_string()))
-    })
+    record_with(
+        scene,
+        stream,
+        false,
+        on_row,
+        &|| {
+            stream
+                .flush_blocking()
+                .map_err(|e| RecordError::Rerun(e.to_string()))
+        },
+        None,
+    )
 }
 
 /// Records `scene` into `stream`, calling `flush` after every step; a `live` stream (to a
-/// viewer) opens with the time cursor following the newest step, a file at the first step.
+/// viewer) opens with the time cursor following the newest step, a file at the first step;
+/// `solved`: a rough scene's contact, if already solved.
 fn record_with(
     scene: &Scene,
     stream: &RecordingStream,
     live: bool,
     on_row: &(dyn Fn() + Sync),
     flush: &dyn Fn() -> Result<(), RecordError>,
+    solved: Option<&RoughSolution>,
 ) -> Result<Summary, RecordError> {
     if matches!(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
     ) {
-        return rough::record(scene, stream, live, flush);
+        return rough::record(scene, stream, live, flush, solved);
     }
     if is_speed_sweep(scene) {
         return thermal::record(scene, stream, live, flush);

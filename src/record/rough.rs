@@ -50,21 +50,23 @@ pub fn record(
     stream: &RecordingStream,
     live: bool,
     flush: &dyn Fn() -> Result<(), RecordError>,
+    solved: Option<&RoughSolution>,
 ) -> Result<Summary, RecordError> {
     let on_row = &|| {};
     let surface = scene
         .surface
         .as_ref()
         .ok_or_else(|| rerun_error("the scene has no surface"))?;
-    // A rough scene's sheet solves the contact: the report and the depth steps reuse it.
-    let (drawing, solution) = match scene.contact.kind {
-        ContactKind::Rough => {
-            let (sheet, solution) =
-                crate::figure::rough::rough_sheet(scene, on_row).map_err(rerun_error)?;
-            (Drawing::Sheet(sheet), Some(solution))
+    // A rough scene's contact, solved once (here, unless the caller did): the sheet, the
+    // report and the depth steps use it.
+    let solution = match (scene.contact.kind, solved) {
+        (ContactKind::Rough, Some(solution)) => Some(solution.clone()),
+        (ContactKind::Rough, None) => {
+            Some(rough_study::solve(scene, &mut |_, _| {}).map_err(rerun_error)?)
         }
-        _ => (figure::draw(scene, on_row).map_err(rerun_error)?, None),
+        _ => None,
     };
+    let drawing = figure::draw(scene, solution.as_ref(), on_row).map_err(rerun_error)?;
     let Drawing::Sheet(sheet) = &drawing else {
         return Err(rerun_error("a surface scene draws a sheet"));
     };

@@ -4,6 +4,7 @@
 //! The traction grid is in the rough scenes' reference units ([`REFERENCE_LENGTH_M`],
 //! [`REFERENCE_PRESSURE_PA`]: 1 um and 1 MPa), the `a` and `p0` of their `Contact::scale`.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
 use crate::contact::rough::{self, RoughContactError, RoughContactProblem, RoughSolution};
@@ -50,6 +51,16 @@ pub fn problem(scene: &Scene) -> Option<RoughContactProblem<'_>> {
     })
 }
 
+/// How many times this process has solved a scene's own contact ([`solve`]): a command should
+/// solve it once, whatever it draws, reports or records (the binary prints it when
+/// `STRESSFIELD_COUNT_SOLVES` is set; the tests count with it).
+static SCENE_SOLVES: AtomicUsize = AtomicUsize::new(0);
+
+/// The number of [`solve`] calls so far in this process.
+pub fn scene_solves() -> usize {
+    SCENE_SOLVES.load(Ordering::Relaxed)
+}
+
 /// Solves the scene's contact; `progress(iteration, residual)` after each iteration.
 pub fn solve(
     scene: &Scene,
@@ -59,7 +70,45 @@ pub fn solve(
         return Err(RoughStudyError::NotRough);
     }
     let problem = problem(scene).ok_or(RoughStudyError::NotRough)?;
+    SCENE_SOLVES.fetch_add(1, Ordering::Relaxed);
     Ok(rough::solve(&problem, progress)?)
+}
+
+/// The factors of the scene's mean pressure at which [`area_curve`] solves the contact again.
+pub const AREA_CURVE_FACTORS: [f64; 4] = [0.25, 0.5, 2.0, 4.0];
+
+/// Real area against load: `(p̄ / E*, A / A0)` of the contact solved at
+/// [`AREA_CURVE_FACTORS`] times the mean pressure of `solution` (the scene's own, included),
+/// in order of pressure. A factor at which the contact becomes full, reaches the edge or
+/// cannot carry the load under the hardness ends the series there.
+pub fn area_curve(
+    scene: &Scene,
+    solution: &RoughSolution,
+) -> Result<Vec<(f64, f64)>, RoughStudyError> {
+    let problem = problem(scene).ok_or(RoughStudyError::NotRough)?;
+    let e_star = problem.e_star_pa;
+    let mut solved = Vec::new();
+    for factor in AREA_CURVE_FACTORS {
+        let mut scaled = problem.clone();
+        scaled.control = rough::Control::MeanPressure {
+            pa: factor * solution.mean_pressure_pa,
+        };
+        match rough::solve(&scaled, &mut |_, _| {}) {
+            Ok(s) => solved.push((s.mean_pressure_pa / e_star, s.contact_fraction)),
+            Err(
+                RoughContactError::FullContact { .. }
+                | RoughContactError::PressureAtEdge { .. }
+                | RoughContactError::HardnessTooLow { .. },
+            ) => {}
+            Err(e) => return Err(e.into()),
+        }
+    }
+    solved.push((
+        solution.mean_pressure_pa / e_star,
+        solution.contact_fraction,
+    ));
+    solved.sort_by(|a, b| a.0.total_cmp(&b.0));
+    Ok(solved)
 }
 
 /// The solved pressure and `q = friction p` (in +x) as a traction grid in the reference units,

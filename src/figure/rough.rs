@@ -411,7 +411,7 @@ pub fn rough_sheet(
     let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
     let unit = scene.figure.stress_unit.label("");
     let unit = unit.trim();
-    let outlines = spot_outlines(&solution);
+    let outlines = spot_outlines(solution);
     let [ny, nx] = surface.heights.shape();
     let [dx, dy] = surface.heights.spacing_m();
     let top = surface
@@ -450,7 +450,7 @@ pub fn rough_sheet(
 
     // The stress field under the solved tractions, in the reference units (1 um, 1 MPa).
     let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
-    let stresses = rough_study::stress_solution(&solution, friction, poisson)
+    let stresses = rough_study::stress_solution(solution, friction, poisson)
         .map_err(|e| FieldError::Numerical(e.to_string()))?;
     let quantity = scene.figure.quantity;
     let ((peak_row, _), _) =
@@ -466,7 +466,7 @@ pub fn rough_sheet(
             });
     let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
     let cell = ax.min(ay);
-    let depth_m = (2.0 * search_depth_m(&solution)).min(0.5 * (nx as f64 * dx).min(ny as f64 * dy));
+    let depth_m = (2.0 * search_depth_m(solution)).min(0.5 * (nx as f64 * dx).min(ny as f64 * dy));
     let layers = ((depth_m / REFERENCE_LENGTH_M) / cell).ceil().max(4.0) as usize + 1;
     let centres_x = Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx);
     let xz = Plane {

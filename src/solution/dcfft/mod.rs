@@ -1,0 +1,482 @@
+//! Stresses of surface tractions given on a grid of uniform rectangular cells, summed from the
+//! cells' exact influence coefficients ([`super::patch`]): directly, at any point, or by the
+//! discrete convolution and fast Fourier transform (DC-FFT) of Liu, Wang & Liu (2000) at the
+//! cell centres of whole depth layers.
+//!
+//! Layout: traction and stress arrays are indexed `[row, column] = [y, x]`; a layer of stresses
+//! is `[component, y, x]` with the components in the order of [`COMPONENTS`].
+//!
+//! The grid is either isolated (zero traction beyond it) or one period of tractions that repeat
+//! in x and y ([`Periodicity`]; the stress under a periodic rough contact).
+//!
+//! ## Periodic tractions
+//! Tractions `t` repeating with the periods `Lx = nx dx`, `Ly = ny dy` are split into their mean
+//! `t̄` and the zero-mean rest `t - t̄`. A uniform traction on the whole surface of a half-space
+//! stresses it uniformly: `σzz = -p̄`, `τxz = -q̄x`, `τyz = -q̄y`, the other components zero
+//! (this state satisfies equilibrium and the surface conditions, so it is the solution). The
+//! rest carries no net force, so the stress of its periodic images falls off with their
+//! distance faster than that of single cells: the images within the window
+//! `|offset| <= (M + 1/2) L` (per axis, with `M = PERIODIC_IMAGES`, halved weights on the
+//! window's edge so that it stays symmetric) are summed exactly, cell by cell, and the others
+//! are left out. The coefficients `C_per(a, b) = Σ C(a + m nx, b + n ny)` over the window are
+//! a circular convolution kernel; written into the offsets `0 <= a < nx` of the DC-FFT's
+//! wrap-around layout (their mirror `-a` holds `C_per(nx - a)`, which the parity gives, since
+//! the window is symmetric), the linear convolution computes the circular one. The tests
+//! compare with a window of twelve images each way and with the closed form of a sinusoidal
+//! pressure.
+//!
+//! Threads: everything here runs on the calling thread. The work of a layer splits into
+//! independent pieces, blocks of influence-coefficient rows ([`DcFft::influence_blocks`]) and
+//! the six stress components ([`DcFft::component_into`]), and layers are independent of each
+//! other; `crate::field` runs them in parallel.
+
+mod grid;
+mod images;
+mod plans;
+
+pub use grid::*;
+pub use images::*;
+pub use plans::*;
+
+use std::sync::Arc;
+
+use ndarray::{Array3, ArrayViewMut2, ArrayViewMut3, Axis};
+use rustfft::num_complex::Complex;
+
+use super::patch::uniform_patch_offset_rows;
+use crate::operator::elastic::Periodicity;
+
+/// Stresses of a [`TractionGrid`] at its cell centres, layer by layer, by DC-FFT.
+///
+/// ## Method
+/// The stress at cell centre `(i, j)` is the discrete convolution
+/// `S(i, j) = Σ_(k,l) C(i - k, j - l) t(k, l)` of the cell tractions `t` with the influence
+/// coefficients `C(a, b)`, the stress of [`uniform_patch`] at offset `(a dx, b dy)` from a unit
+/// loaded cell. Following Liu, Wang & Liu (2000), the coefficients of the offsets
+/// `-n < a < n` are laid out in wrap-around order on a `2n` grid (offset `a` at index `a` for
+/// `a >= 0`, at `2n + a` for `a < 0`, zero at index `n`), the tractions are zero-padded to the
+/// same `2n`, and their cyclic convolution, computed as a product of discrete Fourier
+/// transforms, equals the linear one on the first `n` indices — exactly, not as a periodic
+/// approximation. Per layer and per component the spectra of the loads present are multiplied
+/// and summed, and one inverse transform gives the component.
+///
+/// The coefficients are evaluated on one quadrant `a, b >= 0` (from corner terms shared between
+/// neighbouring cells, [`uniform_patch_offset_rows`]) and mirrored by their parity (each component
+/// is even or odd in x and in y about the loaded cell); the mirrored rows' transforms are the
+/// transformed rows times the parity. The tractions' spectra are computed once, in
+/// [`DcFft::new`]; each layer then costs one forward transform per load and component and one
+/// inverse per component, real-to-complex along rows (`realfft`) and complex along columns
+/// (`rustfft`). The column pass runs on a few columns at a time, from gathering through the
+/// products to the inverse transform, so that it works in cache.
+///
+/// The result equals direct summation ([`TractionGrid::direct_layer`]) up to rounding (the
+/// tests ask 1e-9 of the largest traction); its accuracy as an approximation of smooth
+/// tractions is that of their discretisation into uniform cells.
+///
+/// ## Reference
+/// S. Liu, Q. Wang, G. Liu, A versatile method of discrete convolution and FFT (DC-FFT) for
+/// contact analyses, *Wear* 243 (2000).
+pub struct DcFft {
+    shape: [usize; 2],
+    cell: [f64; 2],
+    poisson: f64,
+    plans: Arc<FftPlans>,
+    /// The spectra of the zero-padded tractions present (periodic: less their mean).
+    tractions: Vec<(Load, Vec<Complex<f64>>)>,
+    periodicity: Periodicity,
+    /// Periodic: the mean tractions `[p̄, q̄x, q̄y]`, whose stress is uniform.
+    mean: [f64; 3],
+}
+
+impl DcFft {
+    /// Plans the transforms and transforms the tractions of an isolated grid.
+    pub fn new(grid: &TractionGrid, poisson: f64) -> Result<Self, DcFftError> {
+        Self::with_plans(grid, poisson, Arc::new(FftPlans::new(grid.shape)))
+    }
+
+    /// As [`DcFft::new`] for a grid that is one period of tractions repeating in x and y
+    /// (module doc).
+    pub fn periodic(grid: &TractionGrid, poisson: f64) -> Result<Self, DcFftError> {
+        Self::build(
+            grid,
+            poisson,
+            Arc::new(FftPlans::new(grid.shape)),
+            Periodicity::Periodic,
+        )
+    }
+
+    /// Isolated or periodic.
+    pub fn periodicity(&self) -> Periodicity {
+        self.periodicity
+    }
+
+    /// As [`DcFft::new`], reusing plans made for the same grid shape.
+    ///
+    /// # Panics
+    /// If `plans` were made for another shape.
+    pub fn with_plans(
+        grid: &TractionGrid,
+        poisson: f64,
+        plans: Arc<FftPlans>,
+    ) -> Result<Self, DcFftError> {
+        Self::build(grid, poisson, plans, Periodicity::NonPeriodic)
+    }
+
+    fn build(
+        grid: &TractionGrid,
+        poisson: f64,
+        plans: Arc<FftPlans>,
+        periodicity: Periodicity,
+    ) -> Result<Self, DcFftError> {
+        assert_eq!(plans.shape, grid.shape, "FFT plans for another grid shape");
+        let nx = grid.shape[1];
+        let mean = match periodicity {
+            Periodicity::Periodic => grid.mean_tractions(),
+            Periodicity::NonPeriodic => [0.0; 3],
+        };
+        let mut buffers = FftBuffers::new(&plans);
+        let mut tractions = Vec::new();
+        for (load, array) in grid.loads() {
+            let shift = mean[load as usize];
+            let fill_row = |r: usize, line: &mut [f64]| {
+                for (target, value) in line.iter_mut().zip(array.row(r)) {
+                    *target = *value - shift;
+                }
+                line[nx..].fill(0.0);
+            };
+            tractions.push((load, plans.spectrum(fill_row, &mut buffers)?));
+        }
+        Ok(Self {
+            shape: grid.shape,
+            cell: grid.cell,
+            poisson,
+            plans,
+            tractions,
+            periodicity,
+            mean,
+        })
+    }
+
+    /// `[ny, nx]`.
+    pub fn shape(&self) -> [usize; 2] {
+        self.shape
+    }
+
+    /// The plans, to share with another [`DcFft`] of the same shape.
+    pub fn plans(&self) -> Arc<FftPlans> {
+        Arc::clone(&self.plans)
+    }
+
+    /// Fresh working memory for [`DcFft::layer_into`].
+    pub fn workspace(&self) -> Workspace {
+        let [ny, nx] = self.shape;
+        Workspace {
+            quadrant: vec![0.0; 18 * nx * ny],
+            component: self.component_workspace(),
+        }
+    }
+
+    /// Fresh working memory for [`DcFft::component_into`].
+    pub fn component_workspace(&self) -> ComponentWorkspace {
+        let [ny, _] = self.shape;
+        let zero = Complex::new(0.0, 0.0);
+        let rows = self.plans.rows_len();
+        ComponentWorkspace {
+            rows: vec![vec![zero; rows]; self.tractions.len()],
+            result_rows: vec![zero; rows],
+            chunk: vec![zero; COLUMN_CHUNK * 2 * ny],
+            sum: vec![zero; COLUMN_CHUNK * 2 * ny],
+            buffers: FftBuffers::new(&self.plans),
+        }
+    }
+
+    /// The stresses at depth `z >= 0` at every cell centre, `[component, y, x]` (shape
+    /// `[6, ny, nx]`), computed on the calling thread with `workspace`.
+    ///
+    /// # Panics
+    /// If `out` is not `[6, ny, nx]`.
+    pub fn layer_into(
+        &self,
+        z: f64,
+        workspace: &mut Workspace,
+        mut out: ArrayViewMut3<f64>,
+    ) -> Result<(), DcFftError> {
+        let [ny, nx] = self.shape;
+        assert_eq!(out.shape(), [6, ny, nx], "layer output must be [6, ny, nx]");
+        self.influence_into(z, &mut workspace.quadrant);
+        for c in 0..6 {
+            self.component_into(
+                &workspace.quadrant,
+                c,
+                &mut workspace.component,
+                out.index_axis_mut(Axis(0), c),
+            )?;
+        }
+        Ok(())
+    }
+
+    /// The influence coefficients of depth `z` for [`DcFft::component_into`]: fills
+    /// `quadrant`, of the length of [`Workspace`]'s (`18 nx ny`).
+    pub fn influence_into(&self, z: f64, quadrant: &mut Vec<f64>) {
+        for block in self.influence_blocks(quadrant, 1) {
+            self.fill_influence(z, block);
+        }
+    }
+
+    /// One stress component (`c` in the order of [`COMPONENTS`]) of a layer whose influence
+    /// coefficients are in `quadrant` ([`DcFft::influence_into`]), `[y, x]`. The six
+    /// components of a layer are independent, so callers may compute them on different
+    /// threads, each with its own [`ComponentWorkspace`].
+    ///
+    /// # Panics
+    /// If `out` is not `[ny, nx]` or `c >= 6`.
+    pub fn component_into(
+        &self,
+        quadrant: &[f64],
+        c: usize,
+        workspace: &mut ComponentWorkspace,
+        mut out: ArrayViewMut2<f64>,
+    ) -> Result<(), DcFftError> {
+        let [ny, nx] = self.shape;
+        assert!(c < 6, "stress component index {c} out of 0..6");
+        assert_eq!(out.shape(), [ny, nx], "component output must be [ny, nx]");
+        let ComponentWorkspace {
+            rows,
+            result_rows,
+            chunk,
+            sum,
+            buffers,
+        } = workspace;
+        let scale = 1.0 / (4 * nx * ny) as f64;
+        let (cells, height) = (nx * ny, 2 * ny);
+        // Row transforms of this component's coefficients, for each load.
+        let periodic = self.periodicity == Periodicity::Periodic;
+        for ((load, _), load_rows) in self.tractions.iter().zip(rows.iter_mut()) {
+            let (parity_x, parity_y) = load.parity(c);
+            let offset = (*load as usize * 6 + c) * cells;
+            let coefficients = &quadrant[offset..offset + cells];
+            // Row b of the wrap-around grid: offsets 0..nx, a zero, then the mirror.
+            let fill_row = |b: usize, line: &mut [f64]| {
+                // Periodic rows beyond ny/2 are the mirror of row ny - b.
+                let (b, sign) = if periodic && 2 * b > ny {
+                    (ny - b, parity_y)
+                } else {
+                    (b, 1.0)
+                };
+                let source = &coefficients[b * nx..(b + 1) * nx];
+                for (target, value) in line[..nx].iter_mut().zip(source) {
+                    *target = sign * value;
+                }
+                line[nx] = 0.0;
+                for (target, value) in line[nx + 1..].iter_mut().rev().zip(&source[1..]) {
+                    *target = sign * parity_x * value;
+                }
+            };
+            self.plans.row_spectra(fill_row, buffers, load_rows)?;
+        }
+        // Column by column chunk: forward transforms, products with the tractions'
+        // spectra summed over the loads, inverse transforms.
+        for start in (0..=nx).step_by(COLUMN_CHUNK) {
+            let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
+            let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
+            sum.fill(Complex::new(0.0, 0.0));
+            for ((load, traction), load_rows) in self.tractions.iter().zip(rows.iter()) {
+                let more = Rows::Mirrored {
+                    parity: load.parity(c).1,
+                };
+                let scratch = &mut buffers.scratch;
+                self.plans
+                    .column_chunk(load_rows, more, start, chunk, scratch);
+                let traction = &traction[start * height..start * height + length];
+                for ((total, coefficient), t) in sum.iter_mut().zip(&*chunk).zip(traction) {
+                    *total += coefficient * t;
+                }
+            }
+            self.plans
+                .inverse_column_chunk(sum, start, result_rows, &mut buffers.scratch);
+        }
+        self.plans
+            .inverse_rows(result_rows, scale, buffers, out.view_mut())?;
+        let uniform = uniform_stress(self.mean, c);
+        if uniform != 0.0 {
+            out.mapv_inplace(|v| v + uniform);
+        }
+        Ok(())
+    }
+
+    /// The stresses of one layer, `[component, y, x]`, on the calling thread.
+    pub fn layer(&self, z: f64) -> Result<Array3<f64>, DcFftError> {
+        let [ny, nx] = self.shape;
+        let mut out = Array3::zeros((6, ny, nx));
+        self.layer_into(z, &mut self.workspace(), out.view_mut())?;
+        Ok(out)
+    }
+
+    /// Splits `quadrant` (resized to the length of [`Workspace`]'s, `18 nx ny`) into at most
+    /// `blocks` blocks of consecutive offset rows, to be filled by
+    /// [`DcFft::fill_influence`], possibly on different threads; together they make the
+    /// influence coefficients that [`DcFft::influence_into`] computes in one piece.
+    pub fn influence_blocks<'q>(
+        &self,
+        quadrant: &'q mut Vec<f64>,
+        blocks: usize,
+    ) -> Vec<InfluenceBlock<'q>> {
+        let [ny, nx] = self.shape;
+        quadrant.resize(18 * nx * ny, 0.0);
+        // Periodic coefficients are needed on the rows b <= ny/2 only: the others are their
+        // mirror (C_per(a, ny - b) = C_per(a, -b)), read so by `component_into`.
+        let filled = match self.periodicity {
+            Periodicity::NonPeriodic => ny,
+            Periodicity::Periodic => ny / 2 + 1,
+        };
+        let rows_per_block = filled.div_ceil(blocks.clamp(1, filled.max(1)));
+        let mut out: Vec<InfluenceBlock<'q>> = (0..filled.div_ceil(rows_per_block))
+            .map(|k| InfluenceBlock {
+                rows: k * rows_per_block..((k + 1) * rows_per_block).min(filled),
+                arrays: Vec::with_capacity(18),
+            })
+            .collect();
+        for array in quadrant.chunks_exact_mut(nx * ny) {
+            let array = &mut array[..filled * nx];
+            for (block, rows) in out.iter_mut().zip(array.chunks_mut(rows_per_block * nx)) {
+                block.arrays.push(rows);
+            }
+        }
+        out
+    }
+
+    /// Fills one block of [`DcFft::influence_blocks`] with the coefficients of depth `z`: the
+    /// stresses at offsets `(a dx, b dy)`, `0 <= a < nx`, `b` in the block's rows, as 18 arrays
+    /// `[load][component][b][a]` (those of absent loads are left alone).
+    pub fn fill_influence(&self, z: f64, block: InfluenceBlock<'_>) {
+        let nx = self.shape[1];
+        let present = |load: Load| self.tractions.iter().any(|(l, _)| *l == load);
+        let loads: Vec<Load> = [Load::Pressure, Load::ShearX, Load::ShearY]
+            .into_iter()
+            .filter(|&load| present(load))
+            .collect();
+        if self.periodicity == Periodicity::Periodic {
+            self.fill_periodic_influence(z, block, &loads);
+            return;
+        }
+        let InfluenceBlock { rows, mut arrays } = block;
+        let first_row = rows.start;
+        uniform_patch_offset_rows(self.cell, z, nx, rows, self.poisson, |a, b, s| {
+            let index = (b - first_row) * nx + a;
+            for &load in &loads {
+                let stress = load.stress(s);
+                let first = load as usize * 6;
+                let values = [
+                    stress.xx, stress.yy, stress.zz, stress.yz, stress.xz, stress.xy,
+                ];
+                for (array, value) in arrays[first..first + 6].iter_mut().zip(values) {
+                    array[index] = value;
+                }
+            }
+        });
+    }
+}
+
+impl DcFft {
+    /// [`DcFft::fill_influence`] of periodic tractions: the coefficients `C_per(a, b)` of the
+    /// circular offsets `0 <= a < nx`, `b` in the block's rows (`b <= ny/2`: the others are
+    /// their mirror, see [`DcFft::influence_blocks`]), each the sum of the cell's
+    /// coefficients over the images in the window (module doc). Every offset `s` of the window
+    /// along y with `s mod ny` in the block is evaluated for all `|a'|` of the window along x
+    /// and folded: `a'` onto `a' mod nx`, and `-a'` (by the parity in x) onto `-a' mod nx`.
+    fn fill_periodic_influence(&self, z: f64, block: InfluenceBlock<'_>, loads: &[Load]) {
+        let [ny, nx] = self.shape;
+        let images = PERIODIC_IMAGES;
+        let InfluenceBlock { rows, mut arrays } = block;
+        for &load in loads {
+            for array in &mut arrays[load as usize * 6..load as usize * 6 + 6] {
+                array.fill(0.0);
+            }
+        }
+        let reach_x = (2 * images + 1) * nx / 2;
+        let reach_y = (2 * images + 1) * ny / 2;
+        let reach = images as i64 + 1;
+        for n in -reach..=reach {
+            // The offsets s = b + n ny of the block's rows b, as |s| (a contiguous range):
+            // n >= 0 gives s >= 0; n < 0 gives s < 0, mirrored by the parity in y.
+            let (start, end, mirrored) = if n >= 0 {
+                let shift = n as usize * ny;
+                (rows.start + shift, rows.end + shift, false)
+            } else {
+                let shift = (-n) as usize * ny;
+                (shift + 1 - rows.end, shift + 1 - rows.start, true)
+            };
+            let end = end.min(reach_y + 1);
+            if start >= end {
+                continue;
+            }
+            let row_of = |s: usize| -> usize {
+                if mirrored {
+                    (-n) as usize * ny - s
+                } else {
+                    s - n as usize * ny
+                }
+            };
+            uniform_patch_offset_rows(
+                self.cell,
+                z,
+                reach_x + 1,
+                start..end,
+                self.poisson,
+                |a, s, stresses| {
+                    let weight = window_weight(a, nx, images) * window_weight(s, ny, images);
+                    if weight == 0.0 {
+                        return;
+                    }
+                    let row = row_of(s) - rows.start;
+                    let plus = row * nx + a % nx;
+                    let minus = row * nx + (nx - a % nx) % nx;
+                    for &load in loads {
+                        let stress = load.stress(stresses);
+                        let first = load as usize * 6;
+                        for c in 0..6 {
+                            let (parity_x, parity_y) = load.parity(c);
+                            let sign = if mirrored { parity_y } else { 1.0 };
+                            let value = weight * sign * component(stress, c);
+                            let array = &mut arrays[first + c];
+                            array[plus] += value;
+                            if a > 0 {
+                                array[minus] += parity_x * value;
+                            }
+                        }
+                    }
+                },
+            );
+        }
+        // The images beyond the window, seen from the cell's nearest image.
+        let [dx, dy] = self.cell;
+        let periods = [nx as f64 * dx, ny as f64 * dy];
+        for b in rows.clone() {
+            for a in 0..nx {
+                let index = (b - rows.start) * nx + a;
+                for (sy, wy) in centred_offsets(b as f64 * dy, periods[1]) {
+                    for (sx, wx) in centred_offsets(a as f64 * dx, periods[0]) {
+                        let far = far_images([sx, sy], z, self.cell, periods, images, self.poisson);
+                        for &load in loads {
+                            let stress = load.stress(&far);
+                            for c in 0..6 {
+                                arrays[load as usize * 6 + c][index] +=
+                                    wx * wy * component(stress, c);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A block of rows of the influence coefficients of a layer ([`DcFft::influence_blocks`]):
+/// the rows `b` of each of the 18 arrays `[load][component]`.
+pub struct InfluenceBlock<'q> {
+    rows: std::ops::Range<usize>,
+    arrays: Vec<&'q mut [f64]>,
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,200 @@
+//! Tests of [`super`].
+
+use super::*;
+use ndarray::Array2;
+
+fn grid(shape: [usize; 2], loads: [bool; 3]) -> TractionGrid {
+    let [ny, nx] = shape;
+    let field = |seed: f64| {
+        Array2::from_shape_fn((ny, nx), |(j, i)| {
+            let (x, y) = (i as f64 / nx as f64, j as f64 / ny as f64);
+            (seed * x + 2.1 * y + seed * x * y).sin() + 0.3 * (7.0 * x * seed).cos()
+        })
+    };
+    TractionGrid::new(
+        [-0.4, 0.3],
+        [0.1, 0.07],
+        loads[0].then(|| field(1.3)),
+        loads[1].then(|| field(2.9)),
+        loads[2].then(|| field(-1.7)),
+    )
+    .expect("valid grid")
+}
+
+fn assert_layers_agree(grid: &TractionGrid, depths: &[f64], nu: f64) {
+    let fft = DcFft::new(grid, nu).expect("planned");
+    for &z in depths {
+        let direct = grid.direct_layer(z, nu);
+        let difference = (&fft.layer(z).expect("transformed") - &direct)
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        assert!(
+            difference < 1e-9,
+            "z = {z}: max |FFT - direct| = {difference:e}"
+        );
+        let shape = grid.shape();
+        eprintln!("{shape:?}, z = {z}: max |FFT - direct| = {difference:.1e}");
+    }
+}
+
+#[test]
+fn fft_equals_direct_summation_on_small_grids() {
+    // Tractions of order one; 16 x 12 and 20 x 20; the surface, tiny and larger depths.
+    assert_layers_agree(
+        &grid([12, 16], [true, true, true]),
+        &[0.0, 1e-6, 0.03, 0.7],
+        0.3,
+    );
+    assert_layers_agree(&grid([20, 20], [true, true, false]), &[0.0, 0.01, 2.0], 0.5);
+    assert_layers_agree(&grid([7, 5], [false, false, true]), &[0.0, 0.2], 0.0);
+    // Degenerate shapes: one cell, one row, one column.
+    assert_layers_agree(&grid([1, 1], [true, true, true]), &[0.0, 0.5], 0.3);
+    assert_layers_agree(&grid([1, 6], [true, false, false]), &[0.1], 0.3);
+    assert_layers_agree(&grid([5, 1], [false, true, false]), &[0.1], 0.3);
+}
+
+fn max_difference(a: &Array3<f64>, b: &Array3<f64>) -> f64 {
+    (a - b).iter().fold(0.0f64, |m, v| m.max(v.abs()))
+}
+
+#[test]
+fn periodic_fft_equals_periodic_direct_summation() {
+    // Even and odd sizes (the window's edge falls on a cell for even ones), one row.
+    for (shape, loads, nu) in [
+        ([6, 8], [true, true, true], 0.3),
+        ([5, 7], [true, true, false], 0.25),
+        ([1, 6], [true, false, true], 0.3),
+        ([4, 1], [false, true, false], 0.0),
+    ] {
+        let grid = grid(shape, loads);
+        let fft = DcFft::periodic(&grid, nu).expect("planned");
+        for z in [0.0, 0.02, 0.3, 1.5] {
+            let difference = max_difference(
+                &fft.layer(z).expect("transformed"),
+                &grid.periodic_direct_layer(z, nu),
+            );
+            assert!(difference < 1e-9, "{shape:?}, z = {z}: {difference:e}");
+        }
+    }
+}
+
+#[test]
+fn periodic_images_beyond_the_window_are_negligible() {
+    // Zero-mean tractions carry no net force: with the far images spread over the plane,
+    // the window of two periods each way is within 1e-3 of the largest traction of the
+    // window of twelve (measured: 4.8e-4).
+    let grid = grid([6, 8], [true, true, true]);
+    let largest = grid
+        .loads()
+        .flat_map(|(_, a)| a.iter().map(|v| v.abs()))
+        .fold(0.0, f64::max);
+    let mut worst = 0.0f64;
+    for (x, y) in [(0.05, 0.6), (-0.35, 0.33), (0.35, 0.0)] {
+        for z in [0.0, 0.1, 0.4, 1.0] {
+            let near = grid.periodic_stress_at(x, y, z, 0.3);
+            let far = grid.periodic_stress_with_images(x, y, z, 0.3, 12);
+            let difference = (0..6)
+                .map(|c| (component(&near, c) - component(&far, c)).abs())
+                .fold(0.0, f64::max);
+            worst = worst.max(difference / largest);
+        }
+    }
+    eprintln!(
+        "periodic images: window 2 vs 12, largest difference {worst:.1e} of the largest traction"
+    );
+    assert!(worst < 1e-3, "{worst:e}");
+}
+
+#[test]
+fn uniform_periodic_tractions_stress_the_body_uniformly() {
+    let [ny, nx] = [5, 6];
+    let uniform = |v: f64| Some(Array2::from_elem((ny, nx), v));
+    let grid = TractionGrid::new(
+        [0.3, -1.0],
+        [0.2, 0.3],
+        uniform(1.5),
+        uniform(0.4),
+        uniform(-0.2),
+    )
+    .expect("valid");
+    let fft = DcFft::periodic(&grid, 0.3).expect("planned");
+    for z in [0.0, 0.1, 3.0] {
+        let layer = fft.layer(z).expect("transformed");
+        for (c, expected) in [0.0, 0.0, -1.5, 0.2, -0.4, 0.0].into_iter().enumerate() {
+            for value in layer.index_axis(Axis(0), c) {
+                assert!(
+                    (value - expected).abs() < 1e-12,
+                    "c = {c}, z = {z}: {value}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_sinusoidal_pressure_gives_the_closed_form() {
+    // p = p̄ + p1 cos(kx), uniform in y: plane strain. Its stress, from the Airy function
+    // (A + A kz) e^(-kz) cos kx with A = p1/k² (derived here): σxx = -p1 (1 - kz) e^(-kz) cos kx,
+    // σzz = -p̄ - p1 (1 + kz) e^(-kz) cos kx, τxz = -p1 kz e^(-kz) sin kx,
+    // σyy = ν (σxx + σzz) + (uniform part 0). The cells carry the cell means of the
+    // pressure, whose fundamental has the amplitude p1 sinc²(k dx/2); the harmonics of the
+    // steps fall as e^(-2π z/dx), about 3e-6 p1 at z = 2 dx. The images beyond the window
+    // leave up to 5e-5 (measured; 1e-4 asked).
+    let (nx, ny, dx, nu) = (32, 3, 1.0 / 32.0, 0.3);
+    let k = 2.0 * std::f64::consts::PI;
+    let (mean, p1) = (1.0, 0.6);
+    let half = 0.5 * k * dx;
+    let sinc = half.sin() / half;
+    let pressure = Array2::from_shape_fn((ny, nx), |(_, i)| {
+        let x = (i as f64 + 0.5) * dx;
+        mean + p1 * k.recip() / dx * ((k * (x + 0.5 * dx)).sin() - (k * (x - 0.5 * dx)).sin())
+    });
+    let grid = TractionGrid::new([0.0, 0.0], [dx, 0.5], Some(pressure), None, None).expect("valid");
+    let fft = DcFft::periodic(&grid, nu).expect("planned");
+    let amplitude = p1 * sinc * sinc;
+    for z in [2.0 * dx, 0.1, 0.3] {
+        let layer = fft.layer(z).expect("transformed");
+        let decay = (-k * z).exp();
+        for i in 0..nx {
+            let x = (i as f64 + 0.5) * dx;
+            let (c, s) = ((k * x).cos(), (k * x).sin());
+            let sxx = -amplitude * (1.0 - k * z) * decay * c;
+            let szz = -mean - amplitude * (1.0 + k * z) * decay * c;
+            let sxz = -amplitude * k * z * decay * s;
+            let syy = nu * (sxx + szz + mean);
+            for (component, expected) in [(0, sxx), (1, syy), (2, szz), (4, sxz)] {
+                let got = layer[[component, 1, i]];
+                assert!(
+                    (got - expected).abs() < 1e-4,
+                    "z = {z}, x = {x}, component {component}: {got} vs {expected}"
+                );
+            }
+            for component in [3, 5] {
+                assert!(layer[[component, 1, i]].abs() < 1e-12);
+            }
+        }
+    }
+}
+
+#[test]
+fn shape_mismatch_and_missing_tractions_are_reported() {
+    let a = Array2::zeros((3, 4));
+    let b = Array2::zeros((4, 3));
+    assert_eq!(
+        TractionGrid::new([0.0; 2], [1.0; 2], Some(a.clone()), None, Some(b)),
+        Err(TractionGridError::ShapeMismatch {
+            name: "shear_y",
+            got: [4, 3],
+            first: "pressure",
+            expected: [3, 4],
+        })
+    );
+    assert_eq!(
+        TractionGrid::new([0.0; 2], [1.0; 2], None, None, None),
+        Err(TractionGridError::NoTraction)
+    );
+    assert!(matches!(
+        TractionGrid::new([0.0; 2], [0.0, 1.0], Some(a), None, None),
+        Err(TractionGridError::CellSize { .. })
+    ));
+}

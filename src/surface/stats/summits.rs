@@ -1,0 +1,116 @@
+//! Summits: counted on the grid (8-neighbour maxima), McCool's estimates from the spectral
+//! moments, and the highest asperity with its tip radius.
+
+use super::*;
+
+/// Summits (strict 8-neighbour maxima off the border) and their parameters (module doc).
+pub fn summits(z: &Array2<f64>, spacing: [f64; 2]) -> SummitParameters {
+    let (ny, nx) = z.dim();
+    let [dx, dy] = spacing;
+    let rows = per_row(ny.saturating_sub(2), |r| {
+        let j = r + 1;
+        let (down, row, up) = (z.row(j - 1), z.row(j), z.row(j + 1));
+        let mut heights = Vec::new();
+        let mut curvature_sum = 0.0;
+        for i in 1..nx - 1 {
+            let v = row[i];
+            let higher = v > row[i - 1]
+                && v > row[i + 1]
+                && (i - 1..=i + 1).all(|k| v > down[k] && v > up[k]);
+            if higher {
+                let kx = (2.0 * v - row[i - 1] - row[i + 1]) / (dx * dx);
+                let ky = (2.0 * v - down[i] - up[i]) / (dy * dy);
+                curvature_sum += 0.5 * (kx + ky);
+                heights.push(v);
+            }
+        }
+        (heights, curvature_sum)
+    });
+    let heights: Vec<f64> = rows.iter().flat_map(|(h, _)| h.iter().copied()).collect();
+    let curvature_sum: f64 = rows.iter().map(|(_, c)| c).sum();
+    let count = heights.len();
+    let area = ((nx - 2) * (ny - 2)) as f64 * dx * dy;
+    let mean = heights.iter().sum::<f64>() / count.max(1) as f64;
+    let std =
+        (heights.iter().map(|h| (h - mean).powi(2)).sum::<f64>() / count.max(1) as f64).sqrt();
+    SummitParameters {
+        count,
+        density_per_m2: count as f64 / area,
+        radius_m: if curvature_sum > 0.0 {
+            count as f64 / curvature_sum
+        } else {
+            f64::INFINITY
+        },
+        height_std_m: std,
+        mean_height_m: mean,
+    }
+}
+
+/// McCool's spectral estimates of the summit parameters (module doc), for an area `area_m2`.
+pub fn mccool(moments: &Moments, area_m2: f64) -> SummitParameters {
+    let Moments {
+        m0,
+        m2,
+        m4,
+        nayak_alpha,
+    } = *moments;
+    let density = m4 / (6.0 * PI * 3f64.sqrt() * m2);
+    let curvature = 8.0 / 3.0 * (m4 / PI).sqrt();
+    SummitParameters {
+        count: (density * area_m2).round() as usize,
+        density_per_m2: density,
+        radius_m: 1.0 / curvature,
+        height_std_m: ((1.0 - 0.8968 / nayak_alpha).max(0.0) * m0).sqrt(),
+        mean_height_m: 4.0 * (m0 / (PI * nayak_alpha)).sqrt(),
+    }
+}
+
+/// The highest sample, its profiles and tip radii (the lecture notes' homework).
+pub(super) fn highest_asperity(z: &Array2<f64>, spacing: [f64; 2]) -> Asperity {
+    let (ny, nx) = z.dim();
+    let [dx, dy] = spacing;
+    // Off the border, so that both finite differences exist.
+    // Each row's first highest interior sample, then the first highest row: the first in
+    // row-major order, as a sequential scan finds it.
+    let rows = per_row(ny, |j| {
+        let interior = j > 0 && j + 1 < ny;
+        z.row(j)
+            .iter()
+            .enumerate()
+            .filter(|&(i, _)| interior && i > 0 && i + 1 < nx)
+            .fold(((j, 0), f64::NEG_INFINITY), |best, (i, &v)| {
+                if v > best.1 {
+                    ((j, i), v)
+                } else {
+                    best
+                }
+            })
+    });
+    let (at, height) = rows
+        .into_iter()
+        .fold(((0, 0), f64::NEG_INFINITY), |best, row| {
+            if row.1 > best.1 {
+                row
+            } else {
+                best
+            }
+        });
+    let (j, i) = at;
+    let radius = |left: Option<f64>, right: Option<f64>, step: f64| {
+        let (l, r) = (left?, right?);
+        let curvature = (2.0 * height - l - r) / (step * step);
+        (curvature > 0.0).then(|| 1.0 / curvature)
+    };
+    let get = |j: i64, i: i64| {
+        (j >= 0 && i >= 0 && (j as usize) < ny && (i as usize) < nx)
+            .then(|| z[[j as usize, i as usize]])
+    };
+    let (ji, ii) = (j as i64, i as i64);
+    Asperity {
+        at: [j, i],
+        height_m: height,
+        radius_x_m: radius(get(ji, ii - 1), get(ji, ii + 1), dx),
+        radius_y_m: radius(get(ji - 1, ii), get(ji + 1, ii), dy),
+        profile_x: (0..nx).map(|k| (k as f64 * dx, z[[j, k]])).collect(),
+    }
+}

@@ -32,6 +32,9 @@
 //! - [`regression`]: comparison of images and fields with references, field files, the HTML
 //!   report.
 //!
+//! The `stressfield` binary's command line (`src/cli/`: arguments, one module per subcommand,
+//! console helpers) sits on top and is not part of the library.
+//!
 //! ## Conventions
 //! - z >= 0 points into the body; depth is drawn downwards.
 //! - Tension positive, compression negative; the pressure `p >= 0` pushes on the surface, so

@@ -3,6 +3,9 @@
 //! All values are SI (m, Pa, N or N/m). A flat has an infinite radius; a concave body (the
 //! outer ring of a bearing, an internal gear) has a negative radius and makes a conformal
 //! contact, valid while the effective radius stays positive.
+//!
+//! Uses: [`crate::operator`] (the rough solver's FFT and elastic operator) and [`crate::io`];
+//! its tests also use `solution` and `thermal` as second methods.
 
 pub mod elliptic;
 pub mod gear;

@@ -1,5 +1,8 @@
 //! From a scene to a drawable figure: evaluates each panel's field on the grid and converts
 //! everything to the figure's display units.
+//!
+//! Uses: [`crate::study`] (what is computed), [`crate::field`], [`crate::render`] (the
+//! figure and sheet types), [`crate::report`] (the tables of a sheet), [`crate::io`].
 
 pub mod rough;
 pub mod thermal;

@@ -32,6 +32,9 @@
 //! `load`, `position`, `peclet`), or `step` (a single point) for a scene without a sweep. The
 //! viewer layout ([`layout`]) gives the maps most of the window, the plots and documents tabs
 //! beside.
+//!
+//! Uses: [`crate::study`], [`crate::figure`], [`crate::render`], [`crate::report`] and the
+//! scene; it draws what they computed.
 
 mod isosurface;
 mod layout;

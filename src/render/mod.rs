@@ -4,6 +4,8 @@
 //!
 //! Everything here is in display units: the caller has already converted coordinates (x/a or
 //! mm) and values (multiples of p0, or MPa).
+//!
+//! Uses: [`crate::field`] (axes) only.
 
 pub mod chart;
 pub(crate) mod colormap;

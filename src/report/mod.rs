@@ -1,4 +1,7 @@
 //! The `hertz` report: contact parameters, stress maxima and the yield assessment, as text.
+//!
+//! Uses: the study's results and the layers below it (assess, contact, solution, stress,
+//! surface, thermal), [`crate::render`]'s tables, [`crate::io`] for numbers.
 
 pub mod rough;
 pub mod surface;

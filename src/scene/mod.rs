@@ -5,6 +5,10 @@
 //! [`crate::study`]'s.
 //!
 //! See the README for the format reference.
+//!
+//! Uses: the layers below it for their types and presets (contact, surface, thermal, solution,
+//! stress, render's colour maps and levels, io, field); its validation still asks
+//! [`crate::study`] for grid sizes and Péclet limits (an upward import to remove).
 
 mod raw;
 mod spec;

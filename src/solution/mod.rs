@@ -1,5 +1,8 @@
 //! Stress solutions: pure functions from a point (in units of the contact half-width) to a
 //! stress tensor (in units of the peak pressure). No I/O, no threads.
+//!
+//! Uses: [`crate::contact`] (pressure shapes, partial slip), [`crate::operator`],
+//! [`crate::stress`].
 
 pub mod dcfft;
 pub mod line_hertz;

@@ -3,6 +3,8 @@
 //! Sign convention: tension positive, compression negative. Components are stored in whatever
 //! unit the caller chose (pascals, or multiples of the peak pressure `p0` for normalised work);
 //! every derived measure is linear or homogeneous of degree one, so the unit carries through.
+//!
+//! Uses nothing else of the crate.
 
 mod quantity;
 

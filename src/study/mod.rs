@@ -7,6 +7,9 @@
 //! [`crate::render`], `crate::record`, [`crate::report`], [`crate::probe`]). A new contact
 //! kind adds its arm to [`centred_solution`] (its tractions, or the solver that finds them) and,
 //! if it is drawn on its own grid, to [`plane`].
+//!
+//! Uses: [`crate::scene`], [`crate::contact`], [`crate::solution`], [`crate::thermal`],
+//! [`crate::operator`], [`crate::field`]; the sinks use it, never the other way.
 
 pub mod coupled;
 pub mod gear_heating;

@@ -4,6 +4,8 @@
 //! Conventions: heights in metres point *out of the body*, towards the counter-surface, so the
 //! highest point touches first. A map is indexed `[row, column] = [y, x]`; sample `[j, i]` sits
 //! at `(i dx, j dy)`.
+//!
+//! Uses: [`crate::operator`] (FFT), [`crate::field`], [`crate::io`].
 
 pub mod generate;
 pub mod gw;

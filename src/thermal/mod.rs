@@ -12,6 +12,8 @@
 //! Conventions: the contact moves over body 1 in +x (the direction of the traction `q`), so in
 //! the frame of the contact body 1's material flows in -x: it enters at the leading edge
 //! `x = +a`, leaves at the trailing edge `x = -a`, and carries the heat behind.
+//!
+//! Uses: [`crate::operator`] (FFT) and [`crate::contact`]'s materials.
 
 pub mod distortion;
 pub mod heating;

@@ -158,16 +158,6 @@ pub enum Progress {
     Path { done: usize, total: usize },
 }
 
-impl ThermalStudy {
-    /// The cell centre `[row, column]`'s position, m from the contact's centre.
-    pub fn position_m(&self, row: usize, column: usize) -> [f64; 2] {
-        [
-            self.origin_m[0] + column as f64 * self.spacing_m[0],
-            self.origin_m[1] + row as f64 * self.spacing_m[1],
-        ]
-    }
-}
-
 /// `u = V / (2κ)` of a body.
 pub(crate) fn inverse_length(body: &ThermalBody) -> f64 {
     body.speed_m_per_s / (2.0 * body.properties.diffusivity_m2_per_s)

@@ -107,11 +107,6 @@ impl HeightMap {
         let [ny, nx] = self.shape();
         [nx as f64 * self.spacing_m[0], ny as f64 * self.spacing_m[1]]
     }
-
-    /// The heights, consumed.
-    pub fn into_heights_m(self) -> Array2<f64> {
-        self.heights_m
-    }
 }
 
 #[cfg(test)]

@@ -21,11 +21,6 @@ pub struct CellGrid {
 }
 
 impl CellGrid {
-    /// Cell area, m².
-    pub fn cell_area_m2(&self) -> f64 {
-        self.spacing_m[0] * self.spacing_m[1]
-    }
-
     /// The lattice of `value(i, j)` for the offsets `-nx <= i < nx`, `-ny <= j < ny` (cells),
     /// in wrap-around order on `[2 ny, 2 nx]`, rows evaluated in parallel.
     pub fn offset_lattice(&self, value: impl Fn(i64, i64) -> f64 + Sync) -> Array2<f64> {

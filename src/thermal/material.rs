@@ -12,21 +12,6 @@ pub struct ThermalProperties {
 }
 
 impl ThermalProperties {
-    /// Properties from conductivity, density (kg/m³), specific heat (J/(kg K)) and expansion.
-    pub fn from_density(
-        conductivity_w_per_m_k: f64,
-        density_kg_per_m3: f64,
-        specific_heat_j_per_kg_k: f64,
-        expansion_per_k: f64,
-    ) -> Self {
-        Self {
-            conductivity_w_per_m_k,
-            diffusivity_m2_per_s: conductivity_w_per_m_k
-                / (density_kg_per_m3 * specific_heat_j_per_kg_k),
-            expansion_per_k,
-        }
-    }
-
     /// Thermal effusivity `K / √κ = √(K ρ c)`, W s^½/(m² K): which body takes more of the heat
     /// at high Péclet numbers (Blok's partition tends to `e1 / (e1 + e2)`).
     pub fn effusivity(&self) -> f64 {

@@ -171,11 +171,6 @@ impl RelativeCurvature {
         (self.half_curvature_x_per_m - self.half_curvature_y_per_m).abs()
     }
 
-    /// Equivalent radius `R_e = sqrt(R' R'') = 1 / (2 sqrt(A B))` (Johnson 1985, §4.1).
-    pub fn equivalent_radius_m(&self) -> f64 {
-        0.5 / (self.half_curvature_x_per_m * self.half_curvature_y_per_m).sqrt()
-    }
-
     fn check(&self) -> Result<(), ContactError> {
         for value in [self.half_curvature_x_per_m, self.half_curvature_y_per_m] {
             if !value.is_finite() {

@@ -37,11 +37,11 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     let solution = solution.with_context(|| format!("scene {}", scene.name))?;
     let maxima_bar = spinner(&format!(
         "subsurface maxima: DC-FFT layers down to {:.1} um",
-        stressfield::report::rough::search_depth_m(&solution) * 1e6
+        study::rough::search_depth_m(&solution) * 1e6
     ));
-    let report = ContactReport::new(&scene, &solution);
+    let findings = study::rough::findings(&scene, &solution);
     maxima_bar.finish_and_clear();
-    let report = report?;
+    let report = ContactReport::new(&scene, &solution, &findings?);
     // Frictional heating on the solved pressure, when the scene asks for it.
     let thermal = match scene.thermal {
         Some(_) => Some(super::thermal::study(&scene, Some(&solution))?),

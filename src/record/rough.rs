@@ -33,8 +33,9 @@ use crate::field::{self, Axis, Plane, Section};
 use crate::figure::{self, Drawing};
 use crate::render::chart::{Cell, Chart, Series, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Mark, Panel};
-use crate::report::rough::{search_depth_m, ContactReport};
+use crate::report::rough::ContactReport;
 use crate::scene::{ContactKind, Scene};
+use crate::study::rough::search_depth_m;
 use crate::study::rough::{self as rough_study, REFERENCE_LENGTH_M};
 use crate::surface::HeightMap;
 
@@ -75,9 +76,10 @@ pub fn record(
     stream.log_static("sheet", &rerun::EncodedImage::from_file_contents(png))?;
     let exaggeration = log_topography(stream, &surface.heights)?;
     let report = match &solution {
-        Some(solution) => ContactReport::new(scene, solution)
-            .map_err(rerun_error)?
-            .text(scene),
+        Some(solution) => {
+            let findings = rough_study::findings(scene, solution).map_err(rerun_error)?;
+            ContactReport::new(scene, solution, &findings).text(scene)
+        }
         None => {
             let c = crate::figure::rough::characterise(scene).map_err(rerun_error)?;
             let e_star = scene.contact.rough.and_then(|r| r.e_star_pa);

@@ -8,17 +8,13 @@
 //! without a hardness), `e_star_pa`, `hardness_pa`, `friction`, `poisson`, `periodic`,
 //! `rows`, `columns`, `spacing_m`, `tolerance`, `search_depth_m`.
 
-use std::f64::consts::PI;
 use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use crate::assess::{grid_maxima_to_depth, StressMaxima};
 use crate::contact::rough::RoughSolution;
 use crate::scene::Scene;
-use crate::solution::point_numerical::NumericalError;
-use crate::study::rough::{REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
-use crate::surface::stats::{self, FormRemoval, Options};
+use crate::study::rough::{ContactFindings, REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
 
 /// What the report says.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -52,50 +48,10 @@ pub struct ContactReport {
     pub spacing_m: [f64; 2],
 }
 
-/// How deep to search the maxima (m): the subsurface maximum under a spot of radius `r` lies
-/// near `0.5 r` (Hertz: 0.48a), under a cluster of spots forming one macro-contact near half
-/// its radius. The search goes to 2.5 times the radius of the largest spot, and for an
-/// isolated contact also to the radius of the loaded cells' bounding box; never beyond half
-/// the grid.
-pub fn search_depth_m(solution: &RoughSolution) -> f64 {
-    let [dx, dy] = solution.spacing_m;
-    let spot_radius = (solution.largest_spot_cells as f64 * dx * dy / PI).sqrt();
-    let mut depth = 2.5 * spot_radius;
-    if solution.periodicity == crate::operator::elastic::Periodicity::NonPeriodic {
-        let (mut x0, mut x1, mut y0, mut y1) = (usize::MAX, 0, usize::MAX, 0);
-        for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
-            if p > 0.0 {
-                (x0, x1, y0, y1) = (x0.min(i), x1.max(i), y0.min(j), y1.max(j));
-            }
-        }
-        if x0 <= x1 {
-            let extent = ((x1 - x0 + 1) as f64 * dx).max((y1 - y0 + 1) as f64 * dy);
-            depth = depth.max(0.5 * extent);
-        }
-    }
-    let (ny, nx) = solution.pressure_pa.dim();
-    depth
-        .min(0.5 * (nx as f64 * dx).min(ny as f64 * dy))
-        .max(dx.min(dy))
-}
-
-/// The subsurface maxima under the solved pressure (and `q = μ p`; periodic when the contact
-/// is), from DC-FFT layers at the cell centres, one cell apart and refined to an eighth of a
-/// cell around the best ([`grid_maxima_to_depth`]), down to [`search_depth_m`].
-pub fn subsurface_maxima(
-    solution: &RoughSolution,
-    friction: f64,
-    poisson: f64,
-) -> Result<(StressMaxima, f64), NumericalError> {
-    let tractions = crate::study::rough::tractions(solution, friction, poisson)?;
-    let depth_m = search_depth_m(solution);
-    let maxima = grid_maxima_to_depth(&tractions, depth_m / REFERENCE_LENGTH_M)?;
-    Ok((maxima, depth_m))
-}
-
 impl ContactReport {
-    /// The report of `solution`, the scene's solved contact.
-    pub fn new(scene: &Scene, solution: &RoughSolution) -> Result<Self, NumericalError> {
+    /// The report of `solution`, the scene's solved contact, with what the study found under
+    /// it ([`crate::study::rough::findings`]).
+    pub fn new(scene: &Scene, solution: &RoughSolution, findings: &ContactFindings) -> Self {
         let spec = scene.contact.rough.unwrap_or(crate::scene::RoughSpec {
             control: None,
             periodic: false,
@@ -105,31 +61,12 @@ impl ContactReport {
             max_iterations: crate::contact::rough::DEFAULT_MAX_ITERATIONS,
         });
         let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
-        let (maxima, search_depth_m) = subsurface_maxima(solution, friction, poisson)?;
+        let maxima = &findings.maxima;
+        let search_depth_m = findings.search_depth_m;
+        let plasticity_index = findings.plasticity_index;
         let e_star_pa = spec.e_star_pa.unwrap_or(f64::NAN);
-        let plasticity_index = match (spec.hardness_pa, scene.surface.as_ref()) {
-            (Some(hardness), Some(surface)) => {
-                let options = Options {
-                    form: FormRemoval::Plane,
-                    band_m: None,
-                    window: !surface.generated,
-                };
-                stats::characterise(&surface.heights, &options)
-                    .ok()
-                    .map(|c| {
-                        crate::surface::gw::plasticity_index(
-                            e_star_pa,
-                            hardness,
-                            c.summits.height_std_m,
-                            c.summits.radius_m,
-                        )
-                        .0
-                    })
-            }
-            _ => None,
-        };
         let (rows, columns) = solution.pressure_pa.dim();
-        Ok(Self {
+        Self {
             contact_fraction: solution.contact_fraction,
             spots: solution.spots,
             largest_spot_cells: solution.largest_spot_cells,
@@ -156,7 +93,7 @@ impl ContactReport {
             rows,
             columns,
             spacing_m: solution.spacing_m,
-        })
+        }
     }
 
     /// One JSON object.

@@ -7,12 +7,16 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
+use std::f64::consts::PI;
+
+use crate::assess::{grid_maxima_to_depth, StressMaxima};
 use crate::contact::rough::{self, RoughContactError, RoughContactProblem, RoughSolution};
 use crate::operator::elastic::Periodicity;
 use crate::scene::{ContactKind, Scene};
 use crate::solution::dcfft::TractionGrid;
 use crate::solution::point_numerical::{NumericalError, PointTractions};
 use crate::solution::Solution;
+use crate::surface::stats::{self, FormRemoval, Options};
 
 /// The length unit of a rough scene's tractions and sections (its `a`), m.
 pub const REFERENCE_LENGTH_M: f64 = 1e-6;
@@ -154,5 +158,93 @@ pub fn stress_solution(
         tractions: Arc::new(tractions),
         friction,
         poisson,
+    })
+}
+
+/// How deep to search the maxima (m): the subsurface maximum under a spot of radius `r` lies
+/// near `0.5 r` (Hertz: 0.48a), under a cluster of spots forming one macro-contact near half
+/// its radius. The search goes to 2.5 times the radius of the largest spot, and for an
+/// isolated contact also to the radius of the loaded cells' bounding box; never beyond half
+/// the grid.
+pub fn search_depth_m(solution: &RoughSolution) -> f64 {
+    let [dx, dy] = solution.spacing_m;
+    let spot_radius = (solution.largest_spot_cells as f64 * dx * dy / PI).sqrt();
+    let mut depth = 2.5 * spot_radius;
+    if solution.periodicity == crate::operator::elastic::Periodicity::NonPeriodic {
+        let (mut x0, mut x1, mut y0, mut y1) = (usize::MAX, 0, usize::MAX, 0);
+        for ((j, i), &p) in solution.pressure_pa.indexed_iter() {
+            if p > 0.0 {
+                (x0, x1, y0, y1) = (x0.min(i), x1.max(i), y0.min(j), y1.max(j));
+            }
+        }
+        if x0 <= x1 {
+            let extent = ((x1 - x0 + 1) as f64 * dx).max((y1 - y0 + 1) as f64 * dy);
+            depth = depth.max(0.5 * extent);
+        }
+    }
+    let (ny, nx) = solution.pressure_pa.dim();
+    depth
+        .min(0.5 * (nx as f64 * dx).min(ny as f64 * dy))
+        .max(dx.min(dy))
+}
+
+/// The subsurface maxima under the solved pressure (and `q = μ p`; periodic when the contact
+/// is), from DC-FFT layers at the cell centres, one cell apart and refined to an eighth of a
+/// cell around the best ([`grid_maxima_to_depth`]), down to [`search_depth_m`].
+pub fn subsurface_maxima(
+    solution: &RoughSolution,
+    friction: f64,
+    poisson: f64,
+) -> Result<(StressMaxima, f64), NumericalError> {
+    let tractions = tractions(solution, friction, poisson)?;
+    let depth_m = search_depth_m(solution);
+    let maxima = grid_maxima_to_depth(&tractions, depth_m / REFERENCE_LENGTH_M)?;
+    Ok((maxima, depth_m))
+}
+
+/// What the contact report states beyond the solution itself: the subsurface maxima with the
+/// depth they were searched to, and the plasticity index of the surface (with a hardness).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ContactFindings {
+    pub maxima: StressMaxima,
+    pub search_depth_m: f64,
+    pub plasticity_index: Option<f64>,
+}
+
+/// The findings under the scene's solved contact ([`subsurface_maxima`]; the plasticity index
+/// of Greenwood & Williamson from the levelled surface's summits, with a hardness).
+pub fn findings(
+    scene: &Scene,
+    solution: &RoughSolution,
+) -> Result<ContactFindings, NumericalError> {
+    let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
+    let (maxima, search_depth_m) = subsurface_maxima(solution, friction, poisson)?;
+    let rough = scene.contact.rough;
+    let e_star_pa = rough.and_then(|r| r.e_star_pa).unwrap_or(f64::NAN);
+    let plasticity_index = match (rough.and_then(|r| r.hardness_pa), scene.surface.as_ref()) {
+        (Some(hardness), Some(surface)) => {
+            let options = Options {
+                form: FormRemoval::Plane,
+                band_m: None,
+                window: !surface.generated,
+            };
+            stats::characterise(&surface.heights, &options)
+                .ok()
+                .map(|c| {
+                    crate::surface::gw::plasticity_index(
+                        e_star_pa,
+                        hardness,
+                        c.summits.height_std_m,
+                        c.summits.radius_m,
+                    )
+                    .0
+                })
+        }
+        _ => None,
+    };
+    Ok(ContactFindings {
+        maxima,
+        search_depth_m,
+        plasticity_index,
     })
 }

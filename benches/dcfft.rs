@@ -96,7 +96,7 @@ fn dcfft(c: &mut Criterion) {
     let tractions = stressfield::solution::point_numerical::PointTractions::new(grid.clone(), 0.3)
         .expect("transformed");
     group.bench_function(BenchmarkId::new("grid_maxima_to_depth", "256x256"), |b| {
-        b.iter(|| stressfield::assess::grid_maxima_to_depth(&tractions, black_box(1.5)))
+        b.iter(|| stressfield::study::assess::grid_maxima_to_depth(&tractions, black_box(1.5)))
     });
     // Direct summation against DC-FFT, one layer, one thread, small grid.
     let small = hertz_grid(32);

@@ -25,7 +25,8 @@
 //! - [`operator`]: below both contact and solution: the shared parallel 2-D FFT and the
 //!   elastic half-space's surface-displacement operator.
 //! - [`figure`], [`render`]: display units, then pixels; renderers do no I/O.
-//! - [`assess`], [`report`]: stress maxima, yield assessment, the `hertz` report.
+//! - [`report`]: the `hertz`, rough contact, surface and heating reports (the stress maxima
+//!   and yield assessment they state are the study's, `study::assess`).
 //! - [`probe`]: stresses at given points, CSV in and out.
 //! - [`io`]: reading user files within limits, atomic writes, grid tables, numbers and echoes
 //!   for messages.
@@ -43,7 +44,6 @@
 //!   the trailing edge is `x = -a`, where `σxx = +2 μ p0`.
 //! - SI units internally; solutions work in units of the half-width `a` and peak pressure `p0`.
 
-pub mod assess;
 pub mod contact;
 pub mod field;
 pub mod figure;

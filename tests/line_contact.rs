@@ -3,9 +3,9 @@
 
 use proptest::prelude::*;
 use quadrature::double_exponential;
-use stressfield::assess::{maximum, StressMaxima};
 use stressfield::solution::{line_hertz, Solution};
 use stressfield::stress::{Quantity, Stress};
+use stressfield::study::assess::{maximum, StressMaxima};
 
 /// Stress at `(x, z)` by quadrature of the Flamant solutions over the Hertz tractions
 /// `p = sqrt(1 - s^2)`, `q = mu p` (a = 1, p0 = 1).

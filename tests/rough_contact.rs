@@ -4,7 +4,6 @@
 use std::f64::consts::PI;
 
 use ndarray::Array2;
-use stressfield::assess::{self, grid_maxima};
 use stressfield::contact::rough::{
     solve, Control, RoughContactError, RoughContactProblem, RoughSolution, DEFAULT_TOLERANCE,
 };
@@ -13,6 +12,7 @@ use stressfield::solution::dcfft::TractionGrid;
 use stressfield::solution::point_numerical::PointTractions;
 use stressfield::solution::Solution;
 use stressfield::stress::Quantity;
+use stressfield::study::assess::{self, grid_maxima};
 
 const E_STAR: f64 = 1e11;
 const RADIUS: f64 = 0.01;

@@ -9,10 +9,10 @@ pub mod thermal;
 
 use std::fmt::Write;
 
-use crate::assess::{grid_maxima, Extreme, StressMaxima};
 use crate::io::text;
 use crate::scene::{ContactKind, Hertz, Method, PanelSpec, Scene};
 use crate::solution::Solution;
+use crate::study::assess::{grid_maxima, Extreme, StressMaxima};
 
 /// The report of a traction scene: the figure's units and the resultants of the file's
 /// tractions.
@@ -345,7 +345,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
 }
 
 /// The stress maxima and the yield check: from the closed form where there is one, otherwise
-/// on the scene's numerical grid ([`crate::assess::grid_maxima`]).
+/// on the scene's numerical grid ([`crate::study::assess::grid_maxima`]).
 fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
     let contact = &scene.contact;
     let point = contact.kind != ContactKind::Line;
@@ -442,7 +442,7 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
         describe(&maxima.max_shear)
     )?;
     if let (false, Some(solution)) = (point, &closed_form) {
-        let tau1 = crate::assess::maximum(solution, crate::stress::Quantity::Tau1, false);
+        let tau1 = crate::study::assess::maximum(solution, crate::stress::Quantity::Tau1, false);
         writeln!(out, "  principal shear τ1 (xz)      {}", describe(&tau1))?;
     }
     writeln!(

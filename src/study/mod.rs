@@ -11,6 +11,7 @@
 //! Uses: [`crate::scene`], [`crate::contact`], [`crate::solution`], [`crate::thermal`],
 //! [`crate::operator`], [`crate::field`]; the sinks use it, never the other way.
 
+pub mod assess;
 pub mod coupled;
 pub mod gear_heating;
 mod grid;

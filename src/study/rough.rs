@@ -9,13 +9,13 @@ use std::sync::Arc;
 
 use std::f64::consts::PI;
 
-use crate::assess::{grid_maxima_to_depth, StressMaxima};
 use crate::contact::rough::{self, RoughContactError, RoughContactProblem, RoughSolution};
 use crate::operator::elastic::Periodicity;
 use crate::scene::{ContactKind, Scene};
 use crate::solution::dcfft::TractionGrid;
 use crate::solution::point_numerical::{NumericalError, PointTractions};
 use crate::solution::Solution;
+use crate::study::assess::{grid_maxima_to_depth, StressMaxima};
 use crate::surface::stats::{self, FormRemoval, Options};
 
 /// The length unit of a rough scene's tractions and sections (its `a`), m.

@@ -60,14 +60,16 @@ pub fn record(
         .ok_or_else(|| rerun_error("the scene has no surface"))?;
     // A rough scene's contact, solved once (here, unless the caller did): the sheet, the
     // report and the depth steps use it.
-    let solution = match (scene.contact.kind, solved) {
-        (ContactKind::Rough, Some(solution)) => Some(solution.clone()),
+    let owned;
+    let solution: Option<&RoughSolution> = match (scene.contact.kind, solved) {
+        (ContactKind::Rough, Some(solution)) => Some(solution),
         (ContactKind::Rough, None) => {
-            Some(rough_study::solve(scene, &mut |_, _| {}).map_err(rerun_error)?)
+            owned = rough_study::solve(scene, &mut |_, _| {}).map_err(rerun_error)?;
+            Some(&owned)
         }
         _ => None,
     };
-    let drawing = figure::draw(scene, solution.as_ref(), on_row).map_err(rerun_error)?;
+    let drawing = figure::draw(scene, solution, on_row).map_err(rerun_error)?;
     let Drawing::Sheet(sheet) = &drawing else {
         return Err(rerun_error("a surface scene draws a sheet"));
     };
@@ -75,7 +77,7 @@ pub fn record(
         crate::render::encode_png(&drawing.png().map_err(rerun_error)?).map_err(rerun_error)?;
     stream.log_static("sheet", &rerun::EncodedImage::from_file_contents(png))?;
     let exaggeration = log_topography(stream, &surface.heights)?;
-    let report = match &solution {
+    let report = match solution {
         Some(solution) => {
             let findings = rough_study::findings(scene, solution).map_err(rerun_error)?;
             ContactReport::new(scene, solution, &findings).text(scene)
@@ -185,7 +187,7 @@ pub fn record(
     if let Some(frame) = &contact_frame {
         steps = log_load_sweep(stream, scene, frame, flush)?.max(1);
     }
-    if let (Some(frame), Some(solution)) = (&depth_frame, &solution) {
+    if let (Some(frame), Some(solution)) = (&depth_frame, solution) {
         // The depth steps are at the scene's own load, on their own timeline (and, with a load
         // sweep, the layer of the largest value at the first load: see log_depth_steps).
         stream.disable_timeline("load");

@@ -8,14 +8,16 @@
 //!
 //! ```text
 //! scene (what the user wrote) -> study (what will be computed) -> field (grids, rayon)
-//!       -> sinks: figure + render (pixels / SVG), record (Rerun), report, probe -> output
+//!       -> sinks: figure + render (pixels / SVG), record (Rerun), report -> output
 //! ```
 //!
 //! - [`scene`]: the file format only: `scenes/*.toml` parsed with serde (unknown keys rejected
 //!   by dotted path) and validated, one file per table (`scene/validate/`), into plain typed
 //!   values in SI units.
-//! - [`study`]: a validated scene -> what is computed: the stress [`solution`] of each panel,
-//!   the grid planes, the display units, the scene at each step of a sweep.
+//! - [`study`]: a validated scene -> what is computed, once for every sink: whether it can be
+//!   computed here (`study::admit`), the stress [`solution`] of each panel and its evaluated
+//!   grid plane, the display units, the scene at each step of a sweep, the solved rough
+//!   contact with its maxima and area curve, a surface's characterisation, the heating.
 //! - [`contact`]: Hertz theory (effective modulus and radius, half-width, peak and mean
 //!   pressure), materials, spur-gear geometry, elliptical contacts, partial slip.
 //! - [`solution`]: stress solutions as pure functions of a point, in units of `a` and `p0`.
@@ -24,12 +26,14 @@
 //! - [`field`]: grids, and the one place where rayon evaluates them.
 //! - [`operator`]: below both contact and solution: the shared parallel 2-D FFT and the
 //!   elastic half-space's surface-displacement operator.
-//! - [`figure`], [`render`]: display units, then pixels; renderers do no I/O.
-//! - [`report`]: the `hertz`, rough contact, surface and heating reports (the stress maxima
-//!   and yield assessment they state are the study's, `study::assess`).
-//! - [`probe`]: stresses at given points, CSV in and out.
-//! - [`io`]: reading user files within limits, atomic writes, grid tables, numbers and echoes
-//!   for messages.
+//! - [`figure`]: the study's results in display units, laid out as figures and sheets; it
+//!   never solves or evaluates.
+//! - [`render`]: the drawing toolkit below the sinks: maps, contours, colour maps, charts and
+//!   tables to pixels or SVG; knows no contact, does no I/O (scenes name its colour maps).
+//! - [`report`]: the `hertz`, rough contact, surface and heating reports and the probe's CSV
+//!   (the stress maxima and yield assessment they state are the study's, `study::assess`).
+//! - [`io`]: reading user files within limits (and the probe's points), atomic writes, grid
+//!   tables, numbers and echoes for messages.
 //! - [`regression`]: comparison of images and fields with references, field files, the HTML
 //!   report.
 //!
@@ -49,7 +53,6 @@ pub mod field;
 pub mod figure;
 pub mod io;
 pub mod operator;
-pub mod probe;
 #[cfg(feature = "rerun")]
 pub mod record;
 pub mod regression;

@@ -19,7 +19,10 @@ fn golden_dir() -> PathBuf {
 fn check_golden(name: &str) {
     let scene =
         Scene::load(&golden_dir().join(format!("{name}.toml"))).expect("golden scene is valid");
-    let built = figure::build(&scene, &|| {}).expect("field evaluates");
+    let built = figure::build(
+        &scene,
+        &stressfield::study::panel_fields(&scene, &|| {}).expect("field evaluates"),
+    );
     let actual = render::render_png(&built).expect("renders");
     let reference = golden_dir().join(format!("{name}.png"));
     if std::env::var_os("UPDATE_GOLDEN").is_some() {

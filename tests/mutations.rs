@@ -287,7 +287,7 @@ proptest! {
         let (path, text) = &scenes[index % scenes.len()];
         let mutant = mutate(text, &mutation);
         let file = path.display().to_string();
-        match Scene::parse(&mutant, "mutant", &file) {
+        match stressfield::study::parse_scene(&mutant, "mutant", &file) {
             Err(error) => prop_assert!(
                 error.key.is_some() || error.line_column.is_some(),
                 "{mutation:?} of {file}: the message names no key or line: {error}\n{mutant}"
@@ -329,7 +329,7 @@ fn a_depth_range_starting_a_hair_below_the_surface_gives_finite_stresses() {
             z[0] = toml::Value::Float(start);
             let mutant = toml::to_string(&table).expect("serialises");
             let file = path.display().to_string();
-            let scene = Scene::parse(&mutant, "mutant", &file)
+            let scene = stressfield::study::parse_scene(&mutant, "mutant", &file)
                 .unwrap_or_else(|e| panic!("{file} with z from {start:e}: refused: {e}"));
             if let Err(problem) = check_accepted(&scene) {
                 panic!("{file} with z from {start:e}: {problem}");
@@ -359,7 +359,7 @@ fn every_extreme_number_at_every_key_is_refused_clearly_or_finite() {
                 let mutant = mutate(&text, &mutation);
                 let file = path.display().to_string();
                 tried += 1;
-                let problem = match Scene::parse(&mutant, "mutant", &file) {
+                let problem = match stressfield::study::parse_scene(&mutant, "mutant", &file) {
                     Err(error) if error.key.is_none() && error.line_column.is_none() => {
                         Some(format!("the message names no key or line: {error}"))
                     }

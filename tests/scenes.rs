@@ -54,7 +54,10 @@ fn load(name: &str) -> (Scene, render::Figure) {
         .join("scenes")
         .join(format!("{name}.toml"));
     let scene = Scene::load(&path).expect("valid");
-    let built = figure::build(&scene, &|| {}).expect("evaluates");
+    let built = figure::build(
+        &scene,
+        &stressfield::study::panel_fields(&scene, &|| {}).expect("evaluates"),
+    );
     (scene, built)
 }
 
@@ -297,7 +300,10 @@ fn a_section_across_a_long_ellipse_has_depth_rows_as_fine_as_the_x_cells() {
         plane.v.step()
     );
     assert!(plane.u.step() > 9.0 * plane.v.step());
-    let built = figure::build(&scene, &|| {}).expect("evaluates");
+    let built = figure::build(
+        &scene,
+        &stressfield::study::panel_fields(&scene, &|| {}).expect("evaluates"),
+    );
     let (max, y, z) = panel_max(&built.panels[0]);
     let p0_mpa = scene.contact.p0_pa() * 1e-6;
     assert!((max / p0_mpa - 0.5746).abs() < 2e-3, "{}", max / p0_mpa);

@@ -11,7 +11,7 @@ use stressfield::study;
 pub(super) fn check(paths: &[PathBuf]) -> Result<()> {
     let mut failed = 0;
     for path in paths {
-        match Scene::load(path) {
+        match stressfield::study::load_scene(path) {
             Ok(scene) => print_out(&format!(
                 "ok {} ({})\n",
                 path.display(),

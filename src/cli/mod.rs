@@ -21,7 +21,7 @@ use args::Command;
 use console::print_out;
 use record::{record_all, Target};
 use render::{render_all, RenderOptions};
-use stressfield::scene::{ContactKind, Scene};
+use stressfield::scene::ContactKind;
 
 /// Runs one subcommand.
 pub fn run(command: Command) -> Result<()> {
@@ -74,7 +74,7 @@ pub fn run(command: Command) -> Result<()> {
             record_all(&scenes, &target)
         }
         Command::Hertz { scene: scene_path } => {
-            let scene = Scene::load(&scene_path)?;
+            let scene = stressfield::study::load_scene(&scene_path)?;
             match scene.contact.kind {
                 ContactKind::Rough => surface::contact(&scene_path, false, None),
                 ContactKind::Surface => surface::surface_of_scene(&scene_path),

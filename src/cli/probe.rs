@@ -7,8 +7,7 @@ use anyhow::{bail, Context, Result};
 use super::args::{ContactArg, MethodArg, ProbeArgs};
 use super::console::with_stdout;
 use stressfield::io::text;
-use stressfield::probe;
-use stressfield::scene::{ContactKind, Method, PanelSpec, Scene};
+use stressfield::scene::{ContactKind, Method, PanelSpec};
 use stressfield::solution::Solution;
 use stressfield::study;
 
@@ -33,7 +32,7 @@ pub(super) fn probe_command(args: &ProbeArgs) -> Result<()> {
     let (mut mu, mut nu, mut kind) = (0.0, 0.3, ContactArg::Line);
     let mut loaded = None;
     if let Some(path) = scene {
-        let scene = Scene::load(path)?;
+        let scene = stressfield::study::load_scene(path)?;
         (mu, nu) = (scene.contact.friction, scene.contact.poisson);
         kind = match scene.contact.kind {
             ContactKind::Line => ContactArg::Line,
@@ -89,7 +88,7 @@ pub(super) fn probe_command(args: &ProbeArgs) -> Result<()> {
             .with_context(|| format!("cannot open the points file {}", points.display()))?;
         Box::new(std::io::BufReader::new(file))
     };
-    let rows = probe::read_points(input).with_context(|| {
+    let rows = stressfield::io::points::read_points(input).with_context(|| {
         format!(
             "in the points {}",
             if points.as_os_str() == "-" {
@@ -133,5 +132,5 @@ pub(super) fn probe_command(args: &ProbeArgs) -> Result<()> {
             Solution::sphere_numerical(mu, nu, cells, extent)?
         }
     };
-    with_stdout(|mut out| probe::write_csv(&mut out, &solution, &rows))
+    with_stdout(|mut out| stressfield::report::probe::write_csv(&mut out, &solution, &rows))
 }

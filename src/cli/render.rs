@@ -37,7 +37,7 @@ pub(super) fn is_recording(scene: &Scene) -> bool {
 pub(super) fn load_scenes(paths: &[PathBuf], failures: &mut Vec<String>) -> Vec<Scene> {
     let mut scenes = Vec::new();
     for path in paths {
-        match Scene::load(path) {
+        match stressfield::study::load_scene(path) {
             Ok(scene) => scenes.push(scene),
             Err(e) => {
                 print_err(&format!("error: {e}"));

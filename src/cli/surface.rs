@@ -9,7 +9,7 @@ use super::console::{print_out, solver_bar, spinner};
 use super::npy::{npy_path, write_npy};
 use stressfield::report::rough::ContactReport;
 use stressfield::report::surface::SurfaceReport;
-use stressfield::scene::{ContactKind, Scene};
+use stressfield::scene::ContactKind;
 use stressfield::study;
 use stressfield::surface::read::{self, Fill, ReadOptions};
 use stressfield::surface::stats::{self, FormRemoval, Options};
@@ -17,7 +17,7 @@ use stressfield::surface::MIN_SPACING_M;
 
 /// `contact SCENE [--json] [--pressure FILE.npy]`.
 pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()> {
-    let scene = Scene::load(scene_path)?;
+    let scene = stressfield::study::load_scene(scene_path)?;
     if scene.contact.kind != ContactKind::Rough {
         bail!(
             "{} is not a rough contact scene (contact.kind = \"rough\")\nhint: `stressfield hertz {}` reports Hertz contacts",
@@ -177,7 +177,7 @@ pub fn surface(args: &SurfaceArgs) -> Result<()> {
                 );
             }
         }
-        let scene = Scene::load(&args.input)?;
+        let scene = stressfield::study::load_scene(&args.input)?;
         let Some(surface) = &scene.surface else {
             bail!(
                 "{} has no [surface]: characterise a surface scene (kind = \"surface\" or \"rough\") or a height file",

@@ -116,7 +116,7 @@ pub fn thermal(
     temperature: Option<&Path>,
     figure: Option<&Path>,
 ) -> Result<()> {
-    let scene = Scene::load(scene_path)?;
+    let scene = stressfield::study::load_scene(scene_path)?;
     if scene.thermal.is_none() {
         bail!(
             "{} has no [thermal] table\nhint: add [thermal] with speed = \"2 m/s\" and the bodies' thermal properties (material = \"steel\", or conductivity, diffusivity, expansion); see the README's frictional heating section",

@@ -1,5 +1,6 @@
-//! From a scene to a drawable figure: evaluates each panel's field on the grid and converts
-//! everything to the figure's display units.
+//! From a scene's computed fields to a drawable figure: the panels' fields (computed once by
+//! [`crate::study::panels`]) converted to the figure's display units, with titles, traction
+//! profiles, outlines and marks.
 //!
 //! Uses: [`crate::study`] (what is computed), [`crate::field`], [`crate::render`] (the
 //! figure and sheet types), [`crate::report`] (the tables of a sheet), [`crate::io`].
@@ -7,14 +8,11 @@
 pub mod rough;
 pub mod thermal;
 
-use crate::field::{self, Axis, FieldError, Plane, Section};
+use crate::field::{FieldError, Plane, Section};
 use crate::io::text;
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
 use crate::study;
-
-/// Number of samples of the traction profile across the figure.
-const TRACTION_SAMPLES: usize = 601;
 
 /// Number of segments of the contact circle drawn on planes parallel to the surface.
 const OUTLINE_SEGMENTS: usize = 256;
@@ -70,92 +68,30 @@ pub fn draw(
             rough.ok_or(DrawError::Unsolved)?,
             on_row,
         )?),
-        ContactKind::Surface => Drawing::Sheet(crate::figure::rough::surface_sheet(scene)?),
-        _ => Drawing::Figure(build(scene, on_row)?),
+        ContactKind::Surface => Drawing::Sheet(crate::figure::rough::surface_sheet(
+            scene,
+            &study::surface::characterise(scene).map_err(crate::figure::rough::SheetError::from)?,
+        )?),
+        _ => Drawing::Figure(build(scene, &study::panel_fields(scene, on_row)?)),
     })
 }
 
-/// Evaluates every panel of `scene` (in parallel within each panel) and assembles the figure.
-/// `on_row` is called once per evaluated grid row, for progress reporting.
-pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldError> {
+/// Assembles the figure of `scene` from its panels' fields (computed by
+/// [`study::panel_fields`]), in the figure's display units.
+pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
     let spec = &scene.figure;
-    // The whole figure, before the first panel is allocated.
-    let needed = study::memory::figure_bytes(scene);
-    let limit = field::memory_limit_bytes();
-    if needed > limit {
-        let points = scene
-            .panels
-            .iter()
-            .map(|p| study::plane(scene, p).points())
-            .sum();
-        return Err(FieldError::TooLarge {
-            points,
-            quantities: 1,
-            needed_mib: needed >> 20,
-            limit_mib: limit >> 20,
-        });
-    }
     let units = study::DisplayUnits::of(scene);
     let (length_per_a, stress_per_p0) = (units.length_per_a, units.stress_per_p0);
 
     let mut panels = Vec::with_capacity(scene.panels.len());
-    for panel in &scene.panels {
-        let plane = study::plane(scene, panel);
-        let solution =
-            study::solution(scene, panel).map_err(|e| FieldError::Numerical(e.to_string()))?;
-        let field = field::evaluate(&solution, &plane, &[spec.quantity], on_row)?;
-        let mut values = field.values.index_axis(ndarray::Axis(1), 0).to_owned();
-        if panel.method == Method::Difference {
-            let exact = study::closed_form(scene, panel).ok_or_else(|| {
-                FieldError::Numerical("this contact has no closed form to compare with".into())
-            })?;
-            let exact = field::evaluate(&exact, &plane, &[spec.quantity], on_row)?;
-            values -= &exact.values.index_axis(ndarray::Axis(1), 0);
-        }
-        // Rounding noise around an exact zero (a free surface, a symmetry plane) would draw
-        // a tangle of zero contours: values below 1e-12 of the largest are zero.
-        let largest = values
-            .iter()
-            .filter(|v| v.is_finite())
-            .fold(0.0f64, |m, v| m.max(v.abs()));
-        let values = values.mapv(|v| {
-            if v.abs() <= 1e-12 * largest {
-                0.0
-            } else {
-                v * stress_per_p0
-            }
-        });
-        // Where the section meets the surface: the tractions along that line and the contact's
-        // extent on it (a chord of the contact circle for a point contact).
-        let aspect = scene.contact.aspect;
-        let chord = |offset: f64, along_y: bool| match scene.contact.kind {
-            ContactKind::Line => 1.0,
-            // Tractions from a file, solved rough contact: no single contact outline.
-            ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => 0.0,
-            // The ellipse x² + (y/aspect)² = 1 (a circle for a sphere) cut at y or at x.
-            ContactKind::Point | ContactKind::Elliptical if along_y => {
-                aspect * (1.0 - offset * offset).max(0.0).sqrt()
-            }
-            ContactKind::Point | ContactKind::Elliptical => {
-                (1.0 - (offset / aspect).powi(2)).max(0.0).sqrt()
-            }
-        };
-        let (traction, half_width_over_a, outlines) = match plane.section {
-            Section::Xz { y } => (
-                traction_samples(&plane.u, chord(y, false), |x| {
-                    solution.surface_traction_over_p0(x, y)
-                }),
-                chord(y, false),
-                Vec::new(),
-            ),
-            Section::Yz { x } => (
-                traction_samples(&plane.u, chord(x, true), |y| {
-                    solution.surface_traction_over_p0(x, y)
-                }),
-                chord(x, true),
-                Vec::new(),
-            ),
-            Section::Xy { .. } => (Vec::new(), 0.0, {
+    for (panel, computed) in scene.panels.iter().zip(fields) {
+        let plane = &computed.plane;
+        let values = computed.values_over_p0.mapv(|v| v * stress_per_p0);
+        let (traction, half_width_over_a) = (&computed.traction, computed.half_width_over_a);
+        let outlines = match plane.section {
+            Section::Xz { .. } | Section::Yz { .. } => Vec::new(),
+            Section::Xy { .. } => {
+                let aspect = scene.contact.aspect;
                 let mut lines = vec![contact_outline(scene.contact.kind, aspect)];
                 // Partial slip: the stick circle c = a (1 - Q/(mu P))^(1/3) too.
                 if let Some(ratio) = scene.contact.tangential {
@@ -166,17 +102,17 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
                     }
                 }
                 lines
-            }),
+            }
         };
         let clip = clipped_range(&values);
         panels.push(Panel {
-            subtitle: subtitle(scene, panel, &plane),
+            subtitle: subtitle(scene, panel, plane),
             x: units.axis(plane.u),
             z: units.axis(plane.v),
             values,
             traction: traction
-                .into_iter()
-                .map(|(u, p, q)| TractionSample {
+                .iter()
+                .map(|&(u, p, q)| TractionSample {
                     x: u * length_per_a,
                     p: p * stress_per_p0,
                     q: q * stress_per_p0,
@@ -205,7 +141,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
     let any_friction = panels.iter().flat_map(|p| &p.traction).any(|s| s.q != 0.0);
     let (horizontal, vertical, _) = spec.section.coordinates();
-    Ok(Figure {
+    Figure {
         title: title(scene),
         panels,
         value_label: spec.stress_unit.label(spec.quantity.symbol()),
@@ -219,7 +155,7 @@ pub fn build(scene: &Scene, on_row: &(dyn Fn() + Sync)) -> Result<Figure, FieldE
         levels: spec.levels.clone(),
         mark,
         panel_width_px: spec.width_px,
-    })
+    }
 }
 
 /// The colour range of a difference map: `±` the 98th percentile of `|Δ|`, so that the
@@ -261,30 +197,6 @@ pub fn auto_mark(panels: &[Panel]) -> Mark {
     }
 }
 
-/// Samples `(u, p, q)` along a surface line, with the contact edges `u = ±half_width`
-/// included exactly so the profile closes on the surface.
-fn traction_samples(
-    u: &Axis,
-    half_width: f64,
-    traction: impl Fn(f64) -> (f64, f64),
-) -> Vec<(f64, f64, f64)> {
-    let mut us: Vec<f64> = Axis::new(u.min, u.max, TRACTION_SAMPLES).values().collect();
-    if half_width > 0.0 {
-        us.extend(
-            [-half_width, half_width]
-                .into_iter()
-                .filter(|e| *e > u.min && *e < u.max),
-        );
-    }
-    us.sort_by(f64::total_cmp);
-    us.into_iter()
-        .map(|u| {
-            let (p, q) = traction(u);
-            (u, p, q)
-        })
-        .collect()
-}
-
 /// The contact's outline on a plane parallel to the surface, in units of a: the circle
 /// `r = a` of a point contact or the ellipse with semi-axes 1 and `aspect` of an elliptical one.
 fn contact_outline(kind: ContactKind, aspect: f64) -> Vec<(f64, f64)> {
@@ -316,7 +228,7 @@ fn section_label(scene: &Scene, plane: &Plane) -> Option<String> {
         Section::Yz { x } => x,
         Section::Xy { z } => z,
     };
-    let at = at_over_a / study::length_unit_over_a(scene);
+    let at = at_over_a / scene.length_unit_over_a();
     // A row of cell centres through the axis may miss 0 by a rounding error.
     let at = if at.abs() < 1e-12 { 0.0 } else { at };
     let value = match scene.figure.length_unit {
@@ -416,6 +328,7 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::field::Axis;
     use ndarray::Array2;
 
     fn panel(values: &[f64]) -> Panel {

@@ -22,17 +22,16 @@ use std::f64::consts::PI;
 use ndarray::Array2;
 
 use crate::contact::rough::RoughSolution;
-use crate::field::{self, Axis, FieldError, Plane, Section};
+use crate::field::{Axis, FieldError};
 use crate::render::chart::{Cell, Chart, Scale as ChartScale, Series, Sheet, Style, PALETTE};
 use crate::render::table::Table;
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::report::surface::SurfaceReport;
 use crate::scene::{ContactKind, Scene};
-use crate::study::rough::search_depth_m;
-use crate::study::rough::{self as rough_study, RoughStudyError, REFERENCE_LENGTH_M};
+use crate::study::rough::{self as rough_study, RoughStudyError};
 use crate::surface::generate::Form;
 use crate::surface::gw::GreenwoodWilliamson;
-use crate::surface::stats::{self, Characterisation, Options, StatsError};
+use crate::surface::stats::{self, Characterisation};
 use crate::surface::HeightMap;
 
 /// What can go wrong building these figures.
@@ -41,27 +40,16 @@ pub enum SheetError {
     #[error(transparent)]
     Study(#[from] RoughStudyError),
     #[error(transparent)]
-    Stats(#[from] StatsError),
+    Surface(#[from] crate::study::surface::SurfaceStudyError),
     #[error(transparent)]
     Field(#[from] FieldError),
+    #[error(transparent)]
+    Fields(#[from] crate::study::rough_sheet::RoughSheetError),
     #[error("this scene has no surface")]
     NoSurface,
 }
 
 const MAP_WIDTH: u32 = 420;
-
-/// The statistics of a scene's surface (body 1's heights), as its options say.
-pub fn characterise(scene: &Scene) -> Result<Characterisation, SheetError> {
-    let surface = scene.surface.as_ref().ok_or(SheetError::NoSurface)?;
-    Ok(stats::characterise(
-        &surface.body1,
-        &Options {
-            form: surface.form,
-            band_m: surface.band_m,
-            window: !surface.generated,
-        },
-    )?)
-}
 
 /// A map of `values` (`[ny, nx]`, display units) over the surface's plane in um.
 fn xy_map(
@@ -110,10 +98,10 @@ fn xy_map(
     }
 }
 
-/// The surface scene's sheet.
-pub fn surface_sheet(scene: &Scene) -> Result<Sheet, SheetError> {
+/// The surface scene's sheet of its characterisation `c` (by
+/// [`crate::study::surface::characterise`]).
+pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, SheetError> {
     let surface = scene.surface.as_ref().ok_or(SheetError::NoSurface)?;
-    let c = characterise(scene)?;
     let (levelled, _) = stats::level(&surface.body1, c.options.form);
     // The highest asperity circled (the homework's; border samples are left out).
     let [row, column] = c.asperity.at;
@@ -274,7 +262,7 @@ pub fn surface_sheet(scene: &Scene) -> Result<Sheet, SheetError> {
     ));
     let rough = scene.contact.rough;
     let report = SurfaceReport::new(
-        &c,
+        c,
         rough.and_then(|r| r.e_star_pa),
         rough.and_then(|r| r.hardness_pa),
     );
@@ -293,7 +281,7 @@ pub fn surface_sheet(scene: &Scene) -> Result<Sheet, SheetError> {
         vec![Cell::Chart(histogram), Cell::Chart(psd), Cell::Chart(acf)],
     ];
     if let Some(e_star) = rough.and_then(|r| r.e_star_pa) {
-        let gw = gw_model(&c, e_star);
+        let gw = gw_model(c, e_star);
         let curves = gw.curves(60);
         let mut separation = Chart::new(
             "Greenwood–Williamson model",
@@ -412,7 +400,7 @@ pub fn rough_sheet(
     let unit = scene.figure.stress_unit.label("");
     let unit = unit.trim();
     let outlines = spot_outlines(solution);
-    let [ny, nx] = surface.heights.shape();
+    let nx = surface.heights.shape()[1];
     let [dx, dy] = surface.heights.spacing_m();
     let top = surface
         .heights
@@ -448,51 +436,12 @@ pub fn rough_sheet(
         Vec::new(),
     );
 
-    // The stress field under the solved tractions, in the reference units (1 um, 1 MPa).
+    // The fields under the solved contact, computed by the study.
+    let fields = crate::study::rough_sheet::sheet_fields(scene, solution, on_row)?;
     let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
-    let stresses = rough_study::stress_solution(solution, friction, poisson)
-        .map_err(|e| FieldError::Numerical(e.to_string()))?;
     let quantity = scene.figure.quantity;
-    let ((peak_row, _), _) =
-        solution
-            .pressure_pa
-            .indexed_iter()
-            .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &p)| {
-                if p > best.1 {
-                    (at, p)
-                } else {
-                    best
-                }
-            });
-    let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
-    let cell = ax.min(ay);
-    let depth_m = (2.0 * search_depth_m(solution)).min(0.5 * (nx as f64 * dx).min(ny as f64 * dy));
-    let layers = ((depth_m / REFERENCE_LENGTH_M) / cell).ceil().max(4.0) as usize + 1;
-    let centres_x = Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx);
-    let xz = Plane {
-        section: Section::Xz {
-            y: (peak_row as f64 + 0.5) * ay,
-        },
-        u: centres_x,
-        v: Axis::new(0.0, (layers - 1) as f64 * cell, layers),
-    };
-    let field_xz = field::evaluate(&stresses, &xz, &[quantity], on_row)?;
-    let values_xz = field_xz
-        .values
-        .index_axis(ndarray::Axis(1), 0)
-        .mapv(|v| v * 1e6 * stress_per_pa);
-    // Depth of the largest value in the section: the xy section is taken there.
-    let ((deepest_row, _), _) =
-        values_xz
-            .indexed_iter()
-            .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &v)| {
-                if v > best.1 {
-                    (at, v)
-                } else {
-                    best
-                }
-            });
-    let max_depth = xz.v.value(deepest_row);
+    let (peak_row, xz, max_depth) = (fields.peak_row, &fields.xz, fields.max_depth);
+    let values_xz = fields.xz_pa.mapv(|v| v * stress_per_pa);
     let traction: Vec<TractionSample> = (0..nx)
         .map(|i| {
             let p = solution.pressure_pa[[peak_row, i]] * stress_per_pa;
@@ -535,16 +484,7 @@ pub fn rough_sheet(
         mark: scene.figure.mark.unwrap_or(Mark::Max),
         panel_width_px: 2 * MAP_WIDTH,
     };
-    let xy = Plane {
-        section: Section::Xy { z: max_depth },
-        u: centres_x,
-        v: Axis::new(0.5 * ay, (ny as f64 - 0.5) * ay, ny),
-    };
-    let field_xy = field::evaluate(&stresses, &xy, &[quantity], on_row)?;
-    let values_xy = field_xy
-        .values
-        .index_axis(ndarray::Axis(1), 0)
-        .mapv(|v| v * 1e6 * stress_per_pa);
+    let values_xy = fields.xy_pa.mapv(|v| v * stress_per_pa);
     let mut depth_map = xy_map(
         &format!(
             "{} at the depth of the section's maximum",
@@ -564,14 +504,14 @@ pub fn rough_sheet(
 
     // A rough ball or cylinder: its pressure against the smooth body's (Hertz); a nominally
     // flat surface: its real area against load.
-    let area_chart = match surface.shape {
-        Form::None => {
+    let area_chart = match (fields.area_curve, &fields.characterisation, surface.shape) {
+        (Some(curve), Some(c), _) => {
             let e_star = rough_study::problem(scene)
                 .ok_or(SheetError::NoSurface)?
                 .e_star_pa;
-            area_against_load(scene, rough_study::area_curve(scene, solution)?, e_star)?
+            area_against_load(curve, c, e_star)
         }
-        shape => pressure_against_hertz(scene, solution, shape)?,
+        (_, _, shape) => pressure_against_hertz(scene, solution, shape)?,
     };
     let sheet = Sheet {
         title: scene
@@ -589,11 +529,7 @@ pub fn rough_sheet(
 
 /// Real area against mean pressure: the solver at fractions and multiples of the scene's mean
 /// pressure, the GW prediction and the linear law.
-fn area_against_load(
-    scene: &Scene,
-    solved: Vec<(f64, f64)>,
-    e_star: f64,
-) -> Result<Chart, SheetError> {
+fn area_against_load(solved: Vec<(f64, f64)>, c: &Characterisation, e_star: f64) -> Chart {
     let mut chart = Chart::new(
         "Real area against load",
         "mean pressure p / E*",
@@ -607,8 +543,7 @@ fn area_against_load(
         style: Style::Markers,
         colour: PALETTE[0],
     });
-    let c = characterise(scene)?;
-    let gw = gw_model(&c, e_star);
+    let gw = gw_model(c, e_star);
     let (lo, hi) = (solved[0].0 / 2.0, solved[solved.len() - 1].0 * 2.0);
     let pressures: Vec<f64> = (0..=30)
         .map(|k| lo * (hi / lo).powf(k as f64 / 30.0))
@@ -633,7 +568,7 @@ fn area_against_load(
         style: Style::Dashed,
         colour: PALETTE[1],
     });
-    Ok(chart)
+    chart
 }
 
 /// The pressure under a rough ball (or cylinder) against the Hertz pressure of the smooth one

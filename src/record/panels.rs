@@ -68,7 +68,7 @@ pub(super) fn record_sections(
     let mut volume_largest = 0.0f64;
     for step in 0..steps {
         let coarse_step = step_scene(&coarse, step)?;
-        let figure = figure::build(&coarse_step, &|| {})?;
+        let figure = figure::build(&coarse_step, &study::panel_fields(&coarse_step, &|| {})?);
         for (span, panel) in spans.iter_mut().zip(&figure.panels) {
             for &v in panel.values.iter().filter(|v| v.is_finite()) {
                 *span = (span.0.min(v), span.1.max(v));
@@ -81,7 +81,10 @@ pub(super) fn record_sections(
     }
     // The first step at full resolution: the frames of the views follow its axes.
     let first_scene = step_scene(scene, 0)?;
-    let mut first = Some(figure::build(&first_scene, on_row)?);
+    let mut first = Some(figure::build(
+        &first_scene,
+        &study::panel_fields(&first_scene, on_row)?,
+    ));
     let figure0 = first.as_ref().expect("just built");
     let ranges: Vec<(f64, f64)> = figure0
         .panels
@@ -156,7 +159,7 @@ pub(super) fn record_sections(
         let step_scene = step_scene(scene, step)?;
         let figure = match first.take() {
             Some(figure) => figure,
-            None => figure::build(&step_scene, on_row)?,
+            None => figure::build(&step_scene, &study::panel_fields(&step_scene, on_row)?),
         };
         stream.set_time_sequence(timeline, step as i64);
         let mut title = String::new();
@@ -605,7 +608,7 @@ pub(super) fn log_material_points(
     if sweep.material_points.is_empty() {
         return Ok(());
     }
-    let unit_over_a = study::length_unit_over_a(scene);
+    let unit_over_a = scene.length_unit_over_a();
     let stress_per_p0 = study::DisplayUnits::of(scene).stress_per_p0;
     let quantity = scene.figure.quantity;
     for (k, panel) in scene.panels.iter().enumerate() {

@@ -69,7 +69,17 @@ pub fn record(
         }
         _ => None,
     };
-    let drawing = figure::draw(scene, solution, on_row).map_err(rerun_error)?;
+    // A surface scene's characterisation, computed once: the sheet and the report use it.
+    let characterisation = match solution {
+        Some(_) => None,
+        None => Some(crate::study::surface::characterise(scene).map_err(rerun_error)?),
+    };
+    let drawing = match &characterisation {
+        Some(c) => {
+            Drawing::Sheet(crate::figure::rough::surface_sheet(scene, c).map_err(rerun_error)?)
+        }
+        None => figure::draw(scene, solution, on_row).map_err(rerun_error)?,
+    };
     let Drawing::Sheet(sheet) = &drawing else {
         return Err(rerun_error("a surface scene draws a sheet"));
     };
@@ -83,11 +93,12 @@ pub fn record(
             ContactReport::new(scene, solution, &findings).text(scene)
         }
         None => {
-            let c = crate::figure::rough::characterise(scene).map_err(rerun_error)?;
+            let c = characterisation
+                .as_ref()
+                .ok_or_else(|| rerun_error("a surface scene is characterised"))?;
             let e_star = scene.contact.rough.and_then(|r| r.e_star_pa);
             let hardness = scene.contact.rough.and_then(|r| r.hardness_pa);
-            crate::report::surface::SurfaceReport::new(&c, e_star, hardness)
-                .text(&c, &surface.source)
+            crate::report::surface::SurfaceReport::new(c, e_star, hardness).text(c, &surface.source)
         }
     };
     stream.log_static(

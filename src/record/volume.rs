@@ -49,7 +49,7 @@ fn half(spec: &VolumeSpec) -> (f64, f64) {
 
 /// Evaluates the quantity on the half box with `points` samples along the box's longest side.
 pub fn evaluate(scene: &Scene, spec: &VolumeSpec, points: usize) -> Result<Grid, RecordError> {
-    let unit_over_a = study::length_unit_over_a(scene);
+    let unit_over_a = scene.length_unit_over_a();
     let longest = (spec.x.1 - spec.x.0)
         .max(spec.y.1 - spec.y.0)
         .max(spec.z.1 - spec.z.0);
@@ -202,7 +202,7 @@ pub fn log_step(
         scene.contact.kind,
         ContactKind::Point | ContactKind::Elliptical
     ) {
-        let unit_over_a = study::length_unit_over_a(scene);
+        let unit_over_a = scene.length_unit_over_a();
         let (aspect, centre) = (scene.contact.aspect, scene.load_centre_over_a);
         let outline: Vec<[f32; 3]> = (0..=256)
             .map(|i| {
@@ -252,7 +252,7 @@ pub fn log_step(
 fn contact_patch(scene: &Scene, spec: &VolumeSpec) -> rerun::Mesh3D {
     const RINGS: usize = 12;
     const SEGMENTS: usize = 96;
-    let unit_over_a = study::length_unit_over_a(scene);
+    let unit_over_a = scene.length_unit_over_a();
     let (aspect, centre) = (scene.contact.aspect, scene.load_centre_over_a);
     let lift = (-0.003 * (spec.z.1 - spec.z.0)) as f32;
     let shade = |r: f64| {

@@ -7,8 +7,9 @@
 //! See the README for the format reference.
 //!
 //! Uses: the layers below it for their types and presets (contact, surface, thermal, solution,
-//! stress, render's colour maps and levels, io, field); its validation still asks
-//! [`crate::study`] for grid sizes and Péclet limits (an upward import to remove).
+//! stress, render's colour maps and levels, io). Whether a valid scene can be computed here
+//! (its memory, the speeds a sweep resolves) is the study's second stage,
+//! [`crate::study::admit`]; commands read scenes through [`crate::study::load_scene`].
 
 mod raw;
 mod spec;
@@ -27,7 +28,7 @@ pub use spec::{
     PanelSpec, RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec,
     YieldStrength,
 };
-pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
+pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
 
 /// The scene format this build reads.
 pub const FORMAT: i64 = 1;
@@ -105,6 +106,12 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// Size of one figure length unit in units of a.
+    pub fn length_unit_over_a(&self) -> f64 {
+        let a_m = self.contact.half_width_m();
+        self.figure.length_unit.metres(a_m) / a_m
+    }
+
     /// Reads and validates a scene file.
     pub fn load(path: &Path) -> Result<Self, SceneError> {
         let file = path.display().to_string();

@@ -58,9 +58,25 @@ pub struct Sweep {
     /// Material points `(x, z)` (figure length unit, body frame, in the plane of the section)
     /// whose stresses are recorded at every step: the stress history as the load passes.
     pub material_points: Vec<(f64, f64)>,
+    /// The values were generated from `from`, `to` and `steps` (not listed in `values`).
+    pub generated: bool,
 }
 
+/// The smallest Péclet number a speed sweep takes: below it the field is the stationary one
+/// scaled with the speed.
+pub const MIN_PECLET: f64 = 1e-3;
+
 impl Sweep {
+    /// The key that names step `k`'s value in an error: `sweep.values[k]`, or for generated
+    /// values `sweep.from` (the first) and `sweep.to` (the others lie between the two).
+    pub fn value_key(&self, k: usize) -> String {
+        match (self.generated, k) {
+            (false, _) => format!("sweep.values[{k}]"),
+            (true, 0) => "sweep.from".into(),
+            (true, _) => "sweep.to".into(),
+        }
+    }
+
     /// A text of step `k`'s value with its unit, e.g. `μ = 0.25`, `W = 500 N`, `x0 = 1.2a`,
     /// `Pe = 3.16 (V = 1.9 m/s)` (`V` the sliding speed).
     pub fn describe(&self, k: usize, scene: &Scene) -> String {

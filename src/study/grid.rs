@@ -2,7 +2,6 @@
 //! or, for a numerical point-contact panel, the traction grid's cell centres (so that whole
 //! layers come from one DC-FFT each).
 
-use super::length_unit_over_a;
 use crate::field::{Axis, Plane, Section};
 use crate::scene::{ContactKind, Method, Numerical, PanelSpec, Scene, SectionKind};
 
@@ -15,7 +14,7 @@ pub fn plane(scene: &Scene, panel: &PanelSpec) -> Plane {
     if scene.contact.kind != ContactKind::Line && numerical {
         return grid_plane(scene, panel);
     }
-    let unit_over_a = length_unit_over_a(scene);
+    let unit_over_a = scene.length_unit_over_a();
     let (u0, u1) = scene.figure.horizontal;
     let (v0, v1) = scene.figure.vertical;
     let nu = scene.figure.resolution;
@@ -33,7 +32,7 @@ pub fn plane(scene: &Scene, panel: &PanelSpec) -> Plane {
 
 /// The plane of a numerical point-contact panel on the traction grid's cell centres.
 fn grid_plane(scene: &Scene, panel: &PanelSpec) -> Plane {
-    let unit_over_a = length_unit_over_a(scene);
+    let unit_over_a = scene.length_unit_over_a();
     let (x_axis, y_axis) = match &scene.tractions {
         // The user's grid as it is.
         Some(grid) => {

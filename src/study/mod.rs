@@ -11,12 +11,16 @@
 //! Uses: [`crate::scene`], [`crate::contact`], [`crate::solution`], [`crate::thermal`],
 //! [`crate::operator`], [`crate::field`]; the sinks use it, never the other way.
 
+pub mod admit;
 pub mod assess;
 pub mod coupled;
 pub mod gear_heating;
 mod grid;
 pub mod memory;
+pub mod panels;
 pub mod rough;
+pub mod rough_sheet;
+pub mod surface;
 pub mod thermal;
 pub mod thermal_sections;
 pub mod thermal_sweep;
@@ -31,16 +35,9 @@ use crate::scene::{
 use crate::solution::point_numerical::{NumericalError, PointTractions};
 use crate::solution::Solution;
 
+pub use admit::{admit, load_scene, parse_scene};
 pub use grid::{grid_rows, plane};
-
-/// Size of one figure length unit in units of a.
-pub fn length_unit_over_a(scene: &Scene) -> f64 {
-    scene
-        .figure
-        .length_unit
-        .metres(scene.contact.half_width_m())
-        / scene.contact.half_width_m()
-}
+pub use panels::panel_fields;
 
 /// The figure's units: lengths in `length` (a, mm, ...), stresses in `stress` (p0, MPa, ...).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -162,7 +159,7 @@ pub fn at_step(scene: &Scene, k: usize) -> Result<Scene, ContactError> {
         }
         SweepParameter::Load => stepped.contact = scene.contact.with_load(value)?,
         SweepParameter::Position => {
-            stepped.load_centre_over_a = value * length_unit_over_a(scene);
+            stepped.load_centre_over_a = value * scene.length_unit_over_a();
         }
         SweepParameter::Peclet => {
             let a = scene.contact.half_width_m();

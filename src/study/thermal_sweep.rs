@@ -46,10 +46,6 @@ pub const SWEEP_CELLS: usize = 320;
 /// layer is about `a/√Pe = a/10` deep).
 pub const SECTION_STEPS: usize = 48;
 
-/// The smallest Péclet number swept: below it the field is the stationary one scaled with
-/// the speed.
-pub const MIN_PECLET: f64 = 1e-3;
-
 /// The sweep's grid: `-4a <= x <= 2a` and `|y| <= 2b`, a row on `y = 0`.
 pub(super) const SWEEP_WINDOW: Window = Window {
     x_over_a: [-4.0, 2.0],
@@ -479,6 +475,7 @@ mod tests {
             parameter: crate::scene::SweepParameter::Peclet,
             values: vec![own, 0.3, 20.0],
             material_points: Vec::new(),
+            generated: false,
         });
         for (k, &peclet) in [own, 0.3, 20.0].iter().enumerate() {
             let stepped = crate::study::at_step(&scene, k).expect("a step");

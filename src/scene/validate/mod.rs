@@ -22,7 +22,7 @@ use super::spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
     RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
 };
-use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS};
+use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
 use super::traction_csv;
 use super::units::{self, Dimension};
 use super::{Scene, SceneError, FORMAT};
@@ -253,27 +253,6 @@ impl Validator<'_> {
             thermal,
             surface: None,
         };
-        // The whole figure: every panel's grid and buffers, and the image.
-        let bytes = crate::study::memory::figure_bytes(&scene);
-        if bytes > crate::field::MAX_FIELD_BYTES {
-            let points: usize = scene
-                .panels
-                .iter()
-                .map(|p| crate::study::plane(&scene, p).points())
-                .sum();
-            return Err(self.error(
-                "figure.resolution",
-                format!(
-                    "{points} points in {} panel(s) need about {} MiB to draw (the grids at about {} bytes a point, and the image), more than the {} MiB allowed",
-                    scene.panels.len(),
-                    bytes >> 20,
-                    crate::study::memory::KEPT_BYTES_PER_POINT
-                        + crate::study::memory::WORKING_BYTES_PER_POINT,
-                    crate::field::MAX_FIELD_BYTES >> 20
-                ),
-                Some("lower figure.resolution (600 to 1200 is plenty for a figure)"),
-            ));
-        }
         if let Some(sweep) = &raw.sweep {
             scene.sweep = Some(self.sweep(sweep, &scene)?);
         }

@@ -12,11 +12,6 @@ impl Validator<'_> {
                 Some("use \"friction\", \"load\", \"position\" or \"peclet\""),
             )
         })?;
-        if parameter == SweepParameter::Peclet {
-            if let Some((message, hint)) = crate::study::thermal_sweep::refusal(scene) {
-                return Err(self.error("sweep.parameter", message, Some(hint)));
-            }
-        }
         let contact = &scene.contact;
         let values: Vec<f64> = match (&raw.values, raw.from, raw.to, raw.steps) {
             (Some(values), None, None, None) => {
@@ -167,10 +162,10 @@ impl Validator<'_> {
                         }
                     }
                 }
-                SweepParameter::Peclet => self.peclet(key, value, scene)?,
+                SweepParameter::Peclet => self.peclet(key, value)?,
                 SweepParameter::Position => {
                     // In units of a, like every figure range.
-                    let over_a = value * crate::study::length_unit_over_a(scene);
+                    let over_a = value * scene.length_unit_over_a();
                     let written = format!("{written}{}", unit_after(scene.figure.length_unit));
                     self.within_reach(key, over_a, &written)?;
                 }
@@ -231,30 +226,6 @@ impl Validator<'_> {
             }
             _ => {}
         }
-        // A recording holds every step's sections (to give each panel one colour range).
-        let plane_bytes: usize = scene
-            .panels
-            .iter()
-            .map(|p| {
-                let plane = crate::study::plane(scene, p);
-                plane.u.count * plane.v.count * 8
-            })
-            .sum();
-        let bytes = plane_bytes.saturating_mul(values.len());
-        let limit = crate::field::memory_limit_bytes();
-        if bytes > limit {
-            return Err(self.error(
-                "sweep",
-                format!(
-                    "{} steps of {} MiB of sections need {} MiB, more than the {} MiB this machine allows",
-                    values.len(),
-                    plane_bytes >> 20,
-                    bytes >> 20,
-                    limit >> 20
-                ),
-                Some("use fewer steps or a lower figure.resolution"),
-            ));
-        }
         let mut material_points = Vec::new();
         if let Some(points) = &raw.material_points {
             if parameter != SweepParameter::Position {
@@ -268,7 +239,7 @@ impl Validator<'_> {
                 match point.as_slice() {
                     [x, z] if x.is_finite() && z.is_finite() && *z >= 0.0 => {
                         let key = format!("sweep.material_points[{i}]");
-                        let unit_over_a = crate::study::length_unit_over_a(scene);
+                        let unit_over_a = scene.length_unit_over_a();
                         let suffix = unit_after(scene.figure.length_unit);
                         for value in [*x, *z] {
                             let written = format!("{}{suffix}", crate::io::text::number(value));
@@ -299,37 +270,19 @@ impl Validator<'_> {
             parameter,
             values,
             material_points,
+            generated: raw.values.is_none(),
         })
     }
 
-    /// A Péclet number of a speed sweep: positive, at least [`MIN_PECLET`], and within what
-    /// the sweep's grid resolves ([`peclet_limit`]).
-    ///
-    /// [`MIN_PECLET`]: crate::study::thermal_sweep::MIN_PECLET
-    /// [`peclet_limit`]: crate::study::thermal_sweep::peclet_limit
-    fn peclet(&self, key: &str, value: f64, scene: &Scene) -> Result<(), SceneError> {
-        use crate::study::thermal_sweep::{peclet_limit, MIN_PECLET, SWEEP_CELLS};
+    /// A Péclet number of a speed sweep: at least [`MIN_PECLET`]. Whether the sweep's grid
+    /// resolves it is the study's to say ([`crate::study::admit`]).
+    fn peclet(&self, key: &str, value: f64) -> Result<(), SceneError> {
         let written = crate::io::text::number(value);
         if !(value.is_finite() && value >= MIN_PECLET) {
             return Err(self.error(
                 key,
                 format!("a Péclet number must be at least {MIN_PECLET}, got {written}"),
                 Some("below it the temperature is the stationary one, scaled with the speed; sweep e.g. from 0.1 to 100"),
-            ));
-        }
-        let Some(spec) = &scene.thermal else {
-            return Ok(());
-        };
-        // A hair below the limit, so that rounding in the grid cannot exceed it.
-        let limit = peclet_limit(spec) * (1.0 - 1e-9);
-        if value > limit {
-            return Err(self.error(
-                key,
-                format!(
-                    "Pe = {written} is beyond what the sweep's grid resolves: at most {} for these bodies ({SWEEP_CELLS} cells across 6a, a cell Péclet number V dx / (2κ) of at most 2 for every heated body)",
-                    crate::io::text::significant(limit, 4, 1e6, true)
-                ),
-                Some("lower it: beyond, the maximum temperature follows the fast (Jaeger, Blok) limit, growing as √Pe"),
             ));
         }
         Ok(())

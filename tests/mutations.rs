@@ -234,7 +234,8 @@ fn check_accepted(scene: &Scene) -> Result<(), String> {
     }
     // The hertz report of a closed form (cheap); a few points of each panel otherwise.
     if contact.has_closed_form() && scene.panels.iter().all(|p| p.method.key() == "closed_form") {
-        let report = stressfield::report::hertz(scene);
+        let report =
+            stressfield::report::hertz(scene, &stressfield::study::assess::scene_maxima(scene));
         if report.contains("NaN") || report.contains(" inf") {
             return Err(format!("the hertz report: {report}"));
         }

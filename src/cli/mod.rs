@@ -79,7 +79,10 @@ pub fn run(command: Command) -> Result<()> {
                 ContactKind::Rough => surface::contact(&scene_path, false, None),
                 ContactKind::Surface => surface::surface_of_scene(&scene_path),
                 _ => {
-                    let mut text = stressfield::report::hertz(&scene);
+                    let mut text = stressfield::report::hertz(
+                        &scene,
+                        &stressfield::study::assess::scene_maxima(&scene),
+                    );
                     if scene.thermal.is_some() {
                         let (report, study) = thermal::hertz_heating(&scene)?;
                         text.push_str(&report.text(&study));

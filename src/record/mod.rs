@@ -317,7 +317,10 @@ pub fn describe(scene: &Scene) -> String {
     }
     text.push_str("\n\n");
     text.push_str("## Contact (`stressfield hertz`)\n\n```text\n");
-    text.push_str(&crate::report::hertz(scene));
+    text.push_str(&crate::report::hertz(
+        scene,
+        &crate::study::assess::scene_maxima(scene),
+    ));
     text.push_str("```\n");
     text
 }

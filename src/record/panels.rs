@@ -75,7 +75,7 @@ pub(super) fn record_sections(
             }
         }
         if let Some(spec) = &scene.volume {
-            let grid = volume::evaluate(&coarse_step, spec, (spec.points / 2).max(9))?;
+            let grid = study::volume::evaluate(&coarse_step, spec, (spec.points / 2).max(9))?;
             volume_largest = volume_largest.max(grid.largest());
         }
     }
@@ -231,7 +231,7 @@ pub(super) fn record_sections(
         }
         log_material_points(stream, &step_scene)?;
         if let Some((spec, levels, scale)) = &volume_setup {
-            let grid = volume::evaluate(&step_scene, spec, spec.points)?;
+            let grid = study::volume::evaluate(&step_scene, spec, spec.points)?;
             volume_triangles = volume::log_step(stream, &step_scene, spec, &grid, levels, scale)?;
         }
         flush()?;

@@ -29,13 +29,12 @@ use super::layout::{Layout, Node, View, ViewKind};
 use super::section::{self, Changing, Fixed, Frame, Notation, When};
 use super::{RecordError, Summary};
 use crate::contact::rough::{self, Control, RoughSolution};
-use crate::field::{self, Axis, Plane, Section};
+use crate::field::Axis;
 use crate::figure::{self, Drawing};
 use crate::render::chart::{Cell, Chart, Series, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::report::rough::ContactReport;
 use crate::scene::{ContactKind, Scene};
-use crate::study::rough::search_depth_m;
 use crate::study::rough::{self as rough_study, REFERENCE_LENGTH_M};
 use crate::surface::HeightMap;
 
@@ -590,35 +589,16 @@ fn log_depth_steps(
     on_row: &(dyn Fn() + Sync),
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<(), RecordError> {
-    let stresses =
-        rough_study::stress_solution(solution, scene.contact.friction, scene.contact.poisson)
-            .map_err(rerun_error)?;
     let [dx, dy] = solution.spacing_m;
     let (ny, nx) = solution.pressure_pa.dim();
-    let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
-    let cell = ax.min(ay);
-    let deepest = search_depth_m(solution) / REFERENCE_LENGTH_M;
-    let layers = ((deepest / cell).ceil() as usize).clamp(1, 24);
-    let step = (deepest / layers as f64).max(cell);
     let quantity = scene.figure.quantity;
     let per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
-    let mut maps = Vec::with_capacity(layers + 1);
-    for k in 0..=layers {
-        let z = k as f64 * step;
-        let plane = Plane {
-            section: Section::Xy { z },
-            u: Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx),
-            v: Axis::new(0.5 * ay, (ny as f64 - 0.5) * ay, ny),
-        };
-        let values = field::evaluate(&stresses, &plane, &[quantity], on_row)?;
-        maps.push((
-            z,
-            values
-                .values
-                .index_axis(ndarray::Axis(1), 0)
-                .mapv(|v| v * 1e6 * per_pa),
-        ));
-    }
+    let maps: Vec<(f64, ndarray::Array2<f64>)> =
+        crate::study::rough_sheet::depth_layers(scene, solution, on_row)
+            .map_err(rerun_error)?
+            .into_iter()
+            .map(|(z, values)| (z, values.mapv(|v| v * per_pa)))
+            .collect();
     // Each layer's finite extremes: the colour range of all, and the layer of the largest.
     let extremes: Vec<(f64, f64)> = maps
         .iter()

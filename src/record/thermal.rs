@@ -486,6 +486,6 @@ fn describe(scene: &Scene, sweep: &SpeedSweep) -> Result<String, RecordError> {
         } else {
             ", |y| ≤ 2b"
         },
-        hertz = crate::report::hertz(scene),
+        hertz = crate::report::hertz(scene, &crate::study::assess::scene_maxima(scene)),
     ))
 }

@@ -6,84 +6,17 @@
 //!
 //! z points down (into the body), in the figure's length unit.
 
-use ndarray::Array3;
 use rerun::RecordingStream;
 
 use super::isosurface::{isosurface, Mesh};
 use super::layout::Eye;
 use super::section::{position_text_3d, stress_text};
 use super::RecordError;
-use crate::field::{self, Axis, FieldError, Volume};
 use crate::render::colormap::ColorScale;
 use crate::render::ColorMap;
 use crate::scene::{ContactKind, Scene, VolumeSpec};
 use crate::stress::QuantityKind;
-use crate::study;
-
-/// The quantity on the half box (figure units), indexed `[z, y, x]`.
-pub struct Grid {
-    pub values: Array3<f32>,
-    pub x: Vec<f64>,
-    pub y: Vec<f64>,
-    pub z: Vec<f64>,
-}
-
-impl Grid {
-    /// The largest |value|.
-    pub fn largest(&self) -> f64 {
-        self.values
-            .iter()
-            .filter(|v| v.is_finite())
-            .fold(0.0f64, |m, v| m.max(f64::from(v.abs())))
-    }
-}
-
-/// The half box `y >= 0` of the scene's volume (all of it if it lies on one side).
-fn half(spec: &VolumeSpec) -> (f64, f64) {
-    if spec.y.0 < 0.0 && spec.y.1 > 0.0 {
-        (0.0, spec.y.1)
-    } else {
-        spec.y
-    }
-}
-
-/// Evaluates the quantity on the half box with `points` samples along the box's longest side.
-pub fn evaluate(scene: &Scene, spec: &VolumeSpec, points: usize) -> Result<Grid, RecordError> {
-    let unit_over_a = scene.length_unit_over_a();
-    let longest = (spec.x.1 - spec.x.0)
-        .max(spec.y.1 - spec.y.0)
-        .max(spec.z.1 - spec.z.0);
-    let spacing = longest / (points.max(2) - 1) as f64;
-    let axis = |(lo, hi): (f64, f64)| {
-        let count = (((hi - lo) / spacing).round() as usize + 1).max(2);
-        Axis::new(lo * unit_over_a, hi * unit_over_a, count)
-    };
-    let volume = Volume {
-        x: axis(spec.x),
-        y: axis(half(spec)),
-        z: axis(spec.z),
-    };
-    // The closed form where there is one (a numerical volume would take direct summation at
-    // every point).
-    let panel = &scene.panels[0];
-    let solution = match study::closed_form(scene, panel) {
-        Some(solution) => solution,
-        None => study::solution(scene, panel)
-            .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?,
-    };
-    let field = field::evaluate_volume::<f32>(&solution, &volume, &[spec.quantity], &|| {})?;
-    let block = field
-        .block(spec.quantity)
-        .ok_or_else(|| RecordError::Rerun("volume quantity missing".into()))?;
-    let stress_per_p0 = study::DisplayUnits::of(scene).stress_per_p0 as f32;
-    let to_unit = |axis: &Axis| axis.values().map(|v| v / unit_over_a).collect::<Vec<f64>>();
-    Ok(Grid {
-        values: block.mapv(|v| v * stress_per_p0),
-        x: to_unit(&volume.x),
-        y: to_unit(&volume.y),
-        z: to_unit(&volume.z),
-    })
-}
+use crate::study::volume::{half, Grid};
 
 /// The iso-levels: from the scene's threshold to 90 % of `largest`, at most four; for a
 /// signed quantity the same sizes on both sides of zero.

@@ -11,9 +11,8 @@ pub mod thermal;
 use std::fmt::Write;
 
 use crate::io::text;
-use crate::scene::{ContactKind, Hertz, Method, PanelSpec, Scene};
-use crate::solution::Solution;
-use crate::study::assess::{grid_maxima, Extreme, StressMaxima};
+use crate::scene::{ContactKind, Hertz, Scene};
+use crate::study::assess::{Extreme, SceneMaxima};
 
 /// The report of a traction scene: the figure's units and the resultants of the file's
 /// tractions.
@@ -80,11 +79,13 @@ fn write_tractions(out: &mut String, scene: &Scene) -> std::fmt::Result {
     Ok(())
 }
 
-/// Formats the report of a scene (first panel's friction and Poisson ratio are the scene's).
-pub fn hertz(scene: &Scene) -> String {
+/// Formats the report of a scene (first panel's friction and Poisson ratio are the scene's)
+/// with its stress maxima as the study found them
+/// ([`crate::study::assess::scene_maxima`]).
+pub fn hertz(scene: &Scene, maxima: &SceneMaxima) -> String {
     let mut out = String::new();
     // Writing into a String cannot fail.
-    let _ = write_report(&mut out, scene);
+    let _ = write_report(&mut out, scene, maxima);
     out
 }
 
@@ -92,7 +93,7 @@ fn mm(m: f64) -> String {
     format!("{} mm", text::fixed(m * 1e3, 4))
 }
 
-fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
+fn write_report(out: &mut String, scene: &Scene, maxima: &SceneMaxima) -> std::fmt::Result {
     let contact = &scene.contact;
     writeln!(out, "scene {}", scene.name)?;
     let point = contact.kind != ContactKind::Line;
@@ -114,7 +115,7 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
     if contact.kind == ContactKind::Tractions {
         writeln!(out, "contact: {geometry}")?;
         write_tractions(out, scene)?;
-        return write_maxima(out, scene);
+        return write_maxima(out, scene, maxima);
     }
     writeln!(
         out,
@@ -342,52 +343,28 @@ fn write_report(out: &mut String, scene: &Scene) -> std::fmt::Result {
             }
         }
     }
-    write_maxima(out, scene)
+    write_maxima(out, scene, maxima)
 }
 
-/// The stress maxima and the yield check: from the closed form where there is one, otherwise
-/// on the scene's numerical grid ([`crate::study::assess::grid_maxima`]).
-fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
+/// The stress maxima and the yield check, as the study found them
+/// ([`crate::study::assess::scene_maxima`]).
+fn write_maxima(out: &mut String, scene: &Scene, found: &SceneMaxima) -> std::fmt::Result {
     let contact = &scene.contact;
     let point = contact.kind != ContactKind::Line;
     let a_m = contact.half_width_m();
     let p0_pa = contact.p0_pa();
-    let closed_form =
-        crate::study::closed_form_solution(contact, contact.friction, contact.poisson);
-    let maxima = match &closed_form {
-        Some(solution) => StressMaxima::of(solution),
-        None => {
-            let numerical = scene.panels.first().map(|panel| {
-                let numerical = PanelSpec {
-                    method: Method::Numerical,
-                    ..panel.clone()
-                };
-                crate::study::solution(scene, &numerical)
-            });
-            let maxima = match numerical {
-                Some(Ok(Solution::PointNumerical { tractions, .. })) => {
-                    grid_maxima(&tractions).map_err(|e| e.to_string())
-                }
-                Some(Err(e)) => Err(e.to_string()),
-                _ => Err("the scene has no panel".to_string()),
-            };
-            match maxima {
-                Ok(maxima) => {
-                    let [ny, nx] = scene
-                        .tractions
-                        .as_ref()
-                        .map_or([scene.numerical.cells; 2], |grid| grid.shape());
-                    writeln!(out, "stress maxima by DC-FFT at the cell centres of the {nx} x {ny} traction grid, depth step one cell (no closed form for this contact):")?;
-                    if maxima.yield_starts_at_surface() {
-                        writeln!(out, "note: a surface peak at a contact edge converges slowly with the grid (a sphere sliding with μ = 0.4: 6.5 % low on 127² cells, 4 % on 511²); raise [numerical] cells to check")?;
-                    }
-                    maxima
-                }
-                Err(e) => {
-                    writeln!(out, "stress maxima: not computed ({e})")?;
-                    return Ok(());
-                }
+    let maxima = match (&found.maxima, found.grid) {
+        (Ok(maxima), None) => *maxima,
+        (Ok(maxima), Some([nx, ny])) => {
+            writeln!(out, "stress maxima by DC-FFT at the cell centres of the {nx} x {ny} traction grid, depth step one cell (no closed form for this contact):")?;
+            if maxima.yield_starts_at_surface() {
+                writeln!(out, "note: a surface peak at a contact edge converges slowly with the grid (a sphere sliding with μ = 0.4: 6.5 % low on 127² cells, 4 % on 511²); raise [numerical] cells to check")?;
             }
+            *maxima
+        }
+        (Err(e), _) => {
+            writeln!(out, "stress maxima: not computed ({e})")?;
+            return Ok(());
         }
     };
     let dimensional = contact.scale.is_some();
@@ -442,9 +419,8 @@ fn write_maxima(out: &mut String, scene: &Scene) -> std::fmt::Result {
         "  maximum shear (σ1 − σ3)/2    {}",
         describe(&maxima.max_shear)
     )?;
-    if let (false, Some(solution)) = (point, &closed_form) {
-        let tau1 = crate::study::assess::maximum(solution, crate::stress::Quantity::Tau1, false);
-        writeln!(out, "  principal shear τ1 (xz)      {}", describe(&tau1))?;
+    if let (false, Some(tau1)) = (point, &found.tau1) {
+        writeln!(out, "  principal shear τ1 (xz)      {}", describe(tau1))?;
     }
     writeln!(
         out,

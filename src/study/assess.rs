@@ -241,6 +241,58 @@ pub fn grid_maxima_to_depth(
     })
 }
 
+/// The maxima a scene's `hertz` report states, computed once here: from the closed form of
+/// the contact where there is one (with the line contact's principal shear τ1), otherwise by
+/// DC-FFT on the scene's numerical traction grid ([`grid_maxima`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SceneMaxima {
+    /// The maxima, or why they could not be computed.
+    pub maxima: Result<StressMaxima, String>,
+    /// `[nx, ny]` of the numerical traction grid they were searched on (`None`: closed form).
+    pub grid: Option<[usize; 2]>,
+    /// The largest principal shear τ1 (xz) of a line contact's closed form.
+    pub tau1: Option<Extreme>,
+}
+
+/// The stress maxima of `scene` (see [`SceneMaxima`]).
+pub fn scene_maxima(scene: &crate::scene::Scene) -> SceneMaxima {
+    use crate::scene::{ContactKind, Method, PanelSpec};
+    let contact = &scene.contact;
+    if let Some(solution) =
+        crate::study::closed_form_solution(contact, contact.friction, contact.poisson)
+    {
+        return SceneMaxima {
+            maxima: Ok(StressMaxima::of(&solution)),
+            grid: None,
+            tau1: (contact.kind == ContactKind::Line)
+                .then(|| maximum(&solution, Quantity::Tau1, false)),
+        };
+    }
+    let numerical = scene.panels.first().map(|panel| {
+        let numerical = PanelSpec {
+            method: Method::Numerical,
+            ..panel.clone()
+        };
+        crate::study::solution(scene, &numerical)
+    });
+    let maxima = match numerical {
+        Some(Ok(Solution::PointNumerical { tractions, .. })) => {
+            grid_maxima(&tractions).map_err(|e| e.to_string())
+        }
+        Some(Err(e)) => Err(e.to_string()),
+        _ => Err("the scene has no panel".to_string()),
+    };
+    let [ny, nx] = scene
+        .tractions
+        .as_ref()
+        .map_or([scene.numerical.cells; 2], |grid| grid.shape());
+    SceneMaxima {
+        maxima,
+        grid: Some([nx, ny]),
+        tau1: None,
+    }
+}
+
 /// The maxima that decide first yield under a contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StressMaxima {

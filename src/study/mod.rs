@@ -24,6 +24,7 @@ pub mod surface;
 pub mod thermal;
 pub mod thermal_sections;
 pub mod thermal_sweep;
+pub mod volume;
 
 use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::ContactError;

@@ -130,3 +130,42 @@ pub fn sheet_fields(
         characterisation,
     })
 }
+
+/// The scene's quantity in planes parallel to the surface, from the surface down to the
+/// search depth ([`search_depth_m`]), for a recording's depth timeline: `(z, values)` with `z`
+/// in the reference length (µm) and the values in Pa, `[y, x]` over the cell centres; at most
+/// 25 planes, evenly spaced and at least a cell apart.
+pub fn depth_layers(
+    scene: &Scene,
+    solution: &RoughSolution,
+    on_row: &(dyn Fn() + Sync),
+) -> Result<Vec<(f64, Array2<f64>)>, RoughSheetError> {
+    let stresses = rough::stress_solution(solution, scene.contact.friction, scene.contact.poisson)
+        .map_err(|e| FieldError::Numerical(e.to_string()))?;
+    let [dx, dy] = solution.spacing_m;
+    let (ny, nx) = solution.pressure_pa.dim();
+    let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
+    let cell = ax.min(ay);
+    let deepest = search_depth_m(solution) / REFERENCE_LENGTH_M;
+    let layers = ((deepest / cell).ceil() as usize).clamp(1, 24);
+    let step = (deepest / layers as f64).max(cell);
+    let quantity = scene.figure.quantity;
+    let mut maps = Vec::with_capacity(layers + 1);
+    for k in 0..=layers {
+        let z = k as f64 * step;
+        let plane = Plane {
+            section: Section::Xy { z },
+            u: Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx),
+            v: Axis::new(0.5 * ay, (ny as f64 - 0.5) * ay, ny),
+        };
+        let values = field::evaluate(&stresses, &plane, &[quantity], on_row)?;
+        maps.push((
+            z,
+            values
+                .values
+                .index_axis(ndarray::Axis(1), 0)
+                .mapv(|v| v * 1e6),
+        ));
+    }
+    Ok(maps)
+}

@@ -365,6 +365,7 @@ pub fn surface_sheet(scene: &Scene) -> Result<Sheet, SheetError> {
         rows.push(vec![Cell::Chart(separation), Cell::Chart(area)]);
     }
     Ok(Sheet {
+        notes: Vec::new(),
         title: scene
             .title
             .clone()
@@ -574,6 +575,10 @@ pub fn rough_sheet(
         shape => pressure_against_hertz(scene, solution, shape)?,
     };
     let sheet = Sheet {
+        notes: rough_study::warnings(scene, solution)
+            .into_iter()
+            .map(|warning| format!("warning: {warning}"))
+            .collect(),
         title: scene
             .title
             .clone()

@@ -27,9 +27,7 @@
 
 use ndarray::{Array2, Zip};
 
-use super::{
-    iterate, scale_to_mean, sum_active, RoughContactError, Settings, State, Target,
-};
+use super::{iterate, scale_to_mean, sum_active, RoughContactError, Settings, State, Target};
 use crate::operator::elastic::ElasticOperator;
 
 /// The capped load-controlled solve: `pressure` ends as the solution carrying
@@ -228,11 +226,7 @@ fn brent(
             e = d;
         }
         (a, fa) = (b, fb);
-        b += if d.abs() > tol1 {
-            d
-        } else {
-            tol1.copysign(xm)
-        };
+        b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
         let ((f, residual), done) = evaluate(b)?;
         fb = f;
         if done {

@@ -562,7 +562,9 @@ const NOTE_COLOUR: RGBAColor = RGBAColor(178, 24, 43, 1.0);
 
 /// The baseline of note `index` under the title.
 fn note_baseline(index: usize) -> f64 {
-    14.0 + font::em(SHEET_TITLE) + 6.0 + index as f64 * (font::em(SHEET_NOTE) + 4.0)
+    14.0 + font::em(SHEET_TITLE)
+        + 6.0
+        + index as f64 * (font::em(SHEET_NOTE) + 4.0)
         + font::ascent(SHEET_NOTE)
 }
 

@@ -12,6 +12,7 @@ mod point_contact;
 #[cfg(feature = "rerun")]
 mod record;
 mod regression;
+mod rough_capped;
 mod rough_contact;
 mod scenes;
 mod surfaces;

@@ -353,6 +353,7 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
         rows.push(vec![Cell::Chart(separation), Cell::Chart(area)]);
     }
     Ok(Sheet {
+        notes: Vec::new(),
         title: scene
             .title
             .clone()
@@ -514,6 +515,10 @@ pub fn rough_sheet(
         (_, _, shape) => pressure_against_hertz(scene, solution, shape)?,
     };
     let sheet = Sheet {
+        notes: rough_study::warnings(scene, solution)
+            .into_iter()
+            .map(|warning| format!("warning: {warning}"))
+            .collect(),
         title: scene
             .title
             .clone()

@@ -316,6 +316,7 @@ pub fn thermal_sheet(
     }
     Sheet {
         title: format!("{name}: frictional heating"),
+        notes: Vec::new(),
         rows,
     }
 }

@@ -6,7 +6,8 @@
 //! `von_mises_max_pa`, `von_mises_max_depth_m`, and also `largest_spot_cells`,
 //! `max_shear_max_pa`, `max_shear_max_depth_m`, `plastic_cells`, `plasticity_index` (null
 //! without a hardness), `e_star_pa`, `hardness_pa`, `friction`, `poisson`, `periodic`,
-//! `rows`, `columns`, `spacing_m`, `tolerance`, `search_depth_m`.
+//! `rows`, `columns`, `spacing_m`, `tolerance`, `search_depth_m`, `warnings` (an array of
+//! sentences, empty when the solution gives no cause: [`crate::study::rough::warnings`]).
 
 use std::fmt::Write as _;
 
@@ -46,6 +47,8 @@ pub struct ContactReport {
     pub rows: usize,
     pub columns: usize,
     pub spacing_m: [f64; 2],
+    /// What the reader should be told about the solution (few cells, an impossible peak).
+    pub warnings: Vec<String>,
 }
 
 impl ContactReport {
@@ -93,6 +96,7 @@ impl ContactReport {
             rows,
             columns,
             spacing_m: solution.spacing_m,
+            warnings: findings.warnings.clone(),
         }
     }
 
@@ -202,6 +206,10 @@ impl ContactReport {
             } else {
                 ""
             }
-        )
+        )?;
+        for warning in &self.warnings {
+            writeln!(out, "warning: {warning}")?;
+        }
+        Ok(())
     }
 }

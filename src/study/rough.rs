@@ -203,12 +203,58 @@ pub fn subsurface_maxima(
 }
 
 /// What the contact report states beyond the solution itself: the subsurface maxima with the
-/// depth they were searched to, and the plasticity index of the surface (with a hardness).
+/// depth they were searched to, the plasticity index of the surface (with a hardness), and
+/// the warnings about the solution ([`warnings`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ContactFindings {
     pub maxima: StressMaxima,
     pub search_depth_m: f64,
     pub plasticity_index: Option<f64>,
+    pub warnings: Vec<String>,
+}
+
+/// Fewer cells in contact than this and the contact is not resolved by the grid (a Hertz
+/// contact needs about ten cells across its radius for a peak pressure within 0.05 %: the
+/// grid convergence of `tests/rough_contact.rs`; below ten cells in all, a spot is one or two
+/// cells wide and its pressure is the grid's, not the surface's).
+pub const FEW_CONTACT_CELLS: usize = 10;
+
+/// The peak pressure beyond which no material carries the load, as a fraction of E*: the
+/// ideal (theoretical) strength of a perfect crystal is of order E/10 (Kelly & Macmillan 1986,
+/// ch. 1; for steel about 20 GPa), an upper bound of any real solid's strength, and E* is E
+/// or a little more (E/(1 − ν²) against a rigid body, E/(2(1 − ν²)) between equal bodies).
+///
+/// ## Reference
+/// A. Kelly, N. H. Macmillan, *Strong Solids*, 3rd ed., Clarendon Press, Oxford (1986).
+pub const IDEAL_STRENGTH_OVER_E_STAR: f64 = 0.1;
+
+/// What a reader of the solved contact should be told, in words: a contact resolved by fewer
+/// than [`FEW_CONTACT_CELLS`] cells, and a peak pressure beyond any material's strength
+/// ([`IDEAL_STRENGTH_OVER_E_STAR`] times E*, without a hardness to cap it). Warnings, not
+/// errors: the solution is the elastic one of the map as given.
+pub fn warnings(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
+    let mut warnings = Vec::new();
+    let cells = solution.pressure_pa.iter().filter(|&&p| p > 0.0).count();
+    if cells < FEW_CONTACT_CELLS {
+        warnings.push(format!(
+            "the contact is resolved by only {cells} cell{}; refine the grid (surface samples) or raise the load",
+            if cells == 1 { "" } else { "s" }
+        ));
+    }
+    let rough = scene.contact.rough;
+    let e_star_pa = rough.and_then(|r| r.e_star_pa);
+    let hardness_pa = rough.and_then(|r| r.hardness_pa);
+    if let (Some(e_star_pa), None) = (e_star_pa, hardness_pa) {
+        let limit_pa = IDEAL_STRENGTH_OVER_E_STAR * e_star_pa;
+        if solution.max_pressure_pa > limit_pa {
+            warnings.push(format!(
+                "the peak pressure {:.0} GPa is beyond any material: above E*/10 = {:.0} GPa, the order of a perfect crystal's ideal strength; give contact.hardness (e.g. \"300 HV\") to cap the asperities' pressure",
+                solution.max_pressure_pa * 1e-9,
+                limit_pa * 1e-9
+            ));
+        }
+    }
+    warnings
 }
 
 /// The findings under the scene's solved contact ([`subsurface_maxima`]; the plasticity index
@@ -246,5 +292,6 @@ pub fn findings(
         maxima,
         search_depth_m,
         plasticity_index,
+        warnings: warnings(scene, solution),
     })
 }

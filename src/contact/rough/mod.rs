@@ -42,6 +42,8 @@ use ndarray::{Array2, ArrayView2, Zip};
 use crate::operator::elastic::{ElasticOperator, Periodicity};
 use crate::operator::transform::TransformError;
 
+mod load_search;
+
 /// What fixes the solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Control {
@@ -114,7 +116,7 @@ pub enum RoughContactError {
         needed_mib: usize,
         limit_mib: usize,
     },
-    #[error("the hardness {hardness_pa:.4e} Pa cannot carry the mean pressure {mean_pa:.4e} Pa even with every cell at the cap")]
+    #[error("the load exceeds what the fully plastic surface can carry: a mean pressure of {mean_pa:.4e} Pa over the nominal area, while the hardness caps every cell at {hardness_pa:.4e} Pa; lower the load (contact.load or contact.mean_pressure) or check the hardness (contact.hardness)")]
     HardnessTooLow { hardness_pa: f64, mean_pa: f64 },
     #[error("the approach {approach_m:.4e} m does not bring the surfaces into contact: it must be positive")]
     NoContact { approach_m: f64 },
@@ -304,6 +306,7 @@ pub fn solve(
         gap_scale,
         tolerance: problem.tolerance,
         max_iterations: problem.max_iterations,
+        own_compliance,
     };
     let (iterations, residual) = match (target_mean, approach_given) {
         // Elastic, or capped under a given approach: one iteration.
@@ -325,8 +328,8 @@ pub fn solve(
             &settings,
             progress,
         )?,
-        // Capped under a given load: the approach that carries it, by bracketing.
-        (Some(mean), _) => capped_under_load(
+        // Capped under a given load: the approach that carries it, by a safeguarded search.
+        (Some(mean), _) => load_search::capped_under_load(
             &mut operator,
             &separation,
             &mut pressure,
@@ -440,6 +443,9 @@ struct Settings {
     gap_scale: f64,
     tolerance: f64,
     max_iterations: usize,
+    /// A cell's own displacement per unit pressure (m/Pa): the stiffness with which cells
+    /// that penetrate are loaded when no cell takes a conjugate-gradient step.
+    own_compliance: f64,
 }
 
 /// What one run of the iteration holds fixed.
@@ -471,6 +477,7 @@ fn iterate(
         gap_scale,
         tolerance,
         max_iterations,
+        own_compliance,
     } = *settings;
     let (approach_given, target_mean) = match target {
         Target::Approach(m) => (Some(m), None),
@@ -500,6 +507,14 @@ fn iterate(
             }
             let mean = sum / count as f64;
             gap.mapv_inplace(|g| g - mean);
+        }
+        // Under a given approach, no pressure and no cell penetrating is the solution (the
+        // approach does not reach the surface).
+        if approach_given.is_some()
+            && pressure.iter().all(|&p| p == 0.0)
+            && gap.iter().all(|&g| g >= 0.0)
+        {
+            return Ok((iterations, 0.0));
         }
         // Complementarity of the current pressure and its gap.
         // (At the cap a cell may penetrate: only an opening gap counts there.)
@@ -574,14 +589,22 @@ fn iterate(
                 }
             });
         // Cells out of contact that penetrate are loaded, and the conjugation restarts.
-        // Cells reaching or leaving the cap change the set too.
+        // Cells reaching or leaving the cap change the set too. With no cell in the
+        // conjugate-gradient step (all at the cap and penetrating) the step is zero: the
+        // penetrating cells are then loaded with their own stiffness, else they would never
+        // enter and the iteration would stop with them penetrating.
+        let load_stiffness = if step != 0.0 {
+            step.abs()
+        } else {
+            1.0 / own_compliance
+        };
         let mut cap_changed = false;
         Zip::from(&mut *pressure)
             .and(&*previous)
             .and(&*gap)
             .for_each(|p, &old, &g| {
                 if *p == 0.0 && g < 0.0 {
-                    *p = -step.abs() * g;
+                    *p = -load_stiffness * g;
                     overlap = true;
                 }
                 if *p > hardness {
@@ -614,116 +637,6 @@ fn iterate(
         }
     }
     Ok((iterations, residual))
-}
-
-/// A load-controlled contact under a pressure cap: the approach that carries the load, found
-/// by regula falsi (Illinois) on the load of approach-controlled solutions, each started from
-/// the last pressure. The mean pressure is reached to the tolerance.
-fn capped_under_load(
-    operator: &mut ElasticOperator,
-    separation: &Array2<f64>,
-    pressure: &mut Array2<f64>,
-    state: &mut State,
-    mean: f64,
-    settings: &Settings,
-    progress: &mut dyn FnMut(usize, f64),
-) -> Result<(usize, f64), RoughContactError> {
-    let cells = pressure.len() as f64;
-    let total_iterations = std::cell::Cell::new(0usize);
-    // The elastic solution's approach carries the load without the cap; capped, the surfaces
-    // must come closer: a lower bound. Double the interference until the load is carried.
-    let mut elastic = pressure.clone();
-    let uncapped = Settings {
-        hardness: f64::INFINITY,
-        ..*settings
-    };
-    let (iterations, _) = iterate(
-        operator,
-        separation,
-        &mut elastic,
-        state,
-        Target::MeanPressure(mean),
-        &uncapped,
-        progress,
-    )?;
-    total_iterations.set(total_iterations.get() + iterations);
-    let mut low = elastic_approach(operator, separation, &elastic, state)?;
-    pressure.assign(&elastic.mapv(|p| p.min(settings.hardness)));
-    let mut run = |approach: f64, pressure: &mut Array2<f64>, state: &mut State| {
-        let (iterations, residual) = iterate(
-            operator,
-            separation,
-            pressure,
-            state,
-            Target::Approach(approach),
-            settings,
-            progress,
-        )?;
-        total_iterations.set(total_iterations.get() + iterations);
-        if residual >= settings.tolerance {
-            return Err(RoughContactError::NotConverged {
-                iterations: total_iterations.get(),
-                residual,
-                tolerance: settings.tolerance,
-            });
-        }
-        Ok::<f64, RoughContactError>(pressure.sum() / cells - mean)
-    };
-    let mut f_low = run(low, pressure, state)?;
-    let mut high = low;
-    let mut f_high = f_low;
-    while f_high < 0.0 {
-        high *= 2.0;
-        f_high = run(high, pressure, state)?;
-    }
-    let mut side = 0i8;
-    let mut residual = (f_high / mean).abs();
-    while residual >= settings.tolerance {
-        if total_iterations.get() >= settings.max_iterations {
-            return Err(RoughContactError::NotConverged {
-                iterations: total_iterations.get(),
-                residual,
-                tolerance: settings.tolerance,
-            });
-        }
-        let approach = (low * f_high - high * f_low) / (f_high - f_low);
-        let f = run(approach, pressure, state)?;
-        residual = (f / mean).abs();
-        if f < 0.0 {
-            low = approach;
-            f_low = f;
-            if side == -1 {
-                f_high /= 2.0;
-            }
-            side = -1;
-        } else {
-            high = approach;
-            f_high = f;
-            if side == 1 {
-                f_low /= 2.0;
-            }
-            side = 1;
-        }
-        if (high - low).abs() <= 1e-15 * high.abs() {
-            break;
-        }
-    }
-    Ok((total_iterations.get(), residual))
-}
-
-/// The approach of a converged load-controlled pressure: the mean gap over the loaded cells.
-fn elastic_approach(
-    operator: &mut ElasticOperator,
-    separation: &Array2<f64>,
-    pressure: &Array2<f64>,
-    state: &mut State,
-) -> Result<f64, RoughContactError> {
-    operator.apply(pressure.view(), state.gap.view_mut())?;
-    Zip::from(&mut state.gap)
-        .and(separation)
-        .for_each(|g, &s| *g += s);
-    let (sum, count) = sum_active(pressure, &state.gap, &|p, _| p > 0.0);
-    Ok(sum / count.max(1) as f64)
 }
 
 /// `Σ values` and the count over the cells where `select(p, g)` holds (`g` = `values`).

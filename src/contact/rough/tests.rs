@@ -20,3 +20,131 @@ fn spots_are_4_connected_and_wrap_when_periodic() {
         "[2, 0] joins [2, 5] across the edge"
     );
 }
+
+/// A 32² periodic base (a gentle cosine bump, 4 nm) with one tall single-cell spike (30 nm),
+/// 40 nm cells, steel on a rigid flat: the spike is the highest point.
+fn spike_on_bump() -> Array2<f64> {
+    let n = 32;
+    let mut heights = Array2::from_shape_fn((n, n), |(j, i)| {
+        let phase = 2.0 * std::f64::consts::PI / n as f64;
+        2e-9 * ((phase * i as f64).cos() + (phase * j as f64).cos())
+    });
+    heights[[5, 7]] += 30e-9;
+    heights
+}
+
+const SPIKE_E_STAR: f64 = 230.77e9;
+const SPIKE_SPACING: f64 = 40e-9;
+
+/// The iteration's settings for [`spike_on_bump`] under a cap.
+fn spike_settings(heights: &Array2<f64>, hardness: f64) -> Settings {
+    let separation_rms = {
+        let mean = heights.mean().unwrap_or(0.0);
+        (heights.mapv(|h| (h - mean).powi(2)).mean().unwrap_or(0.0)).sqrt()
+    };
+    Settings {
+        hardness,
+        gap_scale: separation_rms,
+        tolerance: DEFAULT_TOLERANCE,
+        max_iterations: 2000,
+        own_compliance: crate::operator::elastic::uniform_patch_displacement(
+            0.0,
+            0.0,
+            SPIKE_SPACING / 2.0,
+            SPIKE_SPACING / 2.0,
+        ) / (std::f64::consts::PI * SPIKE_E_STAR),
+    }
+}
+
+/// Issue 22: an approach that reaches no cell, started from zero pressure, is solved by zero
+/// pressure with residual 0 (it used to end with residual infinity, which broke the search).
+#[test]
+fn an_approach_that_reaches_no_cell_has_zero_pressure_and_residual() {
+    let heights = spike_on_bump();
+    let top = heights.iter().fold(f64::NEG_INFINITY, |m, &h| m.max(h));
+    let separation = heights.mapv(|h| top - h);
+    let mut operator = ElasticOperator::new(
+        [32, 32],
+        [SPIKE_SPACING; 2],
+        SPIKE_E_STAR,
+        Periodicity::Periodic,
+    )
+    .expect("operator");
+    let mut pressure = Array2::zeros((32, 32));
+    let mut state = State::new([32, 32]);
+    let (_, residual) = iterate(
+        &mut operator,
+        &separation,
+        &mut pressure,
+        &mut state,
+        Target::Approach(-1e-9),
+        &spike_settings(&heights, 1e9),
+        &mut |_, _| {},
+    )
+    .expect("iterates");
+    assert_eq!(residual, 0.0);
+    assert!(pressure.iter().all(|&p| p == 0.0));
+}
+
+/// Issue 22, the cause: started from a pressure whose only loaded cell is at the cap and
+/// penetrates while other cells penetrate unloaded, no cell takes a conjugate-gradient step.
+/// The penetrating cells must still be loaded: the run ends where a run from the usual start
+/// ends (it used to stop at once with residual 0, the spike alone carrying the load).
+#[test]
+fn cells_that_penetrate_enter_when_every_loaded_cell_is_at_the_cap() {
+    let heights = spike_on_bump();
+    let hardness = 2e9;
+    // Deep enough to bring the bump's top (28 nm below the spike) into contact.
+    let approach = 31e-9;
+    let problem = RoughContactProblem {
+        heights_m: heights.view(),
+        spacing_m: [SPIKE_SPACING; 2],
+        e_star_pa: SPIKE_E_STAR,
+        periodicity: Periodicity::Periodic,
+        control: Control::Approach { m: approach },
+        hardness_pa: Some(hardness),
+        tolerance: DEFAULT_TOLERANCE,
+        max_iterations: 2000,
+        memory_limit_bytes: 1 << 30,
+    };
+    let reference = solve(&problem, &mut |_, _| {}).expect("solves from its own start");
+    assert!(
+        reference.contact_fraction * 1024.0 > 5.0,
+        "the bump is reached"
+    );
+
+    let top = heights.iter().fold(f64::NEG_INFINITY, |m, &h| m.max(h));
+    let separation = heights.mapv(|h| top - h);
+    let mut operator = ElasticOperator::new(
+        [32, 32],
+        [SPIKE_SPACING; 2],
+        SPIKE_E_STAR,
+        Periodicity::Periodic,
+    )
+    .expect("operator");
+    let mut pressure = Array2::zeros((32, 32));
+    pressure[[5, 7]] = hardness;
+    let mut state = State::new([32, 32]);
+    let (iterations, residual) = iterate(
+        &mut operator,
+        &separation,
+        &mut pressure,
+        &mut state,
+        Target::Approach(approach),
+        &spike_settings(&heights, hardness),
+        &mut |_, _| {},
+    )
+    .expect("iterates");
+    let difference = (&pressure - &reference.pressure_pa)
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    eprintln!(
+        "from the spike at the cap: {iterations} iterations, residual {residual:.1e}, {} cells loaded (reference {}), max |Δp| / H = {:.1e}",
+        pressure.iter().filter(|&&p| p > 0.0).count(),
+        reference.pressure_pa.iter().filter(|&&p| p > 0.0).count(),
+        difference / hardness
+    );
+    assert!(residual < DEFAULT_TOLERANCE);
+    assert!(pressure.iter().filter(|&&p| p > 0.0).count() > 1);
+    assert!(difference < 1e-6 * hardness, "{difference}");
+}

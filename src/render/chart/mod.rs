@@ -546,20 +546,34 @@ pub enum Cell {
     Table(Table),
 }
 
-/// A title over rows of maps and charts.
+/// A title over rows of maps and charts, with notes (warnings) under the title.
 #[derive(Clone, Debug)]
 pub struct Sheet {
     pub title: String,
+    /// Lines under the title, in red: what the reader must know about the whole sheet.
+    pub notes: Vec<String>,
     pub rows: Vec<Vec<Cell>>,
 }
 
 const GAP: u32 = 16;
 const SHEET_TITLE: f64 = 22.0;
+const SHEET_NOTE: f64 = 14.0;
+const NOTE_COLOUR: RGBAColor = RGBAColor(178, 24, 43, 1.0);
 
-/// Cell images and their placement: `(x, y)` of each cell, row by row, and the sheet's size.
-fn place(sizes: &[Vec<(u32, u32)>]) -> (Vec<Vec<(u32, u32)>>, u32, u32) {
+/// The baseline of note `index` under the title.
+fn note_baseline(index: usize) -> f64 {
+    14.0 + font::em(SHEET_TITLE)
+        + 6.0
+        + index as f64 * (font::em(SHEET_NOTE) + 4.0)
+        + font::ascent(SHEET_NOTE)
+}
+
+/// Cell images and their placement: `(x, y)` of each cell, row by row, and the sheet's size,
+/// below the title and `notes` lines.
+fn place(sizes: &[Vec<(u32, u32)>], notes: usize) -> (Vec<Vec<(u32, u32)>>, u32, u32) {
     let title = (14.0 + font::em(SHEET_TITLE) + 10.0) as u32;
-    let mut y = title;
+    let notes = (notes as f64 * (font::em(SHEET_NOTE) + 4.0)).ceil() as u32;
+    let mut y = title + notes;
     let mut width = 0;
     let mut places = Vec::new();
     for row in sizes {
@@ -597,7 +611,7 @@ pub fn sheet_png(sheet: &Sheet) -> Result<image::RgbImage, RenderError> {
         .iter()
         .map(|r| r.iter().map(|i| i.dimensions()).collect())
         .collect();
-    let (places, width, height) = place(&sizes);
+    let (places, width, height) = place(&sizes, sheet.notes.len());
     let mut pixels = vec![255u8; width as usize * height as usize * 3];
     {
         let mut backend = BitMapBackend::with_buffer(&mut pixels, (width, height));
@@ -610,6 +624,16 @@ pub fn sheet_png(sheet: &Sheet) -> Result<image::RgbImage, RenderError> {
             false,
             BLACK,
         )?;
+        for (index, note) in sheet.notes.iter().enumerate() {
+            painter.text(
+                note,
+                (f64::from(width) / 2.0, note_baseline(index)),
+                SHEET_NOTE,
+                Align::Center,
+                false,
+                NOTE_COLOUR,
+            )?;
+        }
         for (row, row_places) in images.iter().zip(&places) {
             for (image, &(x, y)) in row.iter().zip(row_places) {
                 let rect = Rect {
@@ -655,7 +679,7 @@ pub fn sheet_svg(sheet: &Sheet) -> Result<String, RenderError> {
         .iter()
         .map(|r| r.iter().map(|d| d.1).collect())
         .collect();
-    let (places, width, height) = place(&sizes);
+    let (places, width, height) = place(&sizes, sheet.notes.len());
     let mut out = format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n<rect x=\"0\" y=\"0\" width=\"{width}\" height=\"{height}\" fill=\"#FFFFFF\"/>\n<text x=\"{}\" y=\"{:.1}\" text-anchor=\"middle\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"{:.1}\">{}</text>\n",
         width / 2,
@@ -663,6 +687,15 @@ pub fn sheet_svg(sheet: &Sheet) -> Result<String, RenderError> {
         font::em(SHEET_TITLE),
         sheet.title.replace('&', "&amp;").replace('<', "&lt;")
     );
+    for (index, note) in sheet.notes.iter().enumerate() {
+        out.push_str(&format!(
+            "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"middle\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"{:.1}\" fill=\"#B2182B\">{}</text>\n",
+            width / 2,
+            note_baseline(index),
+            font::em(SHEET_NOTE),
+            note.replace('&', "&amp;").replace('<', "&lt;")
+        ));
+    }
     for (row, row_places) in documents.iter().zip(&places) {
         for ((document, (w, h)), &(x, y)) in row.iter().zip(row_places) {
             let body = document

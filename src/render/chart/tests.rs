@@ -54,6 +54,7 @@ fn chart_draws_inside_its_image_with_white_margins() {
 fn sheet_composes_maps_and_charts_and_svg_nests_cleanly() {
     let sheet = Sheet {
         title: "Demo".into(),
+        notes: Vec::new(),
         rows: vec![
             vec![Cell::Chart(demo()), Cell::Chart(demo())],
             vec![Cell::Chart(demo())],
@@ -87,6 +88,7 @@ fn sheet_composes_maps_and_charts_and_svg_nests_cleanly() {
 fn demo_image() {
     let sheet = Sheet {
         title: "Demo".into(),
+        notes: Vec::new(),
         rows: vec![vec![Cell::Chart(demo())]],
     };
     sheet_png(&sheet)

@@ -399,10 +399,37 @@ impl Validator<'_> {
     /// What presses a rough contact, against its surface: a mean pressure over the map below
     /// the combined modulus E* (beyond it the strains would be of order one, far outside
     /// elasticity, and the surfaces flattened), an approach below the surface's peak-to-valley
-    /// height (beyond it the surfaces overlap everywhere).
-    fn rough_control(&self, rough: &RoughSpec, heights: &HeightMap) -> Result<(), SceneError> {
+    /// height (beyond it the surfaces overlap everywhere). With a hardness `H` (the pressure
+    /// cap) the load must also stay below `H` times the nominal area: the most the fully
+    /// plastic surface carries. `hardness_key` is the key the hardness came from.
+    fn rough_control(
+        &self,
+        rough: &RoughSpec,
+        heights: &HeightMap,
+        hardness_key: &str,
+    ) -> Result<(), SceneError> {
         let [width_m, length_m] = heights.size_m();
         let area_m2 = width_m * length_m;
+        let mean_pa = match rough.control {
+            Some(Control::Load { newtons }) => Some(("contact.load", newtons / area_m2)),
+            Some(Control::MeanPressure { pa }) => Some(("contact.mean_pressure", pa)),
+            _ => None,
+        };
+        if let (Some((key, mean_pa)), Some(hardness_pa)) = (mean_pa, rough.hardness_pa) {
+            if mean_pa >= hardness_pa {
+                return Err(self.error(
+                    key,
+                    format!(
+                        "a mean pressure of {} Pa over the map's {} m² is more than the fully plastic surface carries: the hardness ({hardness_key}) caps the pressure at {} Pa, so at most {} N",
+                        crate::io::text::approx(mean_pa),
+                        crate::io::text::approx(area_m2),
+                        crate::io::text::approx(hardness_pa),
+                        crate::io::text::approx(hardness_pa * area_m2)
+                    ),
+                    Some(&format!("lower {key}, give a larger map, or check {hardness_key} (a pressure capped at H carries at most H times the nominal area)")),
+                ));
+            }
+        }
         match (rough.control, rough.e_star_pa) {
             (Some(Control::Load { newtons }), Some(e_star)) if newtons / area_m2 > e_star => {
                 Err(self.error(
@@ -517,7 +544,12 @@ impl Validator<'_> {
             }
         }
         if let Some(rough) = &contact.rough {
-            self.rough_control(rough, &surface.heights)?;
+            let hardness_key = if raw.contact.hardness.is_some() {
+                "contact.hardness"
+            } else {
+                "contact.yield_strength"
+            };
+            self.rough_control(rough, &surface.heights, hardness_key)?;
         }
         let figure = self.figure(&raw.figure, &contact)?;
         let thermal = self.thermal(&raw, &contact)?;

@@ -161,8 +161,8 @@ fn split_number(text: &str) -> (&str, &str) {
     let mut seen_exponent = false;
     while split < bytes.len() {
         let c = bytes[split];
-        let sign = (c == b'+' || c == b'-')
-            && (split == 0 || matches!(bytes[split - 1], b'e' | b'E'));
+        let sign =
+            (c == b'+' || c == b'-') && (split == 0 || matches!(bytes[split - 1], b'e' | b'E'));
         let exponent = (c == b'e' || c == b'E')
             && !seen_exponent
             && split > 0
@@ -291,7 +291,10 @@ mod tests {
     fn exponents_and_every_length_unit() {
         assert_relative_eq!(parse("1.6e-5 m", Dimension::Length).expect("ok"), 1.6e-5);
         assert_relative_eq!(parse("1e-6m", Dimension::Length).expect("ok"), 1e-6);
-        assert_relative_eq!(parse("1.15e11Pa", Dimension::Pressure).expect("ok"), 1.15e11);
+        assert_relative_eq!(
+            parse("1.15e11Pa", Dimension::Pressure).expect("ok"),
+            1.15e11
+        );
         assert_relative_eq!(parse("1e3HV", Dimension::Hardness).expect("ok"), 1e3);
         assert_relative_eq!(parse("2E3 N", Dimension::Force).expect("ok"), 2e3);
         assert_relative_eq!(parse("2E+3N", Dimension::Force).expect("ok"), 2e3);

@@ -218,6 +218,10 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
             ),
         ));
     }
+    // Every surface read is characterised: a map this machine cannot characterise is refused
+    // before its heights are unpacked.
+    super::stats::check_memory([ny, nx], crate::field::memory_limit_bytes() as u64)
+        .map_err(|e| format(&name, e.to_string()))?;
     let link = need(&["Record3", "DataLink", "PointDataLink"])?;
     let why = format!("main.xml's {nx} x {ny} values of type {data_type}");
     let data = archive.member(&link, Limit::Exactly(expected, &why))?;

@@ -39,9 +39,20 @@ fn a_reference_declaring_a_huge_array_fails_its_scene_without_aborting() {
         let report = dir.path().join("report");
         let report = report.to_str().expect("utf8");
         let output = run(&[
-            "render", scene, "--out-dir", report, "--compare", refs, "--report", report,
+            "render",
+            scene,
+            "--out-dir",
+            report,
+            "--compare",
+            refs,
+            "--report",
+            report,
         ]);
-        let text = format!("{}{}", stderr(&output), String::from_utf8_lossy(&output.stdout));
+        let text = format!(
+            "{}{}",
+            stderr(&output),
+            String::from_utf8_lossy(&output.stdout)
+        );
         assert_eq!(output.status.code(), Some(1), "{text}");
         assert!(
             text.contains(&format!("values_0.npy: declares shape {shape}")),
@@ -68,11 +79,31 @@ fn surface_flags_take_exponents() {
     std::fs::write(&path, rows.join("\n")).expect("write");
     let path = path.to_str().expect("utf8");
     let output = run(&[
-        "surface", path, "--spacing", "1e-6m", "--height-unit", "μm", "--e-star",
-        "1.15e11Pa", "--hardness", "1e3HV", "--band", "2.5e-6m,8e-6 m", "--json",
+        "surface",
+        path,
+        "--spacing",
+        "1e-6m",
+        "--height-unit",
+        "μm",
+        "--e-star",
+        "1.15e11Pa",
+        "--hardness",
+        "1e3HV",
+        "--band",
+        "2.5e-6m,8e-6 m",
+        "--json",
     ]);
     assert!(output.status.success(), "{}", stderr(&output));
-    let bad = run(&["surface", path, "--spacing", "1e-6m", "--height-unit", "um", "--e-star", "1e3HV"]);
+    let bad = run(&[
+        "surface",
+        path,
+        "--spacing",
+        "1e-6m",
+        "--height-unit",
+        "um",
+        "--e-star",
+        "1e3HV",
+    ]);
     assert!(
         !bad.status.success() && stderr(&bad).contains("--e-star: unknown unit `HV`"),
         "{}",

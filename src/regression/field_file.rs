@@ -199,7 +199,7 @@ pub fn compare(
             if ours
                 .iter()
                 .zip(theirs)
-                .any(|(x, y)| !((x - y).abs() <= 1e-9 * span))
+                .any(|(x, y)| (x - y).is_nan() || (x - y).abs() > 1e-9 * span)
             {
                 check.mismatch = Some(format!(
                     "panel {k}: the {name} axis differs from the reference's (another range or resolution)"

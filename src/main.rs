@@ -23,7 +23,7 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            cli::console::print_err(&format!("error: {error:#}"));
+            cli::console::print_err(&format!("error: {}", cli::console::error_text(&error)));
             ExitCode::FAILURE
         }
     }

@@ -5,6 +5,7 @@ mod cli;
 mod contracts;
 mod dcfft;
 mod golden;
+mod inputs;
 mod line_contact;
 mod mutations;
 mod patch;

@@ -81,3 +81,44 @@ pub(crate) fn spinner(message: &str) -> ProgressBar {
     }
     bar
 }
+
+/// An error and its causes for the user, each said once: `outer: cause: root cause`, leaving
+/// out a cause whose text ends the message before it (an error that shows its source and also
+/// chains it, such as `cannot read x: No such file or directory (os error 2)`).
+pub(crate) fn error_text(error: &anyhow::Error) -> String {
+    let mut text = String::new();
+    for cause in error.chain() {
+        let line = cause.to_string();
+        if text.is_empty() {
+            text = line;
+        } else if !text.ends_with(&line) {
+            text.push_str(": ");
+            text.push_str(&line);
+        }
+    }
+    text
+}
+
+#[cfg(test)]
+mod tests {
+    use anyhow::Context;
+
+    /// Issue 24, class 16: the cause is said once.
+    #[test]
+    fn causes_are_said_once() {
+        let io = std::io::Error::from(std::io::ErrorKind::NotFound);
+        let read = stressfield::surface::read::ReadError::Io {
+            path: "s.asc".into(),
+            source: io,
+        };
+        let error = Err::<(), _>(read).context("surface").expect_err("error");
+        let text = super::error_text(&error);
+        assert_eq!(text.matches("not found").count(), 1, "{text}");
+        assert!(text.starts_with("surface: cannot read s.asc: "), "{text}");
+        // Causes not in the message before them are kept.
+        let plain = Err::<(), _>(std::io::Error::other("disk full"))
+            .context("writing out/a.png")
+            .expect_err("error");
+        assert_eq!(super::error_text(&plain), "writing out/a.png: disk full");
+    }
+}

@@ -2,13 +2,14 @@
 
 use std::path::Path;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{anyhow, bail, Context, Result};
 
 use super::args::SurfaceArgs;
 use super::console::{print_out, solver_bar, spinner};
 use super::npy::{npy_path, write_npy};
 use stressfield::report::rough::ContactReport;
 use stressfield::report::surface::SurfaceReport;
+use stressfield::scene::units::{self, Dimension};
 use stressfield::scene::ContactKind;
 use stressfield::study;
 use stressfield::surface::read::{self, Fill, ReadOptions};
@@ -79,45 +80,34 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     }
 }
 
+/// A length flag (`--spacing 1e-6m`, `--band 4um,100um`), read as scenes read lengths.
 fn length(flag: &str, text: &str) -> Result<f64> {
-    let text = text.trim();
-    let split = text
-        .find(|c: char| c.is_alphabetic() || c == 'µ')
-        .unwrap_or(text.len());
-    let value: f64 = text[..split]
-        .trim()
-        .parse()
-        .with_context(|| format!("{flag} {text}: not a number followed by a unit (e.g. 1um)"))?;
-    let unit = read::length_unit_m(&text[split..])
-        .with_context(|| format!("{flag} {text}: unknown unit; use m, mm, um, nm or pm"))?;
-    let metres = value * unit;
+    let metres = units::parse(text, Dimension::Length).map_err(|m| anyhow!("{flag}: {m}"))?;
     // The spacings and wavelengths of a surface (as in scenes): from an atomic spacing to 10 km.
     if !((MIN_SPACING_M..=1e4).contains(&metres)) {
-        bail!("{flag} must lie between 1e-10 m and 10000 m, got {text}");
+        bail!(
+            "{flag} must lie between 1e-10 m and 10000 m, got {}",
+            stressfield::io::text::cut(text.trim(), 40)
+        );
     }
     Ok(metres)
 }
 
-/// A pressure like `115GPa`, `3 GPa`, or a hardness number `300HV` (kgf/mm², times 9.80665 MPa).
-fn pressure_pa(flag: &str, text: &str) -> Result<f64> {
-    let t = text.trim();
-    let split = t.find(|c: char| c.is_alphabetic()).unwrap_or(t.len());
-    let value: f64 = t[..split]
-        .trim()
-        .parse()
-        .with_context(|| format!("{flag} {text}: not a number followed by a unit (e.g. 3GPa)"))?;
-    let factor = match t[split..].trim() {
-        "Pa" => 1.0,
-        "kPa" => 1e3,
-        "MPa" => 1e6,
-        "GPa" => 1e9,
-        "HV" | "HB" | "BHN" => 9.80665e6,
-        other => bail!("{flag} {text}: unknown unit `{other}`; use Pa, MPa, GPa, or HV/HB"),
-    };
-    let pa = value * factor;
+/// A modulus (`--e-star 115GPa`), or with `hardness` a pressure or a hardness number
+/// (`--hardness 3GPa`, `1e3HV`: kgf/mm², times 9.80665 MPa), read as scenes read them.
+fn pressure_pa(flag: &str, text: &str, hardness: bool) -> Result<f64> {
+    let pa = if hardness {
+        units::hardness_pa(text)
+    } else {
+        units::parse(text, Dimension::Pressure)
+    }
+    .map_err(|m| anyhow!("{flag}: {m}"))?;
     // As moduli, hardnesses and pressures in scenes: a pascal to ten times diamond's modulus.
     if !((1.0..=1e13).contains(&pa)) {
-        bail!("{flag} must lie between 1 Pa and 1e13 Pa, got {text}");
+        bail!(
+            "{flag} must lie between 1 Pa and 1e13 Pa, got {}",
+            stressfield::io::text::cut(text.trim(), 40)
+        );
     }
     Ok(pa)
 }
@@ -212,8 +202,13 @@ pub fn surface(args: &SurfaceArgs) -> Result<()> {
             value
                 .as_deref()
                 .map(|text| {
-                    read::length_unit_m(text)
-                        .with_context(|| format!("{flag} {text}: use m, mm, um, nm or pm"))
+                    read::length_unit_m(text).with_context(|| {
+                        format!(
+                            "{flag} {}: use one of {}",
+                            stressfield::io::text::cut(text, 40),
+                            Dimension::Length.unit_list()
+                        )
+                    })
                 })
                 .transpose()
         };
@@ -240,10 +235,10 @@ pub fn surface(args: &SurfaceArgs) -> Result<()> {
         )
     };
     if let Some(text) = &args.e_star {
-        e_star = Some(pressure_pa("--e-star", text)?);
+        e_star = Some(pressure_pa("--e-star", text, false)?);
     }
     if let Some(text) = &args.hardness {
-        hardness = Some(pressure_pa("--hardness", text)?);
+        hardness = Some(pressure_pa("--hardness", text, true)?);
     }
     let options = Options {
         form: if args.form == "plane" {

@@ -23,6 +23,9 @@ pub const POINTS_LIMIT: u64 = 128 << 20;
 /// under 200 bytes.
 pub const LINE_LIMIT: usize = 64 << 10;
 
+/// The UTF-8 byte-order mark, dropped from the start of every text read.
+const BOM: &[u8] = "\u{feff}".as_bytes();
+
 /// Input that cannot be read or is beyond a limit. The caller names the file.
 #[derive(Debug, thiserror::Error)]
 pub enum InputError {
@@ -44,7 +47,7 @@ fn hint_for(limit: u64) -> &'static str {
     }
 }
 
-/// Reads the whole of `path` as UTF-8 text, failing as soon as more than `limit` bytes come.
+/// Reads the whole of `path` as UTF-8 text (without a leading byte-order mark), failing as soon as more than `limit` bytes come.
 pub fn read_to_string(path: &Path, limit: u64) -> Result<String, InputError> {
     let file = std::fs::File::open(path)?;
     // A regular file's size, when within the limit, sizes the buffer once (no doubling).
@@ -90,6 +93,10 @@ fn read_all_with_capacity(
     if bytes.len() as u64 > limit {
         return Err(InputError::TooLarge { limit });
     }
+    // A byte-order mark (editors on Windows write one) is no part of the text.
+    if bytes.starts_with(BOM) {
+        bytes.drain(..BOM.len());
+    }
     String::from_utf8(bytes).map_err(|e| {
         let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
         InputError::NotText {
@@ -98,8 +105,9 @@ fn read_all_with_capacity(
     })
 }
 
-/// The lines of `reader` (without their line ending), numbered from 1, at most `line_limit`
-/// bytes each and `total_limit` bytes in all; the first error ends the iteration.
+/// The lines of `reader` (without their line ending: `\n`, `\r\n` or a lone `\r`, and without a
+/// leading byte-order mark), numbered from 1, at most `line_limit` bytes each and
+/// `total_limit` bytes in all; the first error ends the iteration.
 pub fn lines<R: BufRead>(reader: R, total_limit: u64, line_limit: usize) -> Lines<R> {
     Lines {
         reader,
@@ -130,46 +138,96 @@ impl<R: BufRead> Iterator for Lines<R> {
         }
         self.line += 1;
         let mut buffer = Vec::new();
-        // One byte more than a line may have (plus its newline) tells a line that is too long.
-        let cap = self.line_limit as u64 + 2;
-        let result = (&mut self.reader).take(cap).read_until(b'\n', &mut buffer);
-        let error = match result {
-            Err(e) => Some(InputError::Io(e)),
-            Ok(0) => {
+        let (read, _) = match read_line(&mut self.reader, &mut buffer, self.line_limit) {
+            Ok(result) => result,
+            Err(e) => {
                 self.done = true;
-                return None;
+                return Some(Err(InputError::Io(e)));
             }
-            Ok(n) => {
-                self.read += n as u64;
-                if buffer.last() == Some(&b'\n') {
-                    buffer.pop();
-                    if buffer.last() == Some(&b'\r') {
-                        buffer.pop();
-                    }
-                }
-                if self.read > self.total_limit {
-                    Some(InputError::TooLarge {
-                        limit: self.total_limit,
-                    })
-                } else if buffer.len() > self.line_limit {
-                    Some(InputError::LineTooLong {
-                        line: self.line,
-                        limit: self.line_limit,
-                    })
-                } else {
-                    None
-                }
-            }
+        };
+        if read == 0 {
+            self.done = true;
+            return None;
+        }
+        self.read += read as u64;
+        let error = if self.read > self.total_limit {
+            Some(InputError::TooLarge {
+                limit: self.total_limit,
+            })
+        } else if buffer.len() > self.line_limit {
+            Some(InputError::LineTooLong {
+                line: self.line,
+                limit: self.line_limit,
+            })
+        } else {
+            None
         };
         if let Some(error) = error {
             self.done = true;
             return Some(Err(error));
+        }
+        if self.line == 1 && buffer.starts_with(BOM) {
+            buffer.drain(..BOM.len());
         }
         match String::from_utf8(buffer) {
             Ok(text) => Some(Ok((self.line, text))),
             Err(_) => {
                 self.done = true;
                 Some(Err(InputError::NotText { line: self.line }))
+            }
+        }
+    }
+}
+
+/// Reads one line into `buffer` without its ending (`\n`, `\r\n`, or a lone `\r` as old Mac
+/// files have), at most `line_limit + 1` bytes of it (one more tells a line that is too long);
+/// returns the bytes consumed and whether a line ending was found.
+fn read_line(
+    reader: &mut impl BufRead,
+    buffer: &mut Vec<u8>,
+    line_limit: usize,
+) -> std::io::Result<(usize, bool)> {
+    let mut consumed = 0;
+    loop {
+        let available = match reader.fill_buf() {
+            Ok(bytes) => bytes,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        };
+        if available.is_empty() {
+            return Ok((consumed, false));
+        }
+        let room = line_limit + 1 - buffer.len();
+        match available.iter().position(|b| *b == b'\n' || *b == b'\r') {
+            Some(at) if at <= room => {
+                buffer.extend_from_slice(&available[..at]);
+                let carriage_return = available[at] == b'\r';
+                reader.consume(at + 1);
+                consumed += at + 1;
+                if carriage_return {
+                    // `\r\n` is one ending.
+                    let next = loop {
+                        match reader.fill_buf() {
+                            Ok(bytes) => break bytes.first().copied(),
+                            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+                            Err(e) => return Err(e),
+                        }
+                    };
+                    if next == Some(b'\n') {
+                        reader.consume(1);
+                        consumed += 1;
+                    }
+                }
+                return Ok((consumed, true));
+            }
+            _ => {
+                let take = available.len().min(room);
+                buffer.extend_from_slice(&available[..take]);
+                reader.consume(take);
+                consumed += take;
+                if buffer.len() > line_limit {
+                    return Ok((consumed, false));
+                }
             }
         }
     }
@@ -246,5 +304,31 @@ mod tests {
             many.find(Result::is_err).expect("stops"),
             Err(InputError::TooLarge { limit: 1000 })
         ));
+    }
+
+    /// Issue 24, classes 10 and 16: a byte-order mark is dropped and a lone CR ends a line.
+    #[test]
+    fn byte_order_marks_and_lone_carriage_returns() {
+        let text = "\u{feff}# x,y,z\r1,2,3\r\n4,5,6\r\r7,8,9";
+        assert_eq!(
+            read_all(text.as_bytes(), 100).expect("text"),
+            text.trim_start_matches('\u{feff}')
+        );
+        let read: Vec<(usize, String)> = lines(text.as_bytes(), 100, 10)
+            .collect::<Result<_, _>>()
+            .expect("valid");
+        assert_eq!(
+            read,
+            vec![
+                (1, "# x,y,z".into()),
+                (2, "1,2,3".into()),
+                (3, "4,5,6".into()),
+                (4, String::new()),
+                (5, "7,8,9".into())
+            ]
+        );
+        // Through a reader that hands out one byte at a time (a CR at a buffer's end).
+        let slow = std::io::BufReader::with_capacity(1, text.as_bytes());
+        assert_eq!(lines(slow, 100, 10).count(), 5);
     }
 }

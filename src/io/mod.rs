@@ -1,8 +1,9 @@
 //! Files and text at the edges of the program: bounded reading of what users give
-//! ([`input`], and the probe's points, [`points`]), atomic writing ([`output`]), rows that
-//! sample a grid ([`grid_table`]), and numbers and echoes for messages ([`text`]). Uses nothing
-//! else of the crate.
+//! ([`input`], and the probe's points, [`points`]) and of archive members and NumPy arrays
+//! ([`archive`]), atomic writing ([`output`]), rows that sample a grid ([`grid_table`]), and
+//! numbers and echoes for messages ([`text`]). Uses nothing else of the crate.
 
+pub mod archive;
 pub mod grid_table;
 pub mod input;
 pub mod output;

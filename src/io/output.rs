@@ -95,11 +95,21 @@ pub fn remove_pending_on_interrupt() -> std::io::Result<()> {
 
 /// An output that could not be written.
 #[derive(Debug, thiserror::Error)]
-#[error("cannot write {path}: {error}\nhint: check that its directory exists and is writable, or write elsewhere (--out-dir, --rrd, --report)")]
+#[error("cannot write {}: {}\nhint: check that its directory exists and is writable, or write elsewhere (--out-dir, --rrd, --report)", path.display(), without_temporary_path(error))]
 pub struct OutputError {
     pub path: PathBuf,
     /// Why (shown in the message, not chained again below it).
     pub error: std::io::Error,
+}
+
+/// The text of `error` without the temporary file's path that `tempfile` appends (` at path
+/// "dir/.stressfield-XXXX.part"`): the message names the user's path instead.
+fn without_temporary_path(error: &std::io::Error) -> String {
+    let text = error.to_string();
+    match text.find(" at path ") {
+        Some(at) if text[at..].contains(".stressfield-") => text[..at].to_string(),
+        _ => text,
+    }
 }
 
 /// Writes `bytes` to `path` atomically (temporary file in the same directory, then rename).
@@ -422,5 +432,17 @@ mod tests {
         let err = write_atomic(&path, b"x").expect_err("no directory");
         assert!(err.to_string().contains("cannot write"), "{err}");
         assert_eq!(std::fs::read_dir(dir.path()).expect("list").count(), 0);
+        // Issue 24, class 16: the message names the user's path, not the temporary one.
+        let text = err.to_string();
+        assert!(
+            text.contains(&path.display().to_string()) && !text.contains(".part"),
+            "{text}"
+        );
+        let mut staged = Staged::new();
+        let text = staged
+            .add(&path, b"x")
+            .expect_err("no directory")
+            .to_string();
+        assert!(!text.contains(".part"), "{text}");
     }
 }

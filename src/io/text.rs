@@ -96,6 +96,31 @@ pub fn cut(text: &str, max_chars: usize) -> String {
     }
 }
 
+/// The lines of `text` without their endings: `\n`, `\r\n`, or a lone `\r` (old Mac files,
+/// which would otherwise read as one line).
+pub fn lines(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = Some(text);
+    std::iter::from_fn(move || {
+        let current = rest?;
+        match current.find(['\n', '\r']) {
+            Some(at) => {
+                let after = if current[at..].starts_with("\r\n") {
+                    at + 2
+                } else {
+                    at + 1
+                };
+                rest = Some(&current[after..]);
+                Some(&current[..at])
+            }
+            None => {
+                rest = None;
+                // As str::lines: no empty last line after a final ending.
+                (!current.is_empty()).then_some(current)
+            }
+        }
+    })
+}
+
 /// A size in bytes in the largest binary unit that keeps it whole or readable: "64 KiB",
 /// "1 MiB", "2.5 GiB".
 pub fn bytes(size: u64) -> String {
@@ -187,6 +212,14 @@ mod tests {
         assert!(shown.ends_with("… (1000 characters)"), "{shown}");
         // Character boundaries, not bytes.
         assert_eq!(cut("µµµµ", 2), "µµ… (4 characters)");
+    }
+
+    #[test]
+    fn lines_end_at_lf_crlf_or_a_lone_cr() {
+        let split: Vec<&str> = lines("a\rb\r\nc\n\nd\r").collect();
+        assert_eq!(split, ["a", "b", "c", "", "d"]);
+        assert_eq!(lines("").count(), 0);
+        assert_eq!(lines("x\n").collect::<Vec<_>>(), ["x"]);
     }
 
     #[test]

@@ -15,8 +15,9 @@
 use std::io::Cursor;
 
 use ndarray::{Array1, Array2};
-use ndarray_npy::{NpzReader, NpzWriter};
+use ndarray_npy::NpzWriter;
 
+use crate::io::archive::{self, Archive, ArchiveError, Limit, NpyArray};
 use crate::regression::{FieldCheck, FieldDifference};
 use crate::render::Figure;
 
@@ -68,29 +69,74 @@ pub fn encode(panels: &[PanelField]) -> Result<Vec<u8>, FieldFileError> {
     Ok(npz.finish().map_err(error)?.into_inner())
 }
 
-/// The panels of `.npz` bytes written by [`encode`].
+/// The panels of `.npz` bytes written by [`encode`], within a quarter of the memory allowed
+/// for fields (as [`decode_within`]).
 pub fn decode(bytes: &[u8]) -> Result<Vec<PanelField>, FieldFileError> {
-    let read = |e: ndarray_npy::ReadNpzError| FieldFileError::Read(e.to_string());
-    let mut npz = NpzReader::new(Cursor::new(bytes)).map_err(read)?;
-    let names = npz.names().map_err(read)?;
+    decode_within(bytes, crate::field::memory_limit_bytes() as u64 / 4)
+}
+
+/// The panels of `.npz` bytes, whose members together may unpack to at most `budget` bytes.
+/// Every member's declared size is checked against the budget, and every array's declared
+/// shape against its member's size, before anything is allocated
+/// ([`crate::io::archive`]); axes must be finite (values may hold NaN and infinities, as the
+/// fields of numerical solutions do on strip edges; [`compare`] matches them only with the
+/// same value).
+pub fn decode_within(bytes: &[u8], budget: u64) -> Result<Vec<PanelField>, FieldFileError> {
+    let fix = "write the reference again (render --compare DIR --update --save-field)";
+    let read = |e: String| FieldFileError::Read(format!("{e}; {fix}"));
+    let mut npz =
+        Archive::new(Cursor::new(bytes), "the archive").map_err(|e| read(e.to_string()))?;
+    let names = npz.names();
+    let mut left = budget;
+    let mut array = |name: &str| -> Result<NpyArray, FieldFileError> {
+        // numpy.savez names members `name.npy`, and so does NpzWriter.
+        let member = format!("{name}.npy");
+        let bytes = npz
+            .member(
+                &member,
+                Limit::AtMost(left, "a quarter of the memory allowed for fields"),
+            )
+            .map_err(|e| match e {
+                ArchiveError::Member { message, .. } => read(format!("{member} {message}")),
+                other => read(other.to_string()),
+            })?;
+        left -= bytes.len() as u64;
+        archive::npy_f64(&bytes).map_err(|e| read(format!("{member}: {e}")))
+    };
     let mut panels = Vec::new();
-    // numpy.savez names members `name.npy`; NpzWriter does the same, and names() strips it.
     while names
         .iter()
-        .any(|n| n == &format!("values_{}", panels.len()))
+        .any(|n| n == &format!("values_{}.npy", panels.len()))
     {
         let k = panels.len();
-        let values: Array2<f64> = npz.by_name(&format!("values_{k}")).map_err(read)?;
-        let horizontal: Array1<f64> = npz.by_name(&format!("horizontal_{k}")).map_err(read)?;
-        let vertical: Array1<f64> = npz.by_name(&format!("vertical_{k}")).map_err(read)?;
-        if values.dim() != (vertical.len(), horizontal.len()) {
-            return Err(FieldFileError::Read(format!(
+        let values = array(&format!("values_{k}"))?;
+        let mut axis = |name: String| -> Result<Array1<f64>, FieldFileError> {
+            let axis = array(&name)?;
+            if axis.shape.len() != 1 {
+                return Err(read(format!(
+                    "{name} has {} dimensions, an axis one",
+                    axis.shape.len()
+                )));
+            }
+            if let Some(at) = axis.values.iter().position(|v| !v.is_finite()) {
+                return Err(read(format!(
+                    "{name}[{at}] is {}: an axis holds finite coordinates",
+                    axis.values[at]
+                )));
+            }
+            Ok(Array1::from(axis.values))
+        };
+        let horizontal = axis(format!("horizontal_{k}"))?;
+        let vertical = axis(format!("vertical_{k}"))?;
+        let shape = (vertical.len(), horizontal.len());
+        if values.shape != [shape.0, shape.1] {
+            return Err(read(format!(
                 "values_{k} has shape {:?} but its axes have {} x {} samples",
-                values.dim(),
-                vertical.len(),
-                horizontal.len()
+                values.shape, shape.0, shape.1
             )));
         }
+        let values = Array2::from_shape_vec(shape, values.values)
+            .map_err(|e| read(format!("values_{k}: {e}")))?;
         panels.push(PanelField {
             horizontal,
             vertical,
@@ -98,7 +144,7 @@ pub fn decode(bytes: &[u8]) -> Result<Vec<PanelField>, FieldFileError> {
         });
     }
     if panels.is_empty() {
-        return Err(FieldFileError::Read("it has no array values_0".into()));
+        return Err(read("it has no array values_0".into()));
     }
     Ok(panels)
 }
@@ -149,10 +195,11 @@ pub fn compare(
                 .iter()
                 .fold(0.0f64, |m, v| m.max(v.abs()))
                 .max(f64::MIN_POSITIVE);
+            // Written so that NaN (in either) is a difference, never a match.
             if ours
                 .iter()
                 .zip(theirs)
-                .any(|(x, y)| (x - y).abs() > 1e-9 * span)
+                .any(|(x, y)| (x - y).is_nan() || (x - y).abs() > 1e-9 * span)
             {
                 check.mismatch = Some(format!(
                     "panel {k}: the {name} axis differs from the reference's (another range or resolution)"
@@ -259,5 +306,54 @@ mod tests {
         let bytes = npz.finish().expect("finish").into_inner();
         let error = decode(&bytes).expect_err("no values_0");
         assert!(error.to_string().contains("values_0"), "{error}");
+    }
+
+    /// Issue 24, class 1: a member declaring shape (100000, 100000) or (3000000000, 1) is
+    /// refused by its size (the test process would abort allocating 80 GB otherwise).
+    #[test]
+    fn a_huge_declared_shape_is_refused_before_allocating() {
+        let bytes = encode(&[panel(0.0)]).expect("encodes");
+        for shape in ["(100000, 100000)", "(3000000000, 1)"] {
+            let mut forged = Vec::new();
+            {
+                let mut npz = zip::ZipWriter::new(Cursor::new(&mut forged));
+                let options = zip::write::SimpleFileOptions::default();
+                let mut header = b"\x93NUMPY\x01\x00".to_vec();
+                let dict =
+                    format!("{{'descr': '<f8', 'fortran_order': False, 'shape': {shape}, }}");
+                header.extend_from_slice(&(dict.len() as u16).to_le_bytes());
+                header.extend_from_slice(dict.as_bytes());
+                header.extend_from_slice(&[0; 16]);
+                for name in ["values_0.npy", "horizontal_0.npy", "vertical_0.npy"] {
+                    use std::io::Write;
+                    npz.start_file(name, options).expect("entry");
+                    npz.write_all(&header).expect("write");
+                }
+                npz.finish().expect("finish");
+            }
+            assert!(forged.len() < 1024, "{} bytes", forged.len());
+            let error = decode(&forged).expect_err(shape).to_string();
+            assert!(
+                error.contains(&format!("values_0.npy: declares shape {shape}"))
+                    && error.contains("--update"),
+                "{error}"
+            );
+        }
+        // Members beyond the budget are refused by their declared size.
+        let error = decode_within(&bytes, 100).expect_err("budget").to_string();
+        assert!(error.contains("more than the 100 bytes allowed"), "{error}");
+    }
+
+    /// Issue 24, class 14: a NaN axis in a reference is refused, not a match.
+    #[test]
+    fn non_finite_axes_are_refused() {
+        let mut nan = panel(0.0);
+        nan.vertical[1] = f64::NAN;
+        let bytes = encode(&[nan.clone()]).expect("encodes");
+        let error = decode(&bytes).expect_err("nan axis").to_string();
+        assert!(error.contains("vertical_0[1] is NaN"), "{error}");
+        // Compared directly, a NaN axis is a mismatch too.
+        let check = compare(&[panel(0.0)], &[nan], 1.0, "p0", AXES);
+        assert!(check.mismatch.is_some(), "{}", check.summary());
     }
 }

@@ -37,8 +37,7 @@ pub struct TractionTable {
 /// contact pressure). Lines are at most [`crate::io::input::LINE_LIMIT`] bytes, and the grid at
 /// most [`MAX_NODES_PER_SIDE`] nodes along each side. Errors name the line and the fix.
 pub fn read(text: &str) -> Result<TractionTable, String> {
-    if let Some((number, _)) = text
-        .lines()
+    if let Some((number, _)) = crate::io::text::lines(text)
         .enumerate()
         .find(|(_, l)| l.len() > crate::io::input::LINE_LIMIT)
     {
@@ -48,8 +47,7 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
             crate::io::text::bytes(crate::io::input::LINE_LIMIT as u64)
         ));
     }
-    let mut lines = text
-        .lines()
+    let mut lines = crate::io::text::lines(text)
         .enumerate()
         .map(|(i, l)| (i + 1, l.trim()))
         .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));

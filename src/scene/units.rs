@@ -1,4 +1,7 @@
-//! Dimensional values written with their unit, such as `"210 GPa"`, `"40 kN/m"` or `"20 mm"`.
+//! Dimensional values written with their unit, such as `"210 GPa"`, `"40 kN/m"` or `"20 mm"`:
+//! the one number-and-unit parser of scenes, command-line flags (`--spacing 1e-6m`,
+//! `--e-star 1.15e11Pa`) and the headers of surface files (`# Width: 1.6e-5 m`). The number
+//! may use exponent notation (`1.6e-5`, `2E3`); the unit follows, with or without a space.
 
 /// The physical dimension a scene key expects.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -29,8 +32,11 @@ impl Dimension {
                 ("cm", 1e-2),
                 ("mm", 1e-3),
                 ("um", 1e-6),
+                // The micro sign (U+00B5) and the Greek mu (U+03BC): keyboards give either.
                 ("µm", 1e-6),
+                ("μm", 1e-6),
                 ("nm", 1e-9),
+                ("pm", 1e-12),
                 ("in", 0.0254),
             ],
             Dimension::Pressure => &[
@@ -136,51 +142,95 @@ impl Dimension {
     }
 }
 
-/// Parses `"<number> <unit>"` (the space is optional) into SI.
-pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
-    let text = text.trim();
+/// The factor to SI of `unit` of `dimension` (`"um"` of a length is 1e-6), if it is one.
+pub fn factor(unit: &str, dimension: Dimension) -> Option<f64> {
+    let unit = unit.trim();
+    dimension
+        .units()
+        .iter()
+        .find(|(u, _)| *u == unit)
+        .map(|(_, f)| *f)
+}
+
+/// `text` split into its number and its unit: the longest start that reads as a number
+/// (sign, digits, a point, an exponent `e`/`E` only where digits follow it), so that
+/// `1e-6m` is `1e-6` and `m`, and `1 em` would be `1` and `em`.
+fn split_number(text: &str) -> (&str, &str) {
     let bytes = text.as_bytes();
     let mut split = 0;
+    let mut seen_exponent = false;
     while split < bytes.len() {
         let c = bytes[split];
+        let sign =
+            (c == b'+' || c == b'-') && (split == 0 || matches!(bytes[split - 1], b'e' | b'E'));
         let exponent = (c == b'e' || c == b'E')
-            && bytes
-                .get(split + 1)
-                .is_some_and(|n| n.is_ascii_digit() || *n == b'-' || *n == b'+');
-        if c.is_ascii_digit() || c == b'.' || c == b'+' || c == b'-' || exponent {
+            && !seen_exponent
+            && split > 0
+            && match bytes.get(split + 1) {
+                Some(n) if n.is_ascii_digit() => true,
+                Some(b'+' | b'-') => bytes.get(split + 2).is_some_and(u8::is_ascii_digit),
+                _ => false,
+            };
+        seen_exponent |= exponent;
+        if c.is_ascii_digit() || c == b'.' || sign || exponent {
             split += 1;
         } else {
             break;
         }
     }
     let (number, unit) = text.split_at(split);
-    let number = number.trim();
-    let unit = unit.trim();
+    (number.trim(), unit.trim())
+}
+
+/// Parses `"<number> <unit>"` (the space is optional) into SI. The number must be finite
+/// (`1e400` is out of range).
+pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
+    let text = text.trim();
+    let shown = crate::io::text::cut(text, 40);
+    let (number, unit) = split_number(text);
     if unit.is_empty() {
         return Err(format!(
-            "`{text}` has no unit; write it with one, e.g. {} (units: {})",
+            "`{shown}` has no unit; write it with one, e.g. {} (units: {})",
             dimension.example(),
             dimension.unit_list()
         ));
     }
     let value: f64 = number.parse().map_err(|_| {
         format!(
-            "`{text}` does not start with a number; write e.g. {}",
+            "`{shown}` does not start with a number; write e.g. {}",
             dimension.example()
         )
     })?;
-    let factor = dimension
-        .units()
-        .iter()
-        .find(|(u, _)| *u == unit)
-        .map(|(_, f)| *f)
-        .ok_or_else(|| {
-            format!(
-                "unknown unit `{unit}` in `{text}`; use one of: {}",
-                dimension.unit_list()
-            )
-        })?;
+    if !value.is_finite() {
+        return Err(format!(
+            "`{shown}` is out of range (at most 1.8e308 in size); write e.g. {}",
+            dimension.example()
+        ));
+    }
+    let factor = factor(unit, dimension).ok_or_else(|| {
+        format!(
+            "unknown unit `{}` in `{shown}`; use one of: {}",
+            crate::io::text::cut(unit, 20),
+            dimension.unit_list()
+        )
+    })?;
     Ok(value * factor)
+}
+
+/// A hardness as a pressure: a pressure (`3 GPa`) or a hardness number (`300 HV`, `1e3HV`,
+/// kgf/mm², times 9.80665 MPa).
+pub fn hardness_pa(text: &str) -> Result<f64, String> {
+    let (_, unit) = split_number(text.trim());
+    if factor(unit, Dimension::Hardness).is_some() {
+        Ok(parse(text, Dimension::Hardness)? * 9.80665e6)
+    } else {
+        parse(text, Dimension::Pressure).map_err(|m| {
+            format!(
+                "{m}, or a hardness number ({})",
+                Dimension::Hardness.unit_list()
+            )
+        })
+    }
 }
 
 #[cfg(test)]
@@ -233,5 +283,34 @@ mod tests {
         assert!(parse("abc MPa", Dimension::Pressure)
             .expect_err("nan")
             .contains("number"));
+    }
+
+    /// Issue 24, class 9: exponent notation before a unit, with or without a space; class 16:
+    /// the lengths of files and flags (`pm`, `μm`) in scenes too.
+    #[test]
+    fn exponents_and_every_length_unit() {
+        assert_relative_eq!(parse("1.6e-5 m", Dimension::Length).expect("ok"), 1.6e-5);
+        assert_relative_eq!(parse("1e-6m", Dimension::Length).expect("ok"), 1e-6);
+        assert_relative_eq!(
+            parse("1.15e11Pa", Dimension::Pressure).expect("ok"),
+            1.15e11
+        );
+        assert_relative_eq!(parse("1e3HV", Dimension::Hardness).expect("ok"), 1e3);
+        assert_relative_eq!(parse("2E3 N", Dimension::Force).expect("ok"), 2e3);
+        assert_relative_eq!(parse("2E+3N", Dimension::Force).expect("ok"), 2e3);
+        assert_relative_eq!(parse("5 pm", Dimension::Length).expect("ok"), 5e-12);
+        assert_relative_eq!(parse("2 μm", Dimension::Length).expect("ok"), 2e-6);
+        assert_relative_eq!(parse("2µm", Dimension::Length).expect("ok"), 2e-6);
+        assert_relative_eq!(hardness_pa("1e3HV").expect("ok"), 9.80665e9);
+        assert_relative_eq!(hardness_pa("3GPa").expect("ok"), 3e9);
+        assert!(hardness_pa("3 N").expect_err("force").contains("HV"));
+        // An overflowing number is out of range, not infinite.
+        assert!(parse("1e400 m", Dimension::Length)
+            .expect_err("overflow")
+            .contains("out of range"));
+        // A long value is echoed cut.
+        let long = format!("1 {}", "x".repeat(100_000));
+        let error = parse(&long, Dimension::Length).expect_err("long");
+        assert!(error.len() < 400, "{} characters", error.len());
     }
 }

@@ -32,6 +32,8 @@ use ndarray::Array2;
 
 pub use super::samples::{interpolate_missing, Fill, ReadError};
 use super::HeightMap;
+use crate::io::text::cut;
+use crate::scene::units::{self, Dimension};
 
 /// What the file may not say itself.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -46,34 +48,10 @@ pub struct ReadOptions {
     pub fill: Fill,
 }
 
-/// Units of length accepted for sizes and heights, with their size in m.
-pub const LENGTH_UNITS: [(&str, f64); 7] = [
-    ("m", 1.0),
-    ("mm", 1e-3),
-    ("um", 1e-6),
-    ("µm", 1e-6),
-    ("μm", 1e-6),
-    ("nm", 1e-9),
-    ("pm", 1e-12),
-];
-
-/// The size in m of a length unit (`m`, `mm`, `um`, `µm`, `nm`, `pm`).
+/// The size in m of a length unit (`m`, `mm`, `um`, `µm`, `nm`, `pm`, ...: those of scenes,
+/// [`units::factor`]).
 pub fn length_unit_m(unit: &str) -> Option<f64> {
-    LENGTH_UNITS
-        .iter()
-        .find(|(name, _)| *name == unit.trim())
-        .map(|(_, size)| *size)
-}
-
-/// A number followed by a length unit, e.g. `100 um` or `1.5e-3 mm`.
-fn length(text: &str) -> Option<f64> {
-    let text = text.trim();
-    let split = text
-        .find(|c: char| c.is_alphabetic() || c == 'µ' || c == 'μ')
-        .unwrap_or(text.len());
-    let value: f64 = text[..split].trim().parse().ok()?;
-    let unit = length_unit_m(&text[split..])?;
-    Some(value * unit)
+    units::factor(unit, Dimension::Length)
 }
 
 /// The largest file read, in bytes: a quarter of the memory this machine allows for fields,
@@ -131,6 +109,25 @@ pub fn read_surface(path: &Path, options: &ReadOptions) -> Result<HeightMap, Rea
     }
 }
 
+/// A number of a height file: NaN or an infinity written as such (`nan`, `-inf`) is a missing
+/// point, but a number too large for a float (`1e400`) is an error, never a missing point.
+fn value(field: &str) -> Result<f64, String> {
+    let shown = cut(field, 40);
+    let value: f64 = field
+        .parse()
+        .map_err(|_| format!("`{shown}` is not a number"))?;
+    let spelled = field
+        .trim_start_matches(['+', '-'])
+        .to_ascii_lowercase()
+        .starts_with("inf");
+    if value.is_infinite() && !spelled {
+        return Err(format!(
+            "`{shown}` is out of range (at most 1.8e308 in size); repair the file (a missing point is written NaN)"
+        ));
+    }
+    Ok(value)
+}
+
 /// A field of a line: its text and its column (1-based, in characters).
 fn fields(line: &str) -> impl Iterator<Item = (usize, &str)> {
     let mut start = None;
@@ -170,7 +167,7 @@ pub fn parse_ascii(text: &str, path: &str, options: &ReadOptions) -> Result<Heig
     // (line, column) of each missing value, in order.
     let mut missing: Vec<(usize, usize, usize, usize)> = Vec::new();
     let mut first_line = 0;
-    for (index, line) in text.lines().enumerate() {
+    for (index, line) in crate::io::text::lines(text).enumerate() {
         let number = index + 1;
         let trimmed = line.trim();
         if trimmed.is_empty() {
@@ -179,28 +176,28 @@ pub fn parse_ascii(text: &str, path: &str, options: &ReadOptions) -> Result<Heig
         if let Some(comment) = trimmed.strip_prefix('#') {
             if let Some((key, value)) = comment.split_once(':') {
                 let key = key.trim().to_ascii_lowercase();
-                let header = |what: &str| {
+                let header = |what: &str, reason: String| {
                     at(
                         number,
                         1,
-                        format!(
-                            "cannot read the {what} `{}`; write e.g. `# {}: 100 um`",
-                            value.trim(),
-                            key
-                        ),
+                        format!("cannot read the {what}: {reason}; write e.g. `# {key}: 100 um`"),
                     )
                 };
+                let length = |what: &str| {
+                    units::parse(value, Dimension::Length).map_err(|reason| header(what, reason))
+                };
                 match key.as_str() {
-                    "width" => width = Some(length(value).ok_or_else(|| header("width"))?),
-                    "height" => height = Some(length(value).ok_or_else(|| header("height"))?),
+                    "width" => width = Some(length("width")?),
+                    "height" => height = Some(length("height")?),
                     "value units" => {
                         unit = Some(length_unit_m(value).ok_or_else(|| {
                             at(
                                 number,
                                 1,
                                 format!(
-                                    "unknown height unit `{}`; use m, mm, um, nm or pm",
-                                    value.trim()
+                                    "unknown height unit `{}`; use one of: {}",
+                                    cut(value.trim(), 40),
+                                    Dimension::Length.unit_list()
                                 ),
                             )
                         })?)
@@ -212,10 +209,7 @@ pub fn parse_ascii(text: &str, path: &str, options: &ReadOptions) -> Result<Heig
         }
         let mut row = Vec::new();
         for (column, field) in fields(line) {
-            let value: f64 = field.parse().map_err(|_| {
-                let shown: String = field.chars().take(40).collect();
-                at(number, column, format!("`{shown}` is not a number"))
-            })?;
+            let value = value(field).map_err(|m| at(number, column, m))?;
             if !value.is_finite() {
                 missing.push((number, column, rows.len(), row.len()));
             }
@@ -319,7 +313,7 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
     let mut points = Vec::new();
     let mut values = Vec::new();
     let mut missing = None;
-    for (index, line) in text.lines().enumerate() {
+    for (index, line) in crate::io::text::lines(text).enumerate() {
         let number = index + 1;
         let trimmed = line.trim();
         if trimmed.is_empty() || trimmed.starts_with('#') {
@@ -335,10 +329,7 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
         }
         let mut xyz = [0.0f64; 3];
         for (k, (column, field)) in row.iter().enumerate() {
-            xyz[k] = field.parse().map_err(|_| {
-                let shown: String = field.chars().take(40).collect();
-                at(number, *column, format!("`{shown}` is not a number"))
-            })?;
+            xyz[k] = value(field).map_err(|m| at(number, *column, m))?;
             if !xyz[k].is_finite() && (k < 2 || missing.is_none()) {
                 if k < 2 {
                     return Err(at(number, *column, "x and y must be finite".to_string()));
@@ -500,6 +491,62 @@ mod tests {
         assert!(
             error.contains("line 2") && error.contains("three values"),
             "{error}"
+        );
+    }
+
+    /// Issue 24, class 7: an overflowing number is an error naming its line and column, never
+    /// a missing point (not even with interpolation asked for).
+    #[test]
+    fn an_overflowing_number_is_an_error_not_a_missing_point() {
+        let options = ReadOptions {
+            spacing_m: Some([1e-6, 1e-6]),
+            height_unit_m: Some(1e-6),
+            fill: Fill::Interpolate,
+            ..ReadOptions::default()
+        };
+        let error = ascii("1 2\n3 1e400\n", options)
+            .expect_err("overflow")
+            .to_string();
+        assert!(
+            error.contains("line 2, column 3") && error.contains("`1e400` is out of range"),
+            "{error}"
+        );
+        let error = parse_xyz("0 0 1\n1 0 -1e999\n0 1 3\n1 1 4\n", "s.xyz", &options)
+            .expect_err("overflow")
+            .to_string();
+        assert!(
+            error.contains("line 2, column 5") && error.contains("out of range"),
+            "{error}"
+        );
+        // Spelled infinities and NaN stay missing points.
+        assert!(ascii("1 2 0\n3 -inf 0\n0 0 0\n", options).is_ok());
+    }
+
+    /// Issue 24, classes 9, 10 and 16: exponents in headers, a byte-order mark, lone CR line
+    /// endings, and long header values echoed cut.
+    #[test]
+    fn headers_take_exponents_marks_and_old_mac_endings() {
+        let text = "# Width: 1.6e-5 m\r# Height: 8e-6m\r# Value units: μm\r1 2\r3 4\r";
+        let map = ascii(text, ReadOptions::default()).expect("valid");
+        assert_eq!(map.shape(), [2, 2]);
+        let [dx, dy] = map.spacing_m();
+        assert!((dx - 8e-6).abs() < 1e-18 && (dy - 4e-6).abs() < 1e-18);
+        assert!((map.heights_m()[[1, 1]] - 4e-6).abs() < 1e-18);
+        let dir = tempfile::tempdir().expect("dir");
+        let path = dir.path().join("bom.asc");
+        std::fs::write(&path, format!("\u{feff}{text}")).expect("write");
+        assert_eq!(
+            read_surface(&path, &ReadOptions::default()).expect("bom"),
+            map
+        );
+        let long = format!("# Width: {}\n1 2\n3 4\n", "9".repeat(100_000));
+        let error = ascii(&long, ReadOptions::default())
+            .expect_err("long")
+            .to_string();
+        assert!(
+            error.contains("line 1") && error.len() < 500,
+            "{} characters",
+            error.len()
         );
     }
 }

@@ -42,6 +42,8 @@ pub enum ReadError {
         limit_mib: u64,
         needed_mib: u64,
     },
+    #[error(transparent)]
+    Archive(#[from] crate::io::archive::ArchiveError),
     #[error("{path}: {source}")]
     Surface {
         path: String,

@@ -17,7 +17,6 @@
 //!   Part 72: XML file format x3p.
 //! - ISO 5436-2:2012 (the `ISO5436_2` XML schema of the format, published by OpenGPS).
 
-use std::io::Read;
 use std::path::Path;
 
 use md5::{Digest, Md5};
@@ -25,6 +24,8 @@ use ndarray::Array2;
 
 use super::samples::{interpolate_missing, Fill, ReadError};
 use super::HeightMap;
+use crate::io::archive::{Archive, ArchiveError, Limit};
+use crate::io::text::cut;
 
 fn format(path: &str, message: impl Into<String>) -> ReadError {
     ReadError::Format {
@@ -36,6 +37,10 @@ fn format(path: &str, message: impl Into<String>) -> ReadError {
 fn hex(bytes: &[u8]) -> String {
     bytes.iter().map(|b| format!("{b:02x}")).collect()
 }
+
+/// The largest `main.xml`: it describes the axes and the matrix in a few KiB (the heights are
+/// in the binary member it links).
+const MAIN_XML_LIMIT: u64 = 16 << 20;
 
 /// Reads an `.x3p` file (module doc); no file of the archive may exceed `size_limit` bytes.
 pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadError> {
@@ -53,50 +58,34 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
             needed_mib: (size * 4) >> 20,
         });
     }
-    let mut archive = zip::ZipArchive::new(file)
-        .map_err(|e| format(&name, format!("not a zip archive, so not an x3p file: {e}")))?;
-    let mut member = |member: &str| -> Result<Vec<u8>, ReadError> {
-        let mut entry = archive
-            .by_name(member)
-            .map_err(|_| format(&name, format!("the archive has no {member}")))?;
-        if entry.size() > size_limit {
-            return Err(ReadError::TooLarge {
-                path: format!("{name}/{member}"),
-                size_mib: entry.size() >> 20,
-                limit_mib: size_limit >> 20,
-                needed_mib: entry.size() >> 20,
-            });
-        }
-        let mut bytes = Vec::with_capacity(entry.size() as usize);
-        // Counted as unpacked too: the declared size of a damaged archive may be wrong.
-        (&mut entry)
-            .take(size_limit.saturating_add(1))
-            .read_to_end(&mut bytes)
-            .map_err(|e| format(&name, format!("cannot unpack {member}: {e}")))?;
-        if bytes.len() as u64 > size_limit {
-            return Err(ReadError::TooLarge {
-                path: format!("{name}/{member}"),
-                size_mib: (size_limit >> 20) + 1,
-                limit_mib: size_limit >> 20,
-                needed_mib: (size_limit >> 20) + 1,
-            });
-        }
-        Ok(bytes)
-    };
-    let xml = member("main.xml")?;
-    if let Ok(listed) = member("md5checksum.hex") {
-        let text = String::from_utf8_lossy(&listed);
-        let expected = text
-            .split_whitespace()
-            .next()
-            .unwrap_or("")
-            .to_ascii_lowercase();
-        let actual = hex(&Md5::digest(&xml));
-        if expected != actual {
-            return Err(format(
-                &name,
-                format!("the MD5 checksum of main.xml is {actual}, md5checksum.hex says {expected}: the file is damaged"),
-            ));
+    let mut archive = Archive::new(file, &name)?;
+    let xml = archive.member(
+        "main.xml",
+        Limit::AtMost(
+            MAIN_XML_LIMIT.min(size_limit),
+            "main.xml describes the axes and the matrix in a few KiB",
+        ),
+    )?;
+    match archive.member(
+        "md5checksum.hex",
+        Limit::AtMost(4096, "md5checksum.hex holds one checksum line"),
+    ) {
+        Err(ArchiveError::Missing { .. }) => {}
+        Err(other) => return Err(other.into()),
+        Ok(listed) => {
+            let text = String::from_utf8_lossy(&listed);
+            let expected = text
+                .split_whitespace()
+                .next()
+                .unwrap_or("")
+                .to_ascii_lowercase();
+            let actual = hex(&Md5::digest(&xml));
+            if expected != actual {
+                return Err(format(
+                    &name,
+                    format!("the MD5 checksum of main.xml is {actual}, md5checksum.hex says {}: the file is damaged", cut(&expected, 40)),
+                ));
+            }
         }
     }
     let text =
@@ -117,20 +106,34 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
     let need = |path: &[&str]| {
         find(path).ok_or_else(|| format(&name, format!("main.xml has no {}", path.join("/"))))
     };
+    // A number of main.xml: finite, or an error naming its key (an overflowing `1e400` is no
+    // number, not a missing point).
     let number = |path: &[&str]| -> Result<f64, ReadError> {
         let text = need(path)?;
-        text.parse().map_err(|_| {
-            format(
+        match text.parse::<f64>() {
+            Ok(value) if value.is_finite() => Ok(value),
+            Ok(_) => Err(format(
                 &name,
-                format!("{} = `{text}` is not a number", path.join("/")),
-            )
-        })
+                format!(
+                    "{} = `{}` is not a finite number; write the value in range (at most 1.8e308 in size)",
+                    path.join("/"),
+                    cut(&text, 40)
+                ),
+            )),
+            Err(_) => Err(format(
+                &name,
+                format!("{} = `{}` is not a number", path.join("/"), cut(&text, 40)),
+            )),
+        }
     };
     if let Some(kind) = find(&["Record1", "FeatureType"]) {
         if kind != "SUR" {
             return Err(format(
                 &name,
-                format!("the file holds a `{kind}` feature; only areal surfaces (SUR) are read"),
+                format!(
+                    "the file holds a `{}` feature; only areal surfaces (SUR) are read",
+                    cut(&kind, 40)
+                ),
             ));
         }
     }
@@ -139,7 +142,10 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
         if kind != "I" {
             return Err(format(
                 &name,
-                format!("the {axis} axis is `{kind}`; only incremental x and y axes (I) are read"),
+                format!(
+                    "the {axis} axis is `{}`; only incremental x and y axes (I) are read",
+                    cut(&kind, 40)
+                ),
             ));
         }
     }
@@ -150,6 +156,12 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
         Some(t) if !t.is_empty() => number(&["Record1", "Axes", "CZ", "Increment"])?,
         _ => 1.0,
     };
+    if z_increment == 0.0 {
+        return Err(format(
+            &name,
+            "Record1/Axes/CZ/Increment is 0, which makes every height equal; give the z resolution in m (e.g. 1e-9), or leave the key out for 1",
+        ));
+    }
     let z_offset = match find(&["Record1", "Axes", "CZ", "Offset"]) {
         Some(t) if !t.is_empty() => number(&["Record1", "Axes", "CZ", "Offset"])?,
         _ => 0.0,
@@ -159,7 +171,10 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
         if value >= 0.0 && value.fract() == 0.0 && value < 1e9 {
             Ok(value as usize)
         } else {
-            Err(format(&name, format!("{axis} = {value} is not a count")))
+            Err(format(
+                &name,
+                format!("Record3/MatrixDimension/{axis} = {value} is not a count"),
+            ))
         }
     };
     let (nx, ny, nz) = (size("SizeX")?, size("SizeY")?, size("SizeZ")?);
@@ -175,49 +190,82 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
             "the file marks invalid points in a separate bit array (ValidPointsLink), which is not supported; export it with NaN for missing points (data type F or D)",
         ));
     }
-    let link = need(&["Record3", "DataLink", "PointDataLink"])?;
-    let data = member(&link)?;
-    if let Some(expected) = find(&["Record3", "DataLink", "MD5ChecksumPointData"]) {
-        let actual = hex(&Md5::digest(&data));
-        if !expected.is_empty() && expected.to_ascii_lowercase() != actual {
-            return Err(format(
-                &name,
-                format!("the MD5 checksum of {link} is {actual}, main.xml says {expected}: the file is damaged"),
-            ));
-        }
-    }
-    let width = match data_type.as_str() {
+    let width: u64 = match data_type.as_str() {
         "I" => 2,
         "L" | "F" => 4,
         "D" => 8,
         other => {
             return Err(format(
                 &name,
-                format!("unknown data type `{other}` of CZ; x3p uses I, L, F or D"),
+                format!(
+                    "unknown data type `{}` of CZ; x3p uses I, L, F or D",
+                    cut(other, 40)
+                ),
             ))
         }
     };
-    if data.len() != nx * ny * width {
+    // The binary data main.xml describes, checked against the limit before it is unpacked (at
+    // most 1e18 bytes: no overflow).
+    let expected = nx as u64 * ny as u64 * width;
+    if expected > size_limit {
         return Err(format(
             &name,
             format!(
-                "{link} has {} bytes, but {nx} x {ny} values of type {data_type} need {}",
-                data.len(),
-                nx * ny * width
+                "main.xml describes {nx} x {ny} values of type {data_type}, {}, more than the {} a surface file may have here (its heights would need {} more); crop or resample the surface",
+                crate::io::text::bytes(expected),
+                crate::io::text::bytes(size_limit),
+                crate::io::text::bytes(nx as u64 * ny as u64 * 8)
             ),
         ));
     }
-    let value = |k: usize| -> f64 {
+    // Every surface read is characterised: a map this machine cannot characterise is refused
+    // before its heights are unpacked.
+    super::stats::check_memory([ny, nx], crate::field::memory_limit_bytes() as u64)
+        .map_err(|e| format(&name, e.to_string()))?;
+    let link = need(&["Record3", "DataLink", "PointDataLink"])?;
+    let why = format!("main.xml's {nx} x {ny} values of type {data_type}");
+    let data = archive.member(&link, Limit::Exactly(expected, &why))?;
+    if let Some(expected) = find(&["Record3", "DataLink", "MD5ChecksumPointData"]) {
+        let actual = hex(&Md5::digest(&data));
+        if !expected.is_empty() && expected.to_ascii_lowercase() != actual {
+            return Err(format(
+                &name,
+                format!(
+                    "the MD5 checksum of {} is {actual}, main.xml says {}: the file is damaged",
+                    cut(&link, 80),
+                    cut(&expected, 40)
+                ),
+            ));
+        }
+    }
+    let width = width as usize;
+    let raw = |k: usize| -> f64 {
         let b = &data[k * width..(k + 1) * width];
-        let raw = match width {
+        match width {
             2 => f64::from(i16::from_le_bytes([b[0], b[1]])),
             4 if data_type == "L" => f64::from(i32::from_le_bytes([b[0], b[1], b[2], b[3]])),
             4 => f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]])),
             _ => f64::from_le_bytes([b[0], b[1], b[2], b[3], b[4], b[5], b[6], b[7]]),
-        };
-        raw * z_increment + z_offset
+        }
     };
-    let mut heights = Array2::from_shape_fn((ny, nx), |(j, i)| value(j * nx + i));
+    let mut heights =
+        Array2::from_shape_fn((ny, nx), |(j, i)| raw(j * nx + i) * z_increment + z_offset);
+    // A finite raw value whose height overflows is the increment's or offset's fault, not a
+    // missing point.
+    if let Some(((row, column), _)) = heights
+        .indexed_iter()
+        .find(|((j, i), v)| !v.is_finite() && raw(j * nx + i).is_finite())
+    {
+        return Err(format(
+            &name,
+            format!(
+                "row {row}, column {column}: the raw value {} times Record1/Axes/CZ/Increment = {} plus Offset = {} is out of range; give the z increment in m (e.g. 1e-9)",
+                crate::io::text::number(raw(row * nx + column)),
+                crate::io::text::number(z_increment),
+                crate::io::text::number(z_offset)
+            ),
+        ));
+    }
     if let Some(((row, column), _)) = heights.indexed_iter().find(|(_, v)| !v.is_finite()) {
         match fill {
             Fill::Refuse => {
@@ -298,9 +346,20 @@ mod tests {
     /// An x3p archive built from the standard's layout by hand: integer heights with a z
     /// increment and offset, and an explicit MD5 of the data.
     fn handmade(data_type: &str, values: &[u8], checksum: Option<&str>) -> Vec<u8> {
+        handmade_with(data_type, values, checksum, "1e-9", (3, 2))
+    }
+
+    /// [`handmade`] with the z increment and the matrix size (x, y) given.
+    fn handmade_with(
+        data_type: &str,
+        values: &[u8],
+        checksum: Option<&str>,
+        z_increment: &str,
+        (nx, ny): (usize, usize),
+    ) -> Vec<u8> {
         let sum = checksum.map_or_else(|| hex(&Md5::digest(values)), str::to_string);
         let xml = format!(
-            "<?xml version=\"1.0\"?><p:ISO5436_2 xmlns:p=\"http://www.opengps.eu/2008/ISO5436_2\"><Record1><Revision>ISO5436 - 2000</Revision><FeatureType>SUR</FeatureType><Axes><CX><AxisType>I</AxisType><DataType>D</DataType><Increment>2.5E-06</Increment><Offset>0</Offset></CX><CY><AxisType>I</AxisType><DataType>D</DataType><Increment>5E-06</Increment><Offset>0</Offset></CY><CZ><AxisType>A</AxisType><DataType>{data_type}</DataType><Increment>1e-9</Increment><Offset>1e-6</Offset></CZ></Axes></Record1><Record3><MatrixDimension><SizeX>3</SizeX><SizeY>2</SizeY><SizeZ>1</SizeZ></MatrixDimension><DataLink><PointDataLink>bindata/data.bin</PointDataLink><MD5ChecksumPointData>{sum}</MD5ChecksumPointData></DataLink></Record3></p:ISO5436_2>"
+            "<?xml version=\"1.0\"?><p:ISO5436_2 xmlns:p=\"http://www.opengps.eu/2008/ISO5436_2\"><Record1><Revision>ISO5436 - 2000</Revision><FeatureType>SUR</FeatureType><Axes><CX><AxisType>I</AxisType><DataType>D</DataType><Increment>2.5E-06</Increment><Offset>0</Offset></CX><CY><AxisType>I</AxisType><DataType>D</DataType><Increment>5E-06</Increment><Offset>0</Offset></CY><CZ><AxisType>A</AxisType><DataType>{data_type}</DataType><Increment>{z_increment}</Increment><Offset>1e-6</Offset></CZ></Axes></Record1><Record3><MatrixDimension><SizeX>{nx}</SizeX><SizeY>{ny}</SizeY><SizeZ>1</SizeZ></MatrixDimension><DataLink><PointDataLink>bindata/data.bin</PointDataLink><MD5ChecksumPointData>{sum}</MD5ChecksumPointData></DataLink></Record3></p:ISO5436_2>"
         );
         let mut bytes = Vec::new();
         {
@@ -374,5 +433,69 @@ mod tests {
         let map = HeightMap::new(heights, [1e-6, 2e-6]).expect("map");
         let bytes = write(&map).expect("write");
         assert_eq!(read_bytes(&bytes, Fill::Refuse).expect("read"), map);
+    }
+
+    /// Issue 24, class 2: a zip bomb (main.xml says 24 x 16 points, the data member inflates
+    /// to 64 MiB) is refused by its declared size before it is unpacked.
+    #[test]
+    fn a_zip_bomb_is_refused_before_it_is_unpacked() {
+        let bomb = vec![0u8; 64 << 20];
+        let bytes = handmade_with("D", &bomb, Some(""), "1e-9", (24, 16));
+        assert!(bytes.len() < 1 << 20, "deflated: {} bytes", bytes.len());
+        let error = read_bytes(&bytes, Fill::Refuse)
+            .expect_err("bomb")
+            .to_string();
+        assert!(
+            error.contains("s.x3p: member bindata/data.bin: declares 67108864 bytes")
+                && error.contains("24 x 16 values of type D take 3072 bytes"),
+            "{error}"
+        );
+        // A matrix beyond the size limit is refused from main.xml alone.
+        let dir = tempfile::tempdir().expect("dir");
+        let path = dir.path().join("big.x3p");
+        std::fs::write(
+            &path,
+            handmade_with("D", &[0; 8], None, "1e-9", (16384, 16384)),
+        )
+        .expect("write");
+        let error = read(&path, 1 << 30, Fill::Refuse)
+            .expect_err("big")
+            .to_string();
+        assert!(
+            error.contains("16384 x 16384 values of type D, 2 GiB, more than the 1 GiB")
+                && error.contains("crop or resample"),
+            "{error}"
+        );
+    }
+
+    /// Issue 24, class 7: an out-of-range z increment is an error naming its key, never a
+    /// missing point; 0 is refused too.
+    #[test]
+    fn an_out_of_range_increment_names_its_key() {
+        let values: Vec<u8> = [1i16, -2, 3, 400, 5, -600]
+            .iter()
+            .flat_map(|v| v.to_le_bytes())
+            .collect();
+        for (increment, fragment) in [
+            (
+                "NaN",
+                "Record1/Axes/CZ/Increment = `NaN` is not a finite number",
+            ),
+            (
+                "1e400",
+                "Record1/Axes/CZ/Increment = `1e400` is not a finite number",
+            ),
+            ("1e308", "times Record1/Axes/CZ/Increment = 1e308"),
+            ("0", "Record1/Axes/CZ/Increment is 0"),
+        ] {
+            let bytes = handmade_with("I", &values, None, increment, (3, 2));
+            let error = read_bytes(&bytes, Fill::Interpolate)
+                .expect_err(increment)
+                .to_string();
+            assert!(
+                error.contains(fragment) && !error.contains("missing"),
+                "{increment}: {error}"
+            );
+        }
     }
 }

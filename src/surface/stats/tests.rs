@@ -162,3 +162,25 @@ fn psd_normalisation_keeps_the_variance() {
         "{one_d}"
     );
 }
+
+/// Issue 24, class 3: the memory of a characterisation is estimated from the grid before
+/// anything is allocated. Under the 6 GB a machine of 8 GB allows (3/4), 16384² (about
+/// 12 GiB) is refused with the size, the estimate, the limit and the fix; 8192² (3 GiB) runs.
+#[test]
+fn a_map_too_large_for_the_memory_is_refused_before_characterising() {
+    let limit = 6_000_000_000;
+    let error = check_memory([16384, 16384], limit)
+        .expect_err("too large")
+        .to_string();
+    for fragment in [
+        "16384 x 16384 samples",
+        "about 12 GiB",
+        "5.6 GiB allowed",
+        "crop or resample",
+    ] {
+        assert!(error.contains(fragment), "{fragment}: {error}");
+    }
+    assert!(check_memory([8192, 8192], limit).is_ok());
+    // Far beyond any machine, without overflow.
+    assert!(check_memory([usize::MAX, usize::MAX], limit).is_err());
+}

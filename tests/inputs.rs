@@ -1,0 +1,133 @@
+//! Hostile and unusual input files end to end (issue 24): reference archives declaring huge
+//! arrays, number-and-unit flags in exponent notation, byte-order marks and units in scenes,
+//! and causes said once.
+
+use std::io::Write;
+
+use crate::cli::{run, stderr, SMALL_SCENE};
+
+/// A reference `.npz` of a few hundred bytes whose arrays declare shape (100000, 100000) (80 GB)
+/// or (3000000000, 1): the comparison reports the scene as failed and names the member, the
+/// report is written, and the process exits 1 instead of aborting.
+#[test]
+fn a_reference_declaring_a_huge_array_fails_its_scene_without_aborting() {
+    let dir = tempfile::tempdir().expect("dir");
+    let scene = dir.path().join("case.toml");
+    std::fs::write(&scene, SMALL_SCENE).expect("scene");
+    let (scene, refs) = (scene.to_str().expect("utf8"), dir.path().join("refs"));
+    let refs = refs.to_str().expect("utf8");
+    let made = run(&["render", scene, "--out-dir", refs, "--save-field"]);
+    assert!(made.status.success(), "{}", stderr(&made));
+    for shape in ["(100000, 100000)", "(3000000000, 1)"] {
+        let mut forged = Vec::new();
+        {
+            let mut npz = zip::ZipWriter::new(std::io::Cursor::new(&mut forged));
+            let options = zip::write::SimpleFileOptions::default();
+            let dict = format!("{{'descr': '<f8', 'fortran_order': False, 'shape': {shape}, }}");
+            let mut npy = b"\x93NUMPY\x01\x00".to_vec();
+            npy.extend_from_slice(&(dict.len() as u16).to_le_bytes());
+            npy.extend_from_slice(dict.as_bytes());
+            npy.extend_from_slice(&[0; 8]);
+            for name in ["values_0.npy", "horizontal_0.npy", "vertical_0.npy"] {
+                npz.start_file(name, options).expect("entry");
+                npz.write_all(&npy).expect("npy");
+            }
+            npz.finish().expect("zip");
+        }
+        assert!(forged.len() < 1024);
+        std::fs::write(dir.path().join("refs/case.npz"), &forged).expect("forge");
+        let report = dir.path().join("report");
+        let report = report.to_str().expect("utf8");
+        let output = run(&[
+            "render",
+            scene,
+            "--out-dir",
+            report,
+            "--compare",
+            refs,
+            "--report",
+            report,
+        ]);
+        let text = format!(
+            "{}{}",
+            stderr(&output),
+            String::from_utf8_lossy(&output.stdout)
+        );
+        assert_eq!(output.status.code(), Some(1), "{text}");
+        assert!(
+            text.contains(&format!("values_0.npy: declares shape {shape}")),
+            "{text}"
+        );
+        assert!(dir.path().join("report/index.html").exists());
+    }
+}
+
+/// Exponent notation before a unit in the surface flags (class 9), and the same units as
+/// scenes and file headers.
+#[test]
+fn surface_flags_take_exponents() {
+    let dir = tempfile::tempdir().expect("dir");
+    let path = dir.path().join("s.asc");
+    let rows: Vec<String> = (0..16)
+        .map(|j| {
+            (0..16)
+                .map(|i| format!("{}", ((i * 7 + j * 13) % 11) as f64 * 0.1))
+                .collect::<Vec<_>>()
+                .join(" ")
+        })
+        .collect();
+    std::fs::write(&path, rows.join("\n")).expect("write");
+    let path = path.to_str().expect("utf8");
+    let output = run(&[
+        "surface",
+        path,
+        "--spacing",
+        "1e-6m",
+        "--height-unit",
+        "μm",
+        "--e-star",
+        "1.15e11Pa",
+        "--hardness",
+        "1e3HV",
+        "--band",
+        "2.5e-6m,8e-6 m",
+        "--json",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let bad = run(&[
+        "surface",
+        path,
+        "--spacing",
+        "1e-6m",
+        "--height-unit",
+        "um",
+        "--e-star",
+        "1e3HV",
+    ]);
+    assert!(
+        !bad.status.success() && stderr(&bad).contains("--e-star: unknown unit `HV`"),
+        "{}",
+        stderr(&bad)
+    );
+}
+
+/// A scene saved with a byte-order mark, and lengths in pm and μm as files and flags take
+/// them (classes 10 and 16).
+#[test]
+fn scenes_take_a_byte_order_mark_and_every_length_unit() {
+    let dir = tempfile::tempdir().expect("dir");
+    let path = dir.path().join("rough.toml");
+    let scene = "\u{feff}format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 32\nspacing = \"0.5 μm\"\nhurst = 0.8\nrolloff = \"8e-6m\"\nrms_height = \"50000 pm\"\nsphere_radius = \"2 mm\"\n";
+    std::fs::write(&path, scene).expect("write");
+    let output = run(&["check", path.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+}
+
+/// A missing file's cause is said once (class 16).
+#[test]
+fn a_missing_file_says_its_cause_once() {
+    let output = run(&["surface", "no-such-surface.asc", "--spacing", "1um"]);
+    let text = stderr(&output);
+    assert!(!output.status.success());
+    assert_eq!(text.matches("os error 2").count(), 1, "{text}");
+}

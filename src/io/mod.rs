@@ -9,3 +9,4 @@ pub mod input;
 pub mod output;
 pub mod points;
 pub mod text;
+pub mod units;

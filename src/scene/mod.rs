@@ -15,7 +15,7 @@ mod raw;
 mod spec;
 mod sweep;
 pub mod traction_csv;
-pub mod units;
+
 mod validate;
 
 use std::path::Path;

@@ -33,7 +33,7 @@ use ndarray::Array2;
 pub use super::samples::{interpolate_missing, Fill, ReadError};
 use super::HeightMap;
 use crate::io::text::cut;
-use crate::scene::units::{self, Dimension};
+use crate::io::units::{self, Dimension};
 
 /// What the file may not say itself.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]

@@ -24,12 +24,12 @@ use super::spec::{
 };
 use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
 use super::traction_csv;
-use super::units::{self, Dimension};
 use super::{Scene, SceneError, FORMAT};
 use crate::contact::elliptic::{CurvedBody, EllipticalContact, PrincipalRadii};
 use crate::contact::gear::SpurGearPair;
 use crate::contact::material::{self, yield_strength_from_hardness_pa, Material};
 use crate::contact::{Body, LineContact, PointContact};
+use crate::io::units::{self, Dimension};
 use crate::render::{ColorMap, Levels, Mark};
 use crate::solution::dcfft::TractionGrid;
 use crate::stress::{Quantity, QuantityKind};

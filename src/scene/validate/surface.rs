@@ -151,7 +151,7 @@ impl Validator<'_> {
                                     self.error(
                                         &format!("{key}.{name}"),
                                         format!("unknown unit `{text}`"),
-                                        Some("use m, mm, um, nm or pm"),
+                                        Some("use m, mm, µm (or um), nm or pm"),
                                     )
                                 })
                             })

@@ -186,7 +186,7 @@ fn split_number(text: &str) -> (&str, &str) {
 /// (`1e400` is out of range).
 pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
     let text = text.trim();
-    let shown = crate::io::text::cut(text, 40);
+    let shown = super::text::cut(text, 40);
     let (number, unit) = split_number(text);
     if unit.is_empty() {
         return Err(format!(
@@ -210,7 +210,7 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
     let factor = factor(unit, dimension).ok_or_else(|| {
         format!(
             "unknown unit `{}` in `{shown}`; use one of: {}",
-            crate::io::text::cut(unit, 20),
+            super::text::cut(unit, 20),
             dimension.unit_list()
         )
     })?;

@@ -1,6 +1,7 @@
 //! DC-FFT of gridded surface tractions (issue 4): the sliding Hertz point contact (p and
 //! qx = 0.3 p) on 256 x 256 cells over [-2a, 2a]^2, all six stress components on 128 depth
-//! layers, in parallel over the layers. Target: under 3 s on two cores.
+//! layers, in parallel over the layers. Target: under 3 s on two cores. The same as one period
+//! of periodic tractions (spectral layers, issue 22).
 //! Also one layer on the calling thread, one xy section through the field layer (its six
 //! components in parallel), the subsurface maxima search of a rough contact's report, and
 //! direct summation against DC-FFT on a small grid (both on one
@@ -44,6 +45,19 @@ fn dcfft(c: &mut Criterion) {
         |b, depths| {
             b.iter(|| {
                 field::for_each_dcfft_layer(&fft, depths, |_, _, layer| {
+                    black_box(layer[[2, 128, 128]]);
+                })
+            })
+        },
+    );
+    // The same tractions as one period (issue 22): layers from a cell down in Fourier space.
+    let periodic = DcFft::periodic(&grid, 0.3).expect("planned");
+    group.bench_with_input(
+        BenchmarkId::new("periodic_layers", "256x256x128"),
+        &depths,
+        |b, depths| {
+            b.iter(|| {
+                field::for_each_dcfft_layer(&periodic, depths, |_, _, layer| {
                     black_box(layer[[2, 128, 128]]);
                 })
             })

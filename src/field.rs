@@ -474,7 +474,15 @@ where
     }
     let mut quadrant = Vec::new();
     let mut layer = Array3::zeros((6, ny, nx));
+    let mut spectral = None;
     for (index, &z) in depths.iter().enumerate() {
+        // A spectral layer runs its transforms in parallel itself.
+        if fft.is_spectral(z) {
+            let workspace = spectral.get_or_insert_with(|| fft.workspace());
+            fft.layer_into(z, workspace, layer.view_mut())?;
+            take(index, z, layer.view());
+            continue;
+        }
         // A few blocks per thread, so that uneven blocks still balance.
         fft.influence_blocks(&mut quadrant, 4 * threads)
             .into_par_iter()

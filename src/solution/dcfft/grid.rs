@@ -63,6 +63,12 @@ impl From<realfft::FftError> for DcFftError {
     }
 }
 
+impl From<crate::operator::transform::TransformError> for DcFftError {
+    fn from(error: crate::operator::transform::TransformError) -> Self {
+        Self(error.to_string())
+    }
+}
+
 /// The three kinds of surface traction (the discriminant indexes stored coefficients).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Load {

@@ -33,6 +33,7 @@
 mod grid;
 mod images;
 mod plans;
+pub mod spectral;
 
 pub use grid::*;
 pub use images::*;
@@ -86,6 +87,8 @@ pub struct DcFft {
     periodicity: Periodicity,
     /// Periodic: the mean tractions `[p̄, q̄x, q̄y]`, whose stress is uniform.
     mean: [f64; 3],
+    /// Periodic: the layers from a cell down, in Fourier space ([`spectral`]).
+    spectral: Option<spectral::SpectralLayers>,
 }
 
 impl DcFft {
@@ -94,15 +97,29 @@ impl DcFft {
         Self::with_plans(grid, poisson, Arc::new(FftPlans::new(grid.shape)))
     }
 
-    /// As [`DcFft::new`] for a grid that is one period of tractions repeating in x and y
-    /// (module doc).
+    /// As [`DcFft::new`] for a grid that is one period of tractions repeating in x and y:
+    /// layers from one cell down in Fourier space ([`spectral`]), the shallower ones from
+    /// the cells' periodic influence coefficients (module doc).
     pub fn periodic(grid: &TractionGrid, poisson: f64) -> Result<Self, DcFftError> {
+        let mut fft = Self::periodic_by_cells(grid, poisson)?;
+        fft.spectral = Some(spectral::SpectralLayers::new(grid, poisson)?);
+        Ok(fft)
+    }
+
+    /// As [`DcFft::periodic`] with every layer from the cells' periodic influence
+    /// coefficients (the window of images, module doc): the reference of the spectral layers.
+    pub fn periodic_by_cells(grid: &TractionGrid, poisson: f64) -> Result<Self, DcFftError> {
         Self::build(
             grid,
             poisson,
             Arc::new(FftPlans::new(grid.shape)),
             Periodicity::Periodic,
         )
+    }
+
+    /// Whether the layer at depth `z` is computed in Fourier space ([`spectral`]).
+    pub fn is_spectral(&self, z: f64) -> bool {
+        self.spectral.as_ref().is_some_and(|s| s.takes(z))
     }
 
     /// Isolated or periodic.
@@ -154,6 +171,7 @@ impl DcFft {
             tractions,
             periodicity,
             mean,
+            spectral: None,
         })
     }
 
@@ -169,10 +187,10 @@ impl DcFft {
 
     /// Fresh working memory for [`DcFft::layer_into`].
     pub fn workspace(&self) -> Workspace {
-        let [ny, nx] = self.shape;
         Workspace {
-            quadrant: vec![0.0; 18 * nx * ny],
-            component: self.component_workspace(),
+            quadrant: Vec::new(),
+            component: None,
+            spectral: None,
         }
     }
 
@@ -203,12 +221,19 @@ impl DcFft {
     ) -> Result<(), DcFftError> {
         let [ny, nx] = self.shape;
         assert_eq!(out.shape(), [6, ny, nx], "layer output must be [6, ny, nx]");
+        if let Some(layers) = self.spectral.as_ref().filter(|s| s.takes(z)) {
+            let work = workspace.spectral.get_or_insert_with(|| layers.work());
+            return layers.layer_into(z, work, out);
+        }
         self.influence_into(z, &mut workspace.quadrant);
+        let component = workspace
+            .component
+            .get_or_insert_with(|| self.component_workspace());
         for c in 0..6 {
             self.component_into(
                 &workspace.quadrant,
                 c,
-                &mut workspace.component,
+                component,
                 out.index_axis_mut(Axis(0), c),
             )?;
         }

@@ -196,14 +196,15 @@ impl FftBuffers {
     }
 }
 
-/// The working memory of one depth layer (reused from layer to layer by one worker): the
-/// influence coefficients of one quadrant of offsets (`144 nx ny` bytes), the row spectra of
-/// one component for each load present and of the result (`16 nx ny` bytes each), and a few
-/// columns' spectra.
+/// The working memory of one depth layer (reused from layer to layer by one worker), each
+/// part allocated when first needed: the influence coefficients of one quadrant of offsets
+/// (`144 nx ny` bytes) and a component's spectra ([`ComponentWorkspace`]) for layers from the
+/// cells, or a spectrum and its transform's scratch for spectral layers.
 pub struct Workspace {
     /// `[load][component][b][a]`: 18 arrays of `nx ny`.
     pub(super) quadrant: Vec<f64>,
-    pub(super) component: ComponentWorkspace,
+    pub(super) component: Option<ComponentWorkspace>,
+    pub(super) spectral: Option<super::spectral::SpectralWork>,
 }
 
 /// Working memory of one stress component of a layer ([`DcFft::component_into`]).

@@ -67,7 +67,7 @@ fn periodic_fft_equals_periodic_direct_summation() {
         ([4, 1], [false, true, false], 0.0),
     ] {
         let grid = grid(shape, loads);
-        let fft = DcFft::periodic(&grid, nu).expect("planned");
+        let fft = DcFft::periodic_by_cells(&grid, nu).expect("planned");
         for z in [0.0, 0.02, 0.3, 1.5] {
             let difference = max_difference(
                 &fft.layer(z).expect("transformed"),
@@ -197,4 +197,117 @@ fn shape_mismatch_and_missing_tractions_are_reported() {
         TractionGrid::new([0.0; 2], [0.0, 1.0], Some(a), None, None),
         Err(TractionGridError::CellSize { .. })
     ));
+}
+
+/// The largest |traction| of a grid.
+fn largest_traction(grid: &TractionGrid) -> f64 {
+    grid.loads()
+        .flat_map(|(_, a)| a.iter().map(|v| v.abs()))
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn spectral_layers_equal_the_exact_periodic_sum() {
+    // The spectral layers are exact for the periodic cells; the window of twelve images each
+    // way is the independent reference (its own truncation measured at about 1e-5 of the
+    // largest traction). Even and odd sizes (Nyquist wavenumbers), one row, all three loads,
+    // from one cell down.
+    for (shape, loads, nu) in [
+        ([6, 8], [true, true, true], 0.3),
+        ([5, 7], [true, true, false], 0.25),
+        ([1, 6], [true, false, true], 0.3),
+    ] {
+        let grid = grid(shape, loads);
+        let largest = largest_traction(&grid);
+        let fft = DcFft::periodic(&grid, nu).expect("planned");
+        let cell = grid.cell()[0].min(grid.cell()[1]);
+        let mut worst = 0.0f64;
+        for z in [cell, 1.5 * cell, 3.0 * cell, 0.9] {
+            assert!(fft.is_spectral(z));
+            let layer = fft.layer(z).expect("transformed");
+            let [ny, nx] = shape;
+            for (row, column) in [(0, 0), (ny / 2, nx - 1), (ny - 1, nx / 2)] {
+                let (x, y) = grid.cell_centre(row, column);
+                let far = grid.periodic_stress_with_images(x, y, z, nu, 12);
+                for c in 0..6 {
+                    let difference = (layer[[c, row, column]] - component(&far, c)).abs();
+                    worst = worst.max(difference / largest);
+                }
+            }
+        }
+        eprintln!("{shape:?}: spectral vs 12 images, largest difference {worst:.1e}");
+        assert!(worst < 1e-4, "{shape:?}: {worst:e}");
+    }
+}
+
+#[test]
+fn spectral_layers_agree_with_the_cell_based_layers() {
+    // The cell-based periodic layers sum the images within two periods each way, which leaves
+    // up to about 5e-4 of the largest traction (see the test of the images); the spectral
+    // layers must agree with them to that, at every cell centre, and equal them in the mean.
+    let grid = grid([12, 16], [true, true, true]);
+    let largest = largest_traction(&grid);
+    let nu = 0.3;
+    let spectral = DcFft::periodic(&grid, nu).expect("planned");
+    let cells = DcFft::periodic_by_cells(&grid, nu).expect("planned");
+    let cell = grid.cell()[0].min(grid.cell()[1]);
+    for z in [cell, 2.0 * cell, 0.5] {
+        let (a, b) = (
+            spectral.layer(z).expect("spectral"),
+            cells.layer(z).expect("cells"),
+        );
+        let difference = max_difference(&a, &b) / largest;
+        eprintln!("z = {z}: spectral vs cell-based periodic layers {difference:.1e}");
+        assert!(difference < 1e-3, "z = {z}: {difference:e}");
+        for c in 0..6 {
+            let mean = |l: &Array3<f64>| l.index_axis(Axis(0), c).mean().unwrap_or(0.0);
+            assert!(
+                (mean(&a) - mean(&b)).abs() < 1e-3 * largest,
+                "z = {z}, c = {c}"
+            );
+        }
+    }
+    // Shallower than a cell: the cell-based layers themselves.
+    assert!(!spectral.is_spectral(0.9 * cell));
+    assert_eq!(
+        spectral.layer(0.2 * cell).expect("cells"),
+        cells.layer(0.2 * cell).expect("cells")
+    );
+}
+
+#[test]
+fn a_sinusoidal_shear_across_the_grid_gives_the_closed_form() {
+    // qy = q1 cos(kx), uniform in y: an anti-plane wave (the shear across the wave
+    // direction), σyz = -q1 e^(-kz) cos kx, σxy = -q1 e^(-kz) sin kx (u_y harmonic, derived in
+    // the module doc of `spectral`), every other component zero. The cells carry the cell
+    // means, q1 sinc(k dx/2) cos(k x_c); the steps' fundamental has the amplitude
+    // q1 sinc²(k dx/2), and their harmonics at z >= 2 dx are below 3e-6 q1 (as for the
+    // pressure wave).
+    let (nx, ny, dx) = (32, 3, 1.0 / 32.0);
+    let k = 2.0 * std::f64::consts::PI;
+    let q1 = 0.8;
+    let half = 0.5 * k * dx;
+    let amplitude = q1 * (half.sin() / half).powi(2);
+    let shear = Array2::from_shape_fn((ny, nx), |(_, i)| {
+        let x = (i as f64 + 0.5) * dx;
+        q1 / (k * dx) * ((k * (x + 0.5 * dx)).sin() - (k * (x - 0.5 * dx)).sin())
+    });
+    let grid = TractionGrid::new([0.0, 0.0], [dx, 0.5], None, None, Some(shear)).expect("valid");
+    let fft = DcFft::periodic(&grid, 0.3).expect("planned");
+    for z in [2.0 * dx, 0.1, 0.3] {
+        let layer = fft.layer(z).expect("transformed");
+        let decay = (-k * z).exp();
+        for i in 0..nx {
+            let x = (i as f64 + 0.5) * dx;
+            let syz = -amplitude * decay * (k * x).cos();
+            let sxy = -amplitude * decay * (k * x).sin();
+            for (c, expected) in [(0, 0.0), (1, 0.0), (2, 0.0), (3, syz), (4, 0.0), (5, sxy)] {
+                let got = layer[[c, 1, i]];
+                assert!(
+                    (got - expected).abs() < 1e-5,
+                    "z = {z}, x = {x}, component {c}: {got} vs {expected}"
+                );
+            }
+        }
+    }
 }

@@ -153,6 +153,8 @@ fn a_rough_recording_has_a_layer_at_the_reports_maximum_with_its_value() {
             "{label}"
         );
     }
+    // The layers are at the scene's load, one of the sweep's, and say which.
+    assert!(title.contains("under W = 0.2 N (step 2 of 3)"), "{title}");
     // The chart of the largest stresses against depth follows the layers.
     assert_eq!(contents.rows_on("/charts/depth_maxima", "depth"), layers);
     assert!(contents
@@ -215,4 +217,27 @@ fn scene_with_hardness(hardness: &str) -> Scene {
         "periodic = true\n",
         &format!("periodic = true\nhardness = \"{hardness}\"\n"),
     ))
+}
+
+#[test]
+fn a_rough_sweeps_single_load_views_say_which_load_they_show() {
+    let off_sweep = scene(&ROUGH_SWEEP.replace("load = \"0.2 N\"", "load = \"0.3 N\""));
+    let (_, contents) = record_in_memory(&off_sweep);
+    let depth = titles(&contents, "/depth/title", "depth");
+    assert!(
+        depth
+            .iter()
+            .all(|(_, t)| t.contains("under W = 0.3 N (not one of the swept loads)")),
+        "{depth:?}"
+    );
+    // The shipped sweep shows one of its loads.
+    let shipped = Scene::load(std::path::Path::new("scenes/record_rough_load_sweep.toml"))
+        .expect("the shipped scene");
+    let sweep = shipped.sweep.as_ref().expect("a sweep");
+    let load = stressfield::study::rough::problem(&shipped).map(|p| p.control);
+    assert!(
+        matches!(load, Some(stressfield::contact::rough::Control::Load { newtons })
+            if sweep.values.contains(&newtons)),
+        "{load:?}"
+    );
 }

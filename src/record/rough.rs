@@ -107,10 +107,19 @@ pub fn record(
             crate::report::surface::SurfaceReport::new(c, e_star, hardness).text(c, &surface.source)
         }
     };
+    // A load sweep's single-load views (figure, report, maps, topography, depth) are at the
+    // scene's own load: say which step of the sweep that is.
+    let shown_at = match solution.filter(|_| scene.sweep.is_some()) {
+        Some(solution) => format!(
+            "The figure, this report, the maps and the depth steps are under {}; the view \"pressure against load\" steps through the loads.\n\n",
+            load_text(scene, solution)
+        ),
+        None => String::new(),
+    };
     stream.log_static(
         "description",
         &rerun::TextDocument::from_markdown(format!(
-            "# {}\n\n```text\n{report}```\n\nThe `topography` mesh shows heights {exaggeration:.0} times exaggerated. \
+            "# {}\n\n{shown_at}```text\n{report}```\n\nThe `topography` mesh shows heights {exaggeration:.0} times exaggerated. \
              Maps are in µm; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m or mm: ignore that line).",
             sheet.title
         )),
@@ -610,9 +619,28 @@ impl LoadChart {
     }
 }
 
-/// The load of a solved contact: `W = 0.8 N`.
-pub(super) fn load_text(solution: &RoughSolution) -> String {
-    format!("W = {} N", crate::scene::compact(solution.load_n))
+/// The load of a solved contact and, with a load sweep, which step it is:
+/// `W = 1 N (step 7 of 10)`, or `W = 0.8 N (not one of the swept loads)`.
+pub(super) fn load_text(scene: &Scene, solution: &RoughSolution) -> String {
+    let load = format!("W = {} N", crate::scene::compact(solution.load_n));
+    let Some(sweep) = scene
+        .sweep
+        .as_ref()
+        .filter(|s| s.parameter == crate::scene::SweepParameter::Load)
+    else {
+        return load;
+    };
+    match sweep
+        .values
+        .iter()
+        .position(|&w| (w - solution.load_n).abs() <= 1e-9 * w.abs())
+    {
+        Some(k) => format!(
+            "{load} ({})",
+            super::step_text(k, sweep.values.len(), "").trim_end_matches(": ")
+        ),
+        None => format!("{load} (not one of the swept loads)"),
+    }
 }
 
 /// The frames of the 2-D views that the layout shows.

@@ -99,7 +99,7 @@ pub(super) fn log_depth_steps(
             "layer {} of {count}: z = {} µm below the surface, under {}",
             step_time(k),
             crate::scene::compact(depth_um),
-            load_text(solution)
+            load_text(scene, solution)
         );
         if k == reported_layer {
             title.push_str(": the depth of the report's largest σvM");

@@ -935,7 +935,7 @@ fn a_speed_sweep_records_the_temperature_sweeping_back_on_the_peclet_timeline() 
     // The layout: the two maps framed, the charts, opening at the first step.
     let views = contents.view_names();
     for name in [
-        "body 1's surface temperature rise (K): timeline `peclet`",
+        "body 1's surface temperature rise (K) against Pe",
         "xz section through the contact's centre (K), depth down",
         "max ΔT against Pe",
         "hottest point against Pe",

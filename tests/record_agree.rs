@@ -87,6 +87,7 @@ fn titles_logs_and_the_time_panel_count_steps_alike_and_name_the_swept_value() {
     for (time, title) in &titles {
         assert!(title.starts_with(&expect(*time)), "{time}: {title}");
     }
+    assert_no_backticks(&contents);
     // No wall-clock timeline beside the steps'.
     let log_time = rerun::TimelineName::from("log_time");
     assert!(contents
@@ -153,6 +154,7 @@ fn a_rough_recording_has_a_layer_at_the_reports_maximum_with_its_value() {
             "{label}"
         );
     }
+    assert_no_backticks(&contents);
     // The layers are at the scene's load, one of the sweep's, and say which.
     assert!(title.contains("under W = 0.2 N (step 2 of 3)"), "{title}");
     // The chart of the largest stresses against depth follows the layers.
@@ -240,4 +242,16 @@ fn a_rough_sweeps_single_load_views_say_which_load_they_show() {
             if sweep.values.contains(&newtons)),
         "{load:?}"
     );
+}
+
+/// Tab names and title rows are plain text: a backtick would be shown as one.
+fn assert_no_backticks(contents: &Contents) {
+    for name in contents.view_names() {
+        assert!(!name.contains('`'), "view {name}");
+    }
+    for path in contents.chunks.keys().filter(|p| p.ends_with("/title")) {
+        for title in contents.labels(path) {
+            assert!(!title.contains('`'), "{path}: {title}");
+        }
+    }
 }

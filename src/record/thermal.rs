@@ -394,7 +394,7 @@ fn plan_layout(surface: &Frame, section: &Frame, blok: bool, sweeps: bool) -> La
     let main = Node::Vertical(
         vec![
             view2d(
-                "body 1's surface temperature rise (K): timeline `peclet`",
+                "body 1's surface temperature rise (K) against Pe",
                 "surface",
                 Some(surface),
             ),

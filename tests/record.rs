@@ -10,8 +10,8 @@ use stressfield::scene::{Scene, SweepParameter};
 use stressfield::solution::line_hertz;
 
 /// What a recording holds: per entity path, its chunks.
-struct Contents {
-    chunks: BTreeMap<String, Vec<Chunk>>,
+pub(crate) struct Contents {
+    pub(crate) chunks: BTreeMap<String, Vec<Chunk>>,
     /// The viewer layout's chunks, by blueprint entity path.
     layout: BTreeMap<String, Vec<Chunk>>,
     application_ids: Vec<String>,
@@ -63,7 +63,7 @@ impl Contents {
     }
 
     /// The scalars logged at `path`, ordered by their time on `timeline`.
-    fn scalars(&self, path: &str, timeline: &'static str) -> Vec<(i64, f64)> {
+    pub(crate) fn scalars(&self, path: &str, timeline: &'static str) -> Vec<(i64, f64)> {
         let mut values = Vec::new();
         for chunk in self
             .chunks
@@ -94,7 +94,7 @@ impl Contents {
     }
 
     /// The labels logged at `path` (a `Points2D`), every row in order.
-    fn labels(&self, path: &str) -> Vec<String> {
+    pub(crate) fn labels(&self, path: &str) -> Vec<String> {
         self.chunks
             .get(path)
             .unwrap_or_else(|| panic!("no entity {path}"))
@@ -116,7 +116,7 @@ impl Contents {
     }
 
     /// The names of the layout's views, as the viewer shows them on their tabs.
-    fn view_names(&self) -> Vec<String> {
+    pub(crate) fn view_names(&self) -> Vec<String> {
         use rerun::external::re_sdk_types::blueprint::archetypes::ViewBlueprint;
         self.layout
             .values()
@@ -173,7 +173,12 @@ impl Contents {
     }
 
     /// The times on `timeline` of the rows logged at `path` that are not on `other`, in order.
-    fn times_on(&self, path: &str, timeline: &'static str, other: &'static str) -> Vec<i64> {
+    pub(crate) fn times_on(
+        &self,
+        path: &str,
+        timeline: &'static str,
+        other: &'static str,
+    ) -> Vec<i64> {
         let (name, other) = (
             rerun::TimelineName::from(timeline),
             rerun::TimelineName::from(other),
@@ -193,7 +198,7 @@ impl Contents {
 
     /// The number of rows logged at `path` on `timeline` (static rows, such as a placement,
     /// are not counted).
-    fn rows_on(&self, path: &str, timeline: &'static str) -> usize {
+    pub(crate) fn rows_on(&self, path: &str, timeline: &'static str) -> usize {
         let name = rerun::TimelineName::from(timeline);
         self.chunks.get(path).map_or(0, |chunks| {
             chunks
@@ -235,7 +240,7 @@ fn mesh_positions(chunk: &Chunk) -> Vec<[f32; 3]> {
         .collect()
 }
 
-fn record_in_memory(scene: &Scene) -> (record::Summary, Contents) {
+pub(crate) fn record_in_memory(scene: &Scene) -> (record::Summary, Contents) {
     let (stream, storage) = rerun::RecordingStreamBuilder::new(APPLICATION_ID)
         .memory()
         .expect("an in-memory recording");
@@ -250,11 +255,11 @@ fn record_in_memory(scene: &Scene) -> (record::Summary, Contents) {
     (summary, Contents::from_messages(storage.take()))
 }
 
-fn scene(text: &str) -> Scene {
+pub(crate) fn scene(text: &str) -> Scene {
     Scene::parse(text, "test", "test.toml").expect("a valid scene")
 }
 
-const FRICTION_SWEEP: &str = r#"
+pub(crate) const FRICTION_SWEEP: &str = r#"
 format = 1
 [contact]
 kind = "line"
@@ -308,7 +313,8 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
     // One image per step (plus the static transform's row).
     assert_eq!(contents.rows("/sections/0/values"), 6);
     let friction = contents.scalars("/series/friction", "friction");
-    let expected: Vec<(i64, f64)> = (0..6).map(|k| (k, 0.1 * k as f64)).collect();
+    // Steps count from 1 on the time panel, as in the titles.
+    let expected: Vec<(i64, f64)> = (0..6).map(|k| (k + 1, 0.1 * k as f64)).collect();
     assert_eq!(friction.len(), 6);
     for ((t, mu), (te, mue)) in friction.iter().zip(&expected) {
         assert_eq!(t, te);
@@ -637,7 +643,7 @@ fn every_shipped_recording_scene_records() {
 }
 
 /// A small periodic rough contact with a load sweep.
-const ROUGH_SWEEP: &str = r#"
+pub(crate) const ROUGH_SWEEP: &str = r#"
 format = 1
 title = "rough sweep"
 [contact]
@@ -708,11 +714,12 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
         "/charts/spots",
         "/charts/max_pressure",
     ] {
-        assert_eq!(contents.times_on(path, "depth", "load"), vec![0], "{path}");
+        assert_eq!(contents.times_on(path, "depth", "load"), vec![1], "{path}");
     }
     assert!(
         titles[3].starts_with("step 3 of 3: W = 0.5 N: ")
-            && titles[3].ends_with("(the last load: the timeline `load` steps through the loads)"),
+            && titles[3]
+                .ends_with("(the last load: the timeline \"load\" steps through the loads)"),
         "{titles:?}"
     );
     assert_eq!(
@@ -746,22 +753,22 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     let fraction = contents.scalars("/series/contact_fraction", "load");
     assert!(fraction.windows(2).all(|w| w[1].1 > w[0].1), "{fraction:?}");
     // The depth steps are on their own timeline; on the timeline `load` (which the recording
-    // opens on) the depth view holds the layer of the largest value from the first load on,
-    // not nothing.
+    // opens on) the depth view holds the layer of the report's maximum from the first load
+    // on, not nothing.
     let layers = contents.rows_on("/depth/field", "depth");
     assert!(layers >= 2);
     assert_eq!(
         contents.times_on("/depth/field", "depth", "load").len(),
         layers
     );
-    assert_eq!(contents.times_on("/depth/field", "load", "depth"), vec![0]);
+    assert_eq!(contents.times_on("/depth/field", "load", "depth"), vec![1]);
     let depth_titles = contents.labels("/depth/title");
     assert!(depth_titles[0].starts_with("layer 1 of "));
     let preview = depth_titles.last().expect("a title");
     assert!(
         preview.starts_with("layer ")
             && preview.ends_with(
-                ": the layer of the largest σvM (the timeline `depth` steps through depth)"
+                ": the depth of the report's largest σvM (the timeline \"depth\" steps through depth)"
             ),
         "{preview}"
     );
@@ -774,8 +781,12 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     };
     let maxima = contents.labels("/depth/maximum/label");
     assert_eq!(maxima.len(), layers + 1, "{maxima:?}");
+    // Within the report's refinement (an eighth of a cell) of the largest of all layers.
     let deepest_largest = maxima[..layers].iter().map(value).fold(0.0, f64::max);
-    assert_eq!(value(&maxima[layers]), deepest_largest, "{maxima:?}");
+    assert!(
+        value(&maxima[layers]) >= deepest_largest / 1.005,
+        "{maxima:?}"
+    );
     let layer: usize = preview["layer ".len()..]
         .split(' ')
         .next()
@@ -850,7 +861,7 @@ fn a_speed_sweep_records_the_temperature_sweeping_back_on_the_peclet_timeline() 
     // Three steps on the timeline `peclet`, spaced geometrically; each view, its colour bar
     // (a range per step) and each chart once per step.
     let peclets = contents.scalars("/series/peclet", "peclet");
-    for ((t, pe), (k, expected)) in peclets.iter().zip([(0, 0.1), (1, 1.0), (2, 10.0)]) {
+    for ((t, pe), (k, expected)) in peclets.iter().zip([(1, 0.1), (2, 1.0), (3, 10.0)]) {
         assert_eq!(*t, k);
         assert!((pe / expected - 1.0).abs() < 1e-12, "{peclets:?}");
     }
@@ -924,7 +935,7 @@ fn a_speed_sweep_records_the_temperature_sweeping_back_on_the_peclet_timeline() 
     // The layout: the two maps framed, the charts, opening at the first step.
     let views = contents.view_names();
     for name in [
-        "body 1's surface temperature rise (K): timeline `peclet`",
+        "body 1's surface temperature rise (K) against Pe",
         "xz section through the contact's centre (K), depth down",
         "max ΔT against Pe",
         "hottest point against Pe",

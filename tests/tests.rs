@@ -12,6 +12,8 @@ mod patch;
 mod point_contact;
 #[cfg(feature = "rerun")]
 mod record;
+#[cfg(feature = "rerun")]
+mod record_agree;
 mod regression;
 mod rough_capped;
 mod rough_contact;

@@ -40,6 +40,7 @@ mod isosurface;
 mod layout;
 mod panels;
 mod rough;
+mod rough_depth;
 mod section;
 pub mod sink;
 mod thermal;
@@ -209,6 +210,9 @@ fn record_with(
     flush: &dyn Fn() -> Result<(), RecordError>,
     solved: Option<&RoughSolution>,
 ) -> Result<Summary, RecordError> {
+    // Steps are on the sweep's own timeline; the wall clock of logging is no timeline to
+    // browse (the viewer would offer `log_time` beside it).
+    stream.set_log_time_enabled(false);
     if matches!(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
@@ -219,6 +223,18 @@ fn record_with(
         return thermal::record(scene, stream, live, flush);
     }
     record_sections(scene, stream, live, on_row, flush)
+}
+
+/// The time of step `step` (counted from 0) on a sequence timeline: steps count from 1 on the
+/// time panel, in titles, logs and history axes alike.
+fn step_time(step: usize) -> i64 {
+    step as i64 + 1
+}
+
+/// The text naming step `step` (counted from 0) of `steps` with its swept value `text`:
+/// `step 40 of 61: x0 = 0.9a`, the number the time panel shows ([`step_time`]).
+fn step_text(step: usize, steps: usize, text: &str) -> String {
+    format!("step {} of {steps}: {text}", step_time(step))
 }
 
 /// The window the layout is planned for (the viewer's size when it opens a file varies; the
@@ -258,6 +274,31 @@ fn colour_range(map: ColorMap, lo: f64, hi: f64, fixed: Option<(f64, f64)>) -> (
         }
     };
     (grow(scale.lo), grow(scale.hi))
+}
+
+/// The quantile of a sweep's values (over all its steps) that sets the top of a robust colour
+/// range ([`robust_top`]).
+const ROBUST_QUANTILE: f64 = 0.995;
+
+/// The top of a robust colour range of `values` (all steps of a sweep; only the positive ones,
+/// where a field is mostly zero, as a pressure outside the contact): their
+/// [`ROBUST_QUANTILE`] quantile, so that a few spikes (a single cell at twice the hardness) do
+/// not darken every other value; values beyond are drawn in the top colour, the true maximum
+/// still labelled. Returns the top and whether it is below the largest value.
+fn robust_top(values: &[f64]) -> (f64, bool) {
+    let mut positive: Vec<f64> = values
+        .iter()
+        .copied()
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .collect();
+    if positive.is_empty() {
+        return (0.0, false);
+    }
+    positive.sort_by(f64::total_cmp);
+    let largest = positive[positive.len() - 1];
+    let at = ((positive.len() - 1) as f64 * ROBUST_QUANTILE).round() as usize;
+    let top = positive[at];
+    (top, top < largest)
 }
 
 /// The Rerun colour map closest to a figure's.
@@ -323,4 +364,29 @@ pub fn describe(scene: &Scene) -> String {
     ));
     text.push_str("```\n");
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_single_spike_does_not_set_the_robust_top() {
+        // 999 contact cells at up to 100 MPa, the rest out of contact, one cell at 6000.
+        let mut values: Vec<f64> = (1..1000).map(|k| 0.1 * k as f64).collect();
+        values.extend([0.0; 500]);
+        values.push(6000.0);
+        let (top, clipped) = robust_top(&values);
+        assert!(clipped);
+        assert!(top < 100.0 && top > 99.0, "{top}");
+        // Without a spike nothing is clipped beyond the quantile's few cells.
+        assert_eq!(robust_top(&[0.0, 2.0]), (2.0, false));
+        assert_eq!(robust_top(&[0.0]), (0.0, false));
+    }
+
+    #[test]
+    fn steps_count_from_one_in_every_text() {
+        assert_eq!(step_time(0), 1);
+        assert_eq!(step_text(39, 61, "x0 = 0.9a"), "step 40 of 61: x0 = 0.9a");
+    }
 }

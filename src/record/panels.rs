@@ -161,16 +161,16 @@ pub(super) fn record_sections(
             Some(figure) => figure,
             None => figure::build(&step_scene, &study::panel_fields(&step_scene, on_row)?),
         };
-        stream.set_time_sequence(timeline, step as i64);
+        stream.set_time_sequence(timeline, step_time(step));
         let mut title = String::new();
         if let Some(sweep) = &scene.sweep {
             let text = sweep.describe(step, scene);
-            stream.log("log", &rerun::TextLog::new(format!("step {step}: {text}")))?;
+            title = step_text(step, steps, &text);
+            stream.log("log", &rerun::TextLog::new(title.clone()))?;
             stream.log(
                 format!("series/{}", sweep.parameter.key()),
                 &rerun::Scalars::new([sweep.values[step]]),
             )?;
-            title = format!("step {} of {steps}: {text}", step + 1);
         }
         for (k, panel) in figure.panels.iter().enumerate() {
             let panel_title = step_title(scene, step, &title, &figure, panel);

@@ -35,7 +35,7 @@ use crate::render::chart::{Cell, Chart, Series, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::report::rough::ContactReport;
 use crate::scene::{ContactKind, Scene};
-use crate::study::rough::{self as rough_study, REFERENCE_LENGTH_M};
+use crate::study::rough as rough_study;
 use crate::surface::HeightMap;
 
 pub(super) fn rerun_error(e: impl std::fmt::Display) -> RecordError {
@@ -86,9 +86,16 @@ pub fn record(
         crate::render::encode_png(&drawing.png().map_err(rerun_error)?).map_err(rerun_error)?;
     stream.log_static("sheet", &rerun::EncodedImage::from_file_contents(png))?;
     let exaggeration = log_topography(stream, &surface.heights)?;
+    // The report's maximum: the depth steps include its depth and show its value there.
+    let mut reported = None;
     let report = match solution {
         Some(solution) => {
             let findings = rough_study::findings(scene, solution).map_err(rerun_error)?;
+            let maximum = findings.maxima.von_mises;
+            reported = Some(super::rough_depth::Reported {
+                value_pa: maximum.value_over_p0 * rough_study::REFERENCE_PRESSURE_PA,
+                z: maximum.z_over_a,
+            });
             ContactReport::new(scene, solution, &findings).text(scene)
         }
         None => {
@@ -100,10 +107,19 @@ pub fn record(
             crate::report::surface::SurfaceReport::new(c, e_star, hardness).text(c, &surface.source)
         }
     };
+    // A load sweep's single-load views (figure, report, maps, topography, depth) are at the
+    // scene's own load: say which step of the sweep that is.
+    let shown_at = match solution.filter(|_| scene.sweep.is_some()) {
+        Some(solution) => format!(
+            "The figure, this report, the maps and the depth steps are under {}; the view \"pressure against load\" steps through the loads.\n\n",
+            load_text(scene, solution)
+        ),
+        None => String::new(),
+    };
     stream.log_static(
         "description",
         &rerun::TextDocument::from_markdown(format!(
-            "# {}\n\n```text\n{report}```\n\nThe `topography` mesh shows heights {exaggeration:.0} times exaggerated. \
+            "# {}\n\n{shown_at}```text\n{report}```\n\nThe `topography` mesh shows heights {exaggeration:.0} times exaggerated. \
              Maps are in µm; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m or mm: ignore that line).",
             sheet.title
         )),
@@ -190,6 +206,10 @@ pub fn record(
         contact: contact_frame.as_ref(),
         depth: depth_frame.as_ref(),
         timeline,
+        contact_colours: format!(
+            "colours to the {} % quantile of all loads",
+            section::short(super::ROBUST_QUANTILE * 100.0)
+        ),
     };
     super::layout::send(stream, &plan_layout(&maps, scene, &frames), live)?;
     flush()?;
@@ -197,12 +217,14 @@ pub fn record(
     if let Some(frame) = &contact_frame {
         steps = log_load_sweep(stream, scene, frame, flush)?.max(1);
     }
-    if let (Some(frame), Some(solution)) = (&depth_frame, solution) {
+    if let (Some(frame), Some(solution), Some(reported)) = (&depth_frame, solution, reported) {
         // The depth steps are at the scene's own load, on their own timeline (and, with a load
-        // sweep, the layer of the largest value at the first load: see log_depth_steps).
+        // sweep, the layer of the report's maximum at the first load: see log_depth_steps).
         stream.disable_timeline("load");
         let on_load = contact_frame.is_some();
-        log_depth_steps(stream, scene, solution, frame, on_load, on_row, flush)?;
+        super::rough_depth::log_depth_steps(
+            stream, scene, solution, reported, frame, on_load, on_row, flush,
+        )?;
     }
     Ok(Summary {
         steps,
@@ -220,7 +242,7 @@ pub(super) fn main_view_px(has_timeline: bool) -> (f64, f64) {
 }
 
 /// The colour range of a map: its scale's fixed range, or its values' by the figure's rule.
-fn map_range(map: &Figure, panel: &Panel, values: Option<(f64, f64)>) -> (f64, f64) {
+pub(super) fn map_range(map: &Figure, panel: &Panel, values: Option<(f64, f64)>) -> (f64, f64) {
     let (lo, hi) = values.unwrap_or_else(|| {
         panel
             .values
@@ -388,29 +410,34 @@ fn log_load_sweep(
         return Ok(0);
     };
     let problem = rough_study::problem(scene).ok_or_else(|| rerun_error("no rough contact"))?;
-    // Every load is solved first: the colour range is the largest pressure of them all.
+    // Every load is solved first: the colour range covers the pressures of them all.
     let mut solutions = Vec::with_capacity(sweep.values.len());
     for &load in &sweep.values {
         let mut step = problem.clone();
         step.control = Control::Load { newtons: load };
         solutions.push(rough::solve(&step, &mut |_, _| {}).map_err(rerun_error)?);
     }
-    let highest = solutions
+    let pressures_mpa: Vec<f64> = solutions
         .iter()
-        .map(|s| s.max_pressure_pa)
-        .fold(0.0, f64::max)
-        * 1e-6;
+        .flat_map(|s| s.pressure_pa.iter().map(|p| p * 1e-6))
+        .collect();
+    let (top, clipped) = super::robust_top(&pressures_mpa);
     let surface = scene
         .surface
         .as_ref()
         .ok_or_else(|| rerun_error("no surface"))?;
     let (x, y) = surface_axes_um(&surface.heights);
-    let range = (0.0, super::round_up(1.03 * highest).max(1e-9));
+    let range = (0.0, super::round_up(1.03 * top).max(1e-9));
+    let hardness_mpa = scene
+        .contact
+        .rough
+        .and_then(|r| r.hardness_pa)
+        .map(|h| h * 1e-6);
     let charts = load_charts(&solutions);
     let steps = sweep.values.len();
     let mut last = None;
     for (k, (solution, &load)) in solutions.iter().zip(&sweep.values).enumerate() {
-        stream.set_time_sequence("load", k as i64);
+        stream.set_time_sequence("load", super::step_time(k));
         let indicator = solution
             .pressure_pa
             .mapv(|p| if p > 0.0 { 1.0 } else { 0.0 });
@@ -435,7 +462,23 @@ fn log_load_sweep(
         if k == 0 {
             log_map_static(stream, "contact", frame, &figure, &shown, Some(range))?;
         }
-        let title = format!("step {} of {steps}: {text}", k + 1);
+        let mut title = super::step_text(k, steps, &text);
+        let max_mpa = solution.max_pressure_pa * 1e-6;
+        // The solver caps the pressure at the hardness: a pressure at the cap is where the
+        // elastic one would exceed it.
+        if let Some(hardness) = hardness_mpa.filter(|_| solution.plastic_cells > 0) {
+            title.push_str(&format!(
+                ": {} cells at the hardness {} MPa (the elastic pressure would exceed it)",
+                solution.plastic_cells,
+                section::short(hardness)
+            ));
+        }
+        if clipped && max_mpa > range.1 {
+            title.push_str(&format!(
+                " (beyond {} MPa in the top colour)",
+                section::short(range.1)
+            ));
+        }
         log_map_step(
             stream,
             When::Step,
@@ -446,7 +489,7 @@ fn log_load_sweep(
             range,
             &title,
         )?;
-        stream.log("log", &rerun::TextLog::new(format!("step {k}: {text}")))?;
+        stream.log("log", &rerun::TextLog::new(title.clone()))?;
         stream.log("series/load_n", &rerun::Scalars::new([load]))?;
         stream.log(
             "series/contact_fraction",
@@ -474,7 +517,7 @@ fn log_load_sweep(
     // nothing (a view shows only what is logged on the timeline the time panel is on).
     if let Some((figure, shown, title)) = last {
         stream.disable_timeline("load");
-        stream.set_time_sequence("depth", 0);
+        stream.set_time_sequence("depth", super::step_time(0));
         log_map_step(
             stream,
             When::Step,
@@ -483,7 +526,7 @@ fn log_load_sweep(
             &figure,
             &shown,
             range,
-            &format!("{title} (the last load: the timeline `load` steps through the loads)"),
+            &format!("{title} (the last load: the timeline \"load\" steps through the loads)"),
         )?;
         for chart in &charts {
             let png = chart.png(&sweep.values, steps - 1)?;
@@ -576,129 +619,28 @@ impl LoadChart {
     }
 }
 
-/// The scene's stress quantity in planes parallel to the surface, stepping down on the
-/// `depth` timeline, in the view framed by `frame`; with `on_load`, the layer of the largest
-/// value on the timeline `load` too (at its first step, so that it shows at every load).
-#[allow(clippy::too_many_arguments)]
-fn log_depth_steps(
-    stream: &RecordingStream,
-    scene: &Scene,
-    solution: &RoughSolution,
-    frame: &Frame,
-    on_load: bool,
-    on_row: &(dyn Fn() + Sync),
-    flush: &dyn Fn() -> Result<(), RecordError>,
-) -> Result<(), RecordError> {
-    let [dx, dy] = solution.spacing_m;
-    let (ny, nx) = solution.pressure_pa.dim();
-    let quantity = scene.figure.quantity;
-    let per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
-    let maps: Vec<(f64, ndarray::Array2<f64>)> =
-        crate::study::rough_sheet::depth_layers(scene, solution, on_row)
-            .map_err(rerun_error)?
-            .into_iter()
-            .map(|(z, values)| (z, values.mapv(|v| v * per_pa)))
-            .collect();
-    // Each layer's finite extremes: the colour range of all, and the layer of the largest.
-    let extremes: Vec<(f64, f64)> = maps
+/// The load of a solved contact and, with a load sweep, which step it is:
+/// `W = 1 N (step 7 of 10)`, or `W = 0.8 N (not one of the swept loads)`.
+pub(super) fn load_text(scene: &Scene, solution: &RoughSolution) -> String {
+    let load = format!("W = {} N", crate::scene::compact(solution.load_n));
+    let Some(sweep) = scene
+        .sweep
+        .as_ref()
+        .filter(|s| s.parameter == crate::scene::SweepParameter::Load)
+    else {
+        return load;
+    };
+    match sweep
+        .values
         .iter()
-        .map(|(_, m)| {
-            m.iter()
-                .copied()
-                .filter(|v| v.is_finite())
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                    (a.min(v), b.max(v))
-                })
-        })
-        .collect();
-    let (lo, hi) = extremes
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &(lo, hi)| {
-            (a.min(lo), b.max(hi))
-        });
-    let count = maps.len();
-    let largest = (0..count)
-        .max_by(|&i, &j| extremes[i].1.total_cmp(&extremes[j].1))
-        .unwrap_or(0);
-    let mut preview = None;
-    for (k, (z, values)) in maps.into_iter().enumerate() {
-        stream.set_time_sequence("depth", k as i64);
-        let depth_um = z * REFERENCE_LENGTH_M * 1e6;
-        let figure = Figure {
-            title: quantity.description().into(),
-            panels: vec![Panel {
-                subtitle: String::new(),
-                x: Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx),
-                z: Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny),
-                values,
-                traction: Vec::new(),
-                half_width: 0.0,
-                outlines: Vec::new(),
-                scale: None,
-            }],
-            value_label: scene.figure.stress_unit.label(quantity.symbol()),
-            x_label: "x (µm)".into(),
-            z_label: "y (µm)".into(),
-            vertical_is_depth: false,
-            traction_label: String::new(),
-            colormap: scene.figure.colormap,
-            levels: crate::render::Levels::Count(0),
-            mark: Mark::Max,
-            panel_width_px: 400,
-        };
-        let range = map_range(&figure, &figure.panels[0], Some((lo, hi)));
-        let shown = section::displayed(&figure, &figure.panels[0]);
-        if k == 0 {
-            log_map_static(stream, "depth", frame, &figure, &shown, Some(range))?;
-        }
-        let title = format!(
-            "layer {} of {count}: z = {} µm below the surface, under {}",
-            k + 1,
-            crate::scene::compact(depth_um),
-            load_text(solution)
-        );
-        log_map_step(
-            stream,
-            When::Step,
-            "depth",
-            frame,
-            &figure,
-            &shown,
-            range,
-            &title,
-        )?;
-        stream.log("series/depth_um", &rerun::Scalars::new([depth_um]))?;
-        flush()?;
-        if k == largest {
-            preview = Some((figure, shown, range, title));
-        }
+        .position(|&w| (w - solution.load_n).abs() <= 1e-9 * w.abs())
+    {
+        Some(k) => format!(
+            "{load} ({})",
+            super::step_text(k, sweep.values.len(), "").trim_end_matches(": ")
+        ),
+        None => format!("{load} (not one of the swept loads)"),
     }
-    if let Some((figure, shown, range, title)) = preview.filter(|_| on_load) {
-        stream.disable_timeline("depth");
-        stream.set_time_sequence("load", 0);
-        let title = format!(
-            "{title}: the layer of the largest {} (the timeline `depth` steps through depth)",
-            quantity.symbol()
-        );
-        log_map_step(
-            stream,
-            When::Step,
-            "depth",
-            frame,
-            &figure,
-            &shown,
-            range,
-            &title,
-        )?;
-        stream.disable_timeline("load");
-        flush()?;
-    }
-    Ok(())
-}
-
-/// The load of a solved contact: `W = 0.8 N`.
-fn load_text(solution: &RoughSolution) -> String {
-    format!("W = {} N", crate::scene::compact(solution.load_n))
 }
 
 /// The frames of the 2-D views that the layout shows.
@@ -708,6 +650,8 @@ struct Frames<'a> {
     depth: Option<&'a Frame>,
     /// The timeline the time panel opens on.
     timeline: Option<&'static str>,
+    /// How the pressure's colours are scaled (for the view's name).
+    contact_colours: String,
 }
 
 /// The layout: the map views (for a rough scene first the pressure against load and the
@@ -725,7 +669,7 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
     let mut main: Vec<Node> = Vec::new();
     if let Some(frame) = frames.contact {
         main.push(view2d(
-            "contact pressure (MPa) against load: timeline `load`".into(),
+            format!("pressure (MPa) against load, {}", frames.contact_colours),
             "contact",
             Some(frame),
         ));
@@ -733,7 +677,7 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
     if let Some(frame) = frames.depth {
         main.push(view2d(
             format!(
-                "{} through depth: timeline `depth`",
+                "{} through depth",
                 scene
                     .figure
                     .stress_unit
@@ -759,6 +703,13 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
         "topography",
     )));
     let mut plots = Vec::new();
+    if frames.depth.is_some() {
+        plots.push(view2d(
+            "largest σvM, Tresca against depth".into(),
+            "charts/depth_maxima",
+            None,
+        ));
+    }
     if frames.contact.is_some() {
         for (name, path) in [
             ("real area against W", "charts/contact_fraction"),

@@ -111,7 +111,7 @@ pub fn record(
     )?;
     flush()?;
     for (k, step) in sweep.steps.iter().enumerate() {
-        stream.set_time_sequence(TIMELINE, k as i64);
+        stream.set_time_sequence(TIMELINE, super::step_time(k));
         let text = sweep_spec.describe(k, scene);
         let max_k = step.body1.max_temperature_rise_k;
         let range = (0.0, super::round_up(1.03 * max_k).max(1e-9));
@@ -123,8 +123,8 @@ pub fn record(
         let surface = surface_figure(&sweep, step, text.clone());
         let section = section_figure(&sweep, step, text.clone());
         let title = format!(
-            "step {} of {steps}: {text}; body 1 takes {} % of the heat",
-            k + 1,
+            "{}; body 1 takes {} % of the heat",
+            super::step_text(k, steps, &text),
             section::short(100.0 * step.body1.share),
         );
         let section_title = format!(
@@ -159,7 +159,8 @@ pub fn record(
         stream.log(
             "log",
             &rerun::TextLog::new(format!(
-                "step {k}: {text}: max {} K at x = {}a, mean over the contact {} K, body 1's share {}",
+                "{}: max {} K at x = {}a, mean over the contact {} K, body 1's share {}",
+                super::step_text(k, steps, &text),
                 section::short(max_k),
                 section::short(x_over_a),
                 section::short(step.body1.mean_temperature_rise_k),
@@ -393,7 +394,7 @@ fn plan_layout(surface: &Frame, section: &Frame, blok: bool, sweeps: bool) -> La
     let main = Node::Vertical(
         vec![
             view2d(
-                "body 1's surface temperature rise (K): timeline `peclet`",
+                "body 1's surface temperature rise (K) against Pe",
                 "surface",
                 Some(surface),
             ),

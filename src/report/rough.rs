@@ -121,7 +121,7 @@ impl ContactReport {
             let [dx, dy] = surface.heights.spacing_m();
             writeln!(
                 out,
-                "surface: {} ({nx} x {ny} samples, {:.4} x {:.4} um each{})",
+                "surface: {} ({nx} x {ny} samples, {:.4} x {:.4} µm each{})",
                 surface.source,
                 um(dx),
                 um(dy),
@@ -150,7 +150,11 @@ impl ContactReport {
             self.iterations, self.residual, self.tolerance
         )?;
         writeln!(out)?;
-        writeln!(out, "  load                 {:.6e} N", self.load_n)?;
+        writeln!(
+            out,
+            "  load                 {} N",
+            crate::scene::compact(self.load_n)
+        )?;
         writeln!(
             out,
             "  mean pressure        {:.4} MPa (over the nominal area)",
@@ -171,8 +175,8 @@ impl ContactReport {
             "  contact spots        {} (largest {} cells)",
             self.spots, self.largest_spot_cells
         )?;
-        writeln!(out, "  approach             {:.5} um", um(self.approach_m))?;
-        writeln!(out, "  mean gap             {:.5} um", um(self.mean_gap_m))?;
+        writeln!(out, "  approach             {:.5} µm", um(self.approach_m))?;
+        writeln!(out, "  mean gap             {:.5} µm", um(self.mean_gap_m))?;
         if let Some(h) = self.hardness_pa {
             writeln!(
                 out,
@@ -187,19 +191,19 @@ impl ContactReport {
         }
         writeln!(
             out,
-            "  von Mises max        {:.4} MPa at depth {:.4} um",
+            "  von Mises max        {:.4} MPa at depth {:.4} µm",
             mpa(self.von_mises_max_pa),
             um(self.von_mises_max_depth_m)
         )?;
         writeln!(
             out,
-            "  max shear (Tresca)   {:.4} MPa at depth {:.4} um",
+            "  max shear (Tresca)   {:.4} MPa at depth {:.4} µm",
             mpa(self.max_shear_max_pa),
             um(self.max_shear_max_depth_m)
         )?;
         writeln!(
             out,
-            "  (maxima at cell centres of DC-FFT layers, one cell and then an eighth of a cell apart, searched to {:.3} um{})",
+            "  (maxima at cell centres of DC-FFT layers, one cell and then an eighth of a cell apart, searched to {:.3} µm{})",
             um(self.search_depth_m),
             if self.periodic {
                 "; the tractions repeat with the surface"

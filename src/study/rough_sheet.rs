@@ -11,6 +11,7 @@ use super::surface::SurfaceStudyError;
 use crate::contact::rough::RoughSolution;
 use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::scene::Scene;
+use crate::stress::Quantity;
 use crate::surface::generate::Form;
 use crate::surface::stats::Characterisation;
 
@@ -131,41 +132,118 @@ pub fn sheet_fields(
     })
 }
 
+/// Planes of a recording's depth timeline below the surface (the first at `z = 0`).
+const DEPTH_LAYERS: usize = 24;
+
+/// Each gap between depth layers is this many times the one above it: fine near the surface,
+/// where the spots' own fields change fastest, coarse deep ([`depth_planes`]).
+const DEPTH_GROWTH: f64 = 1.12;
+
+/// One plane parallel to the surface of a recording's depth timeline.
+#[derive(Clone, Debug)]
+pub struct DepthLayer {
+    /// Depth in the reference length (µm).
+    pub z: f64,
+    /// The scene's quantity, Pa, `[y, x]` over the cell centres.
+    pub values_pa: Array2<f64>,
+    /// The largest von Mises stress in the plane, Pa.
+    pub max_von_mises_pa: f64,
+    /// The largest Tresca shear stress `(σ1 − σ3)/2` in the plane, Pa.
+    pub max_tresca_pa: f64,
+}
+
+/// The depths of [`DEPTH_LAYERS`] planes from the surface to `deepest` in a geometric
+/// progression (each gap [`DEPTH_GROWTH`] times the one above), with `exact` (the depth of the
+/// reported maximum) inserted unless a plane already lies there; in increasing order.
+fn depth_planes(deepest: f64, exact: f64) -> Vec<f64> {
+    let n = DEPTH_LAYERS as i32;
+    let first = deepest * (DEPTH_GROWTH - 1.0) / (DEPTH_GROWTH.powi(n) - 1.0);
+    let mut depths: Vec<f64> = (0..=n)
+        .map(|k| first * (DEPTH_GROWTH.powi(k) - 1.0) / (DEPTH_GROWTH - 1.0))
+        .collect();
+    depths[DEPTH_LAYERS] = deepest;
+    let near = |z: f64| {
+        depths
+            .iter()
+            .any(|&d| (d - z).abs() <= 1e-12 * deepest.max(1.0))
+    };
+    if exact.is_finite() && exact >= 0.0 && !near(exact) {
+        depths.push(exact);
+        depths.sort_by(f64::total_cmp);
+    }
+    depths
+}
+
 /// The scene's quantity in planes parallel to the surface, from the surface down to the
-/// search depth ([`search_depth_m`]), for a recording's depth timeline: `(z, values)` with `z`
-/// in the reference length (µm) and the values in Pa, `[y, x]` over the cell centres; at most
-/// 25 planes, evenly spaced and at least a cell apart.
+/// search depth ([`search_depth_m`]) at the depths of [`depth_planes`], for a recording's
+/// depth timeline, with each plane's largest von Mises and Tresca stresses; `exact_z` (in the
+/// reference length) is the depth of the report's maximum
+/// ([`super::rough::findings`]`.maxima.von_mises.z_over_a`), included exactly so that the
+/// layer there shows the report's value.
 pub fn depth_layers(
     scene: &Scene,
     solution: &RoughSolution,
+    exact_z: f64,
     on_row: &(dyn Fn() + Sync),
-) -> Result<Vec<(f64, Array2<f64>)>, RoughSheetError> {
+) -> Result<Vec<DepthLayer>, RoughSheetError> {
     let stresses = rough::stress_solution(solution, scene.contact.friction, scene.contact.poisson)
         .map_err(|e| FieldError::Numerical(e.to_string()))?;
     let [dx, dy] = solution.spacing_m;
     let (ny, nx) = solution.pressure_pa.dim();
     let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
-    let cell = ax.min(ay);
     let deepest = search_depth_m(solution) / REFERENCE_LENGTH_M;
-    let layers = ((deepest / cell).ceil() as usize).clamp(1, 24);
-    let step = (deepest / layers as f64).max(cell);
-    let quantity = scene.figure.quantity;
-    let mut maps = Vec::with_capacity(layers + 1);
-    for k in 0..=layers {
-        let z = k as f64 * step;
+    let quantities = [
+        scene.figure.quantity,
+        Quantity::VonMises,
+        Quantity::MaxShear,
+    ];
+    let largest = |values: &Array2<f64>| {
+        values
+            .iter()
+            .copied()
+            .filter(|v| v.is_finite())
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let mut layers = Vec::with_capacity(DEPTH_LAYERS + 2);
+    for z in depth_planes(deepest, exact_z) {
         let plane = Plane {
             section: Section::Xy { z },
             u: Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx),
             v: Axis::new(0.5 * ay, (ny as f64 - 0.5) * ay, ny),
         };
-        let values = field::evaluate(&stresses, &plane, &[quantity], on_row)?;
-        maps.push((
-            z,
-            values
+        let field = field::evaluate(&stresses, &plane, &quantities, on_row)?;
+        let of = |k: usize| {
+            field
                 .values
-                .index_axis(ndarray::Axis(1), 0)
-                .mapv(|v| v * 1e6),
-        ));
+                .index_axis(ndarray::Axis(1), k)
+                .mapv(|v| v * 1e6)
+        };
+        layers.push(DepthLayer {
+            z,
+            values_pa: of(0),
+            max_von_mises_pa: largest(&of(1)),
+            max_tresca_pa: largest(&of(2)),
+        });
     }
-    Ok(maps)
+    Ok(layers)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn depth_planes_grow_geometrically_and_hold_the_exact_depth() {
+        let depths = depth_planes(10.0, 0.375);
+        assert_eq!(depths.len(), DEPTH_LAYERS + 2);
+        assert_eq!(depths[0], 0.0);
+        assert_eq!(*depths.last().expect("planes"), 10.0);
+        assert!(depths.contains(&0.375));
+        assert!(depths.windows(2).all(|w| w[1] > w[0]), "{depths:?}");
+        // Fine near the surface, coarse deep.
+        assert!(depths[1] < 0.1 && depths[DEPTH_LAYERS + 1] - depths[DEPTH_LAYERS] > 1.0);
+        // A depth already on a plane is not repeated.
+        assert_eq!(depth_planes(10.0, 0.0).len(), DEPTH_LAYERS + 1);
+        assert_eq!(depth_planes(10.0, 10.0).len(), DEPTH_LAYERS + 1);
+    }
 }

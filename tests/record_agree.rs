@@ -1,0 +1,257 @@
+//! Recordings that agree with themselves and with the reports (issue 23): one step numbering in
+//! titles, logs and the time panel; the depth of the report's maximum among a rough
+//! recording's layers, with the report's value; colour ranges not set by a single cell.
+
+use rerun::log::Chunk;
+use stressfield::record;
+use stressfield::scene::Scene;
+
+use super::record::{record_in_memory, scene, Contents, FRICTION_SWEEP, ROUGH_SWEEP};
+
+/// Per row at `path` on `timeline`, its time and the first text of `component` (a title row's
+/// title, a log line).
+fn first_texts(
+    contents: &Contents,
+    path: &str,
+    timeline: &'static str,
+    component: rerun::ComponentIdentifier,
+) -> Vec<(i64, String)> {
+    let name = rerun::TimelineName::from(timeline);
+    let mut rows = Vec::new();
+    for chunk in contents.chunks.get(path).into_iter().flatten() {
+        let Some(times) = chunk.timelines().get(&name) else {
+            continue;
+        };
+        let texts = chunk.iter_component::<rerun::components::Text>(component);
+        for (&time, batch) in times.times_raw().iter().zip(texts) {
+            if let Some(text) = batch.iter().next() {
+                rows.push((time, text.as_str().to_string()));
+            }
+        }
+    }
+    rows.sort_by_key(|(time, _)| *time);
+    rows
+}
+
+fn titles(contents: &Contents, path: &str, timeline: &'static str) -> Vec<(i64, String)> {
+    first_texts(
+        contents,
+        path,
+        timeline,
+        rerun::Points2D::descriptor_labels().component,
+    )
+}
+
+fn log_lines(contents: &Contents, timeline: &'static str) -> Vec<(i64, String)> {
+    first_texts(
+        contents,
+        "/log",
+        timeline,
+        rerun::TextLog::descriptor_text().component,
+    )
+}
+
+/// The number after `prefix` in `text`: `max σvM = 1574 MPa` -> 1574.
+fn number_after(text: &str, prefix: &str) -> f64 {
+    text.split_once(prefix)
+        .and_then(|(_, rest)| rest.split([' ', ',', ':']).next())
+        .and_then(|n| n.replace('−', "-").parse().ok())
+        .unwrap_or_else(|| panic!("no number after {prefix:?} in {text:?}"))
+}
+
+#[test]
+fn titles_logs_and_the_time_panel_count_steps_alike_and_name_the_swept_value() {
+    let scene = scene(FRICTION_SWEEP);
+    let sweep = scene.sweep.as_ref().expect("a sweep");
+    let (_, contents) = record_in_memory(&scene);
+    // The time panel: steps 1 to 6 on the timeline `friction`.
+    let times: Vec<i64> = contents
+        .scalars("/series/friction", "friction")
+        .iter()
+        .map(|(t, _)| *t)
+        .collect();
+    assert_eq!(times, (1..=6).collect::<Vec<i64>>());
+    let expect = |time: i64| {
+        format!(
+            "step {time} of 6: {}",
+            sweep.describe(time as usize - 1, &scene)
+        )
+    };
+    let lines = log_lines(&contents, "friction");
+    assert_eq!(lines.len(), 6, "{lines:?}");
+    for (time, line) in &lines {
+        assert_eq!(line, &expect(*time));
+    }
+    let titles = titles(&contents, "/sections/0/title", "friction");
+    assert_eq!(titles.len(), 6, "{titles:?}");
+    for (time, title) in &titles {
+        assert!(title.starts_with(&expect(*time)), "{time}: {title}");
+    }
+    assert_no_backticks(&contents);
+    // No wall-clock timeline beside the steps'.
+    let log_time = rerun::TimelineName::from("log_time");
+    assert!(contents
+        .chunks
+        .values()
+        .flatten()
+        .all(|chunk: &Chunk| !chunk.timelines().contains_key(&log_time)));
+}
+
+#[test]
+fn a_rough_recording_has_a_layer_at_the_reports_maximum_with_its_value() {
+    let scene = scene(ROUGH_SWEEP);
+    let solution = stressfield::study::rough::solve(&scene, &mut |_, _| {}).expect("solved");
+    let findings = stressfield::study::rough::findings(&scene, &solution).expect("findings");
+    let maximum = findings.maxima.von_mises;
+    let (_, contents) = record_in_memory(&scene);
+    let titles = titles(&contents, "/depth/title", "depth");
+    let layers = titles.len();
+    assert!(layers > 20, "{titles:?}");
+    // Layers numbered from 1, closer near the surface than deep.
+    let depths: Vec<f64> = titles
+        .iter()
+        .map(|(_, t)| number_after(t, "z = "))
+        .collect();
+    assert_eq!(titles[0].0, 1);
+    assert!(titles[0]
+        .1
+        .starts_with(&format!("layer 1 of {layers}: z = 0 µm")));
+    assert!(depths[2] - depths[1] < 0.5 * (depths[layers - 1] - depths[layers - 2]));
+    // The report's depth, exactly one of the layers, marked, and its largest σvM the report's.
+    let at: Vec<&(i64, String)> = titles
+        .iter()
+        .filter(|(_, t)| t.ends_with(": the depth of the report's largest σvM"))
+        .collect();
+    assert_eq!(at.len(), 1, "{titles:?}");
+    let (time, title) = at[0];
+    let z = number_after(title, "z = ");
+    assert!(
+        (z - maximum.z_over_a).abs() <= 1e-3 * maximum.z_over_a,
+        "{title} vs the report's {}",
+        maximum.z_over_a
+    );
+    let labels = first_texts(
+        &contents,
+        "/depth/maximum/label",
+        "depth",
+        rerun::Points2D::descriptor_labels().component,
+    );
+    let (_, label) = labels
+        .iter()
+        .find(|(t, _)| t == time)
+        .expect("a maximum at the layer");
+    let shown = number_after(label, "max σvM = ");
+    assert!(
+        (shown - maximum.value_over_p0).abs() <= 1e-3 * maximum.value_over_p0,
+        "{label} vs the report's {} MPa",
+        maximum.value_over_p0
+    );
+    // No layer shows much more than the report, whose search is refined to an eighth of a
+    // cell (here 0.125 µm: a layer 0.006 µm deeper shows 0.1 % more).
+    for (_, label) in &labels {
+        assert!(
+            number_after(label, "max σvM = ") <= shown * 1.005,
+            "{label}"
+        );
+    }
+    assert_no_backticks(&contents);
+    // The layers are at the scene's load, one of the sweep's, and say which.
+    assert!(title.contains("under W = 0.2 N (step 2 of 3)"), "{title}");
+    // The chart of the largest stresses against depth follows the layers.
+    assert_eq!(contents.rows_on("/charts/depth_maxima", "depth"), layers);
+    assert!(contents
+        .view_names()
+        .iter()
+        .any(|v| v == "largest σvM, Tresca against depth"));
+}
+
+#[test]
+fn a_rough_sweeps_colours_are_not_set_by_one_cell_and_a_capped_pressure_is_flagged() {
+    let scene = Scene::load(std::path::Path::new("scenes/record_rough_load_sweep.toml"))
+        .expect("the shipped scene");
+    let (_, contents) = record_in_memory(&scene);
+    let ticks: Vec<f64> = contents
+        .labels("/contact/colorbar/labels")
+        .iter()
+        .filter_map(|t| t.replace('−', "-").parse().ok())
+        .collect();
+    let top_tick = ticks.iter().copied().fold(0.0, f64::max);
+    let sweep_titles = titles(&contents, "/contact/title", record::timeline(&scene));
+    let largest = contents
+        .scalars("/series/max_pressure_mpa", "load")
+        .iter()
+        .map(|(_, p)| *p)
+        .fold(0.0, f64::max);
+    assert!(
+        top_tick < 0.8 * largest,
+        "colour bar to {top_tick} MPa, the largest pressure {largest} MPa"
+    );
+    // The steps whose maximum is beyond the colours say so; the maximum is still labelled.
+    assert!(
+        sweep_titles
+            .iter()
+            .any(|(_, t)| t.contains("in the top colour")),
+        "{sweep_titles:?}"
+    );
+    let labels = contents.labels("/contact/maximum/label");
+    assert!(labels
+        .iter()
+        .any(|l| (number_after(l, "max p = ") - largest).abs() < 1e-3 * largest));
+    assert!(contents
+        .view_names()
+        .iter()
+        .any(|v| v.contains("colours to the 99.5 % quantile of all loads")));
+    // With a hardness the pressure is capped, and the steps at the cap say so.
+    let capped = scene_with_hardness("100 HV");
+    let (_, contents) = record_in_memory(&capped);
+    let capped_titles = titles(&contents, "/contact/title", "load");
+    assert!(
+        capped_titles
+            .iter()
+            .any(|(_, t)| t.contains("cells at the hardness ")),
+        "{capped_titles:?}"
+    );
+}
+
+/// The small rough sweep with a hardness.
+fn scene_with_hardness(hardness: &str) -> Scene {
+    scene(&ROUGH_SWEEP.replace(
+        "periodic = true\n",
+        &format!("periodic = true\nhardness = \"{hardness}\"\n"),
+    ))
+}
+
+#[test]
+fn a_rough_sweeps_single_load_views_say_which_load_they_show() {
+    let off_sweep = scene(&ROUGH_SWEEP.replace("load = \"0.2 N\"", "load = \"0.3 N\""));
+    let (_, contents) = record_in_memory(&off_sweep);
+    let depth = titles(&contents, "/depth/title", "depth");
+    assert!(
+        depth
+            .iter()
+            .all(|(_, t)| t.contains("under W = 0.3 N (not one of the swept loads)")),
+        "{depth:?}"
+    );
+    // The shipped sweep shows one of its loads.
+    let shipped = Scene::load(std::path::Path::new("scenes/record_rough_load_sweep.toml"))
+        .expect("the shipped scene");
+    let sweep = shipped.sweep.as_ref().expect("a sweep");
+    let load = stressfield::study::rough::problem(&shipped).map(|p| p.control);
+    assert!(
+        matches!(load, Some(stressfield::contact::rough::Control::Load { newtons })
+            if sweep.values.contains(&newtons)),
+        "{load:?}"
+    );
+}
+
+/// Tab names and title rows are plain text: a backtick would be shown as one.
+fn assert_no_backticks(contents: &Contents) {
+    for name in contents.view_names() {
+        assert!(!name.contains('`'), "view {name}");
+    }
+    for path in contents.chunks.keys().filter(|p| p.ends_with("/title")) {
+        for title in contents.labels(path) {
+            assert!(!title.contains('`'), "{path}: {title}");
+        }
+    }
+}

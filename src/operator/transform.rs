@@ -72,12 +72,23 @@ pub struct Fft2Work {
 impl RealFft2 {
     /// Plans the transforms of a real `[ny, nx]` grid (both at least 1).
     pub fn new(shape: [usize; 2]) -> Self {
+        Self::with_blocks(shape, rayon::current_num_threads())
+    }
+
+    /// As [`RealFft2::new`] with every transform on the calling thread: for callers that run
+    /// many transforms in parallel themselves (a rayon task that splits would let its thread
+    /// start another task, and its memory, while it waits).
+    pub fn sequential(shape: [usize; 2]) -> Self {
+        Self::with_blocks(shape, 1)
+    }
+
+    fn with_blocks(shape: [usize; 2], blocks: usize) -> Self {
         let [ny, nx] = shape;
         let mut real_planner = RealFftPlanner::<f64>::new();
         let mut planner = FftPlanner::<f64>::new();
         Self {
             shape,
-            blocks: rayon::current_num_threads().max(1),
+            blocks: blocks.max(1),
             row_forward: real_planner.plan_fft_forward(nx.max(1)),
             row_inverse: real_planner.plan_fft_inverse(nx.max(1)),
             column_forward: planner.plan_fft_forward(ny.max(1)),

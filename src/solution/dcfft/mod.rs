@@ -221,10 +221,14 @@ impl DcFft {
     ) -> Result<(), DcFftError> {
         let [ny, nx] = self.shape;
         assert_eq!(out.shape(), [6, ny, nx], "layer output must be [6, ny, nx]");
+        // Each kind of layer frees the other's memory (the search runs them in depth order).
         if let Some(layers) = self.spectral.as_ref().filter(|s| s.takes(z)) {
+            workspace.quadrant = Vec::new();
+            workspace.component = None;
             let work = workspace.spectral.get_or_insert_with(|| layers.work());
             return layers.layer_into(z, work, out);
         }
+        workspace.spectral = None;
         self.influence_into(z, &mut workspace.quadrant);
         let component = workspace
             .component

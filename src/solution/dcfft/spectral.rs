@@ -80,7 +80,8 @@ pub struct SpectralWork {
 impl SpectralLayers {
     /// Transforms the tractions of `grid`, one period.
     pub fn new(grid: &TractionGrid, poisson: f64) -> Result<Self, DcFftError> {
-        let plan = RealFft2::new(grid.shape);
+        // Layers run in parallel over depths, each on one thread.
+        let plan = RealFft2::sequential(grid.shape);
         let mean = grid.mean_tractions();
         let mut work = plan.work();
         let mut loads = Vec::new();
@@ -216,7 +217,7 @@ impl SpectralLayers {
 fn alias_range(s: i64, n: usize, m_max: i64) -> std::ops::RangeInclusive<i64> {
     if s == 0 {
         0..=0
-    } else if n % 2 == 0 && s == (n / 2) as i64 {
+    } else if n.is_multiple_of(2) && s == (n / 2) as i64 {
         -m_max - 1..=m_max
     } else {
         -m_max..=m_max

@@ -4,7 +4,7 @@
 //!
 //! The pipeline reads off the modules: [`crate::scene`] (what the user wrote) -> `study` (what
 //! will be computed) -> [`crate::field`] (evaluated on grids) -> sinks ([`crate::figure`] and
-//! [`crate::render`], `crate::record`, [`crate::report`], [`crate::probe`]). A new contact
+//! [`crate::render`], `crate::record`, [`crate::report`], with the probe's CSV). A new contact
 //! kind adds its arm to [`centred_solution`] (its tractions, or the solver that finds them) and,
 //! if it is drawn on its own grid, to [`plane`].
 //!

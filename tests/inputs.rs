@@ -105,7 +105,7 @@ fn surface_flags_take_exponents() {
         "1e3HV",
     ]);
     assert!(
-        !bad.status.success() && stderr(&bad).contains("--e-star: unknown unit `HV`"),
+        !bad.status.success() && stderr(&bad).contains("a hardness is not a modulus"),
         "{}",
         stderr(&bad)
     );
@@ -130,4 +130,23 @@ fn a_missing_file_says_its_cause_once() {
     let text = stderr(&output);
     assert!(!output.status.success());
     assert_eq!(text.matches("os error 2").count(), 1, "{text}");
+}
+
+/// `hertz` keeps the hardness scale the scene wrote (class 19): "700 HV", never "700 HB".
+#[test]
+fn hertz_reports_the_hardness_on_the_scale_written() {
+    let dir = tempfile::tempdir().expect("dir");
+    let scene = dir.path().join("hv.toml");
+    std::fs::write(
+        &scene,
+        "format = 1\n[contact]\nkind = \"point\"\nload = \"300 N\"\nhardness = \"700 HV\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6 mm\"\nmaterial = \"steel\"\n",
+    )
+    .expect("scene");
+    let output = run(&["hertz", scene.to_str().expect("utf8")]);
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        text.contains("from 700 HV:") && !text.contains("HB"),
+        "{text}"
+    );
 }

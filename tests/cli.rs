@@ -19,7 +19,7 @@ pub(crate) fn run(args: &[&str]) -> Output {
     stressfield().args(args).output().expect("the binary runs")
 }
 
-fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
+pub(crate) fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
     let mut child = stressfield()
         .args(args)
         .stdin(Stdio::piped())

@@ -150,3 +150,39 @@ fn hertz_reports_the_hardness_on_the_scale_written() {
         "{text}"
     );
 }
+
+/// The README's probe example prints what the README shows (class 20).
+#[test]
+fn the_readmes_probe_example_prints_what_it_shows() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
+    let command = "printf 'x,y,z\\n0,0,0.786\\n-1,0,0\\n' | stressfield probe --friction 0.3 --points -\n```\n```\n";
+    let at = readme.find(command).expect("the example is in the README") + command.len();
+    let shown = &readme[at..at + readme[at..].find("```").expect("block end")];
+    let output = crate::cli::run_with_stdin(
+        &["probe", "--friction", "0.3", "--points", "-"],
+        "x,y,z\n0,0,0.786\n-1,0,0\n",
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(String::from_utf8_lossy(&output.stdout), shown);
+}
+
+/// With E*, `surface` prints the Greenwood-Williamson values the README promises (class 20).
+#[test]
+fn surface_prints_the_greenwood_williamson_values() {
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/surface_worn_homework.toml"
+    );
+    let text = run(&["surface", scene]);
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        text.contains("Greenwood-Williamson") && text.contains("(zs+0σs)"),
+        "{text}"
+    );
+    let json = run(&["surface", scene, "--json"]);
+    let json: serde_json::Value = serde_json::from_slice(&json.stdout).expect("json");
+    let rows = json["greenwood_williamson"].as_array().expect("rows");
+    assert_eq!(rows.len(), 4);
+    assert!(rows[3]["pressure_pa"].as_f64().expect("pressure") > 0.0);
+}

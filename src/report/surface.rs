@@ -9,7 +9,10 @@
 //! `plane`, `rows`, `columns`, `spacing_m`, `str_is_upper_bound`, and, when E* (and a
 //! hardness) are known, `e_star_pa`, `hardness_pa`, `plasticity_index`, and the homework's
 //! highest asperity (`asperity_height_m`, `asperity_radius_m`, `asperity_p0_pa`,
-//! `asperity_contact_radius_m`, `asperity_load_n`). Unknown values are `null`.
+//! `asperity_contact_radius_m`, `asperity_load_n`), and `greenwood_williamson`: the GW model of
+//! the measured summits at separations of 3, 2, 1 and 0 summit height deviations above the
+//! mean summit height (`separation_m`, `contacts_per_m2`, `area_fraction`, `pressure_pa`).
+//! Unknown values are `null`.
 
 use std::f64::consts::PI;
 use std::fmt::Write as _;
@@ -17,7 +20,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use crate::render::table::Row;
-use crate::surface::gw::{plasticity_index, plasticity_reading};
+use crate::surface::gw::{plasticity_index, plasticity_reading, GreenwoodWilliamson, GwPoint};
 use crate::surface::stats::Characterisation;
 
 /// The Hertz sphere-on-flat contact of the highest asperity at an approach of a fifth of its
@@ -97,7 +100,11 @@ pub struct SurfaceReport {
     pub asperity_p0_pa: Option<f64>,
     pub asperity_contact_radius_m: Option<f64>,
     pub asperity_load_n: Option<f64>,
+    pub greenwood_williamson: Option<Vec<GwPoint>>,
 }
+
+/// How many summit height deviations above the mean summit height the GW rows are given at.
+const GW_SEPARATIONS_IN_SIGMA: [f64; 4] = [3.0, 2.0, 1.0, 0.0];
 
 impl SurfaceReport {
     pub fn new(c: &Characterisation, e_star_pa: Option<f64>, hardness_pa: Option<f64>) -> Self {
@@ -107,6 +114,21 @@ impl SurfaceReport {
             .zip(e_star_pa)
             .map(|(radius, e)| AsperityContact::new(c.asperity.height_m, radius, e));
         let (q0, q1) = c.spectra.band_q;
+        let greenwood_williamson = e_star_pa
+            .filter(|_| c.summits.count > 0 && c.summits.height_std_m > 0.0)
+            .map(|e_star_pa| {
+                let model = GreenwoodWilliamson {
+                    density_per_m2: c.summits.density_per_m2,
+                    radius_m: c.summits.radius_m,
+                    height_std_m: c.summits.height_std_m,
+                    mean_height_m: c.summits.mean_height_m,
+                    e_star_pa,
+                };
+                GW_SEPARATIONS_IN_SIGMA
+                    .iter()
+                    .map(|k| model.at(model.mean_height_m + k * model.height_std_m))
+                    .collect()
+            });
         Self {
             Sa: c.height.sa,
             Sq: c.height.sq,
@@ -155,6 +177,7 @@ impl SurfaceReport {
             asperity_p0_pa: asperity.map(|a| a.p0_pa),
             asperity_contact_radius_m: asperity.map(|a| a.contact_radius_m),
             asperity_load_n: asperity.map(|a| a.load_n),
+            greenwood_williamson,
         }
     }
 
@@ -415,6 +438,27 @@ impl SurfaceReport {
                 "plasticity index psi = (E*/H) sqrt(sigma_s/beta) = {psi:.3}: {}",
                 plasticity_reading(psi)
             )?;
+        }
+        if let Some(points) = &self.greenwood_williamson {
+            writeln!(
+                out,
+                "Greenwood-Williamson (measured summits, E* = {:.1} GPa)",
+                self.e_star_pa.unwrap_or(f64::NAN) * 1e-9
+            )?;
+            writeln!(
+                out,
+                "  separation (um)   contacts (1/mm²)   real area (%)   mean pressure (MPa)"
+            )?;
+            for (point, k) in points.iter().zip(GW_SEPARATIONS_IN_SIGMA) {
+                writeln!(
+                    out,
+                    "  {:>8.4} (zs+{k:.0}σs) {:>12.3}   {:>13}   {:>19}",
+                    um(point.separation_m),
+                    point.contacts_per_m2 * 1e-6,
+                    crate::io::text::approx(100.0 * point.area_fraction),
+                    crate::io::text::approx(point.pressure_pa * 1e-6)
+                )?;
+            }
         }
         let [row, column] = c.asperity.at;
         writeln!(

@@ -186,3 +186,36 @@ fn surface_prints_the_greenwood_williamson_values() {
     assert_eq!(rows.len(), 4);
     assert!(rows[3]["pressure_pa"].as_f64().expect("pressure") > 0.0);
 }
+
+/// Generator defaults fit the samples given (class 15): `samples = 12` without roll-off or
+/// cutoff is accepted; a conflict names the key the user gave and the default it met.
+#[test]
+fn generator_defaults_fit_the_samples_given() {
+    let dir = tempfile::tempdir().expect("dir");
+    let scene = |extra: &str| {
+        let path = dir.path().join("gen.toml");
+        std::fs::write(
+            &path,
+            format!("format = 1\n[contact]\nkind = \"surface\"\n[surface.generate]\nsamples = 12\nspacing = \"1 um\"\nhurst = 0.8\nrms_height = \"0.1 um\"\n{extra}"),
+        )
+        .expect("scene");
+        run(&["check", path.to_str().expect("utf8")])
+    };
+    for extra in ["", "cutoff = \"5 um\"\n"] {
+        let output = scene(extra);
+        assert!(output.status.success(), "{extra}: {}", stderr(&output));
+    }
+    let short = scene("rolloff = \"1 um\"\n");
+    assert!(
+        stderr(&short).contains("key `surface.generate.rolloff`")
+            && stderr(&short).contains("two sample spacings"),
+        "{}",
+        stderr(&short)
+    );
+    let long = scene("cutoff = \"20 um\"\n");
+    assert!(
+        stderr(&long).contains("key `surface.generate.cutoff`"),
+        "{}",
+        stderr(&long)
+    );
+}

@@ -219,3 +219,57 @@ fn generator_defaults_fit_the_samples_given() {
         stderr(&long)
     );
 }
+
+/// Statistics that mean nothing are `null` with a reason (class 11): Rsk and Rku of rows flat
+/// to rounding, a Hurst exponent outside (0, 1], the Hertz asperity of a tip too flat for the
+/// map.
+#[test]
+fn meaningless_statistics_are_null_with_a_reason() {
+    let dir = tempfile::tempdir().expect("dir");
+    let surface = |name: &str, height: &dyn Fn(usize, usize) -> f64| {
+        let path = dir.path().join(name);
+        let text: String = (0..32)
+            .map(|j| {
+                let row: Vec<String> = (0..32).map(|i| format!("{:.9}", height(i, j))).collect();
+                row.join(" ") + "\n"
+            })
+            .collect();
+        std::fs::write(&path, text).expect("surface");
+        let args = [
+            "surface",
+            path.to_str().expect("utf8"),
+            "--spacing",
+            "0.5um",
+        ];
+        let flags = ["--height-unit", "um", "--e-star", "115GPa"];
+        let text = run(&[&args[..], &flags[..]].concat());
+        let json = run(&[&args[..], &flags[..], &["--json"]].concat());
+        assert!(json.status.success(), "{}", stderr(&json));
+        let json: serde_json::Value = serde_json::from_slice(&json.stdout).expect("json");
+        (String::from_utf8_lossy(&text.stdout).into_owned(), json)
+    };
+    let (text, json) = surface("rows.asc", &|_, j| {
+        0.1 * (j % 5) as f64 + 0.01 * (j % 3) as f64
+    });
+    assert!(json["Rsk"].is_null() && json["Rku"].is_null(), "{json}");
+    assert!(
+        json["hurst"].is_null() && json["fractal_dimension"].is_null(),
+        "{json}"
+    );
+    assert!(
+        text.contains("n/a: Rsk, Rku: 32 of 32 rows are flat"),
+        "{text}"
+    );
+    assert!(text.contains("n/a: hurst, fractal_dimension"), "{text}");
+    // The highest sample 1e-5 um above its neighbours along x: a tip radius of about 1 cm.
+    let (text, json) = surface("tip.asc", &|i, j| match (i, j) {
+        (16, 16) => 1.00001,
+        (15 | 17, 16) => 1.0,
+        _ => 0.1 * ((7 * i + 3 * j) % 5) as f64,
+    });
+    assert!(
+        json["asperity_radius_m"].is_null() && json["asperity_load_n"].is_null(),
+        "{json}"
+    );
+    assert!(text.contains("n/a: asperity"), "{text}");
+}

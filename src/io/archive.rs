@@ -38,6 +38,20 @@ pub enum ArchiveError {
 /// A member the zip reader cannot open for its compression or encryption.
 const UNSUPPORTED: &str = "uses a compression or encryption stressfield does not read: export the file again, unencrypted, with Deflate";
 
+/// The name of a zip compression method, by its number in the zip specification (APPNOTE
+/// 4.4.5): the crate built without them shows bzip2 and LZMA as numbers.
+fn method_name(method: zip::CompressionMethod) -> String {
+    #[allow(deprecated)]
+    match method.to_u16() {
+        12 => "bzip2".into(),
+        14 => "LZMA".into(),
+        93 => "Zstandard".into(),
+        95 => "XZ".into(),
+        99 => "AES encryption".into(),
+        code => format!("method {code}"),
+    }
+}
+
 /// How many bytes a member may unpack to.
 #[derive(Clone, Copy, Debug)]
 pub enum Limit<'a> {
@@ -91,7 +105,7 @@ impl<R: Read + Seek> Archive<R> {
         match raw {
             Some((true, _)) => return Err(fail("is encrypted, which stressfield does not read: export the file again without a password".to_string())),
             Some((false, method)) if !matches!(method, zip::CompressionMethod::Stored | zip::CompressionMethod::Deflated) => {
-                return Err(fail(format!("is compressed with {method}, which stressfield does not unpack (it reads members stored or compressed with Deflate): export the file again with Deflate")))
+                return Err(fail(format!("is compressed with {}, which stressfield does not unpack (it reads members stored or compressed with Deflate): export the file again with Deflate", method_name(method))))
             }
             _ => {}
         }
@@ -351,7 +365,7 @@ mod tests {
         };
         let bzip2 = patch(Some(12), false);
         assert!(
-            bzip2.contains("compressed with") && bzip2.contains("Deflate"),
+            bzip2.contains("compressed with bzip2") && bzip2.contains("Deflate"),
             "{bzip2}"
         );
         let encrypted = patch(None, true);

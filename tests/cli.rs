@@ -19,7 +19,7 @@ pub(crate) fn run(args: &[&str]) -> Output {
     stressfield().args(args).output().expect("the binary runs")
 }
 
-fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
+pub(crate) fn run_with_stdin(args: &[&str], stdin: &str) -> Output {
     let mut child = stressfield()
         .args(args)
         .stdin(Stdio::piped())
@@ -305,7 +305,7 @@ const BAD_SCENES: &[(&str, &str, &str)] = &[
     ("format = 1\n[contact]\nkind = \"line\"\nfriction = -0.1\n", "key `contact.friction`", "0..=10"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"-40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "between 1e-12 N/m and 1e12 N/m"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"nan kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "does not start with a number"),
-    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "unknown unit `kN`"),
+    ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.load`", "per unit length"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"0 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.radius`", "between 1e-9 m and 1e6 m"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmodulus = \"0 GPa\"\npoisson = 0.3\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n", "key `contact.body1.modulus`", "between 1000 Pa and 1e13 Pa"),
     ("format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.body1]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"-5 mm\"\nmaterial = \"steel\"\n", "key `contact.body2.radius`", "concave"),

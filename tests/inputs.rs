@@ -105,7 +105,7 @@ fn surface_flags_take_exponents() {
         "1e3HV",
     ]);
     assert!(
-        !bad.status.success() && stderr(&bad).contains("--e-star: unknown unit `HV`"),
+        !bad.status.success() && stderr(&bad).contains("a hardness is not a modulus"),
         "{}",
         stderr(&bad)
     );
@@ -130,4 +130,146 @@ fn a_missing_file_says_its_cause_once() {
     let text = stderr(&output);
     assert!(!output.status.success());
     assert_eq!(text.matches("os error 2").count(), 1, "{text}");
+}
+
+/// `hertz` keeps the hardness scale the scene wrote (class 19): "700 HV", never "700 HB".
+#[test]
+fn hertz_reports_the_hardness_on_the_scale_written() {
+    let dir = tempfile::tempdir().expect("dir");
+    let scene = dir.path().join("hv.toml");
+    std::fs::write(
+        &scene,
+        "format = 1\n[contact]\nkind = \"point\"\nload = \"300 N\"\nhardness = \"700 HV\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6 mm\"\nmaterial = \"steel\"\n",
+    )
+    .expect("scene");
+    let output = run(&["hertz", scene.to_str().expect("utf8")]);
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(
+        text.contains("from 700 HV:") && !text.contains("HB"),
+        "{text}"
+    );
+}
+
+/// The README's probe example prints what the README shows (class 20).
+#[test]
+fn the_readmes_probe_example_prints_what_it_shows() {
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
+    let command = "printf 'x,y,z\\n0,0,0.786\\n-1,0,0\\n' | stressfield probe --friction 0.3 --points -\n```\n```\n";
+    let at = readme.find(command).expect("the example is in the README") + command.len();
+    let shown = &readme[at..at + readme[at..].find("```").expect("block end")];
+    let output = crate::cli::run_with_stdin(
+        &["probe", "--friction", "0.3", "--points", "-"],
+        "x,y,z\n0,0,0.786\n-1,0,0\n",
+    );
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(String::from_utf8_lossy(&output.stdout), shown);
+}
+
+/// With E*, `surface` prints the Greenwood-Williamson values the README promises (class 20).
+#[test]
+fn surface_prints_the_greenwood_williamson_values() {
+    let scene = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/surface_worn_homework.toml"
+    );
+    let text = run(&["surface", scene]);
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        text.contains("Greenwood-Williamson") && text.contains("(zs+0σs)"),
+        "{text}"
+    );
+    let json = run(&["surface", scene, "--json"]);
+    let json: serde_json::Value = serde_json::from_slice(&json.stdout).expect("json");
+    let rows = json["greenwood_williamson"].as_array().expect("rows");
+    assert_eq!(rows.len(), 4);
+    assert!(rows[3]["pressure_pa"].as_f64().expect("pressure") > 0.0);
+}
+
+/// Generator defaults fit the samples given (class 15): `samples = 12` without roll-off or
+/// cutoff is accepted; a conflict names the key the user gave and the default it met.
+#[test]
+fn generator_defaults_fit_the_samples_given() {
+    let dir = tempfile::tempdir().expect("dir");
+    let scene = |extra: &str| {
+        let path = dir.path().join("gen.toml");
+        std::fs::write(
+            &path,
+            format!("format = 1\n[contact]\nkind = \"surface\"\n[surface.generate]\nsamples = 12\nspacing = \"1 um\"\nhurst = 0.8\nrms_height = \"0.1 um\"\n{extra}"),
+        )
+        .expect("scene");
+        run(&["check", path.to_str().expect("utf8")])
+    };
+    for extra in ["", "cutoff = \"5 um\"\n"] {
+        let output = scene(extra);
+        assert!(output.status.success(), "{extra}: {}", stderr(&output));
+    }
+    let short = scene("rolloff = \"1 um\"\n");
+    assert!(
+        stderr(&short).contains("key `surface.generate.rolloff`")
+            && stderr(&short).contains("two sample spacings"),
+        "{}",
+        stderr(&short)
+    );
+    let long = scene("cutoff = \"20 um\"\n");
+    assert!(
+        stderr(&long).contains("key `surface.generate.cutoff`"),
+        "{}",
+        stderr(&long)
+    );
+}
+
+/// Statistics that mean nothing are `null` with a reason (class 11): Rsk and Rku of rows flat
+/// to rounding, a Hurst exponent outside (0, 1], the Hertz asperity of a tip too flat for the
+/// map.
+#[test]
+fn meaningless_statistics_are_null_with_a_reason() {
+    let dir = tempfile::tempdir().expect("dir");
+    let surface = |name: &str, height: &dyn Fn(usize, usize) -> f64| {
+        let path = dir.path().join(name);
+        let text: String = (0..32)
+            .map(|j| {
+                let row: Vec<String> = (0..32).map(|i| format!("{:.9}", height(i, j))).collect();
+                row.join(" ") + "\n"
+            })
+            .collect();
+        std::fs::write(&path, text).expect("surface");
+        let args = [
+            "surface",
+            path.to_str().expect("utf8"),
+            "--spacing",
+            "0.5um",
+        ];
+        let flags = ["--height-unit", "um", "--e-star", "115GPa"];
+        let text = run(&[&args[..], &flags[..]].concat());
+        let json = run(&[&args[..], &flags[..], &["--json"]].concat());
+        assert!(json.status.success(), "{}", stderr(&json));
+        let json: serde_json::Value = serde_json::from_slice(&json.stdout).expect("json");
+        (String::from_utf8_lossy(&text.stdout).into_owned(), json)
+    };
+    let (text, json) = surface("rows.asc", &|_, j| {
+        0.1 * (j % 5) as f64 + 0.01 * (j % 3) as f64
+    });
+    assert!(json["Rsk"].is_null() && json["Rku"].is_null(), "{json}");
+    assert!(
+        json["hurst"].is_null() && json["fractal_dimension"].is_null(),
+        "{json}"
+    );
+    assert!(
+        text.contains("n/a: Rsk, Rku: 32 of 32 rows are flat"),
+        "{text}"
+    );
+    assert!(text.contains("n/a: hurst, fractal_dimension"), "{text}");
+    // The highest sample 1e-5 um above its neighbours along x: a tip radius of about 1 cm.
+    let (text, json) = surface("tip.asc", &|i, j| match (i, j) {
+        (16, 16) => 1.00001,
+        (15 | 17, 16) => 1.0,
+        _ => 0.1 * ((7 * i + 3 * j) % 5) as f64,
+    });
+    assert!(
+        json["asperity_radius_m"].is_null() && json["asperity_load_n"].is_null(),
+        "{json}"
+    );
+    assert!(text.contains("n/a: asperity"), "{text}");
 }

@@ -35,6 +35,23 @@ pub enum ArchiveError {
     },
 }
 
+/// A member the zip reader cannot open for its compression or encryption.
+const UNSUPPORTED: &str = "uses a compression or encryption stressfield does not read: export the file again, unencrypted, with Deflate";
+
+/// The name of a zip compression method, by its number in the zip specification (APPNOTE
+/// 4.4.5): the crate built without them shows bzip2 and LZMA as numbers.
+fn method_name(method: zip::CompressionMethod) -> String {
+    #[allow(deprecated)]
+    match method.to_u16() {
+        12 => "bzip2".into(),
+        14 => "LZMA".into(),
+        93 => "Zstandard".into(),
+        95 => "XZ".into(),
+        99 => "AES encryption".into(),
+        code => format!("method {code}"),
+    }
+}
+
 /// How many bytes a member may unpack to.
 #[derive(Clone, Copy, Debug)]
 pub enum Limit<'a> {
@@ -78,6 +95,20 @@ impl<R: Read + Seek> Archive<R> {
             member: text::cut(member, 80),
             message,
         };
+        // What the member is packed with, read before it is opened: an encrypted member or
+        // a compression this build does not unpack is named as such, never "damaged".
+        let raw = self
+            .zip
+            .index_for_name(member)
+            .and_then(|i| self.zip.by_index_raw(i).ok())
+            .map(|raw| (raw.encrypted(), raw.compression()));
+        match raw {
+            Some((true, _)) => return Err(fail("is encrypted, which stressfield does not read: export the file again without a password".to_string())),
+            Some((false, method)) if !matches!(method, zip::CompressionMethod::Stored | zip::CompressionMethod::Deflated) => {
+                return Err(fail(format!("is compressed with {}, which stressfield does not unpack (it reads members stored or compressed with Deflate): export the file again with Deflate", method_name(method))))
+            }
+            _ => {}
+        }
         let mut entry = match self.zip.by_name(member) {
             Ok(entry) => entry,
             Err(zip::result::ZipError::FileNotFound) => {
@@ -85,6 +116,9 @@ impl<R: Read + Seek> Archive<R> {
                     path: self.path.clone(),
                     member: text::cut(member, 80),
                 })
+            }
+            Err(zip::result::ZipError::UnsupportedArchive(_)) => {
+                return Err(fail(UNSUPPORTED.to_string()))
             }
             Err(e) => {
                 return Err(fail(format!(
@@ -300,6 +334,42 @@ mod tests {
             zip.finish().expect("zip");
         }
         bytes
+    }
+
+    /// Issue 24, class 12: a member packed with bzip2, or encrypted, is named as such, not
+    /// "missing" or "damaged". The archive is written stored, then its headers patched: the
+    /// method at offset 8 of the local header and 10 of the central one, the encryption flag
+    /// (bit 0 of the flags) at 6 and 8.
+    #[test]
+    fn unsupported_compression_and_encryption_are_named() {
+        let stored = zip_of(&[("main.xml", b"<x/>")], zip::CompressionMethod::Stored);
+        let patch = |method: Option<u16>, encrypted: bool| {
+            let mut bytes = stored.clone();
+            for (signature, flags) in [(b"PK\x03\x04", 6), (b"PK\x01\x02", 8)] {
+                let at = bytes
+                    .windows(4)
+                    .position(|w| w == signature)
+                    .expect("header");
+                if let Some(method) = method {
+                    bytes[at + flags + 2..at + flags + 4].copy_from_slice(&method.to_le_bytes());
+                }
+                if encrypted {
+                    bytes[at + flags] |= 1;
+                }
+            }
+            let mut archive = Archive::new(Cursor::new(bytes), "s.x3p").expect("zip");
+            archive
+                .member("main.xml", Limit::AtMost(1024, "test"))
+                .expect_err("unsupported")
+                .to_string()
+        };
+        let bzip2 = patch(Some(12), false);
+        assert!(
+            bzip2.contains("compressed with bzip2") && bzip2.contains("Deflate"),
+            "{bzip2}"
+        );
+        let encrypted = patch(None, true);
+        assert!(encrypted.contains("is encrypted"), "{encrypted}");
     }
 
     #[test]

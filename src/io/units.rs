@@ -44,6 +44,7 @@ impl Dimension {
                 ("kPa", 1e3),
                 ("MPa", 1e6),
                 ("GPa", 1e9),
+                ("TPa", 1e12),
                 ("N/mm^2", 1e6),
                 ("N/mm2", 1e6),
                 ("psi", 6_894.757_293_168_361),
@@ -152,6 +153,16 @@ pub fn factor(unit: &str, dimension: Dimension) -> Option<f64> {
         .map(|(_, f)| *f)
 }
 
+/// The unit of `text` as `dimension` spells it (`"700 HV"` gives `HV`), if it is one.
+pub fn scale_of(text: &str, dimension: Dimension) -> Option<&'static str> {
+    let (_, unit) = split_number(text.trim());
+    dimension
+        .units()
+        .iter()
+        .find(|(u, _)| *u == unit)
+        .map(|(u, _)| *u)
+}
+
 /// `text` split into its number and its unit: the longest start that reads as a number
 /// (sign, digits, a point, an exponent `e`/`E` only where digits follow it), so that
 /// `1e-6m` is `1e-6` and `m`, and `1 em` would be `1` and `em`.
@@ -208,6 +219,9 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
         ));
     }
     let factor = factor(unit, dimension).ok_or_else(|| {
+        if let Some(why) = wrong_kind(unit, dimension) {
+            return format!("`{shown}`: {why}");
+        }
         format!(
             "unknown unit `{}` in `{shown}`; use one of: {}",
             super::text::cut(unit, 20),
@@ -217,11 +231,35 @@ pub fn parse(text: &str, dimension: Dimension) -> Result<f64, String> {
     Ok(value * factor)
 }
 
+/// Why `unit`, not one of `dimension`'s, is a mistake a user makes, with the fix: a force for a
+/// line contact's load (per unit length), a Rockwell hardness (no factor converts it), a
+/// hardness or a force given for a pressure or modulus.
+fn wrong_kind(unit: &str, dimension: Dimension) -> Option<String> {
+    let rockwell = unit.len() >= 3 && unit.starts_with("HR") && unit.is_ascii();
+    match dimension {
+        Dimension::ForcePerLength if factor(unit, Dimension::Force).is_some() => Some(format!(
+            "a line contact's load is a force per unit length of the contact (N/m), not a force; write e.g. \"1000 N/mm\" for 1000 N on each millimetre of length (units: {})",
+            dimension.unit_list()
+        )),
+        Dimension::Hardness if rockwell => Some(format!(
+            "a Rockwell hardness ({unit}) has no factor to Vickers or Brinell: convert it with a table (ASTM E140; 60 HRC is about 700 HV) and give the HV or HB value, e.g. \"700 HV\""
+        )),
+        Dimension::Pressure if factor(unit, Dimension::Hardness).is_some() || rockwell => {
+            Some(format!(
+                "a hardness is not a modulus or a stress; give a pressure, e.g. {} (units: {})",
+                dimension.example(),
+                dimension.unit_list()
+            ))
+        }
+        _ => None,
+    }
+}
+
 /// A hardness as a pressure: a pressure (`3 GPa`) or a hardness number (`300 HV`, `1e3HV`,
 /// kgf/mm², times 9.80665 MPa).
 pub fn hardness_pa(text: &str) -> Result<f64, String> {
     let (_, unit) = split_number(text.trim());
-    if factor(unit, Dimension::Hardness).is_some() {
+    if factor(unit, Dimension::Hardness).is_some() || unit.starts_with("HR") {
         Ok(parse(text, Dimension::Hardness)? * 9.80665e6)
     } else {
         parse(text, Dimension::Pressure).map_err(|m| {
@@ -237,6 +275,33 @@ pub fn hardness_pa(text: &str) -> Result<f64, String> {
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+
+    /// Issue 24, classes 18 to 20: a force for a line load, a Rockwell hardness, a hardness for a
+    /// modulus are refused saying why; TPa, which the README's bounds use, is a unit.
+    #[test]
+    fn wrong_kinds_of_unit_say_why() {
+        let line = parse("1000 N", Dimension::ForcePerLength).expect_err("force");
+        assert!(
+            line.contains("per unit length") && line.contains("1000 N/mm"),
+            "{line}"
+        );
+        assert_relative_eq!(
+            parse("1000 N/mm", Dimension::ForcePerLength).expect("ok"),
+            1e6
+        );
+        for text in ["60 HRC", "60HRC"] {
+            let rockwell = parse(text, Dimension::Hardness).expect_err("HRC");
+            assert!(
+                rockwell.contains("ASTM E140") && rockwell.contains("HV"),
+                "{rockwell}"
+            );
+            let rockwell = hardness_pa(text).expect_err("HRC");
+            assert!(rockwell.contains("ASTM E140"), "{rockwell}");
+        }
+        let modulus = parse("300HV", Dimension::Pressure).expect_err("hardness");
+        assert!(modulus.contains("a hardness is not a modulus"), "{modulus}");
+        assert_relative_eq!(parse("10 TPa", Dimension::Pressure).expect("ok"), 1e13);
+    }
 
     #[test]
     fn parses_common_units() {
@@ -279,7 +344,7 @@ mod tests {
             .contains("no unit"));
         assert!(parse("40 kN", Dimension::ForcePerLength)
             .expect_err("force")
-            .contains("unknown unit `kN`"));
+            .contains("per unit length"));
         assert!(parse("abc MPa", Dimension::Pressure)
             .expect_err("nan")
             .contains("number"));

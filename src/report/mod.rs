@@ -452,7 +452,7 @@ fn write_maxima(out: &mut String, scene: &Scene, found: &SceneMaxima) -> std::fm
         return Ok(());
     };
     match y.from_hardness {
-        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {} HB: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, crate::io::text::number(h), h * 9.80665)?,
+        Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {} {}: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, crate::io::text::number(h), y.hardness_scale, h * 9.80665)?,
         None => writeln!(out, "yield strength               Y  = {:.0} MPa", y.pa * 1e-6)?,
     }
     let ratio_vm = vm * p0_pa / y.pa;

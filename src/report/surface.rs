@@ -9,7 +9,12 @@
 //! `plane`, `rows`, `columns`, `spacing_m`, `str_is_upper_bound`, and, when E* (and a
 //! hardness) are known, `e_star_pa`, `hardness_pa`, `plasticity_index`, and the homework's
 //! highest asperity (`asperity_height_m`, `asperity_radius_m`, `asperity_p0_pa`,
-//! `asperity_contact_radius_m`, `asperity_load_n`). Unknown values are `null`.
+//! `asperity_contact_radius_m`, `asperity_load_n`), and `greenwood_williamson`: the GW model of
+//! the measured summits at separations of 3, 2, 1 and 0 summit height deviations above the
+//! mean summit height (`separation_m`, `contacts_per_m2`, `area_fraction`, `pressure_pa`).
+//! Unknown values, and values that mean nothing (a Hurst exponent outside (0, 1], Rsk and Rku
+//! of rows flat to rounding, the Hertz asperity of a tip too flat for the map), are `null`;
+//! `null_reasons` says why, one sentence each, as the text's `n/a:` lines do.
 
 use std::f64::consts::PI;
 use std::fmt::Write as _;
@@ -17,7 +22,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use crate::render::table::Row;
-use crate::surface::gw::{plasticity_index, plasticity_reading};
+use crate::surface::gw::{plasticity_index, plasticity_reading, GreenwoodWilliamson, GwPoint};
 use crate::surface::stats::Characterisation;
 
 /// The Hertz sphere-on-flat contact of the highest asperity at an approach of a fifth of its
@@ -78,8 +83,8 @@ pub struct SurfaceReport {
     pub mccool_summit_mean_height_m: f64,
     pub Ra: f64,
     pub Rq: f64,
-    pub Rsk: f64,
-    pub Rku: f64,
+    pub Rsk: Option<f64>,
+    pub Rku: Option<f64>,
     pub m0: f64,
     pub m2: f64,
     pub m4: f64,
@@ -97,16 +102,65 @@ pub struct SurfaceReport {
     pub asperity_p0_pa: Option<f64>,
     pub asperity_contact_radius_m: Option<f64>,
     pub asperity_load_n: Option<f64>,
+    pub greenwood_williamson: Option<Vec<GwPoint>>,
+    /// Why values that could not be had are `null`, one sentence each.
+    pub null_reasons: Vec<String>,
 }
+
+/// How many summit height deviations above the mean summit height the GW rows are given at.
+const GW_SEPARATIONS_IN_SIGMA: [f64; 4] = [3.0, 2.0, 1.0, 0.0];
 
 impl SurfaceReport {
     pub fn new(c: &Characterisation, e_star_pa: Option<f64>, hardness_pa: Option<f64>) -> Self {
-        let asperity = c
-            .asperity
-            .radius_x_m
+        let mut null_reasons = Vec::new();
+        let mut asperity_radius_m = c.asperity.radius_x_m;
+        let side_m = (c.spacing_m[0] * c.shape[1] as f64).min(c.spacing_m[1] * c.shape[0] as f64);
+        let asperity = asperity_radius_m
             .zip(e_star_pa)
-            .map(|(radius, e)| AsperityContact::new(c.asperity.height_m, radius, e));
+            .map(|(radius, e)| AsperityContact::new(c.asperity.height_m, radius, e))
+            .filter(|contact| {
+                let fits = contact.contact_radius_m <= 0.5 * side_m;
+                if !fits {
+                    null_reasons.push(format!(
+                        "asperity: its Hertz contact radius ({} m, for a tip radius of {} m) exceeds half the map's shorter side ({} m): the tip is too flat for a sphere, and the radius, p0, contact radius and load mean nothing",
+                        crate::io::text::approx(contact.contact_radius_m),
+                        crate::io::text::approx(contact.radius_m),
+                        crate::io::text::approx(0.5 * side_m)
+                    ));
+                    asperity_radius_m = None;
+                }
+                fits
+            });
+        if c.spectra.hurst.is_none() {
+            let fitted = -c.spectra.fit_slope / 2.0 - 1.0;
+            null_reasons.push(if fitted.is_finite() {
+                format!("hurst, fractal_dimension: the spectrum's slope over the band gives H = {}, outside (0, 1] (D = {} outside [2, 3)): the surface is not self-affine there; give a band where it is (band in a scene, --band)", crate::io::text::approx(fitted), crate::io::text::approx(3.0 - fitted))
+            } else {
+                "hurst, fractal_dimension: the band holds fewer than three rings of the spectrum".to_string()
+            });
+        }
+        if c.profile.flat_rows > 0 {
+            null_reasons.push(format!(
+                "Rsk, Rku: {} of {} rows are flat to rounding (rms residual at most 1e-10 of their heights): their skewness and kurtosis would be those of the noise",
+                c.profile.flat_rows, c.shape[0]
+            ));
+        }
         let (q0, q1) = c.spectra.band_q;
+        let greenwood_williamson = e_star_pa
+            .filter(|_| c.summits.count > 0 && c.summits.height_std_m > 0.0)
+            .map(|e_star_pa| {
+                let model = GreenwoodWilliamson {
+                    density_per_m2: c.summits.density_per_m2,
+                    radius_m: c.summits.radius_m,
+                    height_std_m: c.summits.height_std_m,
+                    mean_height_m: c.summits.mean_height_m,
+                    e_star_pa,
+                };
+                GW_SEPARATIONS_IN_SIGMA
+                    .iter()
+                    .map(|k| model.at(model.mean_height_m + k * model.height_std_m))
+                    .collect()
+            });
         Self {
             Sa: c.height.sa,
             Sq: c.height.sq,
@@ -151,10 +205,12 @@ impl SurfaceReport {
                 .zip(hardness_pa)
                 .map(|(e, h)| plasticity_index(e, h, c.summits.height_std_m, c.summits.radius_m).0),
             asperity_height_m: c.asperity.height_m,
-            asperity_radius_m: c.asperity.radius_x_m,
+            asperity_radius_m,
             asperity_p0_pa: asperity.map(|a| a.p0_pa),
             asperity_contact_radius_m: asperity.map(|a| a.contact_radius_m),
             asperity_load_n: asperity.map(|a| a.load_n),
+            greenwood_williamson,
+            null_reasons,
         }
     }
 
@@ -360,11 +416,11 @@ impl SurfaceReport {
         )?;
         writeln!(
             out,
-            "  Ra {:.5} um, Rq {:.5} um, Rsk {:.4}, Rku {:.4}",
+            "  Ra {:.5} um, Rq {:.5} um, Rsk {}, Rku {}",
             um(self.Ra),
             um(self.Rq),
-            self.Rsk,
-            self.Rku
+            optional(self.Rsk, &|v| format!("{v:.4}")),
+            optional(self.Rku, &|v| format!("{v:.4}"))
         )?;
         writeln!(out, "spectrum")?;
         writeln!(
@@ -416,12 +472,33 @@ impl SurfaceReport {
                 plasticity_reading(psi)
             )?;
         }
+        if let Some(points) = &self.greenwood_williamson {
+            writeln!(
+                out,
+                "Greenwood-Williamson (measured summits, E* = {:.1} GPa)",
+                self.e_star_pa.unwrap_or(f64::NAN) * 1e-9
+            )?;
+            writeln!(
+                out,
+                "  separation (um)   contacts (1/mm²)   real area (%)   mean pressure (MPa)"
+            )?;
+            for (point, k) in points.iter().zip(GW_SEPARATIONS_IN_SIGMA) {
+                writeln!(
+                    out,
+                    "  {:>8.4} (zs+{k:.0}σs) {:>12.3}   {:>13}   {:>19}",
+                    um(point.separation_m),
+                    point.contacts_per_m2 * 1e-6,
+                    crate::io::text::approx(100.0 * point.area_fraction),
+                    crate::io::text::approx(point.pressure_pa * 1e-6)
+                )?;
+            }
+        }
         let [row, column] = c.asperity.at;
         writeln!(
             out,
             "highest asperity: row {row}, column {column}, {:.4} um above the mean plane; tip radius {} um along x, {} um along y",
             um(self.asperity_height_m),
-            optional(c.asperity.radius_x_m, &|v| format!("{:.3}", um(v))),
+            optional(self.asperity_radius_m, &|v| format!("{:.3}", um(v))),
             optional(c.asperity.radius_y_m, &|v| format!("{:.3}", um(v)))
         )?;
         if let (Some(p0), Some(a), Some(load)) = (
@@ -437,6 +514,9 @@ impl SurfaceReport {
                 um(a),
                 load
             )?;
+        }
+        for reason in &self.null_reasons {
+            writeln!(out, "n/a: {reason}")?;
         }
         Ok(())
     }

@@ -149,9 +149,47 @@ impl Scene {
 
 fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Error) -> SceneError {
     let line_column = error.span().map(|span| line_column(text, span.start));
-    let message = error.message().trim().to_string();
+    let mut message = error.message().trim().to_string();
+    let leaf = key
+        .as_deref()
+        .and_then(|k| k.rsplit('.').next())
+        .unwrap_or("key");
     let hint = if message.starts_with("unknown field") {
         Some("remove or correct the key; the README lists every scene key".into())
+    } else if message.starts_with("invalid type: integer")
+        || message.starts_with("invalid type: floating point")
+    {
+        (message.ends_with("expected a string") || message.contains("untagged enum")).then(|| {
+            format!(
+                "a dimensional value is text with its unit, in quotes, e.g. {leaf} = {}",
+                unit_example(leaf)
+            )
+        })
+    } else if message.starts_with("invalid type: string") {
+        let number = message
+            .split('"')
+            .nth(1)
+            .filter(|n| n.trim().parse::<f64>().is_ok());
+        let written = number.map_or_else(|| "0.2".to_string(), |n| n.trim().to_string());
+        ["expected f64", "expected i64", "expected a number"]
+            .iter()
+            .any(|e| message.ends_with(e))
+            .then(|| {
+                format!(
+                    "this key takes a plain number without quotes or unit, e.g. {leaf} = {written}"
+                )
+            })
+    } else if message == "duplicate key" {
+        let line = error
+            .span()
+            .and_then(|span| text.get(span.start..))
+            .and_then(|rest| rest.lines().next())
+            .unwrap_or("");
+        let name = line.split('=').next().unwrap_or("").trim();
+        if !name.is_empty() {
+            message = format!("duplicate key `{}`", crate::io::text::cut(name, 40));
+        }
+        Some("give each key once in its table; remove one of the two".into())
     } else {
         None
     };
@@ -161,6 +199,20 @@ fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Err
         line_column,
         message,
         hint,
+    }
+}
+
+/// An example of a dimensional value for the key named `leaf`, for messages.
+fn unit_example(leaf: &str) -> &'static str {
+    match leaf {
+        "load" => "\"1000 N\" (a line contact: per unit length, \"40 kN/m\")",
+        "radius" | "radius_x" | "radius_y" | "sphere_radius" | "cylinder_radius" => "\"20 mm\"",
+        "modulus" | "yield_strength" | "p0" | "mean_pressure" => "\"210 GPa\"",
+        "hardness" => "\"700 HV\"",
+        "a" | "approach" | "spacing" | "rms_height" | "rolloff" | "cutoff"
+        | "correlation_length" => "\"1 um\"",
+        "speed" | "body1_speed" | "body2_speed" => "\"2 m/s\"",
+        _ => "\"20 mm\" (the README gives each key's unit)",
     }
 }
 
@@ -209,6 +261,37 @@ mod tests {
             parse("format = 1\n[contact]\nkind = \"line\"\npoison = 0.3\n").expect_err("typo");
         assert_eq!(err.key.as_deref(), Some("contact.poison"), "{err}");
         assert_eq!(err.line_column.map(|(l, _)| l), Some(4), "{err}");
+    }
+
+    /// Issue 24, class 18: what a new user writes gets an example of the right form.
+    #[test]
+    fn a_new_users_mistakes_get_an_example() {
+        let message = |text: &str| parse(text).expect_err("refused").to_string();
+        let load = message("format = 1\n[contact]\nkind = \"point\"\nload = 1000\n");
+        assert!(load.contains("load = \"1000 N\""), "{load}");
+        let friction = message("format = 1\n[contact]\nkind = \"line\"\nfriction = \"0.2\"\n");
+        assert!(friction.contains("friction = 0.2"), "{friction}");
+        let twice =
+            message("format = 1\n[contact]\nkind = \"line\"\nfriction = 0.2\nfriction = 0.3\n");
+        assert!(
+            twice.contains("duplicate key `friction`") && twice.contains(":5:"),
+            "{twice}"
+        );
+        let line = message("format = 1\n[contact]\nkind = \"line\"\nload = \"1000 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n");
+        assert!(
+            line.contains("per unit length") && line.contains("contact.load"),
+            "{line}"
+        );
+        let rockwell = message("format = 1\n[contact]\nkind = \"line\"\nhardness = \"60 HRC\"\n");
+        assert!(
+            rockwell.contains("ASTM E140") && rockwell.contains("contact.hardness"),
+            "{rockwell}"
+        );
+        let rigid = message("format = 1\n[contact]\nkind = \"point\"\nload = \"300 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"rigid\"\n[contact.body2]\nradius = \"6 mm\"\nmaterial = \"steel\"\n");
+        assert!(
+            rigid.contains("rough contacts only") && rigid.contains("contact.body1.material"),
+            "{rigid}"
+        );
     }
 
     #[test]

@@ -74,6 +74,8 @@ pub struct YieldStrength {
     pub pa: f64,
     /// The hardness number it was derived from (Tabor, `Y = H/3`), if any.
     pub from_hardness: Option<f64>,
+    /// The scale of that number as the scene wrote it (`HV`, `HB`, `HBW`, `BHN`), for reports.
+    pub hardness_scale: &'static str,
 }
 
 /// A dimensional contact: bodies, materials, load and the Hertz solution.

@@ -41,7 +41,7 @@ pub struct GreenwoodWilliamson {
 }
 
 /// One point of the model's curves at a separation.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct GwPoint {
     /// Separation of the flat from the mean plane of the heights, m.
     pub separation_m: f64,

@@ -102,11 +102,57 @@ pub fn read_surface(path: &Path, options: &ReadOptions) -> Result<HeightMap, Rea
     match extension.as_str() {
         "x3p" => {
             let size_limit = file_size_limit();
-            super::x3p::read(path, size_limit, options.fill)
+            let map = super::x3p::read(path, size_limit, options.fill)?;
+            // x3p heights are in metres (the CZ increment scales them).
+            agree(
+                &map,
+                options.spacing_m,
+                options.height_unit_m.map(|u| (u, 1.0)),
+                &name,
+            )?;
+            Ok(map)
         }
-        "xyz" => parse_xyz(&read_text(path)?, &name, options),
+        "xyz" => {
+            let map = parse_xyz(&read_text(path)?, &name, options)?;
+            agree(&map, options.spacing_m, None, &name)?;
+            Ok(map)
+        }
         _ => parse_ascii(&read_text(path)?, &name, options),
     }
+}
+
+/// A spacing or a height unit the caller gave (`--spacing`, `--height-unit`, or the scene's
+/// `spacing`, `height_unit`) must agree with what an x3p or XYZ file says itself, as with an
+/// ASCII file's header: a contradiction is refused, naming both values, never ignored.
+/// `height_unit_m` is `(given, the file's)`.
+fn agree(
+    map: &HeightMap,
+    spacing_m: Option<[f64; 2]>,
+    height_unit_m: Option<(f64, f64)>,
+    path: &str,
+) -> Result<(), ReadError> {
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-6 * a.abs().max(b.abs());
+    let format = |message: String| ReadError::Format {
+        path: path.to_string(),
+        message,
+    };
+    let file = map.spacing_m();
+    if let Some(given) = spacing_m {
+        if !(close(file[0], given[0]) && close(file[1], given[1])) {
+            return Err(format(format!(
+                "the file's coordinates give a spacing of {:.6e} x {:.6e} m, but a spacing of {:.6e} x {:.6e} m was given (--spacing, or spacing in the scene); remove it, the file says its spacing",
+                file[0], file[1], given[0], given[1]
+            )));
+        }
+    }
+    if let Some((given, own)) = height_unit_m {
+        if !close(given, own) {
+            return Err(format(format!(
+                "the file's heights are in units of {own:e} m (an x3p's are in metres, scaled by its CZ increment), but {given:e} m was given (--height-unit, or height_unit in the scene); remove it"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// A number of a height file: NaN or an infinity written as such (`nan`, `-inf`) is a missing
@@ -547,6 +593,28 @@ mod tests {
             error.contains("line 1") && error.len() < 500,
             "{} characters",
             error.len()
+        );
+    }
+
+    /// Issue 24, class 8: a spacing that contradicts an XYZ file's coordinates is refused as
+    /// an ASCII header's is, naming both; one that agrees is accepted.
+    #[test]
+    fn a_spacing_contradicting_an_xyz_file_is_refused() {
+        let dir = tempfile::tempdir().expect("dir");
+        let path = dir.path().join("grid.xyz");
+        let rows: String = (0..4)
+            .flat_map(|j| (0..4).map(move |i| format!("{}e-6 {}e-6 {}e-9\n", i, j, i * j)))
+            .collect();
+        std::fs::write(&path, rows).expect("file");
+        let with = |spacing: f64| ReadOptions {
+            spacing_m: Some([spacing, spacing]),
+            ..ReadOptions::default()
+        };
+        read_surface(&path, &with(1e-6)).expect("agrees");
+        let error = read_surface(&path, &with(2e-6)).expect_err("conflict");
+        assert!(
+            error.to_string().contains("was given (--spacing"),
+            "{error}"
         );
     }
 }

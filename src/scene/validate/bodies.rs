@@ -81,6 +81,13 @@ impl Validator<'_> {
         missing: &str,
     ) -> Result<Material, SceneError> {
         let preset = match &raw.material {
+            Some(name) if name.trim() == "rigid" => {
+                return Err(self.error(
+                    &format!("{key}.material"),
+                    "a rigid body is for rough contacts only: Hertz theory (line, point, elliptical contacts) takes both bodies' modulus and Poisson's ratio",
+                    Some("give the stiffer body its own material or modulus and poisson (a body far stiffer than the other barely changes E*: 1/E* = (1 - ν1²)/E1 + (1 - ν2²)/E2), e.g. material = \"tungsten_carbide\""),
+                ))
+            }
             Some(name) => Some(material::preset(name).ok_or_else(|| {
                 let names: Vec<_> = material::PRESETS.iter().map(|p| p.name).collect();
                 self.error(

@@ -432,6 +432,7 @@ impl Validator<'_> {
                     STRESS_BOUNDS,
                 )?,
                 from_hardness: None,
+                hardness_scale: "",
             })),
             (None, Some(text)) => {
                 let number = self.bounded(
@@ -443,6 +444,7 @@ impl Validator<'_> {
                 Ok(Some(YieldStrength {
                     pa: yield_strength_from_hardness_pa(number),
                     from_hardness: Some(number),
+                    hardness_scale: units::scale_of(text, Dimension::Hardness).unwrap_or("HB"),
                 }))
             }
             (None, None) => Ok(None),

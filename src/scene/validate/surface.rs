@@ -291,8 +291,13 @@ impl Validator<'_> {
                         Some("measured surfaces have Hurst exponents of 0.5 to 1; 0.8 is common"),
                     ));
                 }
-                let rolloff = length("rolloff", &raw.rolloff)?.unwrap_or(size / 4.0);
-                let cutoff = length("cutoff", &raw.cutoff)?.unwrap_or(4.0 * spacing_m[0].max(spacing_m[1]));
+                let (rolloff, cutoff) = self.self_affine_band(
+                    key,
+                    length("rolloff", &raw.rolloff)?,
+                    length("cutoff", &raw.cutoff)?,
+                    size,
+                    spacing_m[0].max(spacing_m[1]),
+                )?;
                 (
                     Spectrum::SelfAffine {
                         hurst,
@@ -575,5 +580,47 @@ impl Validator<'_> {
             scene.sweep = Some(self.sweep(sweep, &scene)?);
         }
         Ok(scene)
+    }
+}
+impl Validator<'_> {
+    /// The roll-off and cutoff wavelengths of a self-affine spectrum: each as given, or a
+    /// default that fits the map and the other one: the roll-off a quarter of the shorter side
+    /// (at least the cutoff given, at most the side), the cutoff four spacings (at most the roll-off, at least
+    /// two spacings, the shortest wavelength the grid resolves). A conflict names the key to
+    /// give and the default it came from.
+    fn self_affine_band(
+        &self,
+        key: &str,
+        rolloff: Option<f64>,
+        cutoff: Option<f64>,
+        size_m: f64,
+        spacing_m: f64,
+    ) -> Result<(f64, f64), SceneError> {
+        let rolloff_m =
+            rolloff.unwrap_or_else(|| (size_m / 4.0).max(cutoff.unwrap_or(0.0)).min(size_m));
+        let cutoff_m =
+            cutoff.unwrap_or_else(|| (4.0 * spacing_m).min(rolloff_m).max(2.0 * spacing_m));
+        if cutoff_m > rolloff_m {
+            let um = |m: f64| crate::io::text::approx(m * 1e6);
+            let (at, message, hint) = match (rolloff.is_some(), cutoff.is_some()) {
+                (true, true) => (
+                    "cutoff",
+                    format!("the cutoff wavelength ({} um) must not exceed the roll-off wavelength ({} um)", um(cutoff_m), um(rolloff_m)),
+                    "give a cutoff at most the roll-off (the cutoff is the shortest wavelength of the spectrum)".to_string(),
+                ),
+                (true, false) => (
+                    "rolloff",
+                    format!("the roll-off wavelength ({} um) is shorter than two sample spacings ({} um), the shortest wavelength the grid resolves, and so shorter than the default cutoff", um(rolloff_m), um(cutoff_m)),
+                    "give a longer rolloff, or a finer spacing".to_string(),
+                ),
+                _ => (
+                    "cutoff",
+                    format!("the cutoff wavelength ({} um) exceeds the map's shorter side ({} um), so it exceeds the default roll-off", um(cutoff_m), um(size_m)),
+                    "give a shorter cutoff, or more samples".to_string(),
+                ),
+            };
+            return Err(self.error(&format!("{key}.{at}"), message, Some(&hint)));
+        }
+        Ok((rolloff_m, cutoff_m))
     }
 }

@@ -178,8 +178,12 @@ pub struct HeightParameters {
 pub struct ProfileParameters {
     pub ra: f64,
     pub rq: f64,
-    pub rsk: f64,
-    pub rku: f64,
+    /// `None` when some row is flat to rounding ([`heights::ROUNDING_FLAT`]): its skewness and
+    /// kurtosis would be those of the rounding noise.
+    pub rsk: Option<f64>,
+    pub rku: Option<f64>,
+    /// The rows flat to rounding.
+    pub flat_rows: usize,
 }
 
 /// The spatial parameters.
@@ -222,7 +226,9 @@ pub struct Spectra {
     pub radial: Vec<(f64, f64)>,
     /// 1-D PSD along x: `(q, C1 in m³)`, q > 0.
     pub profile: Vec<(f64, f64)>,
-    /// `None` when the band holds fewer than three rings of the spectrum.
+    /// `None` when the band holds fewer than three rings of the spectrum, or when the fitted
+    /// slope gives an exponent outside (0, 1] (a fractal dimension outside [2, 3)): the
+    /// spectrum is then not self-affine over the band and the number means nothing.
     pub hurst: Option<f64>,
     pub fractal_dimension: Option<f64>,
     /// The band of the fit, wavenumbers (rad/m).
@@ -405,7 +411,7 @@ pub fn characterise(map: &HeightMap, options: &Options) -> Result<Characterisati
     } else {
         (f64::NAN, f64::NAN)
     };
-    let hurst = slope.is_finite().then(|| -slope / 2.0 - 1.0);
+    let hurst = Some(-slope / 2.0 - 1.0).filter(|h| *h > 0.0 && *h <= 1.0);
     let spectra = Spectra {
         radial,
         profile: profile_spectrum,

@@ -85,6 +85,8 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
     let (iqx, iqy) = (column("qx"), column("qy"));
     let max_rows = MAX_NODES_PER_SIDE * MAX_NODES_PER_SIDE;
     let mut rows: Vec<[f64; 5]> = Vec::new();
+    // The finest digit the coordinates were written to (see `grid_table::assemble`).
+    let mut rounding = [f64::INFINITY; 2];
     let mut largest = Largest {
         magnitude: 0.0,
         line: header_line,
@@ -117,6 +119,11 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
             }
             Ok(v)
         };
+        for (k, index) in [ix, iy].into_iter().enumerate() {
+            if let Some(unit) = crate::io::grid_table::last_digit(fields[index]) {
+                rounding[k] = rounding[k].min(unit);
+            }
+        }
         let row = [
             value(Some(ix), "x")?,
             value(Some(iy), "y")?,
@@ -142,7 +149,8 @@ pub fn read(text: &str) -> Result<TractionTable, String> {
         rows.push(row);
     }
     let points: Vec<[f64; 2]> = rows.iter().map(|r| [r[0], r[1]]).collect();
-    let grid = crate::io::grid_table::assemble(&points)?;
+    let rounding = rounding.map(|unit| if unit.is_finite() { unit } else { 0.0 });
+    let grid = crate::io::grid_table::assemble(&points, rounding)?;
     let [ny, nx] = grid.shape;
     if nx > MAX_NODES_PER_SIDE || ny > MAX_NODES_PER_SIDE {
         return Err(format!(

@@ -359,6 +359,9 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
     let mut points = Vec::new();
     let mut values = Vec::new();
     let mut missing = None;
+    // The finest digit the coordinates were written to: instruments round them (see
+    // `grid_table::assemble`).
+    let mut rounding = [f64::INFINITY; 2];
     for (index, line) in crate::io::text::lines(text).enumerate() {
         let number = index + 1;
         let trimmed = line.trim();
@@ -374,6 +377,11 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
             ));
         }
         let mut xyz = [0.0f64; 3];
+        for (k, (_, field)) in row.iter().take(2).enumerate() {
+            if let Some(unit) = crate::io::grid_table::last_digit(field) {
+                rounding[k] = rounding[k].min(unit);
+            }
+        }
         for (k, (column, field)) in row.iter().enumerate() {
             xyz[k] = value(field).map_err(|m| at(number, *column, m))?;
             if !xyz[k].is_finite() && (k < 2 || missing.is_none()) {
@@ -386,7 +394,8 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
         points.push([xyz[0], xyz[1]]);
         values.push(xyz[2]);
     }
-    let grid = crate::io::grid_table::assemble(&points).map_err(|m| {
+    let rounding = rounding.map(|unit| if unit.is_finite() { unit } else { 0.0 });
+    let grid = crate::io::grid_table::assemble(&points, rounding).map_err(|m| {
         format(m.replace(
             "give the tractions at the centres of a regular grid",
             "give the heights on a regular grid",
@@ -411,7 +420,18 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
             Fill::Interpolate => interpolate_missing(&mut heights).map_err(format)?,
         }
     }
-    HeightMap::new(heights, [grid.step[0] * length, grid.step[1] * length]).map_err(|source| {
+    // A spacing given for rounded coordinates is the finer value where the file's agrees with
+    // it to its rounding; otherwise the file's stands, and `agree` refuses the contradiction.
+    let mut spacing = [grid.step[0] * length, grid.step[1] * length];
+    if let Some(given) = options.spacing_m {
+        for k in 0..2 {
+            let allowed = grid.step_uncertainty[k] * length;
+            if allowed > 0.0 && (given[k] - spacing[k]).abs() <= allowed {
+                spacing[k] = given[k];
+            }
+        }
+    }
+    HeightMap::new(heights, spacing).map_err(|source| {
         ReadError::Surface {
             path: path.to_string(),
             source,
@@ -538,6 +558,45 @@ mod tests {
             error.contains("line 2") && error.contains("three values"),
             "{error}"
         );
+    }
+
+    /// Issue 24, class 17: an XYZ export with coordinates rounded to 4 decimals (µm, step
+    /// 0.0390625 µm written 0.0391, 0.0781, ...) is read; a --spacing that agrees to the
+    /// rounding is taken as the finer value, one that does not is refused.
+    #[test]
+    fn xyz_coordinates_rounded_as_instruments_write_them() {
+        let step = 0.0390625;
+        let mut text = String::from("# x (um) y (um) z (nm)\n");
+        for j in 0..9 {
+            for i in 0..33 {
+                let z = (i * j) as f64;
+                text += &format!("{:.4}\t{:.4}\t{z}\n", i as f64 * step, j as f64 * step);
+            }
+        }
+        let options = ReadOptions {
+            xyz_length_unit_m: Some(1e-6),
+            height_unit_m: Some(1e-9),
+            ..ReadOptions::default()
+        };
+        let map = parse_xyz(&text, "s.xyz", &options).expect("rounded coordinates");
+        assert_eq!(map.shape(), [9, 33]);
+        let [dx, dy] = map.spacing_m();
+        assert!((dx / (step * 1e-6) - 1.0).abs() < 1e-4, "{dx}");
+        assert!((dy / (step * 1e-6) - 1.0).abs() < 1e-3, "{dy}");
+        assert!((map.heights_m()[[8, 32]] - 256e-9).abs() < 1e-18);
+        let given = ReadOptions {
+            spacing_m: Some([step * 1e-6, step * 1e-6]),
+            ..options
+        };
+        let map = parse_xyz(&text, "s.xyz", &given).expect("agreeing spacing");
+        assert_eq!(map.spacing_m(), [step * 1e-6, step * 1e-6]);
+        let wrong = ReadOptions {
+            spacing_m: Some([0.04e-6, 0.04e-6]),
+            ..options
+        };
+        let map = parse_xyz(&text, "s.xyz", &wrong).expect("parsed");
+        let error = agree(&map, wrong.spacing_m, None, "s.xyz").expect_err("contradiction");
+        assert!(error.to_string().contains("was given (--spacing"), "{error}");
     }
 
     /// Issue 24, class 7: an overflowing number is an error naming its line and column, never

@@ -273,3 +273,70 @@ fn meaningless_statistics_are_null_with_a_reason() {
     );
     assert!(text.contains("n/a: asperity"), "{text}");
 }
+
+/// Class 13: one policy for every output path (`io::output::target`). `--heights` (and every
+/// other output) through a link to /dev/full fails with the device's error instead of
+/// replacing the link and exiting 0; through a link to a file it replaces the file and keeps
+/// the link; `render`'s figure through a link does the same.
+#[cfg(unix)]
+#[test]
+fn outputs_follow_links_and_report_device_errors() {
+    let dir = tempfile::tempdir().expect("dir");
+    let is_link = |path: &std::path::Path| {
+        std::fs::symlink_metadata(path)
+            .expect("exists")
+            .file_type()
+            .is_symlink()
+    };
+    if std::path::Path::new("/dev/full").exists() {
+        let full = dir.path().join("full.npy");
+        std::os::unix::fs::symlink("/dev/full", &full).expect("symlink");
+        let output = run(&[
+            "surface",
+            "scenes/surfaces/worn.asc",
+            "--heights",
+            full.to_str().expect("utf8"),
+        ]);
+        assert!(!output.status.success());
+        assert!(
+            stderr(&output).contains("No space left"),
+            "{}",
+            stderr(&output)
+        );
+        assert!(is_link(&full), "the link is kept");
+    }
+    let real = dir.path().join("real.npy");
+    std::fs::write(&real, b"old").expect("write");
+    let link = dir.path().join("link.npy");
+    std::os::unix::fs::symlink(&real, &link).expect("symlink");
+    let output = run(&[
+        "surface",
+        "scenes/surfaces/worn.asc",
+        "--heights",
+        link.to_str().expect("utf8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(is_link(&link));
+    assert!(std::fs::read(&real)
+        .expect("read")
+        .starts_with(b"\x93NUMPY"));
+
+    let scene = dir.path().join("case.toml");
+    std::fs::write(&scene, SMALL_SCENE).expect("scene");
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).expect("mkdir");
+    let figure = dir.path().join("figure.png");
+    std::os::unix::fs::symlink(&figure, out.join("case.png")).expect("symlink");
+    std::fs::write(&figure, b"old").expect("write");
+    let output = run(&[
+        "render",
+        scene.to_str().expect("utf8"),
+        "--out-dir",
+        out.to_str().expect("utf8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(is_link(&out.join("case.png")));
+    assert!(std::fs::read(&figure)
+        .expect("read")
+        .starts_with(b"\x89PNG"));
+}

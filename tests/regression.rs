@@ -519,7 +519,7 @@ fn a_scene_is_written_all_or_none() {
     std::fs::create_dir_all(out.join("case.svg")).expect("mkdir");
     std::fs::write(out.join("case.png"), b"earlier").expect("write");
     let output = run(&["render", utf8(&scene), "--out-dir", utf8(&out), "--svg"]);
-    assert_fails_with(&output, &["case.svg", "not a regular file"]);
+    assert_fails_with(&output, &["case.svg", "it is a directory"]);
     assert_eq!(
         std::fs::read(out.join("case.png")).expect("read"),
         b"earlier"

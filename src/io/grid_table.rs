@@ -188,7 +188,9 @@ mod tests {
             .flat_map(|&x| [[x, 0.0], [x, 1.0]])
             .collect();
         assert!(assemble(&points, [1.0, 1.0]).is_err());
-        let exact: Vec<[f64; 2]> = (0..4).flat_map(|i| [[i as f64, 0.0], [i as f64, 1.0]]).collect();
+        let exact: Vec<[f64; 2]> = (0..4)
+            .flat_map(|i| [[i as f64, 0.0], [i as f64, 1.0]])
+            .collect();
         let grid = assemble(&exact, [1.0, 1.0]).expect("integers");
         assert_eq!(grid.step, [1.0, 1.0]);
         assert_eq!(grid.step_uncertainty, [0.0, 0.0]);

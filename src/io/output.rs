@@ -1,6 +1,15 @@
 //! Writing files atomically: into a temporary file in the target directory, then a rename, so
 //! a reader never sees a half-written output and a failure leaves nothing behind.
 //!
+//! One policy for every output path (figures, field archives, reports, `--heights`,
+//! `--pressure`, `--update`d references, recordings), decided by [`target`]:
+//! - a new path or a regular file: written into a temporary file beside it, then renamed over
+//!   it once complete;
+//! - a symbolic link: followed; its target is treated by these rules and the link stays;
+//! - a character device or a FIFO (`/dev/null`, `/dev/full`, a named pipe): written through,
+//!   as a shell's `>` would, so that its errors ("No space left on device") are reported;
+//! - a directory, a block device or a socket: refused.
+//!
 //! Temporary files are registered while they are written ([`Pending`]); the binary installs
 //! [`remove_pending_on_interrupt`], so that an interruption (Ctrl-C, `kill`) removes them too
 //! before the process ends.
@@ -112,18 +121,79 @@ fn without_temporary_path(error: &std::io::Error) -> String {
     }
 }
 
-/// Writes `bytes` to `path` atomically (temporary file in the same directory, then rename).
+/// How an output path is written (see the module doc).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Target {
+    /// Into a temporary file in the same directory, then renamed to this path.
+    Replace(PathBuf),
+    /// Opened and written in place (a character device or a FIFO).
+    Through(PathBuf),
+}
+
+/// Decides how `path` is written, or says why it cannot be (see the module doc).
+pub fn target(path: &Path) -> Result<Target, String> {
+    let metadata = match std::fs::symlink_metadata(path) {
+        Ok(metadata) => metadata,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            return Ok(Target::Replace(path.to_path_buf()))
+        }
+        Err(e) => return Err(e.to_string()),
+    };
+    let kind = metadata.file_type();
+    if kind.is_symlink() {
+        let linked = std::fs::canonicalize(path)
+            .map_err(|e| format!("it is a symbolic link whose target cannot be reached ({e})"))?;
+        return target(&linked);
+    }
+    if kind.is_file() {
+        return Ok(Target::Replace(path.to_path_buf()));
+    }
+    if kind.is_dir() {
+        return Err("it is a directory".into());
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if kind.is_char_device() || kind.is_fifo() {
+            return Ok(Target::Through(path.to_path_buf()));
+        }
+        if kind.is_block_device() {
+            return Err(
+                "it is a block device (a disk): an output is never written onto one".into(),
+            );
+        }
+        if kind.is_socket() {
+            return Err("it is a socket".into());
+        }
+    }
+    Err("it is not a regular file".into())
+}
+
+/// Writes `bytes` to `path`: atomically (temporary file in the same directory, then rename) or
+/// through a device, as [`target`] decides.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
     let wrap = |error| OutputError {
         path: path.to_path_buf(),
         error,
     };
-    let mut temp = temp_beside(path, ".part").map_err(wrap)?;
-    let _pending = Pending::new(temp.path());
-    temp.write_all(bytes).map_err(wrap)?;
-    temp.as_file().sync_all().map_err(wrap)?;
-    temp.persist(path).map_err(|e| wrap(e.error))?;
+    match target(path).map_err(|m| wrap(std::io::Error::other(m)))? {
+        Target::Replace(real) => {
+            let mut temp = temp_beside(&real, ".part").map_err(wrap)?;
+            let _pending = Pending::new(temp.path());
+            temp.write_all(bytes).map_err(wrap)?;
+            temp.as_file().sync_all().map_err(wrap)?;
+            temp.persist(&real).map_err(|e| wrap(e.error))?;
+        }
+        Target::Through(device) => write_through(&device, bytes).map_err(wrap)?,
+    }
     Ok(())
+}
+
+/// Writes `bytes` into a device or FIFO, as a shell's `>` would.
+fn write_through(device: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let mut file = std::fs::OpenOptions::new().write(true).open(device)?;
+    file.write_all(bytes)?;
+    file.flush()
 }
 
 /// The directory a file is written in (`.` for a bare file name).
@@ -150,9 +220,14 @@ fn temp_beside(path: &Path, suffix: &str) -> std::io::Result<tempfile::NamedTemp
 /// all or none: each is prepared in a temporary file beside its target, and only
 /// [`Staged::commit`] moves them into place. Dropped without a commit (an error, a panic), it
 /// removes its temporary files and leaves the targets as they were.
+///
+/// Targets are decided by [`target`] when they are added: a link's target is replaced, and a
+/// device or FIFO is written through after every file has been moved into place (it cannot be
+/// put back).
 #[derive(Default)]
 pub struct Staged {
-    files: Vec<(PathBuf, tempfile::TempPath)>,
+    /// (the path given, how it is written, the prepared file).
+    files: Vec<(PathBuf, Target, tempfile::TempPath)>,
     /// The temporary files registered for removal on interruption.
     pending: Vec<Pending>,
 }
@@ -164,51 +239,59 @@ impl Staged {
 
     /// Prepares `bytes` for `path`.
     pub fn add(&mut self, path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+        let reserved = self.reserve(path)?;
+        std::fs::write(&reserved, bytes)
+            .and_then(|()| std::fs::File::open(&reserved)?.sync_all())
+            .map_err(|error| OutputError {
+                path: path.to_path_buf(),
+                error,
+            })
+    }
+
+    /// Reserves a temporary file for `path` (beside it, or beside a link's target; for a
+    /// device, in the system's temporary directory) for a writer that takes a path (it may
+    /// write it, or replace it by renaming its own file over it); returns that temporary path,
+    /// which [`Staged::commit`] then moves to (or writes into) the target.
+    pub fn reserve(&mut self, path: &Path) -> Result<PathBuf, OutputError> {
         let wrap = |error| OutputError {
             path: path.to_path_buf(),
             error,
         };
-        let mut temp = temp_beside(path, ".part").map_err(wrap)?;
-        self.pending.push(Pending::new(temp.path()));
-        temp.write_all(bytes).map_err(wrap)?;
-        temp.as_file().sync_all().map_err(wrap)?;
-        self.files.push((path.to_path_buf(), temp.into_temp_path()));
-        Ok(())
-    }
-
-    /// Reserves a temporary file beside `path` for a writer that takes a path (it may write
-    /// it, or replace it by renaming its own file over it); returns that temporary path, which
-    /// [`Staged::commit`] then moves to `path`.
-    pub fn reserve(&mut self, path: &Path) -> Result<PathBuf, OutputError> {
-        let temp = temp_beside(path, ".part")
-            .map_err(|error| OutputError {
-                path: path.to_path_buf(),
-                error,
-            })?
+        let target = target(path).map_err(|m| wrap(std::io::Error::other(m)))?;
+        let beside = match &target {
+            Target::Replace(real) => real.clone(),
+            Target::Through(_) => std::env::temp_dir().join("device"),
+        };
+        let temp = temp_beside(&beside, ".part")
+            .map_err(wrap)?
             .into_temp_path();
         let reserved = temp.to_path_buf();
         self.pending.push(Pending::new(&reserved));
-        self.files.push((path.to_path_buf(), temp));
+        self.files.push((path.to_path_buf(), target, temp));
         Ok(reserved)
     }
 
-    /// The targets, in the order they were added.
+    /// The targets as given, in the order they were added.
     pub fn targets(&self) -> impl Iterator<Item = &Path> {
-        self.files.iter().map(|(path, _)| path.as_path())
+        self.files.iter().map(|(path, _, _)| path.as_path())
     }
 
-    /// Moves every prepared file to its target. Targets that exist must be regular files (a
-    /// directory, link, device or pipe there is refused before anything moves). Existing
-    /// targets are first renamed aside, and put back if any move fails, so a failure leaves
-    /// every target as it was; on success the old versions are deleted.
+    /// Moves every prepared file to its target. Targets to replace must still be regular files
+    /// or absent (a directory, link, device or pipe put there meanwhile is refused before
+    /// anything moves). Existing targets are first renamed aside, and put back if any move
+    /// fails, so a failure leaves every target as it was; on success the old versions are
+    /// deleted, and then devices are written.
     pub fn commit(self) -> Result<(), OutputError> {
-        for (target, _) in &self.files {
-            match std::fs::symlink_metadata(target) {
+        for (path, target, _) in &self.files {
+            let Target::Replace(real) = target else {
+                continue;
+            };
+            match std::fs::symlink_metadata(real) {
                 Ok(meta) if !meta.file_type().is_file() => {
                     return Err(OutputError {
-                        path: target.clone(),
+                        path: path.clone(),
                         error: std::io::Error::other(
-                            "it exists and is not a regular file (a directory, link, device or pipe); stressfield replaces only regular files",
+                            "it is not a regular file now (a directory, link, device or pipe was put there while the outputs were prepared)",
                         ),
                     })
                 }
@@ -216,10 +299,18 @@ impl Staged {
                 Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
                 Err(error) => {
                     return Err(OutputError {
-                        path: target.clone(),
+                        path: path.clone(),
                         error,
                     })
                 }
+            }
+        }
+        let mut replaced = Vec::new();
+        let mut through = Vec::new();
+        for (path, target, temp) in self.files {
+            match target {
+                Target::Replace(real) => replaced.push((path, real, temp)),
+                Target::Through(device) => through.push((path, device, temp)),
             }
         }
         // Old versions renamed aside: (target, where it is now).
@@ -232,7 +323,7 @@ impl Staged {
                 let _ = old.keep();
             }
         };
-        for (target, _) in &self.files {
+        for (_, target, _) in &replaced {
             if !target.exists() {
                 continue;
             }
@@ -253,7 +344,7 @@ impl Staged {
             }
         }
         let mut placed: Vec<PathBuf> = Vec::new();
-        for (target, temp) in self.files {
+        for (path, target, temp) in replaced {
             if let Err(e) = temp.persist(&target) {
                 // `e.path` (the temporary file) is deleted when `e` drops.
                 for done in &placed {
@@ -261,7 +352,7 @@ impl Staged {
                 }
                 restore(aside);
                 return Err(OutputError {
-                    path: target,
+                    path,
                     error: e.error,
                 });
             }
@@ -269,6 +360,11 @@ impl Staged {
         }
         // Dropping the old versions deletes them.
         drop(aside);
+        for (path, device, temp) in through {
+            std::fs::read(&temp)
+                .and_then(|bytes| write_through(&device, &bytes))
+                .map_err(|error| OutputError { path, error })?;
+        }
         Ok(())
     }
 }
@@ -343,15 +439,89 @@ mod tests {
         let dir = tempfile::tempdir().expect("temp dir");
         let (a, b) = (dir.path().join("a.png"), dir.path().join("b.svg"));
         std::fs::write(&a, b"old a").expect("write");
-        std::fs::create_dir(&b).expect("mkdir");
         let mut staged = Staged::new();
         staged.add(&a, b"new a").expect("stage a");
         staged.add(&b, b"new b").expect("stage b");
+        // A directory put where b goes while the outputs were prepared.
+        std::fs::create_dir(&b).expect("mkdir");
         let error = staged.commit().expect_err("b is a directory");
         assert!(error.to_string().contains("b.svg"), "{error}");
         assert!(error.to_string().contains("not a regular file"), "{error}");
         assert_eq!(std::fs::read(&a).expect("read"), b"old a");
         assert_eq!(names(dir.path()), ["a.png", "b.svg"], "no temporary left");
+        // Known from the start, it is refused when it is added.
+        let error = Staged::new().add(&b, b"new b").expect_err("a directory");
+        assert!(error.to_string().contains("it is a directory"), "{error}");
+        assert!(write_atomic(&b, b"x")
+            .expect_err("a directory")
+            .to_string()
+            .contains("it is a directory"));
+    }
+
+    /// Issue 24, class 13: every output follows one policy ([`target`]). A link is followed
+    /// (its target replaced, the link kept), a character device is written through so that its
+    /// error is reported (a link to /dev/full fails with "No space left on device" instead of
+    /// succeeding by replacing the link), a directory is refused, by `write_atomic` and by
+    /// `Staged` alike.
+    #[cfg(unix)]
+    #[test]
+    fn links_and_devices_follow_one_policy() {
+        let dir = tempfile::tempdir().expect("temp dir");
+        let real = dir.path().join("real.csv");
+        std::fs::write(&real, b"old").expect("write");
+        let link = dir.path().join("link.csv");
+        std::os::unix::fs::symlink(&real, &link).expect("symlink");
+        let canonical = std::fs::canonicalize(&real).expect("canonical");
+        assert_eq!(target(&link), Ok(Target::Replace(canonical)));
+        write_atomic(&link, b"new").expect("through the link");
+        assert!(std::fs::symlink_metadata(&link)
+            .expect("link")
+            .file_type()
+            .is_symlink());
+        assert_eq!(std::fs::read(&real).expect("read"), b"new");
+        let mut staged = Staged::new();
+        staged.add(&link, b"staged").expect("stage");
+        staged.commit().expect("commit");
+        assert!(std::fs::symlink_metadata(&link)
+            .expect("link")
+            .file_type()
+            .is_symlink());
+        assert_eq!(std::fs::read(&real).expect("read"), b"staged");
+        assert_eq!(
+            names(dir.path()),
+            ["link.csv", "real.csv"],
+            "no temporary left"
+        );
+
+        let dangling = dir.path().join("dangling.csv");
+        std::os::unix::fs::symlink(dir.path().join("missing/x.csv"), &dangling).expect("symlink");
+        assert!(target(&dangling)
+            .expect_err("dangling")
+            .contains("symbolic link"));
+
+        let full = Path::new("/dev/full");
+        if full.exists() {
+            let to_full = dir.path().join("full.csv");
+            std::os::unix::fs::symlink(full, &to_full).expect("symlink");
+            assert_eq!(target(&to_full), Ok(Target::Through(full.to_path_buf())));
+            let error = write_atomic(&to_full, b"x").expect_err("a full device");
+            assert!(error.to_string().contains("No space left"), "{error}");
+            let mut staged = Staged::new();
+            staged.add(&to_full, b"x").expect("stage");
+            let error = staged.commit().expect_err("a full device");
+            assert!(error.to_string().contains("No space left"), "{error}");
+            assert!(std::fs::symlink_metadata(&to_full)
+                .expect("link")
+                .file_type()
+                .is_symlink());
+        }
+        let null = Path::new("/dev/null");
+        if null.exists() {
+            write_atomic(null, b"x").expect("written through");
+            let mut staged = Staged::new();
+            staged.add(null, b"x").expect("stage");
+            staged.commit().expect("written through");
+        }
     }
 
     #[test]

@@ -2,15 +2,11 @@
 //! already running), step by step as the steps are computed.
 //!
 //! A file is encoded here rather than by Rerun's own file sink, so that a failure names the
-//! file and the system's reason ("No space left on device") and no rename ever replaces
-//! something that is not a regular file:
-//! - a new path or a regular file: written into a temporary file beside it (registered with
-//!   [`crate::io::output::Pending`], so that an interruption removes it) and renamed over it once
-//!   complete;
-//! - a symbolic link: followed; its target is treated by these rules (the link stays);
-//! - a character device or a FIFO (`/dev/null`, a named pipe): written through, as a shell's
-//!   `>` would;
-//! - a directory, a block device or a socket: refused.
+//! file and the system's reason ("No space left on device"), and so that it follows the policy
+//! of every output ([`crate::io::output::target`]): a new path or a regular file is written
+//! into a temporary file beside it (registered with [`crate::io::output::Pending`], so that an
+//! interruption removes it) and renamed over it once complete; a link is followed; a character
+//! device or a FIFO is written through; a directory, block device or socket is refused.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -23,7 +19,7 @@ use rerun::sink::{LogSink, SinkFlushError};
 use rerun::RecordingStream;
 
 use super::{RecordError, APPLICATION_ID};
-use crate::io::output::Pending;
+use crate::io::output::{target, Pending, Target};
 
 /// The address `--connect` uses when none is given: a viewer on this machine, default port.
 pub const DEFAULT_VIEWER_URL: &str = rerun::DEFAULT_CONNECT_URL;
@@ -50,58 +46,6 @@ impl std::fmt::Display for Destination {
             Destination::Connect(url) => write!(f, "the Rerun viewer at {url}"),
         }
     }
-}
-
-/// How a file target is written.
-#[derive(Debug, PartialEq, Eq)]
-enum FileKind {
-    /// Into a temporary file in the same directory, then renamed to this path.
-    Replace(PathBuf),
-    /// Opened and written in place (a character device or a FIFO).
-    Through(PathBuf),
-}
-
-/// Decides how `path` is written, or why it cannot be (see the module doc).
-fn file_kind(path: &Path) -> Result<FileKind, String> {
-    let metadata = match std::fs::symlink_metadata(path) {
-        Ok(metadata) => metadata,
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-            return Ok(FileKind::Replace(path.to_path_buf()))
-        }
-        Err(e) => return Err(e.to_string()),
-    };
-    let kind = metadata.file_type();
-    if kind.is_symlink() {
-        let target = std::fs::canonicalize(path)
-            .map_err(|e| format!("it is a symbolic link whose target cannot be reached ({e})"))?;
-        return match file_kind(&target)? {
-            // The target is a new file or a regular one: replace it, keep the link.
-            FileKind::Replace(_) => Ok(FileKind::Replace(target)),
-            through => Ok(through),
-        };
-    }
-    if kind.is_file() {
-        return Ok(FileKind::Replace(path.to_path_buf()));
-    }
-    if kind.is_dir() {
-        return Err("it is a directory".into());
-    }
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        if kind.is_char_device() || kind.is_fifo() {
-            return Ok(FileKind::Through(path.to_path_buf()));
-        }
-        if kind.is_block_device() {
-            return Err(
-                "it is a block device (a disk): a recording is never written onto one".into(),
-            );
-        }
-        if kind.is_socket() {
-            return Err("it is a socket".into());
-        }
-    }
-    Err("it is not a regular file".into())
 }
 
 /// The encoder of a file or standard output, and the first error it met.
@@ -272,8 +216,8 @@ impl Output {
             })
         };
         match destination {
-            Destination::File(path) => match file_kind(path).map_err(|m| output_error(path, m))? {
-                FileKind::Replace(target) => {
+            Destination::File(path) => match target(path).map_err(|m| output_error(path, m))? {
+                Target::Replace(target) => {
                     let dir = match target.parent() {
                         Some(p) if !p.as_os_str().is_empty() => p,
                         _ => Path::new("."),
@@ -300,7 +244,7 @@ impl Output {
                         path,
                     )
                 }
-                FileKind::Through(target) => {
+                Target::Through(target) => {
                     let file = std::fs::OpenOptions::new()
                         .write(true)
                         .open(&target)
@@ -483,35 +427,6 @@ mod tests {
         out.write_all(b"step").expect("written through");
         assert_eq!(out.inner, b"header layout step");
         assert!(out.held.is_empty());
-    }
-
-    #[test]
-    fn file_kinds_follow_links_and_refuse_directories() {
-        let dir = tempfile::tempdir().expect("dir");
-        let new = dir.path().join("new.rrd");
-        assert_eq!(file_kind(&new), Ok(FileKind::Replace(new.clone())));
-        std::fs::write(&new, b"old").expect("write");
-        assert_eq!(file_kind(&new), Ok(FileKind::Replace(new.clone())));
-        assert!(file_kind(dir.path())
-            .expect_err("a directory")
-            .contains("directory"));
-        #[cfg(unix)]
-        {
-            let link = dir.path().join("link.rrd");
-            std::os::unix::fs::symlink(&new, &link).expect("symlink");
-            let target = std::fs::canonicalize(&new).expect("canonical");
-            assert_eq!(file_kind(&link), Ok(FileKind::Replace(target)));
-            let dangling = dir.path().join("dangling.rrd");
-            std::os::unix::fs::symlink(dir.path().join("missing/x.rrd"), &dangling)
-                .expect("symlink");
-            assert!(file_kind(&dangling)
-                .expect_err("dangling")
-                .contains("symbolic link"));
-            let null = Path::new("/dev/null");
-            if null.exists() {
-                assert_eq!(file_kind(null), Ok(FileKind::Through(null.to_path_buf())));
-            }
-        }
     }
 
     /// A writer that fails as a full disk does.

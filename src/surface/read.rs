@@ -431,11 +431,9 @@ pub fn parse_xyz(text: &str, path: &str, options: &ReadOptions) -> Result<Height
             }
         }
     }
-    HeightMap::new(heights, spacing).map_err(|source| {
-        ReadError::Surface {
-            path: path.to_string(),
-            source,
-        }
+    HeightMap::new(heights, spacing).map_err(|source| ReadError::Surface {
+        path: path.to_string(),
+        source,
     })
 }
 
@@ -596,7 +594,10 @@ mod tests {
         };
         let map = parse_xyz(&text, "s.xyz", &wrong).expect("parsed");
         let error = agree(&map, wrong.spacing_m, None, "s.xyz").expect_err("contradiction");
-        assert!(error.to_string().contains("was given (--spacing"), "{error}");
+        assert!(
+            error.to_string().contains("was given (--spacing"),
+            "{error}"
+        );
     }
 
     /// Issue 24, class 7: an overflowing number is an error naming its line and column, never

@@ -340,3 +340,44 @@ fn outputs_follow_links_and_report_device_errors() {
         .expect("read")
         .starts_with(b"\x89PNG"));
 }
+
+/// Class 6: a periodic approach that closes the gap everywhere is refused by `check` as full
+/// contact (it used to run 5000 iterations to "did not converge"), and each load of a rough
+/// sweep is held to the scene's own limits (1e12 N passed `check` and failed in `record`).
+#[test]
+fn rough_controls_beyond_any_solution_are_refused_at_check() {
+    let dir = tempfile::tempdir().expect("dir");
+    let worn = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/surfaces/worn.asc");
+    let scene = |name: &str, control: &str, sweep: &str| {
+        let path = dir.path().join(name);
+        let text = format!(
+            "format = 1\n[contact]\nkind = \"rough\"\n{control}\nperiodic = true\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface]\nfile = \"{worn}\"\n{sweep}"
+        );
+        std::fs::write(&path, text).expect("scene");
+        path
+    };
+    let check = |path: &std::path::Path| run(&["check", path.to_str().expect("utf8")]);
+    let closing = scene("closing.toml", "approach = \"0.8 um\"", "");
+    let output = check(&closing);
+    assert_eq!(output.status.code(), Some(1));
+    let message = stderr(&output);
+    assert!(
+        message.contains("contact.approach") && message.contains("full contact"),
+        "{message}"
+    );
+    let reaching = scene("reaching.toml", "approach = \"0.5 um\"", "");
+    let output = check(&reaching);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let sweep = scene(
+        "sweep.toml",
+        "load = \"1 N\"",
+        "[sweep]\nparameter = \"load\"\nvalues = [\"1 N\", \"1e12 N\"]\n",
+    );
+    let output = check(&sweep);
+    assert_eq!(output.status.code(), Some(1));
+    let message = stderr(&output);
+    assert!(
+        message.contains("sweep.values[1]") && message.contains("combined modulus"),
+        "{message}"
+    );
+}

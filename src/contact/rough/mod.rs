@@ -77,6 +77,12 @@ pub struct RoughContactProblem<'a> {
 
 /// Default relative tolerance.
 pub const DEFAULT_TOLERANCE: f64 = 1e-8;
+/// Periodic and elastic, an approach within this fraction of the mean separation (or beyond
+/// it) closes the gap everywhere: the mean gap is the mean separation less the approach, and
+/// as it vanishes the pressure needed grows without bound (at it, any uniform pressure added
+/// satisfies the contact conditions).
+pub const FULL_CONTACT_MARGIN: f64 = 1e-6;
+
 /// Default cap on iterations.
 pub const DEFAULT_MAX_ITERATIONS: usize = 5000;
 
@@ -285,6 +291,21 @@ pub fn solve(
         Control::Approach { m } => Some(m),
         _ => None,
     };
+    // Periodic and elastic, the operator's mean displacement is zero, so the mean gap is the
+    // mean separation less the approach: at or beyond it the gap closes everywhere (beyond it no
+    // pressure satisfies the contact conditions, and the iteration would only diverge).
+    if let Some(approach) = approach_given {
+        if problem.periodicity == Periodicity::Periodic
+            && hardness.is_infinite()
+            && approach >= separation_mean * (1.0 - FULL_CONTACT_MARGIN)
+        {
+            return Err(RoughContactError::FullContact {
+                what: format!(
+                    "an approach of {approach:.4e} m closes the whole gap (periodic: the mean gap is the mean separation {separation_mean:.4e} m less the approach)"
+                ),
+            });
+        }
+    }
     // Start: the mean pressure everywhere, or, under a given approach, each cell pressed by
     // its own interference alone.
     let mut pressure = match (target_mean, approach_given) {

@@ -148,3 +148,48 @@ fn cells_that_penetrate_enter_when_every_loaded_cell_is_at_the_cap() {
     assert!(pressure.iter().filter(|&&p| p > 0.0).count() > 1);
     assert!(difference < 1e-6 * hardness, "{difference}");
 }
+
+/// Issue 24, class 6: periodic and elastic, an approach at the mean separation closes the gap
+/// everywhere. Just below it the solve converges with nearly full contact and a mean gap of
+/// the mean separation less the approach; at it (and beyond) it is the full-contact error at
+/// once, not thousands of diverging iterations.
+#[test]
+fn a_periodic_approach_that_closes_the_gap_is_full_contact() {
+    let n = 16;
+    let phase = 2.0 * std::f64::consts::PI / n as f64;
+    let heights = Array2::from_shape_fn((n, n), |(j, i)| {
+        1e-9 * ((phase * i as f64).cos() + (phase * j as f64).cos())
+    });
+    let top = heights.iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v));
+    let mean_separation = top - heights.mean().expect("mean");
+    let problem = |m: f64| RoughContactProblem {
+        heights_m: heights.view(),
+        spacing_m: [SPIKE_SPACING; 2],
+        e_star_pa: SPIKE_E_STAR,
+        periodicity: Periodicity::Periodic,
+        control: Control::Approach { m },
+        hardness_pa: None,
+        tolerance: DEFAULT_TOLERANCE,
+        max_iterations: 2000,
+        memory_limit_bytes: 1 << 30,
+    };
+    let below = solve(&problem(0.5 * mean_separation), &mut |_, _| {}).expect("converges");
+    assert!(below.contact_fraction > 0.1 && below.contact_fraction < 1.0);
+    // The mean gap is the mean separation less the approach (the mean displacement is zero).
+    assert!(
+        (below.mean_gap_m - 0.5 * mean_separation).abs() < 1e-6 * mean_separation,
+        "{} against {}",
+        below.mean_gap_m,
+        0.5 * mean_separation
+    );
+    for factor in [1.0, 1.2] {
+        let mut steps = 0;
+        let error = solve(&problem(factor * mean_separation), &mut |_, _| steps += 1)
+            .expect_err("full contact");
+        assert!(
+            matches!(error, RoughContactError::FullContact { .. }),
+            "{error}"
+        );
+        assert_eq!(steps, 0, "refused before iterating");
+    }
+}

@@ -407,17 +407,26 @@ impl Validator<'_> {
     /// height (beyond it the surfaces overlap everywhere). With a hardness `H` (the pressure
     /// cap) the load must also stay below `H` times the nominal area: the most the fully
     /// plastic surface carries. `hardness_key` is the key the hardness came from.
+    ///
+    /// Periodic and without a hardness, an approach must also stay below the highest point's
+    /// height above the mean plane (Sp): a periodic surface's mean displacement is zero, so the
+    /// mean gap is that height less the approach, and at it the gap closes everywhere (beyond
+    /// it there is no elastic solution).
+    ///
+    /// `key` names the load, mean pressure or approach (`contact.load`, or a sweep's
+    /// `sweep.values[i]` for each of its loads).
     fn rough_control(
         &self,
         rough: &RoughSpec,
+        key: &str,
         heights: &HeightMap,
         hardness_key: &str,
     ) -> Result<(), SceneError> {
         let [width_m, length_m] = heights.size_m();
         let area_m2 = width_m * length_m;
         let mean_pa = match rough.control {
-            Some(Control::Load { newtons }) => Some(("contact.load", newtons / area_m2)),
-            Some(Control::MeanPressure { pa }) => Some(("contact.mean_pressure", pa)),
+            Some(Control::Load { newtons }) => Some((key, newtons / area_m2)),
+            Some(Control::MeanPressure { pa }) => Some((key, pa)),
             _ => None,
         };
         if let (Some((key, mean_pa)), Some(hardness_pa)) = (mean_pa, rough.hardness_pa) {
@@ -438,7 +447,7 @@ impl Validator<'_> {
         match (rough.control, rough.e_star_pa) {
             (Some(Control::Load { newtons }), Some(e_star)) if newtons / area_m2 > e_star => {
                 Err(self.error(
-                    "contact.load",
+                    key,
                     format!(
                         "{} N over the map's {} m² is a mean pressure of {} Pa, more than the combined modulus E* = {} Pa",
                         crate::io::text::approx(newtons),
@@ -450,7 +459,7 @@ impl Validator<'_> {
                 ))
             }
             (Some(Control::MeanPressure { pa }), Some(e_star)) if pa > e_star => Err(self.error(
-                "contact.mean_pressure",
+                key,
                 format!(
                     "{} Pa is more than the combined modulus E* = {} Pa",
                     crate::io::text::approx(pa),
@@ -459,21 +468,35 @@ impl Validator<'_> {
                 Some("rough contact is elastic (up to a hardness cap): give a small fraction of E*"),
             )),
             (Some(Control::Approach { m }), _) => {
-                let (low, high) = heights
-                    .heights_m()
+                let map = heights.heights_m();
+                let (low, high) = map
                     .iter()
                     .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| {
                         (lo.min(h), hi.max(h))
                     });
+                let mean = map.sum() / map.len() as f64;
                 if m > high - low {
                     Err(self.error(
-                        "contact.approach",
+                        key,
                         format!(
                             "{} m is more than the surface's peak-to-valley height {} m: the surfaces would overlap everywhere",
                             crate::io::text::approx(m),
                             crate::io::text::approx(high - low)
                         ),
                         Some("the approach is counted from first contact: give a fraction of the peak-to-valley height"),
+                    ))
+                } else if rough.periodic
+                    && rough.hardness_pa.is_none()
+                    && m >= (high - mean) * (1.0 - crate::contact::rough::FULL_CONTACT_MARGIN)
+                {
+                    Err(self.error(
+                        key,
+                        format!(
+                            "{} m closes the gap everywhere (full contact): a periodic surface's mean displacement is zero, so its mean gap is the highest point's height above the mean plane, {} m, less the approach",
+                            crate::io::text::approx(m),
+                            crate::io::text::approx(high - mean)
+                        ),
+                        Some("give an approach below that height, or press it by a load (contact.load or contact.mean_pressure), which never closes the gap completely"),
                     ))
                 } else {
                     Ok(())
@@ -548,13 +571,18 @@ impl Validator<'_> {
                 rough.max_iterations = n as usize;
             }
         }
+        let hardness_key = if raw.contact.hardness.is_some() {
+            "contact.hardness"
+        } else {
+            "contact.yield_strength"
+        };
         if let Some(rough) = &contact.rough {
-            let hardness_key = if raw.contact.hardness.is_some() {
-                "contact.hardness"
-            } else {
-                "contact.yield_strength"
+            let key = match rough.control {
+                Some(Control::Load { .. }) => "contact.load",
+                Some(Control::MeanPressure { .. }) => "contact.mean_pressure",
+                _ => "contact.approach",
             };
-            self.rough_control(rough, &surface.heights, hardness_key)?;
+            self.rough_control(rough, key, &surface.heights, hardness_key)?;
         }
         let figure = self.figure(&raw.figure, &contact)?;
         let thermal = self.thermal(&raw, &contact)?;
@@ -577,7 +605,23 @@ impl Validator<'_> {
             surface: Some(surface),
         };
         if let Some(sweep) = &raw.sweep {
-            scene.sweep = Some(self.sweep(sweep, &scene)?);
+            let sweep = self.sweep(sweep, &scene)?;
+            // Each load of a rough sweep is held to the limits of the scene's own load.
+            if let (Some(rough), Some(surface)) = (&scene.contact.rough, &scene.surface) {
+                for (k, &newtons) in sweep.values.iter().enumerate() {
+                    let stepped = RoughSpec {
+                        control: Some(Control::Load { newtons }),
+                        ..*rough
+                    };
+                    self.rough_control(
+                        &stepped,
+                        &sweep.value_key(k),
+                        &surface.heights,
+                        hardness_key,
+                    )?;
+                }
+            }
+            scene.sweep = Some(sweep);
         }
         Ok(scene)
     }

@@ -381,3 +381,23 @@ fn rough_controls_beyond_any_solution_are_refused_at_check() {
         "{message}"
     );
 }
+
+/// Class 4: a periodic rough scene on a map 1024 times longer than wide is refused by `check`
+/// naming `contact.periodic` (it took 44 s and 4.6 GB to solve).
+#[test]
+fn a_periodic_strip_is_refused_at_check() {
+    let dir = tempfile::tempdir().expect("dir");
+    let path = dir.path().join("strip.toml");
+    std::fs::write(
+        &path,
+        "format = 1\n[contact]\nkind = \"rough\"\nmean_pressure = \"1 GPa\"\nperiodic = true\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"rigid\"\n[surface.generate]\nsamples = [8, 8192]\nspacing = \"1 um\"\nhurst = 0.8\nrolloff = \"8 um\"\ncutoff = \"4 um\"\nrms_slope = 0.1\n",
+    )
+    .expect("scene");
+    let output = run(&["check", path.to_str().expect("utf8")]);
+    assert_eq!(output.status.code(), Some(1));
+    let message = stderr(&output);
+    assert!(
+        message.contains("contact.periodic") && message.contains("1024 times longer"),
+        "{message}"
+    );
+}

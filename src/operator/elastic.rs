@@ -93,6 +93,21 @@ pub fn uniform_patch_displacement(x: f64, y: f64, half_x: f64, half_y: f64) -> f
 /// `K(i, j) π E*` for the offsets `first_x <= i < first_x + count_x` (and the same in y) of
 /// cells `dx x dy`, from one row of corner terms to the next: `[count_y, count_x]`.
 fn coefficients(spacing_m: [f64; 2], first: [i64; 2], count: [usize; 2]) -> Array2<f64> {
+    let mut out = Array2::zeros((count[1], count[0]));
+    coefficient_rows(spacing_m, first, count, |l, row| {
+        out.row_mut(l).assign(&ndarray::ArrayView1::from(row));
+    });
+    out
+}
+
+/// The rows of [`coefficients`], one at a time (`visit(l, row)`), so that a sum over many
+/// periodic images holds two rows of corner terms instead of every coefficient.
+fn coefficient_rows(
+    spacing_m: [f64; 2],
+    first: [i64; 2],
+    count: [usize; 2],
+    mut visit: impl FnMut(usize, &[f64]),
+) {
     let [dx, dy] = spacing_m;
     let [first_x, first_y] = first;
     let [count_x, count_y] = count;
@@ -100,22 +115,39 @@ fn coefficients(spacing_m: [f64; 2], first: [i64; 2], count: [usize; 2]) -> Arra
     let corner_x: Vec<f64> = (0..=count_x)
         .map(|k| (first_x as f64 + k as f64 - 0.5) * dx)
         .collect();
-    let row = |l: usize| -> Vec<f64> {
+    let fill = |l: usize, row: &mut Vec<f64>| {
         let y = (first_y as f64 + l as f64 - 0.5) * dy;
-        corner_x.iter().map(|&x| love_corner(x, y)).collect()
+        row.clear();
+        row.extend(corner_x.iter().map(|&x| love_corner(x, y)));
     };
-    let mut out = Array2::zeros((count_y, count_x));
-    let mut below = row(0);
+    let (mut below, mut above) = (Vec::new(), Vec::new());
+    let mut out = vec![0.0; count_x];
+    fill(0, &mut below);
     for l in 0..count_y {
-        let above = row(l + 1);
+        fill(l + 1, &mut above);
         for i in 0..count_x {
             // Offset (X, Y) = (i, l) cells: X + a is corner i + 1, X - a corner i; Y + b the
             // row above, Y - b the row below.
-            out[[l, i]] = above[i + 1] - below[i + 1] - above[i] + below[i];
+            out[i] = above[i + 1] - below[i + 1] - above[i] + below[i];
         }
-        below = above;
+        visit(l, &out);
+        std::mem::swap(&mut below, &mut above);
     }
-    out
+}
+
+/// The longest period a periodic operator takes, in lengths of the shorter: its kernel sums
+/// the images out to 1.5 times the longer period each way (see [`periodic_kernel`]), about
+/// `9 x aspect` corner terms a cell, so a map 1024 times longer than wide took minutes; 64
+/// keeps it within about 600 terms a cell (2.5 s at 65,536 cells).
+pub const MAX_PERIODIC_ASPECT: f64 = 64.0;
+
+/// The longer period over the shorter of a `[ny, nx]` grid of cells `[dx, dy]`.
+pub fn period_aspect(shape: [usize; 2], spacing_m: [f64; 2]) -> f64 {
+    let (lx, ly) = (
+        shape[1] as f64 * spacing_m[0],
+        shape[0] as f64 * spacing_m[1],
+    );
+    lx.max(ly) / lx.min(ly)
 }
 
 /// Which convolution the operator makes.
@@ -251,22 +283,22 @@ fn periodic_kernel_with_images(
         -(images_x as i64) * nx as i64 - half_x,
         -(images_y as i64) * ny as i64 - half_y,
     ];
-    let all = coefficients(
+    let mut kernel = Array2::zeros((ny, nx));
+    // Each row folded into one period as it is made (the rows of all images at once took
+    // memory growing with the square of the longer period).
+    coefficient_rows(
         spacing_m,
         first,
         [(2 * images_x + 1) * nx, (2 * images_y + 1) * ny],
+        |l, row| {
+            let fj = (first[1] + l as i64).rem_euclid(ny as i64) as usize;
+            let mut folded = kernel.row_mut(fj);
+            for (i, &k) in row.iter().enumerate() {
+                let fi = (first[0] + i as i64).rem_euclid(nx as i64) as usize;
+                folded[fi] += k;
+            }
+        },
     );
-    let mut kernel = Array2::zeros((ny, nx));
-    for ((l, i), &k) in all.indexed_iter() {
-        // Signed offset of this coefficient, folded into one period.
-        let ox = first[0] + i as i64;
-        let oy = first[1] + l as i64;
-        let (fi, fj) = (
-            ox.rem_euclid(nx as i64) as usize,
-            oy.rem_euclid(ny as i64) as usize,
-        );
-        kernel[[fj, fi]] += k;
-    }
     if corrected {
         let (lx, ly) = (nx as f64 * dx, ny as f64 * dy);
         let (a, b) = ((images_x as f64 + 0.5) * lx, (images_y as f64 + 0.5) * ly);

@@ -216,6 +216,16 @@ pub fn solve(
     {
         return Err(RoughContactError::NotFinite { row, column, value });
     }
+    let aspect = crate::operator::elastic::period_aspect([ny, nx], problem.spacing_m);
+    if problem.periodicity == Periodicity::Periodic
+        && aspect > crate::operator::elastic::MAX_PERIODIC_ASPECT
+    {
+        return Err(parameter(
+            "a periodic map's longer side over its shorter",
+            "must be at most 64 (the periodic kernel's images reach 1.5 times the longer side)",
+            aspect,
+        ));
+    }
     let needed = RoughContactProblem::memory_bytes([ny, nx], problem.periodicity);
     if needed > problem.memory_limit_bytes {
         return Err(RoughContactError::TooLarge {

@@ -193,3 +193,34 @@ fn a_periodic_approach_that_closes_the_gap_is_full_contact() {
         assert_eq!(steps, 0, "refused before iterating");
     }
 }
+
+/// Issue 24, class 4: a periodic map more than 64 times longer than wide is refused before
+/// anything is built (its kernel's images grow with the square of the longer side: 8 x 8192
+/// cells took 44 s and 4.6 GB); at 64 it solves.
+#[test]
+fn a_periodic_map_far_longer_than_wide_is_refused() {
+    let strip = |nx: usize| {
+        Array2::from_shape_fn((4, nx), |(j, i)| {
+            1e-9 * ((i as f64 * 0.7).sin() + (j as f64 * 1.3).cos())
+        })
+    };
+    let problem = |heights: &Array2<f64>| {
+        solve(
+            &RoughContactProblem {
+                heights_m: heights.view(),
+                spacing_m: [SPIKE_SPACING; 2],
+                e_star_pa: SPIKE_E_STAR,
+                periodicity: Periodicity::Periodic,
+                control: Control::MeanPressure { pa: 1e8 },
+                hardness_pa: None,
+                tolerance: DEFAULT_TOLERANCE,
+                max_iterations: 2000,
+                memory_limit_bytes: 1 << 30,
+            },
+            &mut |_, _| {},
+        )
+    };
+    let error = problem(&strip(4 * 65)).expect_err("aspect 65");
+    assert!(error.to_string().contains("at most 64"), "{error}");
+    problem(&strip(4 * 64)).expect("aspect 64 solves");
+}

@@ -424,6 +424,20 @@ impl Validator<'_> {
     ) -> Result<(), SceneError> {
         let [width_m, length_m] = heights.size_m();
         let area_m2 = width_m * length_m;
+        let aspect = width_m.max(length_m) / width_m.min(length_m);
+        if rough.periodic && aspect > crate::operator::elastic::MAX_PERIODIC_ASPECT {
+            return Err(self.error(
+                "contact.periodic",
+                format!(
+                    "the map is {} times longer than wide ({} x {} m): a periodic contact's kernel sums the images out to 1.5 times the longer side, so its time grows with the square of the longer side; at most {} here",
+                    crate::io::text::approx(aspect),
+                    crate::io::text::approx(width_m),
+                    crate::io::text::approx(length_m),
+                    crate::operator::elastic::MAX_PERIODIC_ASPECT
+                ),
+                Some("solve it as an isolated contact (periodic = false), or use a map closer to square"),
+            ));
+        }
         let mean_pa = match rough.control {
             Some(Control::Load { newtons }) => Some((key, newtons / area_m2)),
             Some(Control::MeanPressure { pa }) => Some((key, pa)),

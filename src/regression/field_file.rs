@@ -356,4 +356,55 @@ mod tests {
         let check = compare(&[panel(0.0)], &[nan], 1.0, "p0", AXES);
         assert!(check.mismatch.is_some(), "{}", check.summary());
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: 256,
+            rng_seed: proptest::test_runner::RngSeed::Fixed(24),
+            failure_persistence: None,
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+
+        /// Issue 24: the mutation test of scenes, extended to reference files. A reference
+        /// `.npz` with bytes overwritten (in its zip headers, `.npy` headers or data) or cut
+        /// short is refused with a reason or read as a consistent field; never a panic or an
+        /// allocation beyond its budget; a field read back compares without panicking, and
+        /// its axes are finite.
+        #[test]
+        fn mutated_reference_files_are_refused_or_consistent(
+            edits in proptest::collection::vec((0usize..4096, proptest::prelude::any::<u8>()), 1..6),
+            cut in proptest::prelude::any::<proptest::sample::Index>(),
+            truncate in proptest::prelude::any::<bool>(),
+        ) {
+            let panels = vec![panel(0.0), panel(0.25)];
+            let mut bytes = encode(&panels).expect("encodes");
+            for (at, byte) in edits {
+                let at = at % bytes.len();
+                bytes[at] = byte;
+            }
+            if truncate {
+                bytes.truncate(cut.index(bytes.len()));
+            }
+            match decode_within(&bytes, 1 << 20) {
+                Err(error) => {
+                    let text = error.to_string();
+                    proptest::prop_assert!(text.contains("--update"), "{}", text);
+                }
+                Ok(read) => {
+                    for field in &read {
+                        proptest::prop_assert_eq!(
+                            field.values.dim(),
+                            (field.vertical.len(), field.horizontal.len())
+                        );
+                        proptest::prop_assert!(field.horizontal.iter().all(|v| v.is_finite()));
+                        proptest::prop_assert!(field.vertical.iter().all(|v| v.is_finite()));
+                    }
+                    let check = compare(&panels, &read, 1e-6, "p0", AXES);
+                    if read == panels {
+                        proptest::prop_assert!(check.mismatch.is_none());
+                    }
+                }
+            }
+        }
+    }
 }

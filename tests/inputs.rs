@@ -261,6 +261,14 @@ fn meaningless_statistics_are_null_with_a_reason() {
         "{text}"
     );
     assert!(text.contains("n/a: hurst, fractal_dimension"), "{text}");
+    // No summit on rows flat along x: the measured summit statistics are null, not inf or -0.
+    assert_eq!(json["summits"], 0, "{json}");
+    assert!(
+        json["summit_height_std_m"].is_null() && json["summit_mean_height_m"].is_null(),
+        "{json}"
+    );
+    assert!(text.contains("n/a: summit_radius_m"), "{text}");
+    assert!(!text.contains("inf"), "{text}");
     // The highest sample 1e-5 um above its neighbours along x: a tip radius of about 1 cm.
     let (text, json) = surface("tip.asc", &|i, j| match (i, j) {
         (16, 16) => 1.00001,

@@ -107,6 +107,15 @@ pub struct SurfaceReport {
     pub null_reasons: Vec<String>,
 }
 
+/// `value` with `decimals`, or `n/a` where it is not a number (a statistic that cannot be had).
+fn or_na(value: f64, decimals: usize) -> String {
+    if value.is_finite() {
+        format!("{value:.decimals$}")
+    } else {
+        "n/a".to_string()
+    }
+}
+
 /// How many summit height deviations above the mean summit height the GW rows are given at.
 const GW_SEPARATIONS_IN_SIGMA: [f64; 4] = [3.0, 2.0, 1.0, 0.0];
 
@@ -145,6 +154,11 @@ impl SurfaceReport {
                 c.profile.flat_rows, c.shape[0]
             ));
         }
+        // Without a summit the measured summit statistics are averages of nothing.
+        let summit = |v: f64| if c.summits.count > 0 { v } else { f64::NAN };
+        if c.summits.count == 0 {
+            null_reasons.push("summit_radius_m, summit_height_std_m, summit_mean_height_m, plasticity_index: the map has no summit (no sample above its 8 neighbours), so there is nothing to average".to_string());
+        }
         let (q0, q1) = c.spectra.band_q;
         let greenwood_williamson = e_star_pa
             .filter(|_| c.summits.count > 0 && c.summits.height_std_m > 0.0)
@@ -179,9 +193,9 @@ impl SurfaceReport {
             hurst_band_m: [2.0 * PI / q1, 2.0 * PI / q0],
             nayak_alpha: c.moments.nayak_alpha,
             summit_density_per_m2: c.summits.density_per_m2,
-            summit_radius_m: c.summits.radius_m,
-            summit_height_std_m: c.summits.height_std_m,
-            summit_mean_height_m: c.summits.mean_height_m,
+            summit_radius_m: summit(c.summits.radius_m),
+            summit_height_std_m: summit(c.summits.height_std_m),
+            summit_mean_height_m: summit(c.summits.mean_height_m),
             summits: c.summits.count,
             mccool_summit_density_per_m2: c.mccool.density_per_m2,
             mccool_summit_radius_m: c.mccool.radius_m,
@@ -203,7 +217,8 @@ impl SurfaceReport {
             hardness_pa,
             plasticity_index: e_star_pa
                 .zip(hardness_pa)
-                .map(|(e, h)| plasticity_index(e, h, c.summits.height_std_m, c.summits.radius_m).0),
+                .map(|(e, h)| plasticity_index(e, h, c.summits.height_std_m, c.summits.radius_m).0)
+                .filter(|psi| psi.is_finite() && c.summits.count > 0),
             asperity_height_m: c.asperity.height_m,
             asperity_radius_m,
             asperity_p0_pa: asperity.map(|a| a.p0_pa),
@@ -290,8 +305,8 @@ impl SurfaceReport {
             value(
                 "β",
                 format!(
-                    "{:.1} | {:.1} µm",
-                    um(self.summit_radius_m),
+                    "{} | {:.1} µm",
+                    or_na(um(self.summit_radius_m), 1),
                     um(self.mccool_summit_radius_m)
                 ),
                 "mean tip radius",
@@ -299,8 +314,8 @@ impl SurfaceReport {
             value(
                 "σs",
                 format!(
-                    "{:.3} | {:.3} µm",
-                    um(self.summit_height_std_m),
+                    "{} | {:.3} µm",
+                    or_na(um(self.summit_height_std_m), 3),
                     um(self.mccool_summit_height_std_m)
                 ),
                 "summit height spread",
@@ -448,20 +463,20 @@ impl SurfaceReport {
         )?;
         writeln!(
             out,
-            "  mean tip radius (um)        {:>12.3}    {:>12.3}",
-            um(self.summit_radius_m),
+            "  mean tip radius (um)        {:>12}    {:>12.3}",
+            or_na(um(self.summit_radius_m), 3),
             um(self.mccool_summit_radius_m)
         )?;
         writeln!(
             out,
-            "  summit height std (um)      {:>12.5}    {:>12.5}",
-            um(self.summit_height_std_m),
+            "  summit height std (um)      {:>12}    {:>12.5}",
+            or_na(um(self.summit_height_std_m), 5),
             um(self.mccool_summit_height_std_m)
         )?;
         writeln!(
             out,
-            "  mean summit height (um)     {:>12.5}    {:>12.5}",
-            um(self.summit_mean_height_m),
+            "  mean summit height (um)     {:>12}    {:>12.5}",
+            or_na(um(self.summit_mean_height_m), 5),
             um(self.mccool_summit_mean_height_m)
         )?;
         writeln!(out, "  ({} summits)", self.summits)?;

@@ -558,6 +558,46 @@ mod tests {
         );
     }
 
+    /// Issue 24, class 8: an x3p says its spacing and its heights' unit (metres) itself: a
+    /// `--spacing` or `--height-unit` that contradicts it is refused naming both values; one
+    /// that agrees is accepted.
+    #[test]
+    fn flags_contradicting_an_x3p_are_refused() {
+        let heights = Array2::from_shape_fn((6, 8), |(j, i)| (i as f64 - j as f64) * 1e-8);
+        let map = HeightMap::new(heights, [1e-6, 2e-6]).expect("map");
+        let dir = tempfile::tempdir().expect("dir");
+        let path = dir.path().join("s.x3p");
+        std::fs::write(&path, super::super::x3p::write(&map).expect("x3p")).expect("write");
+        let read = |options: ReadOptions| read_surface(&path, &options);
+        assert_eq!(read(ReadOptions::default()).expect("plain"), map);
+        let agreeing = ReadOptions {
+            spacing_m: Some([1e-6, 2e-6]),
+            height_unit_m: Some(1.0),
+            ..ReadOptions::default()
+        };
+        assert_eq!(read(agreeing).expect("agreeing"), map);
+        let error = read(ReadOptions {
+            height_unit_m: Some(1e-6),
+            ..ReadOptions::default()
+        })
+        .expect_err("a height unit of um")
+        .to_string();
+        assert!(
+            error.contains("1e-6 m was given (--height-unit") && error.contains("metres"),
+            "{error}"
+        );
+        let error = read(ReadOptions {
+            spacing_m: Some([1e-6, 1e-6]),
+            ..ReadOptions::default()
+        })
+        .expect_err("another spacing")
+        .to_string();
+        assert!(
+            error.contains("2.000000e-6") && error.contains("was given (--spacing"),
+            "{error}"
+        );
+    }
+
     /// Issue 24, class 17: an XYZ export with coordinates rounded to 4 decimals (µm, step
     /// 0.0390625 µm written 0.0391, 0.0781, ...) is read; a --spacing that agrees to the
     /// rounding is taken as the finer value, one that does not is refused.

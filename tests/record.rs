@@ -505,7 +505,7 @@ threshold = 0.5
         assert!(!vertices.is_empty(), "level {m}");
         assert!(vertices
             .iter()
-            .all(|p| p[1] >= 0.0 && p[2] >= 0.0 && p[2] <= 2.0));
+            .all(|p| p[1] <= 0.0 && p[2] >= 0.0 && p[2] <= 2.0));
     }
     // Levels at 50 % to 90 % of the largest: the innermost shell encloses the maximum, on the
     // axis at z = 0.48a (Johnson 1985, §3.4(b)), and is small.
@@ -520,6 +520,18 @@ threshold = 0.5
     assert_eq!(at.len(), 1);
     assert!(at[0][0].abs() < 1e-6 && at[0][1].abs() < 1e-6, "{at:?}");
     assert!((at[0][2] - 0.5).abs() < 0.06, "{at:?}");
+    // Issue 23, item 6: one maximum, one position: the report's refined one (Johnson's 0.48a),
+    // not the grid's sample; its label sits above the surface.
+    let reported = stressfield::study::assess::scene_maxima(&scene(text))
+        .maxima
+        .expect("maxima")
+        .von_mises;
+    assert!(
+        (f64::from(at[0][2]) - reported.z_over_a).abs() < 1e-6,
+        "{at:?} against {reported:?}"
+    );
+    let label = positions_3d(&contents.chunks["/volume/maximum/label"][0]);
+    assert!(label.len() == 1 && label[0][2] < 0.0, "{label:?}");
     // The 3-D view opens looking at the patch from above (z < 0: z points into the body).
     let eye = contents.layout_paths("/EyeControls3D");
     assert_eq!(eye.len(), 1, "{:?}", contents.layout.keys());

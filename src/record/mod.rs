@@ -354,7 +354,7 @@ pub fn describe(scene: &Scene) -> String {
         scene.figure.stress_unit.label(scene.figure.quantity.symbol()),
     ));
     if scene.volume.is_some() {
-        text.push_str(" The 3-D view shows nested translucent iso-surfaces of the half box y ≥ 0 at the levels in its title (coloured on the map's colour bar, the outer ones more transparent; the cut face shows how they nest) and the contact patch shaded by the pressure (white at its edge, dark red at its centre); drag to turn it, scroll to zoom, double-click to return to the first view.");
+        text.push_str(" The 3-D view shows nested translucent iso-surfaces of the half box y ≤ 0 at the levels in its title (coloured on the map's colour bar, the outer ones more transparent; the cut face shows how they nest, and caps close them where the box cuts them), the contact patch's front half shaded by the pressure (white at its edge, dark red at its centre), the axes, the direction of the friction traction on the body (+x; trailing edge at x = −a) and the maximum the report gives; drag to turn it, scroll to zoom, double-click to return to the first view.");
     }
     text.push_str("\n\n");
     text.push_str("## Contact (`stressfield hertz`)\n\n```text\n");

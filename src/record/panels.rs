@@ -488,7 +488,7 @@ pub(super) fn plan_layout(
                 Node::View(View::new(
                     ViewKind::Spatial3D(Some(volume::eye(spec))),
                     format!(
-                        "volume: iso-surfaces of {} at {} (half box y ≥ 0, z down)",
+                        "volume: iso-surfaces of {} at {} (half box y ≤ 0, z down)",
                         spec.quantity.symbol(),
                         levels_text(scene, levels)
                     ),

@@ -1,8 +1,10 @@
 //! The `[volume]` of a scene in a 3-D view: nested iso-surfaces of the quantity (translucent
 //! shells at a few fractions of its largest value, coloured on the figure's colour map) in the
-//! half of the box behind the plane `y = 0`, so that the cut shows how they nest; the contact
-//! patch on the surface shaded by the pressure; the maximum labelled; and an initial camera
-//! that looks at the patch from above, at an angle.
+//! half of the box behind the plane `y = 0`, so that the cut shows how they nest, closed by
+//! caps where the box cuts them; the contact patch's front half on the surface shaded by the
+//! pressure; the axes and the traction's direction (trailing edge at x = −a); the maximum the
+//! report gives, labelled above the surface with a leader; and an initial camera that looks
+//! at the patch from above, at an angle.
 //!
 //! z points down (into the body), in the figure's length unit.
 
@@ -45,14 +47,14 @@ pub fn scale(scene: &Scene, spec: &VolumeSpec, largest: f64) -> ColorScale {
     }
 }
 
-/// The camera: above the surface (z < 0), in front of the cut (y < 0) and towards the trailing
-/// edge, looking at a point below the patch.
+/// The camera: above the surface (z < 0), in front of the cut (y > 0, so that +x runs to the
+/// right) and towards the trailing edge, looking at a point below the patch.
 pub fn eye(spec: &VolumeSpec) -> Eye {
     let (width, depth) = (spec.x.1 - spec.x.0, spec.z.1 - spec.z.0);
     let size = width.max(spec.y.1 - spec.y.0).max(depth);
     let target = [
         0.5 * (spec.x.0 + spec.x.1),
-        half(spec).0,
+        half(spec).1,
         spec.z.0 + 0.3 * depth,
     ];
     // About 25 degrees above the surface, a little towards the trailing edge, as close as
@@ -60,7 +62,7 @@ pub fn eye(spec: &VolumeSpec) -> Eye {
     Eye {
         position: [
             (target[0] - 0.3 * size) as f32,
-            (target[1] - 0.95 * size) as f32,
+            (target[1] + 0.95 * size) as f32,
             (target[2] - 0.5 * size) as f32,
         ],
         target: target.map(|c| c as f32),
@@ -86,6 +88,57 @@ pub fn log_static(stream: &RecordingStream, spec: &VolumeSpec) -> Result<(), Rec
             .with_colors([rerun::Color::from_rgb(150, 150, 150)])
             .with_radii([rerun::Radius::new_ui_points(0.75)]),
     )?;
+    // The axes from the box's near corner (z down, into the body).
+    let length = 0.2 * (x1 - x0).min(y1 - y0);
+    let corner = [x0, y1, 0.0];
+    stream.log_static(
+        "volume/axes",
+        &rerun::Arrows3D::from_vectors([
+            [length, 0.0, 0.0],
+            [0.0, length, 0.0],
+            [0.0, 0.0, length],
+        ])
+        .with_origins([corner; 3])
+        .with_colors([
+            rerun::Color::from_rgb(230, 80, 80),
+            rerun::Color::from_rgb(80, 200, 80),
+            rerun::Color::from_rgb(90, 140, 255),
+        ])
+        .with_labels(["x", "y", "z (depth)"])
+        .with_show_labels(true),
+    )?;
+    Ok(())
+}
+
+/// The direction of the traction on the body, above the patch: `q = μp` in +x, the trailing
+/// edge at x = −a (a scene without friction draws none).
+fn log_traction_direction(
+    stream: &RecordingStream,
+    scene: &Scene,
+    spec: &VolumeSpec,
+) -> Result<(), RecordError> {
+    if scene.contact.friction == 0.0 {
+        stream.log("volume/traction", &rerun::Clear::flat())?;
+        return Ok(());
+    }
+    let unit_over_a = scene.length_unit_over_a();
+    let centre = scene.load_centre_over_a;
+    let from = ((centre - 1.0) / unit_over_a) as f32;
+    let length = (2.0 / unit_over_a) as f32;
+    // In front of the patch (y > 0), a hair above the surface.
+    let lift = (-0.01 * (spec.z.1 - spec.z.0)) as f32;
+    let front = (1.3 * scene.contact.aspect / unit_over_a) as f32;
+    stream.log(
+        "volume/traction",
+        &rerun::Arrows3D::from_vectors([[length, 0.0, 0.0]])
+            .with_origins([[from, front, lift]])
+            .with_colors([rerun::Color::from_rgb(255, 210, 60)])
+            .with_labels([format!(
+                "q = μp on the body, +x (μ = {}); trailing edge x = −a",
+                crate::io::text::number(scene.contact.friction)
+            )])
+            .with_show_labels(true),
+    )?;
     Ok(())
 }
 
@@ -100,18 +153,19 @@ pub fn log_step(
     scale: &ColorScale,
 ) -> Result<usize, RecordError> {
     let mut triangles = 0;
+    let closed = closed(spec, grid);
     for (m, &level) in levels.iter().enumerate() {
         // The region beyond a negative level is below it: the surface of the negated field.
         let mesh: Mesh = if level < 0.0 {
             isosurface(
-                grid.values.mapv(|v| -v).view(),
-                &grid.x,
-                &grid.y,
-                &grid.z,
+                closed.values.mapv(|v| -v).view(),
+                &closed.x,
+                &closed.y,
+                &closed.z,
                 -level,
             )
         } else {
-            isosurface(grid.values.view(), &grid.x, &grid.y, &grid.z, level)
+            isosurface(closed.values.view(), &closed.x, &closed.y, &closed.z, level)
         };
         let path = format!("volume/iso/{m}");
         if mesh.triangles.is_empty() {
@@ -154,23 +208,35 @@ pub fn log_step(
                 .with_radii([rerun::Radius::new_ui_points(1.5)]),
         )?;
         stream.log("volume/contact/patch", &contact_patch(scene, spec))?;
+        log_traction_direction(stream, scene, spec)?;
     }
-    let largest = grid
-        .values
-        .indexed_iter()
-        .filter(|(_, v)| v.is_finite())
-        .max_by(|a, b| a.1.total_cmp(b.1));
-    if let Some(((k, j, i), &value)) = largest {
-        let position = [grid.x[i] as f32, grid.y[j] as f32, grid.z[k] as f32];
+    if let Some((value, at)) = crate::study::volume::maximum(scene, spec, grid) {
+        let position = at.map(|c| c as f32);
+        // The label above the surface, with a leader down to the point, so that it covers
+        // no shell.
+        let depth = (spec.z.1 - spec.z.0) as f32;
+        let label_at = [position[0], position[1], -0.3 * depth];
         stream.log(
             "volume/maximum",
             &rerun::Points3D::new([position])
                 .with_radii([rerun::Radius::new_ui_points(5.0)])
+                .with_colors([rerun::Color::from_rgb(255, 255, 255)]),
+        )?;
+        stream.log(
+            "volume/maximum/leader",
+            &rerun::LineStrips3D::new([[label_at, position]])
+                .with_colors([rerun::Color::from_rgb(255, 255, 255)])
+                .with_radii([rerun::Radius::new_ui_points(0.75)]),
+        )?;
+        stream.log(
+            "volume/maximum/label",
+            &rerun::Points3D::new([label_at])
+                .with_radii([rerun::Radius::new_ui_points(1.0)])
                 .with_colors([rerun::Color::from_rgb(255, 255, 255)])
                 .with_labels([format!(
                     "max {} = {} at {}",
                     spec.quantity.symbol(),
-                    stress_text(scene, f64::from(value)),
+                    stress_text(scene, value),
                     position_text_3d(scene, position)
                 )])
                 .with_show_labels(true),
@@ -179,7 +245,38 @@ pub fn log_step(
     Ok(triangles)
 }
 
-/// The contact patch on the surface as a mesh of rings, shaded by the Hertz pressure
+/// The grid with a layer of zeros a hair outside its bottom, its ends in x and its far side in
+/// y (not at the surface, nor at the cut y = 0, where the shells show how they nest), so that
+/// a shell the box cuts is closed by a cap on the box's face instead of left open.
+fn closed(spec: &VolumeSpec, grid: &Grid) -> Grid {
+    let cut = spec.y.0 < 0.0 && spec.y.1 > 0.0;
+    let beyond = |axis: &[f64], first: bool, last: bool| {
+        let hair = 1e-3
+            * (axis[axis.len() - 1] - axis[0])
+                .abs()
+                .max(f64::MIN_POSITIVE);
+        let mut out = Vec::with_capacity(axis.len() + 2);
+        if first {
+            out.push(axis[0] - hair);
+        }
+        out.extend_from_slice(axis);
+        if last {
+            out.push(axis[axis.len() - 1] + hair);
+        }
+        out
+    };
+    let x = beyond(&grid.x, true, true);
+    let y = beyond(&grid.y, true, !cut);
+    let z = beyond(&grid.z, false, true);
+    let y_offset = 1;
+    let mut values = ndarray::Array3::<f32>::zeros((z.len(), y.len(), x.len()));
+    for ((k, j, i), &v) in grid.values.indexed_iter() {
+        values[[k, j + y_offset, i + 1]] = v;
+    }
+    Grid { values, x, y, z }
+}
+
+/// The contact patch on the surface (its half y >= 0) as a mesh of rings, shaded by the Hertz pressure
 /// `p/p0 = sqrt(1 - r²)` (white at the edge, dark red at the centre), in the figure's length
 /// unit at the load's position, a hair above the surface so that the shells do not hide it.
 fn contact_patch(scene: &Scene, spec: &VolumeSpec) -> rerun::Mesh3D {
@@ -198,7 +295,8 @@ fn contact_patch(scene: &Scene, spec: &VolumeSpec) -> rerun::Mesh3D {
     for ring in 1..=RINGS {
         let r = ring as f64 / RINGS as f64;
         for k in 0..SEGMENTS {
-            let angle = std::f64::consts::TAU * k as f64 / SEGMENTS as f64;
+            // The half y >= 0 in front of the cut: the shells behind it stay uncovered.
+            let angle = std::f64::consts::PI * (k as f64 / (SEGMENTS - 1) as f64);
             positions.push([
                 ((centre + r * angle.cos()) / unit_over_a) as f32,
                 (aspect * r * angle.sin() / unit_over_a) as f32,
@@ -210,11 +308,11 @@ fn contact_patch(scene: &Scene, spec: &VolumeSpec) -> rerun::Mesh3D {
     // Vertex of ring `ring` (1-based), segment `k`.
     let index = |ring: usize, k: usize| (1 + (ring - 1) * SEGMENTS + k % SEGMENTS) as u32;
     let mut triangles = Vec::new();
-    for k in 0..SEGMENTS {
+    for k in 0..SEGMENTS - 1 {
         triangles.push([0, index(1, k), index(1, k + 1)]);
     }
     for ring in 1..RINGS {
-        for k in 0..SEGMENTS {
+        for k in 0..SEGMENTS - 1 {
             let (a, b) = (index(ring, k), index(ring, k + 1));
             let (c, d) = (index(ring + 1, k), index(ring + 1, k + 1));
             triangles.push([a, c, d]);

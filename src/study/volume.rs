@@ -25,10 +25,11 @@ impl Grid {
     }
 }
 
-/// The half box `y >= 0` of the scene's volume (all of it if it lies on one side).
+/// The half box `y <= 0` of the scene's volume (all of it if it lies on one side): seen from
+/// `y > 0` with z down, +x runs to the right, as in the xz section.
 pub fn half(spec: &VolumeSpec) -> (f64, f64) {
     if spec.y.0 < 0.0 && spec.y.1 > 0.0 {
-        (0.0, spec.y.1)
+        (spec.y.0, 0.0)
     } else {
         spec.y
     }
@@ -69,4 +70,46 @@ pub fn evaluate(scene: &Scene, spec: &VolumeSpec, points: usize) -> Result<Grid,
         y: to_unit(&volume.y),
         z: to_unit(&volume.z),
     })
+}
+
+/// The largest value of the volume's quantity and where it is (the figure's stress unit and
+/// length unit), the one the `hertz` report gives: for von Mises and Tresca the report's
+/// refined maximum ([`super::assess::scene_maxima`]) where it lies in the half box, otherwise
+/// the grid's largest sample. One maximum then has one position in the 3-D view, the report
+/// and the closing note.
+pub fn maximum(scene: &Scene, spec: &VolumeSpec, grid: &Grid) -> Option<(f64, [f64; 3])> {
+    use crate::stress::Quantity;
+    let unit_over_a = scene.length_unit_over_a();
+    let stress_per_p0 = super::DisplayUnits::of(scene).stress_per_p0;
+    let reported = match spec.quantity {
+        Quantity::VonMises | Quantity::MaxShear => {
+            super::assess::scene_maxima(scene).maxima.ok().map(|m| {
+                if spec.quantity == Quantity::VonMises {
+                    m.von_mises
+                } else {
+                    m.max_shear
+                }
+            })
+        }
+        _ => None,
+    };
+    let (y0, y1) = half(spec);
+    let inside = |[x, y, z]: [f64; 3]| {
+        (spec.x.0..=spec.x.1).contains(&x)
+            && (y0..=y1).contains(&y)
+            && (spec.z.0..=spec.z.1).contains(&z)
+    };
+    if let Some(e) = reported {
+        // The report searches y >= 0; its mirror at -y is the same maximum.
+        let y = if y1 <= 0.0 { -e.y_over_a } else { e.y_over_a };
+        let at = [e.x_over_a, y, e.z_over_a].map(|c| c / unit_over_a);
+        if inside(at) {
+            return Some((e.value_over_p0 * stress_per_p0, at));
+        }
+    }
+    grid.values
+        .indexed_iter()
+        .filter(|(_, v)| v.is_finite())
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .map(|((k, j, i), &v)| (f64::from(v), [grid.x[i], grid.y[j], grid.z[k]]))
 }

@@ -423,10 +423,18 @@ material_points = [[0.0, 0.5], [1.0, 0.25]]
     // The histories' views name the point and the unit of the stresses.
     let views = contents.view_names();
     for name in [
-        "point 0 at x = 0a, z = 0.500a: stresses / p0 by step",
-        "point 1 at x = 1.00a, z = 0.250a: stresses / p0 by step",
+        "point 0 (x = 0a, z = 0.500a) / p0",
+        "point 1 (x = 1.00a, z = 0.250a) / p0",
     ] {
         assert!(views.iter().any(|v| v == name), "{name} not in {views:?}");
+    }
+    // Issue 23, item 5: each point also records the principal shear τ1 and σvM.
+    let tau1 = contents.scalars("/history/0/point1/tau1", "position");
+    let von_mises = contents.scalars("/history/0/point1/von_mises", "position");
+    for (((_, t), (_, v)), x0) in tau1.iter().zip(&von_mises).zip(positions) {
+        let s = line_hertz::stress_over_p0(1.0 - x0, 0.25, 0.0, 0.3);
+        assert!((t - s.principal_shear_xz()).abs() < 1e-12);
+        assert!((v - s.von_mises()).abs() < 1e-12);
     }
     // Signed: both extremes are marked and plotted, the negative lobe as much as the
     // positive one.

@@ -344,7 +344,17 @@ pub fn describe(scene: &Scene) -> String {
             sweep.parameter.key()
         ));
         if sweep.parameter == SweepParameter::Position {
-            text.push_str("The field is drawn in a fixed body frame as the contact's centre moves to x0: the stress history of each material point.\n\n");
+            text.push_str("The field is drawn in a fixed body frame as the contact's centre moves to x0: the stress history of each material point.");
+            if sweep.values.len() > 1 && !sweep.material_points.is_empty() {
+                let (from, to) = (sweep.values[0], sweep.values[sweep.values.len() - 1]);
+                let unit = scene.figure.length_unit.suffix();
+                text.push_str(&format!(
+                    " The material points' histories (σxx, σzz, τxz, the principal shear τ1 and σvM) run against the step: step n is x0 = {}{unit} + (n − 1) × {}{unit}; the extremes chart is against x0 itself.",
+                    crate::io::text::number(from),
+                    crate::io::text::number((to - from) / (sweep.values.len() - 1) as f64),
+                ));
+            }
+            text.push_str("\n\n");
         }
     }
     text.push_str("Conventions: z points into the body (depth drawn downwards), tension positive, q = μp acts in +x on the body (trailing edge x = −a).\n\n");

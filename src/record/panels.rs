@@ -325,13 +325,16 @@ pub(super) fn log_series_styles(
     Ok(())
 }
 
-/// The stress components recorded at material points: `σxx`, `σzz`, `τxz` and the figure's
-/// quantity when it is none of them, as `(key, symbol)`.
+/// The stresses recorded at material points: `σxx`, `σzz`, `τxz`, the principal shear `τ1` of
+/// the xz plane and `σvM` (what fatigue and yield criteria read), and the figure's quantity
+/// when it is none of them, as `(key, symbol)`.
 pub(super) fn history_components(scene: &Scene) -> Vec<(&'static str, String)> {
     let mut components = vec![
         ("sxx", "σxx".to_string()),
         ("szz", "σzz".to_string()),
         ("sxz", "τxz".to_string()),
+        ("tau1", "τ1".to_string()),
+        ("von_mises", "σvM".to_string()),
     ];
     let quantity = scene.figure.quantity;
     if !components.iter().any(|(key, _)| *key == quantity.key()) {
@@ -533,10 +536,7 @@ pub(super) fn plan_layout(
                 let (x, z) = sweep.material_points[j];
                 plots.push(Node::View(View::new(
                     ViewKind::TimeSeries,
-                    format!(
-                        "point {j} at {}: stresses {unit} by step",
-                        section::position_text(scene, x, z)
-                    ),
+                    format!("point {j} ({}) {unit}", section::position_text(scene, x, z)),
                     format!("history/{k}/point{j}"),
                 )));
             }
@@ -627,6 +627,8 @@ pub(super) fn log_material_points(
                     "sxx" => s.xx,
                     "szz" => s.zz,
                     "sxz" => s.xz,
+                    "tau1" => crate::stress::Quantity::Tau1.of(&s),
+                    "von_mises" => crate::stress::Quantity::VonMises.of(&s),
                     _ => quantity.of(&s),
                 };
                 stream.log(

@@ -505,9 +505,11 @@ pub fn log_step(
             stream,
             when,
             format!("{base}/material_points/labels"),
+            // White text on the viewer's dark label box, as the extremes' labels: readable on
+            // the map and above the surface alike (dark text vanished there).
             &rerun::Points2D::new(anchors)
                 .with_radii([rerun::Radius::new_ui_points(0.0)])
-                .with_colors([rerun::Color::from_rgb(20, 20, 20)])
+                .with_colors([rerun::Color::from_rgb(255, 255, 255)])
                 .with_labels(labels)
                 .with_show_labels(true),
         )?;
@@ -527,7 +529,7 @@ pub fn log_step(
             when,
             format!("{base}/material_points/leaders"),
             &rerun::LineStrips2D::new(leaders)
-                .with_colors([rerun::Color::from_rgb(20, 20, 20)])
+                .with_colors([rerun::Color::from_rgb(128, 128, 128)])
                 .with_radii([rerun::Radius::new_ui_points(0.5)]),
         )?;
     }

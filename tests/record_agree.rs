@@ -159,10 +159,7 @@ fn a_rough_recording_has_a_layer_at_the_reports_maximum_with_its_value() {
     assert!(title.contains("under W = 0.2 N (step 2 of 3)"), "{title}");
     // The chart of the largest stresses against depth follows the layers.
     assert_eq!(contents.rows_on("/charts/depth_maxima", "depth"), layers);
-    assert!(contents
-        .view_names()
-        .iter()
-        .any(|v| v == "largest σvM, Tresca against depth"));
+    assert!(contents.view_names().iter().any(|v| v == "σvM, τ vs z"));
 }
 
 #[test]
@@ -198,9 +195,9 @@ fn a_rough_sweeps_colours_are_not_set_by_one_cell_and_a_capped_pressure_is_flagg
         .iter()
         .any(|l| (number_after(l, "max p = ") - largest).abs() < 1e-3 * largest));
     assert!(contents
-        .view_names()
+        .text_documents()
         .iter()
-        .any(|v| v.contains("colours to the 99.5 % quantile of all loads")));
+        .any(|v| v.contains("its colours run to the 99.5 % quantile of all loads")));
     // With a hardness the pressure is capped, and the steps at the cap say so.
     let capped = scene_with_hardness("100 HV");
     let (_, contents) = record_in_memory(&capped);

@@ -514,8 +514,10 @@ pub(super) fn plan_layout(
             format!("sections/{k}/values"),
         )));
     }
-    // The first tab opens: a moving load's stress history, else the chart against the
-    // parameter.
+    // Beside the map, short tab names that all fit (issue 23, item 4): a moving load's stress
+    // histories in one group, above the charts against the parameter (with the extremes by
+    // step, which the viewer can hover and zoom), above the documents.
+    let mut histories = Vec::new();
     let mut plots = Vec::new();
     if let Some(sweep) = scene.sweep.as_ref().filter(|s| s.values.len() > 1) {
         documents.push(Node::View(View::new(ViewKind::TextLog, "steps", "log")));
@@ -531,52 +533,52 @@ pub(super) fn plan_layout(
                     figure.value_label[open + 1..].to_string()
                 }),
         };
+        let several = figure.panels.len() > 1;
+        let panel_suffix = |k: usize| {
+            if several {
+                format!(", panel {}", k + 1)
+            } else {
+                String::new()
+            }
+        };
         for k in 0..figure.panels.len() {
             for j in 0..sweep.material_points.len() {
-                let (x, z) = sweep.material_points[j];
-                plots.push(Node::View(View::new(
+                histories.push(Node::View(View::new(
                     ViewKind::TimeSeries,
-                    format!("point {j} ({}) {unit}", section::position_text(scene, x, z)),
+                    format!("point {j} {unit}{}", panel_suffix(k)),
                     format!("history/{k}/point{j}"),
                 )));
             }
             plots.push(Node::View(View::new(
                 ViewKind::Spatial2D(None),
-                format!("extremes against {parameter}"),
+                format!("max, min vs {parameter}{}", panel_suffix(k)),
                 format!("charts/{k}/maximum"),
             )));
             if figure.vertical_is_depth {
                 plots.push(Node::View(View::new(
                     ViewKind::Spatial2D(None),
-                    format!("depth of the maximum against {parameter}"),
+                    format!("depth vs {parameter}{}", panel_suffix(k)),
                     format!("charts/{k}/depth"),
                 )));
             }
             plots.push(Node::View(
                 View::new(
                     ViewKind::TimeSeries,
-                    format!("extremes ({}) by step", figure.value_label),
+                    format!("by step{}", panel_suffix(k)),
                     format!("series/{k}"),
                 )
                 .with_contents(&["$origin/maximum", "$origin/minimum"]),
             ));
-            if figure.vertical_is_depth {
-                plots.push(Node::View(
-                    View::new(
-                        ViewKind::TimeSeries,
-                        format!("depth of the maximum ({}) by step", figure.z_label),
-                        format!("series/{k}"),
-                    )
-                    .with_contents(&["$origin/maximum_depth"]),
-                ));
-            }
         }
     }
     let documents = Node::Tabs(documents, 0);
-    let side = if plots.is_empty() {
-        documents
-    } else {
-        Node::Vertical(vec![Node::Tabs(plots, 0), documents], vec![1.3, 1.0])
+    let side = match (histories.is_empty(), plots.is_empty()) {
+        (_, true) => documents,
+        (true, false) => Node::Vertical(vec![Node::Tabs(plots, 0), documents], vec![1.3, 1.0]),
+        (false, false) => Node::Vertical(
+            vec![Node::Tabs(histories, 0), Node::Tabs(plots, 0), documents],
+            vec![1.1, 1.0, 0.9],
+        ),
     };
     Layout {
         root: Node::Horizontal(vec![main, side], vec![MAIN_SHARE, SIDE_SHARE]),

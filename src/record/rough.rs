@@ -111,8 +111,9 @@ pub fn record(
     // scene's own load: say which step of the sweep that is.
     let shown_at = match solution.filter(|_| scene.sweep.is_some()) {
         Some(solution) => format!(
-            "The figure, this report, the maps and the depth steps are under {}; the view \"pressure against load\" steps through the loads.\n\n",
-            load_text(scene, solution)
+            "The figure, this report, the maps and the depth steps are under {}; the view \"pressure vs W\" steps through the loads, its colours {}.\n\n",
+            load_text(scene, solution),
+            contact_colours()
         ),
         None => String::new(),
     };
@@ -206,10 +207,6 @@ pub fn record(
         contact: contact_frame.as_ref(),
         depth: depth_frame.as_ref(),
         timeline,
-        contact_colours: format!(
-            "colours to the {} % quantile of all loads",
-            section::short(super::ROBUST_QUANTILE * 100.0)
-        ),
     };
     super::layout::send(stream, &plan_layout(&maps, scene, &frames), live)?;
     flush()?;
@@ -619,6 +616,14 @@ impl LoadChart {
     }
 }
 
+/// How the pressure's colours are scaled in the view "pressure vs W" (issue 23, item 1).
+fn contact_colours() -> String {
+    format!(
+        "run to the {} % quantile of all loads' pressures (one cell's spike does not set them; a pressure beyond is drawn in the top colour, its step's title says so and the labelled maximum keeps its value)",
+        section::short(super::ROBUST_QUANTILE * 100.0)
+    )
+}
+
 /// The load of a solved contact and, with a load sweep, which step it is:
 /// `W = 1 N (step 7 of 10)`, or `W = 0.8 N (not one of the swept loads)`.
 pub(super) fn load_text(scene: &Scene, solution: &RoughSolution) -> String {
@@ -650,8 +655,6 @@ struct Frames<'a> {
     depth: Option<&'a Frame>,
     /// The timeline the time panel opens on.
     timeline: Option<&'static str>,
-    /// How the pressure's colours are scaled (for the view's name).
-    contact_colours: String,
 }
 
 /// The layout: the map views (for a rough scene first the pressure against load and the
@@ -669,7 +672,7 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
     let mut main: Vec<Node> = Vec::new();
     if let Some(frame) = frames.contact {
         main.push(view2d(
-            format!("pressure (MPa) against load, {}", frames.contact_colours),
+            "pressure vs W (MPa)".to_string(),
             "contact",
             Some(frame),
         ));
@@ -677,7 +680,7 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
     if let Some(frame) = frames.depth {
         main.push(view2d(
             format!(
-                "{} through depth",
+                "{} vs depth",
                 scene
                     .figure
                     .stress_unit
@@ -699,34 +702,40 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
     ))];
     side.push(Node::View(View::new(
         ViewKind::Spatial3D(None),
-        "topography (heights exaggerated)",
+        "topography",
         "topography",
     )));
+    // Two tab groups of charts whose short names all fit (issue 23, item 4): the stresses
+    // against depth and the peak pressure, then the real area and the spots.
     let mut plots = Vec::new();
+    let mut counts = Vec::new();
     if frames.depth.is_some() {
-        plots.push(view2d(
-            "largest σvM, Tresca against depth".into(),
-            "charts/depth_maxima",
-            None,
-        ));
+        plots.push(view2d("σvM, τ vs z".into(), "charts/depth_maxima", None));
     }
     if frames.contact.is_some() {
+        plots.push(view2d("peak p vs W".into(), "charts/max_pressure", None));
         for (name, path) in [
-            ("real area against W", "charts/contact_fraction"),
-            ("spots against W", "charts/spots"),
-            ("largest pressure against W", "charts/max_pressure"),
+            ("area vs W", "charts/contact_fraction"),
+            ("spots vs W", "charts/spots"),
         ] {
-            plots.push(view2d(name.into(), path, None));
+            counts.push(view2d(name.into(), path, None));
         }
         side.push(Node::View(View::new(ViewKind::TextLog, "steps", "log")));
     }
-    let side = if plots.is_empty() {
-        Node::Tabs(side, 0)
-    } else {
-        Node::Vertical(
+    let side = match (plots.is_empty(), counts.is_empty()) {
+        (true, _) => Node::Tabs(side, 0),
+        (false, true) => Node::Vertical(
             vec![Node::Tabs(plots, 0), Node::Tabs(side, 0)],
             vec![1.0, 1.0],
-        )
+        ),
+        (false, false) => Node::Vertical(
+            vec![
+                Node::Tabs(plots, 0),
+                Node::Tabs(counts, 0),
+                Node::Tabs(side, 0),
+            ],
+            vec![1.0, 1.0, 1.1],
+        ),
     };
     Layout {
         root: Node::Horizontal(vec![main, side], vec![super::MAIN_SHARE, super::SIDE_SHARE]),

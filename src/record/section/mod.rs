@@ -408,7 +408,10 @@ pub fn log_step(
         }
     }
     for (j, &(x, z)) in changing.material.iter().enumerate() {
-        wanted.push((below((x, z)), format!("point {j}")));
+        wanted.push((
+            below((x, z)),
+            format!("point {j}: {}", notation.position(x, z)),
+        ));
     }
     let requests: Vec<((f64, f64), &str)> = wanted
         .iter()

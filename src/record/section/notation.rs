@@ -34,17 +34,6 @@ pub fn stress_text(scene: &Scene, value: f64) -> String {
     format!("{}{unit}", short(value))
 }
 
-/// A position in the section with its unit: `x = −0.45a, z = 0.16a`.
-pub fn position_text(scene: &Scene, u: f64, v: f64) -> String {
-    let (horizontal, vertical, _) = scene.figure.section.coordinates();
-    let suffix = scene.figure.length_unit.suffix();
-    format!(
-        "{horizontal} = {}{suffix}, {vertical} = {}{suffix}",
-        short(snap(u)),
-        short(snap(v))
-    )
-}
-
 /// Rounding noise of a grid through zero reads as zero.
 pub(super) fn snap(c: f64) -> f64 {
     if c.abs() < 1e-9 {

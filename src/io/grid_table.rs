@@ -154,7 +154,7 @@ mod tests {
             };
             let points: Vec<[f64; 2]> = texts
                 .iter()
-                .map(|t| [t[0].parse().unwrap(), t[1].parse().unwrap()])
+                .map(|t| [t[0].parse().expect("x"), t[1].parse().expect("y")])
                 .collect();
             assert!(
                 assemble(&points, [0.0, 0.0]).is_err(),

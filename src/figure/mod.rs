@@ -63,11 +63,19 @@ pub fn draw(
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Drawing, DrawError> {
     Ok(match scene.contact.kind {
-        ContactKind::Rough => Drawing::Sheet(crate::figure::rough::rough_sheet(
-            scene,
-            rough.ok_or(DrawError::Unsolved)?,
-            on_row,
-        )?),
+        ContactKind::Rough => {
+            let solution = rough.ok_or(DrawError::Unsolved)?;
+            // The report's maxima: the sheet's section passes through them.
+            let (maxima, _) = study::rough::subsurface_maxima(
+                solution,
+                scene.contact.friction,
+                scene.contact.poisson,
+            )
+            .map_err(|e| FieldError::Numerical(e.to_string()))?;
+            Drawing::Sheet(crate::figure::rough::rough_sheet(
+                scene, solution, &maxima, on_row,
+            )?)
+        }
         ContactKind::Surface => Drawing::Sheet(crate::figure::rough::surface_sheet(
             scene,
             &study::surface::characterise(scene).map_err(crate::figure::rough::SheetError::from)?,

@@ -21,6 +21,8 @@ use super::raw::{
 use super::spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
     RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
+    ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
 use super::traction_csv;

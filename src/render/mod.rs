@@ -172,6 +172,23 @@ pub enum Mark {
     None,
 }
 
+/// Splits an axis or colour-bar caption into its name and its unit as written after a number:
+/// `σvM / p0` gives (`σvM`, ` p0`), `p (MPa)` gives (`p`, ` MPa`), `x/a` gives (`x`, `a`).
+pub fn name_and_unit(label: &str) -> (String, String) {
+    let label = label.trim();
+    if let (Some(open), true) = (label.rfind(" ("), label.ends_with(')')) {
+        let unit = &label[open + 2..label.len() - 1];
+        return (label[..open].to_string(), format!(" {unit}"));
+    }
+    if let Some((name, unit)) = label.rsplit_once(" / ") {
+        return (name.to_string(), format!(" {unit}"));
+    }
+    if let Some((name, unit)) = label.rsplit_once('/') {
+        return (name.to_string(), unit.to_string());
+    }
+    (label.to_string(), String::new())
+}
+
 /// Errors of drawing.
 #[derive(Debug, thiserror::Error)]
 pub enum RenderError {
@@ -460,7 +477,7 @@ mod tests {
             "z/a",
             "τ1 / p0",
             "p, q / p0",
-            "max 1.00 at",
+            "max 1.00 p0 at x = \u{2212}0.50a, z = 0.80a",
         ] {
             assert!(svg.contains(text), "no `{text}` in the SVG");
         }

@@ -304,7 +304,7 @@ impl Validator<'_> {
                         rolloff_wavelength_m: rolloff,
                         cutoff_wavelength_m: cutoff,
                     },
-                    format!("self-affine, H = {}, roll-off {:.4} um, cutoff {:.4} um", crate::io::text::number(hurst), rolloff * 1e6, cutoff * 1e6),
+                    format!("self-affine, H = {}, roll-off {:.4} µm, cutoff {:.4} µm", crate::io::text::number(hurst), rolloff * 1e6, cutoff * 1e6),
                 )
             }
             (None, Some(length)) => {
@@ -315,7 +315,7 @@ impl Validator<'_> {
                     Spectrum::Gaussian {
                         correlation_length_m: length,
                     },
-                    format!("Gaussian autocorrelation, correlation length {:.4} um", length * 1e6),
+                    format!("Gaussian autocorrelation, correlation length {:.4} µm", length * 1e6),
                 )
             }
             (Some(_), Some(_)) => {

@@ -244,3 +244,58 @@ fn bad_depth_ranges_are_refused_naming_figure_z() {
         .to_string();
     assert!(error.contains("figure.z"), "{error}");
 }
+
+/// The spectrum chart of a surface sheet states a slope that gives no Hurst exponent (issue
+/// 23, item 12: H = 1.753 was drawn for a Gaussian-correlated surface without a word), and
+/// keeps its log axis to the rings with power.
+#[test]
+fn a_hurst_slope_outside_its_meaning_is_drawn_with_the_caveat() {
+    let sheet_of = |spectrum: &str| {
+        let text = format!(
+            "format = 1\n[contact]\nkind = \"surface\"\n[surface.generate]\nsamples = 128\nspacing = \"0.5 um\"\n{spectrum}\nrms_height = \"0.1 um\"\nseed = 2\n"
+        );
+        let scene = Scene::parse(&text, "s", "s.toml").expect("valid");
+        let c = stressfield::study::surface::characterise(&scene).expect("characterised");
+        let sheet = stressfield::figure::rough::surface_sheet(&scene, &c).expect("sheet");
+        let psd = sheet
+            .rows
+            .iter()
+            .flatten()
+            .find_map(|cell| match cell {
+                Cell::Chart(chart) if chart.title == "Power spectral density" => {
+                    Some(chart.clone())
+                }
+                _ => None,
+            })
+            .expect("a spectrum chart");
+        (c, psd)
+    };
+    let (c, psd) = sheet_of("correlation_length = \"4 um\"");
+    assert!(c.spectra.hurst.is_none());
+    let labels: Vec<&str> = psd.series.iter().map(|s| s.label.as_str()).collect();
+    let fitted = -c.spectra.fit_slope / 2.0 - 1.0;
+    assert!(fitted > 1.0, "{fitted}");
+    let caveat = format!(
+        "slope: H = {} outside (0, 1]: not self-affine",
+        stressfield::io::text::approx((fitted * 1e3).round() / 1e3)
+    );
+    assert!(labels.contains(&caveat.as_str()), "{labels:?}");
+    assert!(!labels.iter().any(|l| l.starts_with("fit C")), "{labels:?}");
+    // No ring of numerically zero power on the log axis.
+    let smallest = psd.series[0]
+        .points
+        .iter()
+        .map(|p| p.1)
+        .fold(f64::INFINITY, f64::min);
+    let largest = psd.series[0].points.iter().map(|p| p.1).fold(0.0, f64::max);
+    assert!(smallest > 1e-12 * largest, "{smallest} {largest}");
+
+    let (c, psd) = sheet_of("hurst = 0.8");
+    let hurst = c.spectra.hurst.expect("self-affine");
+    let labels: Vec<&str> = psd.series.iter().map(|s| s.label.as_str()).collect();
+    assert!(labels.contains(&format!("fit C ∝ q^(−2(1+H)), H = {hurst:.3}").as_str()));
+    assert!(
+        !labels.iter().any(|l| l.contains("not self-affine")),
+        "{labels:?}"
+    );
+}

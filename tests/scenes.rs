@@ -310,3 +310,52 @@ fn a_section_across_a_long_ellipse_has_depth_rows_as_fine_as_the_x_cells() {
     assert!((z / a_mm - 0.724).abs() < 0.02, "{}", z / a_mm);
     assert!(y.abs() < plane.u.step() * a_mm);
 }
+
+/// A numerical panel ends where its traction grid ends: a range or section beyond it is
+/// refused naming the grid's extent and the fix (issue 23, item 12: an elliptical scene asked
+/// for y = ±4a drew ±0.6a), and a range within a cell of the grid's edge is drawn.
+#[test]
+fn numerical_ranges_beyond_the_grid_are_refused_with_the_limit() {
+    let scene = |contact: &str, figure: &str| {
+        Scene::parse(
+            &format!("format = 1\n[contact]\n{contact}\n[figure]\n{figure}\n"),
+            "range",
+            "range.toml",
+        )
+        .map_err(|e| e.to_string())
+    };
+    let ellipse = "kind = \"elliptical\"\naspect = 0.3\nmethod = \"numerical\"";
+    let error = scene(ellipse, "section = \"yz\"\ny = [-4.0, 4.0]").expect_err("cut");
+    for expected in [
+        "figure.y",
+        "covers y = ±0.6 a",
+        "raise numerical.extent to 14",
+        "give figure.y within [-0.6, 0.6]",
+    ] {
+        assert!(error.contains(expected), "{expected}: {error}");
+    }
+    // Within the grid (its edge, and half a cell beyond) it is drawn, over the whole range.
+    for y in ["0.6", "0.602"] {
+        let valid = scene(ellipse, &format!("section = \"yz\"\ny = [-{y}, {y}]")).expect(y);
+        let plane = stressfield::study::plane(&valid, &valid.panels[0]);
+        assert!(plane.u.max > 0.59 && plane.u.min < -0.59, "{:?}", plane.u);
+    }
+    // A section beyond the grid, and the xy plane's vertical range.
+    let point = "kind = \"point\"\nmethod = \"numerical\"";
+    let error = scene(point, "at = 3.0").expect_err("beyond");
+    assert!(
+        error.contains("figure.at") && error.contains("covers y = ±2 a"),
+        "{error}"
+    );
+    let error = scene(point, "section = \"xy\"\ny = [-1.0, 2.5]").expect_err("beyond");
+    assert!(
+        error.contains("figure.y") && error.contains("extent to 3"),
+        "{error}"
+    );
+    // Closed-form panels have no grid.
+    scene(
+        "kind = \"point\"",
+        "at = 3.0\nx = [-6.0, 6.0]\nz = [0.0, 3.0]",
+    )
+    .expect("closed form");
+}

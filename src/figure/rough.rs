@@ -204,12 +204,19 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
     );
     psd.x_scale = ChartScale::Log;
     psd.y_scale = ChartScale::Log;
+    // Rings whose power is numerically zero (beyond a generated spectrum's cutoff: rounding
+    // noise, 1e-12 of the largest or less) would stretch the log axis over 20 decades.
+    let visible = |points: &[(f64, f64)]| {
+        let largest = points.iter().map(|p| p.1).fold(0.0, f64::max);
+        move |&&(_, v): &&(f64, f64)| v > 1e-12 * largest
+    };
     psd.series.push(Series {
         label: "radially averaged 2-D".into(),
         points: c
             .spectra
             .radial
             .iter()
+            .filter(visible(&c.spectra.radial))
             .map(|&(q, v)| (q / um, v * um.powi(4)))
             .collect(),
         style: Style::Markers,
@@ -221,6 +228,7 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
             .spectra
             .profile
             .iter()
+            .filter(visible(&c.spectra.profile))
             .map(|&(q, v)| (q / um, v * um.powi(3)))
             .collect(),
         style: Style::Line,
@@ -237,6 +245,24 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
             ],
             style: Style::Dashed,
             colour: PALETTE[1],
+        });
+    }
+    // A slope that gives no Hurst exponent (outside (0, 1]: not self-affine over the band) is
+    // drawn as what it is, with the caveat, rather than left unexplained.
+    let fitted = -c.spectra.fit_slope / 2.0 - 1.0;
+    if c.spectra.hurst.is_none() && fitted.is_finite() && q1 > q0 {
+        let line = |q: f64| 10f64.powf(c.spectra.fit_intercept + c.spectra.fit_slope * q.log10());
+        psd.series.push(Series {
+            label: format!(
+                "slope: H = {} outside (0, 1]: not self-affine",
+                crate::io::text::approx((fitted * 1e3).round() / 1e3),
+            ),
+            points: vec![
+                (q0 / um, line(q0) * um.powi(4)),
+                (q1 / um, line(q1) * um.powi(4)),
+            ],
+            style: Style::Dashed,
+            colour: PALETTE[3],
         });
     }
     psd.x_band = Some((q0 / um, q1 / um));

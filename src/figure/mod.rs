@@ -113,10 +113,51 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
             }
         };
         let clip = clipped_range(&values);
+        let (x, z) = (units.axis(plane.u), units.axis(plane.v));
+        let mut subtitle = subtitle(scene, panel, plane);
+        // A difference's colours span the bulk of it, not its spikes: say how far (the bar's
+        // triangles show that values go beyond, the marked extremes how far).
+        if let (Method::Difference, Some((_, limit))) = (panel.method, clip) {
+            subtitle.push_str(&format!(
+                "{}colours ±{} {} (98 %)",
+                if panel.subtitle.is_some() { "; " } else { ", " },
+                text::significant(limit, 2, 1e5, true),
+                spec.stress_unit.symbol(),
+            ));
+        }
+        let mut outlines = outlines;
+        // First yield: the line where the drawn stress reaches it, dashed, with the region
+        // inside named; or that the section stays below it.
+        if let (Some(level), false) = (
+            yield_level(scene, stress_per_p0),
+            panel.method == Method::Difference,
+        ) {
+            let largest = values
+                .iter()
+                .copied()
+                .filter(|v| v.is_finite())
+                .fold(f64::NEG_INFINITY, f64::max);
+            let symbol = spec.quantity.symbol();
+            let y_text = level.text;
+            if largest >= level.value {
+                let lines = crate::render::contour_lines(values.view(), &x, &z, level.value);
+                outlines.extend(lines.into_iter().map(|line| {
+                    line.into_iter()
+                        .map(|(u, v)| (u / length_per_a, v / length_per_a))
+                        .collect()
+                }));
+                subtitle.push_str(&format!("; dashed: {symbol} = {y_text}, yielding inside"));
+            } else {
+                subtitle.push_str(&format!(
+                    "; {symbol} < {y_text} here (max {} of it)",
+                    text::approx((largest / level.value * 1e3).round() / 1e3)
+                ));
+            }
+        }
         panels.push(Panel {
-            subtitle: subtitle(scene, panel, plane),
-            x: units.axis(plane.u),
-            z: units.axis(plane.v),
+            subtitle,
+            x,
+            z,
             values,
             traction: traction
                 .iter()
@@ -164,6 +205,33 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
         mark,
         panel_width_px: spec.width_px,
     }
+}
+
+/// Where the figure's quantity reaches first yield, in the figure's stress unit: von Mises at
+/// the yield strength Y, the Tresca shear `(σ1 − σ3)/2` at `Y/2` (the criteria of the `hertz`
+/// report's yield check; e.g. Johnson 1985, §6.2). `None` without a yield strength (or
+/// hardness) or for another quantity.
+struct YieldLevel {
+    value: f64,
+    /// `Y = 1500 MPa`, `Y/2 = 750 MPa`.
+    text: String,
+}
+
+fn yield_level(scene: &Scene, stress_per_p0: f64) -> Option<YieldLevel> {
+    use crate::stress::Quantity;
+    let y = scene.contact.yield_strength?;
+    let p0_pa = scene.contact.scale?.p0_pa;
+    let (factor, name) = match scene.figure.quantity {
+        Quantity::VonMises => (1.0, "Y"),
+        Quantity::MaxShear => (0.5, "Y/2"),
+        _ => return None,
+    };
+    let value = factor * y.pa / p0_pa * stress_per_p0;
+    Some(YieldLevel {
+        value,
+        // In whole MPa, as the `hertz` report writes Y.
+        text: format!("{name} = {:.0} MPa", factor * y.pa * 1e-6),
+    })
 }
 
 /// The colour range of a difference map: `±` the 98th percentile of `|Δ|`, so that the
@@ -303,9 +371,7 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
                 parts.push(format!("numerical, {nx} x {ny} cells"));
             }
         }
-        (Method::Difference, _) => {
-            parts.push("numerical − closed form (colours clipped at 98 %)".into())
-        }
+        (Method::Difference, _) => parts.push("numerical − closed form".into()),
     }
     parts.extend(section_label(scene, plane));
     // Tractions from a file carry their own shear, and a and p0 are only the figure's units.

@@ -551,6 +551,39 @@ mod tests {
     }
 
     #[test]
+    fn a_clipped_colour_range_ends_its_bar_in_triangles_of_the_end_colours() {
+        // The difference spans ±0.024 (0.01 x (1 + 0.2 z) at x = ±2, z = 1.6); colours to ±0.01.
+        let mut figure = compared(Mark::None);
+        figure.panels[2].scale = Some(PanelScale {
+            range: Some((-0.01, 0.01)),
+            ..difference_scale()
+        });
+        let plan = Plan::new(&figure).expect("plan");
+        assert_eq!(plan.groups[0].beyond, [false, false]);
+        assert_eq!(plan.groups[1].beyond, [true, true]);
+        let image = render_png(&figure).expect("render");
+        let bar = plan.layout.colorbars[1].rect;
+        let centre = (bar.x + bar.w / 2) as u32;
+        let (top, bottom) = (
+            plan.groups[1].scale.rgb(0.01),
+            plan.groups[1].scale.rgb(-0.01),
+        );
+        // Just outside the bar's ends, in the middle of the triangles.
+        let above = image.get_pixel(centre, (bar.y - bar.w / 3) as u32).0;
+        let below = image.get_pixel(centre, (bar.bottom() + bar.w / 3) as u32).0;
+        assert_eq!((above, below), (top, bottom));
+        // Unclipped: nothing drawn there.
+        let unclipped = compared(Mark::None);
+        let image = render_png(&unclipped).expect("render");
+        let plan = Plan::new(&unclipped).expect("plan");
+        let bar = plan.layout.colorbars[1].rect;
+        let above = image
+            .get_pixel((bar.x + bar.w / 2) as u32, (bar.y - bar.w / 3) as u32)
+            .0;
+        assert_eq!(above, [255; 3]);
+    }
+
+    #[test]
     fn a_panel_with_its_own_scale_gets_its_own_group_and_colour_bar() {
         let figure = compared(Mark::Max);
         let plan = Plan::new(&figure).expect("plan");

@@ -128,31 +128,21 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
         let mut outlines = outlines;
         // First yield: the line where the drawn stress reaches it, dashed, with the region
         // inside named; or that the section stays below it.
+        let per_pa = scene
+            .contact
+            .scale
+            .map_or(f64::NAN, |s| stress_per_p0 / s.p0_pa);
         if let (Some(level), false) = (
-            yield_level(scene, stress_per_p0),
+            yield_level(scene, per_pa),
             panel.method == Method::Difference,
         ) {
-            let largest = values
-                .iter()
-                .copied()
-                .filter(|v| v.is_finite())
-                .fold(f64::NEG_INFINITY, f64::max);
-            let symbol = spec.quantity.symbol();
-            let y_text = level.text;
-            if largest >= level.value {
-                let lines = crate::render::contour_lines(values.view(), &x, &z, level.value);
-                outlines.extend(lines.into_iter().map(|line| {
-                    line.into_iter()
-                        .map(|(u, v)| (u / length_per_a, v / length_per_a))
-                        .collect()
-                }));
-                subtitle.push_str(&format!("; dashed: {symbol} = {y_text}, yielding inside"));
-            } else {
-                subtitle.push_str(&format!(
-                    "; {symbol} < {y_text} here (max {} of it)",
-                    text::approx((largest / level.value * 1e3).round() / 1e3)
-                ));
-            }
+            let (lines, note) = level.mark(spec.quantity, &values, &x, &z);
+            outlines.extend(lines.into_iter().map(|line| {
+                line.into_iter()
+                    .map(|(u, v)| (u / length_per_a, v / length_per_a))
+                    .collect()
+            }));
+            subtitle.push_str(&format!("; {note}"));
         }
         panels.push(Panel {
             subtitle,
@@ -209,29 +199,64 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
 
 /// Where the figure's quantity reaches first yield, in the figure's stress unit: von Mises at
 /// the yield strength Y, the Tresca shear `(σ1 − σ3)/2` at `Y/2` (the criteria of the `hertz`
-/// report's yield check; e.g. Johnson 1985, §6.2). `None` without a yield strength (or
-/// hardness) or for another quantity.
-struct YieldLevel {
+/// report's yield check; e.g. Johnson 1985, §6.2).
+pub(crate) struct YieldLevel {
     value: f64,
     /// `Y = 1500 MPa`, `Y/2 = 750 MPa`.
     text: String,
 }
 
-fn yield_level(scene: &Scene, stress_per_p0: f64) -> Option<YieldLevel> {
+/// The yield level of `scene`'s figure quantity, values being `stress_per_pa` display units
+/// per Pa; `None` without a yield strength (or hardness) or for another quantity.
+pub(crate) fn yield_level(scene: &Scene, stress_per_pa: f64) -> Option<YieldLevel> {
     use crate::stress::Quantity;
     let y = scene.contact.yield_strength?;
-    let p0_pa = scene.contact.scale?.p0_pa;
     let (factor, name) = match scene.figure.quantity {
         Quantity::VonMises => (1.0, "Y"),
         Quantity::MaxShear => (0.5, "Y/2"),
         _ => return None,
     };
-    let value = factor * y.pa / p0_pa * stress_per_p0;
-    Some(YieldLevel {
+    let value = factor * y.pa * stress_per_pa;
+    value.is_finite().then(|| YieldLevel {
         value,
         // In whole MPa, as the `hertz` report writes Y.
         text: format!("{name} = {:.0} MPa", factor * y.pa * 1e-6),
     })
+}
+
+impl YieldLevel {
+    /// The lines where `values` (over `x`, `z`, display units) reach the level, and the
+    /// caption's note: `dashed: σvM = Y = 1500 MPa, yielding inside`, or, when the map stays
+    /// below, `σvM < Y = 1800 MPa here (max 0.925 of it)`.
+    pub(crate) fn mark(
+        &self,
+        quantity: crate::stress::Quantity,
+        values: &ndarray::Array2<f64>,
+        x: &crate::field::Axis,
+        z: &crate::field::Axis,
+    ) -> (Vec<Vec<(f64, f64)>>, String) {
+        let largest = values
+            .iter()
+            .copied()
+            .filter(|v| v.is_finite())
+            .fold(f64::NEG_INFINITY, f64::max);
+        let symbol = quantity.symbol();
+        if largest >= self.value {
+            (
+                crate::render::contour_lines(values.view(), x, z, self.value),
+                format!("dashed: {symbol} = {}, yielding inside", self.text),
+            )
+        } else {
+            (
+                Vec::new(),
+                format!(
+                    "{symbol} < {} here (max {} of it)",
+                    self.text,
+                    text::approx((largest / self.value * 1e3).round() / 1e3)
+                ),
+            )
+        }
+    }
 }
 
 /// The colour range of a difference map: `±` the 98th percentile of `|Δ|`, so that the

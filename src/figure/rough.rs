@@ -100,6 +100,21 @@ fn xy_map(
     }
 }
 
+/// Sets a map of non-negative values (a pressure, a von Mises stress) to colours up to the
+/// 99.5 % quantile of its positive values ([`crate::render::robust_top`]): a few cells' spikes
+/// no longer darken the rest; values beyond take the top colour (the bar's triangle), and the
+/// marked maximum keeps its true value.
+fn robust_colours(map: &mut Figure) {
+    for panel in &mut map.panels {
+        let (top, clipped) = crate::render::robust_top(panel.values.as_slice().unwrap_or(&[]));
+        if let (Some(scale), true) = (panel.scale.as_mut(), clipped) {
+            if scale.range.is_some_and(|(lo, _)| lo >= 0.0) {
+                scale.range = Some((0.0, top));
+            }
+        }
+    }
+}
+
 /// The surface scene's sheet of its characterisation `c` (by
 /// [`crate::study::surface::characterise`]).
 pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, SheetError> {
@@ -451,7 +466,7 @@ pub fn rough_sheet(
     );
     let mut topography = topography;
     topography.mark = Mark::None;
-    let pressure = xy_map(
+    let mut pressure = xy_map(
         "Contact pressure",
         &format!(
             "mean {:.1} MPa, max {:.0} MPa",
@@ -464,6 +479,7 @@ pub fn rough_sheet(
         ColorMap::Inferno,
         Vec::new(),
     );
+    robust_colours(&mut pressure);
 
     // The fields under the solved contact, computed by the study.
     let fields = crate::study::rough_sheet::sheet_fields(scene, solution, maxima, on_row)?;
@@ -487,6 +503,9 @@ pub fn rough_sheet(
         scene.figure.colormap,
         outlines,
     );
+    if quantity.kind() == crate::stress::QuantityKind::NonNegative {
+        robust_colours(&mut depth_map);
+    }
     depth_map.levels = scene.figure.levels.clone();
     if let Some(scale) = depth_map.panels[0].scale.as_mut() {
         scale.levels = scene.figure.levels.clone();
@@ -550,11 +569,30 @@ fn section_figure(scene: &Scene, solution: &RoughSolution, fields: &RoughSheetFi
     let symbol = reported.quantity.symbol();
     let mut subtitle = format!("y = {} µm", crate::io::text::approx(y));
     if fields.centred {
-        subtitle.push_str(", centred on it (the periodic field repeats beyond the map)");
+        subtitle.push_str(", centred on the maximum (periodic)");
     }
     subtitle.push_str(&format!("; μ = {friction}, ν = {poisson}; "));
     subtitle.push_str(&section_agreement(scene, fields));
+    let values = fields.xz_pa.mapv(|v| v * stress_per_pa);
+    let mut outlines = Vec::new();
+    if let Some(level) = crate::figure::yield_level(scene, stress_per_pa) {
+        let (lines, note) = level.mark(quantity, &values, &xz.u, &xz.v);
+        outlines = lines;
+        subtitle.push_str(&format!("; {note}"));
+    }
     let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
+    // A non-negative quantity's colours to the 99.5 % quantile of the section (a single
+    // cell's spike would darken the rest); beyond in the top colour, the maximum labelled.
+    let (top, clipped) = crate::render::robust_top(values.as_slice().unwrap_or(&[]));
+    let scale =
+        (quantity.kind() == crate::stress::QuantityKind::NonNegative && clipped).then(|| {
+            PanelScale {
+                value_label: quantity_label.clone(),
+                colormap: scene.figure.colormap,
+                levels: scene.figure.levels.clone(),
+                range: Some((0.0, top)),
+            }
+        });
     Figure {
         title: format!(
             "{} in the xz section through the report's largest {symbol}",
@@ -564,11 +602,11 @@ fn section_figure(scene: &Scene, solution: &RoughSolution, fields: &RoughSheetFi
             subtitle,
             x: xz.u,
             z: xz.v,
-            values: fields.xz_pa.mapv(|v| v * stress_per_pa),
+            values,
             traction,
             half_width: 0.0,
-            outlines: Vec::new(),
-            scale: None,
+            outlines,
+            scale,
         }],
         value_label: quantity_label,
         x_label: "x (µm)".into(),
@@ -618,7 +656,7 @@ fn section_agreement(scene: &Scene, fields: &RoughSheetFields) -> String {
     }
     let largest = fields.xz_largest.value_pa;
     if (largest - reported_pa).abs() <= 1e-9 * reported_pa.abs() {
-        return format!("max = the report's largest {symbol}");
+        return format!("max = the report's {symbol}");
     }
     format!(
         "the marked max differs from the report's largest {symbol}, {} at {at}, by {:+.2} %",

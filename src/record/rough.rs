@@ -217,7 +217,7 @@ pub fn record(
         timeline,
         contact_colours: format!(
             "colours to the {} % quantile of all loads",
-            section::short(super::ROBUST_QUANTILE * 100.0)
+            section::short(crate::render::ROBUST_QUANTILE * 100.0)
         ),
     };
     super::layout::send(stream, &plan_layout(&maps, scene, &frames), live)?;

@@ -310,3 +310,131 @@ fn a_section_across_a_long_ellipse_has_depth_rows_as_fine_as_the_x_cells() {
     assert!((z / a_mm - 0.724).abs() < 0.02, "{}", z / a_mm);
     assert!(y.abs() < plane.u.step() * a_mm);
 }
+
+/// A numerical panel ends where its traction grid ends: a range or section beyond it is
+/// refused naming the grid's extent and the fix (issue 23, item 12: an elliptical scene asked
+/// for y = ±4a drew ±0.6a), and a range within a cell of the grid's edge is drawn.
+#[test]
+fn numerical_ranges_beyond_the_grid_are_refused_with_the_limit() {
+    let scene = |contact: &str, figure: &str| {
+        Scene::parse(
+            &format!("format = 1\n[contact]\n{contact}\n[figure]\n{figure}\n"),
+            "range",
+            "range.toml",
+        )
+        .map_err(|e| e.to_string())
+    };
+    let ellipse = "kind = \"elliptical\"\naspect = 0.3\nmethod = \"numerical\"";
+    let error = scene(ellipse, "section = \"yz\"\ny = [-4.0, 4.0]").expect_err("cut");
+    for expected in [
+        "figure.y",
+        "covers y = ±0.6 a",
+        "raise numerical.extent to 14",
+        "give figure.y within [-0.6, 0.6]",
+    ] {
+        assert!(error.contains(expected), "{expected}: {error}");
+    }
+    // Within the grid (its edge, and half a cell beyond) it is drawn, over the whole range.
+    for y in ["0.6", "0.602"] {
+        let valid = scene(ellipse, &format!("section = \"yz\"\ny = [-{y}, {y}]")).expect(y);
+        let plane = stressfield::study::plane(&valid, &valid.panels[0]);
+        assert!(plane.u.max > 0.59 && plane.u.min < -0.59, "{:?}", plane.u);
+    }
+    // A section beyond the grid, and the xy plane's vertical range.
+    let point = "kind = \"point\"\nmethod = \"numerical\"";
+    let error = scene(point, "at = 3.0").expect_err("beyond");
+    assert!(
+        error.contains("figure.at") && error.contains("covers y = ±2 a"),
+        "{error}"
+    );
+    let error = scene(point, "section = \"xy\"\ny = [-1.0, 2.5]").expect_err("beyond");
+    assert!(
+        error.contains("figure.y") && error.contains("extent to 3"),
+        "{error}"
+    );
+    // Closed-form panels have no grid.
+    scene(
+        "kind = \"point\"",
+        "at = 3.0\nx = [-6.0, 6.0]\nz = [0.0, 3.0]",
+    )
+    .expect("closed form");
+}
+
+/// With a yield strength, a von Mises (or Tresca) figure draws where the stress reaches it,
+/// or says the section stays below it (issue 23, item 13: a report said σvM/Y = 1.09, the
+/// figure showed nothing).
+#[test]
+fn the_yield_line_is_drawn_where_the_section_reaches_y() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/sphere_ball_on_flat.toml");
+    let text = std::fs::read_to_string(&path).expect("scene");
+    let figure_of = |text: &str| {
+        let scene = Scene::parse(text, "ball", path.to_str().expect("path")).expect("valid");
+        let fields = stressfield::study::panel_fields(&scene, &|| {}).expect("evaluates");
+        figure::build(&scene, &fields)
+    };
+    // Y = 1800 MPa: σvM/Y = 0.928 in the report; the yz section through the centre peaks at
+    // 1665 MPa, below Y.
+    let below = figure_of(&text);
+    let panel = &below.panels[0];
+    assert!(panel.outlines.is_empty());
+    let (max, _, _) = panel_max(panel);
+    let ratio = (max / 1800.0 * 1e3).round() / 1e3;
+    assert!(
+        panel
+            .subtitle
+            .ends_with(&format!("σvM < Y = 1800 MPa here (max {ratio} of it)")),
+        "{}",
+        panel.subtitle
+    );
+    // Y = 1500 MPa: the dashed line σvM = Y around the subsurface maximum (z = 0.11 mm).
+    let lower = text.replace(
+        "yield_strength = \"1.8 GPa\"",
+        "yield_strength = \"1500 MPa\"",
+    );
+    assert_ne!(
+        lower, text,
+        "the scene's yield strength is written as 1.8 GPa"
+    );
+    let above = figure_of(&lower);
+    let panel = &above.panels[0];
+    assert!(
+        panel
+            .subtitle
+            .ends_with("dashed: σvM = Y = 1500 MPa, yielding inside"),
+        "{}",
+        panel.subtitle
+    );
+    assert!(!panel.outlines.is_empty());
+    let depths: Vec<f64> = panel.outlines.iter().flatten().map(|p| p.1).collect();
+    let (top, bottom) = depths
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), &z| (a.min(z), b.max(z)));
+    assert!(top > 0.0 && top < 0.11 && bottom > 0.11, "{top}..{bottom}");
+    // On the line the field is Y (interpolated between samples: within 1 %).
+    for &(y, z) in panel.outlines.iter().flatten() {
+        let iy = ((y - panel.x.min) / panel.x.step()).round() as usize;
+        let iz = ((z - panel.z.min) / panel.z.step()).round() as usize;
+        let v = panel.values[[iz, iy]];
+        assert!((v - 1500.0).abs() < 0.01 * 1500.0, "{v} at ({y}, {z})");
+    }
+}
+
+/// A difference map's colours are clipped to the bulk of it: its subtitle gives the range and
+/// its colour bar ends in triangles (the marked extremes lie beyond).
+#[test]
+fn a_difference_maps_colour_range_is_stated() {
+    let (_, built) = load("line_cross_check");
+    let difference = &built.panels[2];
+    let range = difference
+        .scale
+        .as_ref()
+        .and_then(|s| s.range)
+        .expect("clipped");
+    assert!(
+        difference.subtitle.ends_with(" p0 (98 %)") && difference.subtitle.contains("colours ±"),
+        "{}",
+        difference.subtitle
+    );
+    let (max, _, _) = panel_max(difference);
+    assert!(max > 100.0 * range.1, "{max} against ±{}", range.1);
+}

@@ -17,6 +17,7 @@ mod record_agree;
 mod regression;
 mod rough_capped;
 mod rough_contact;
+mod rough_sheet;
 mod scenes;
 mod surfaces;
 mod thermal;

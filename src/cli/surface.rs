@@ -37,7 +37,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     bar.finish_and_clear();
     let solution = solution.with_context(|| format!("scene {}", scene.name))?;
     let maxima_bar = spinner(&format!(
-        "subsurface maxima: DC-FFT layers down to {:.1} um",
+        "subsurface maxima: DC-FFT layers down to {:.1} µm",
         study::rough::search_depth_m(&solution) * 1e6
     ));
     let findings = study::rough::findings(&scene, &solution);

@@ -63,11 +63,19 @@ pub fn draw(
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Drawing, DrawError> {
     Ok(match scene.contact.kind {
-        ContactKind::Rough => Drawing::Sheet(crate::figure::rough::rough_sheet(
-            scene,
-            rough.ok_or(DrawError::Unsolved)?,
-            on_row,
-        )?),
+        ContactKind::Rough => {
+            let solution = rough.ok_or(DrawError::Unsolved)?;
+            // The report's maxima: the sheet's section passes through them.
+            let (maxima, _) = study::rough::subsurface_maxima(
+                solution,
+                scene.contact.friction,
+                scene.contact.poisson,
+            )
+            .map_err(|e| FieldError::Numerical(e.to_string()))?;
+            Drawing::Sheet(crate::figure::rough::rough_sheet(
+                scene, solution, &maxima, on_row,
+            )?)
+        }
         ContactKind::Surface => Drawing::Sheet(crate::figure::rough::surface_sheet(
             scene,
             &study::surface::characterise(scene).map_err(crate::figure::rough::SheetError::from)?,
@@ -105,10 +113,41 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
             }
         };
         let clip = clipped_range(&values);
+        let (x, z) = (units.axis(plane.u), units.axis(plane.v));
+        let mut subtitle = subtitle(scene, panel, plane);
+        // A difference's colours span the bulk of it, not its spikes: say how far (the bar's
+        // triangles show that values go beyond, the marked extremes how far).
+        if let (Method::Difference, Some((_, limit))) = (panel.method, clip) {
+            subtitle.push_str(&format!(
+                "{}colours ±{} {} (98 %)",
+                if panel.subtitle.is_some() { "; " } else { ", " },
+                text::significant(limit, 2, 1e5, true),
+                spec.stress_unit.symbol(),
+            ));
+        }
+        let mut outlines = outlines;
+        // First yield: the line where the drawn stress reaches it, dashed, with the region
+        // inside named; or that the section stays below it.
+        let per_pa = scene
+            .contact
+            .scale
+            .map_or(f64::NAN, |s| stress_per_p0 / s.p0_pa);
+        if let (Some(level), false) = (
+            yield_level(scene, per_pa),
+            panel.method == Method::Difference,
+        ) {
+            let (lines, note) = level.mark(spec.quantity, &values, &x, &z);
+            outlines.extend(lines.into_iter().map(|line| {
+                line.into_iter()
+                    .map(|(u, v)| (u / length_per_a, v / length_per_a))
+                    .collect()
+            }));
+            subtitle.push_str(&format!("; {note}"));
+        }
         panels.push(Panel {
-            subtitle: subtitle(scene, panel, plane),
-            x: units.axis(plane.u),
-            z: units.axis(plane.v),
+            subtitle,
+            x,
+            z,
             values,
             traction: traction
                 .iter()
@@ -155,6 +194,68 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
         levels: spec.levels.clone(),
         mark,
         panel_width_px: spec.width_px,
+    }
+}
+
+/// Where the figure's quantity reaches first yield, in the figure's stress unit: von Mises at
+/// the yield strength Y, the Tresca shear `(σ1 − σ3)/2` at `Y/2` (the criteria of the `hertz`
+/// report's yield check; e.g. Johnson 1985, §6.2).
+pub(crate) struct YieldLevel {
+    value: f64,
+    /// `Y = 1500 MPa`, `Y/2 = 750 MPa`.
+    text: String,
+}
+
+/// The yield level of `scene`'s figure quantity, values being `stress_per_pa` display units
+/// per Pa; `None` without a yield strength (or hardness) or for another quantity.
+pub(crate) fn yield_level(scene: &Scene, stress_per_pa: f64) -> Option<YieldLevel> {
+    use crate::stress::Quantity;
+    let y = scene.contact.yield_strength?;
+    let (factor, name) = match scene.figure.quantity {
+        Quantity::VonMises => (1.0, "Y"),
+        Quantity::MaxShear => (0.5, "Y/2"),
+        _ => return None,
+    };
+    let value = factor * y.pa * stress_per_pa;
+    value.is_finite().then(|| YieldLevel {
+        value,
+        // In whole MPa, as the `hertz` report writes Y.
+        text: format!("{name} = {:.0} MPa", factor * y.pa * 1e-6),
+    })
+}
+
+impl YieldLevel {
+    /// The lines where `values` (over `x`, `z`, display units) reach the level, and the
+    /// caption's note: `dashed: σvM = Y = 1500 MPa, yielding inside`, or, when the map stays
+    /// below, `σvM < Y = 1800 MPa here (max 0.925 of it)`.
+    pub(crate) fn mark(
+        &self,
+        quantity: crate::stress::Quantity,
+        values: &ndarray::Array2<f64>,
+        x: &crate::field::Axis,
+        z: &crate::field::Axis,
+    ) -> (Vec<Vec<(f64, f64)>>, String) {
+        let largest = values
+            .iter()
+            .copied()
+            .filter(|v| v.is_finite())
+            .fold(f64::NEG_INFINITY, f64::max);
+        let symbol = quantity.symbol();
+        if largest >= self.value {
+            (
+                crate::render::contour_lines(values.view(), x, z, self.value),
+                format!("dashed: {symbol} = {}, yielding inside", self.text),
+            )
+        } else {
+            (
+                Vec::new(),
+                format!(
+                    "{symbol} < {} here (max {} of it)",
+                    self.text,
+                    text::approx((largest / self.value * 1e3).round() / 1e3)
+                ),
+            )
+        }
     }
 }
 
@@ -295,9 +396,7 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
                 parts.push(format!("numerical, {nx} x {ny} cells"));
             }
         }
-        (Method::Difference, _) => {
-            parts.push("numerical − closed form (colours clipped at 98 %)".into())
-        }
+        (Method::Difference, _) => parts.push("numerical − closed form".into()),
     }
     parts.extend(section_label(scene, plane));
     // Tractions from a file carry their own shear, and a and p0 are only the figure's units.

@@ -6,9 +6,9 @@
 //! autocorrelation along x and y with the 0.2 threshold, and the Greenwood–Williamson curves.
 //!
 //! A **rough** scene: the topography with the contact spots outlined, the pressure map, the
-//! chosen stress quantity in the xz section through the highest pressure (the pressure and
-//! traction profile along that line above it), the xy section at the depth of the subsurface
-//! maximum, and the real area against load: solved at several loads, beside the GW prediction
+//! chosen stress quantity in the xz section through the `contact` report's maximum, marking
+//! the report's value or saying how it differs (the pressure and traction profile along that
+//! line above it), the xy section at the depth of that maximum, and the real area against load: solved at several loads, beside the GW prediction
 //! and the linear law `A/A0 = κ p / (E* h'rms)` with `κ = sqrt(8/π)` (Persson 2001; h'rms =
 //! Sdq here).
 //!
@@ -28,7 +28,9 @@ use crate::render::table::Table;
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::report::surface::SurfaceReport;
 use crate::scene::{ContactKind, Scene};
+use crate::study::assess::StressMaxima;
 use crate::study::rough::{self as rough_study, RoughStudyError};
+use crate::study::rough_sheet::RoughSheetFields;
 use crate::surface::generate::Form;
 use crate::surface::gw::GreenwoodWilliamson;
 use crate::surface::stats::{self, Characterisation};
@@ -95,6 +97,21 @@ fn xy_map(
         levels: Levels::Count(0),
         mark: Mark::Max,
         panel_width_px: MAP_WIDTH,
+    }
+}
+
+/// Sets a map of non-negative values (a pressure, a von Mises stress) to colours up to the
+/// 99.5 % quantile of its positive values ([`crate::render::robust_top`]): a few cells' spikes
+/// no longer darken the rest; values beyond take the top colour (the bar's triangle), and the
+/// marked maximum keeps its true value.
+fn robust_colours(map: &mut Figure) {
+    for panel in &mut map.panels {
+        let (top, clipped) = crate::render::robust_top(panel.values.as_slice().unwrap_or(&[]));
+        if let (Some(scale), true) = (panel.scale.as_mut(), clipped) {
+            if scale.range.is_some_and(|(lo, _)| lo >= 0.0) {
+                scale.range = Some((0.0, top));
+            }
+        }
     }
 }
 
@@ -202,12 +219,19 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
     );
     psd.x_scale = ChartScale::Log;
     psd.y_scale = ChartScale::Log;
+    // Rings whose power is numerically zero (beyond a generated spectrum's cutoff: rounding
+    // noise, 1e-12 of the largest or less) would stretch the log axis over 20 decades.
+    let visible = |points: &[(f64, f64)]| {
+        let largest = points.iter().map(|p| p.1).fold(0.0, f64::max);
+        move |&&(_, v): &&(f64, f64)| v > 1e-12 * largest
+    };
     psd.series.push(Series {
         label: "radially averaged 2-D".into(),
         points: c
             .spectra
             .radial
             .iter()
+            .filter(visible(&c.spectra.radial))
             .map(|&(q, v)| (q / um, v * um.powi(4)))
             .collect(),
         style: Style::Markers,
@@ -219,6 +243,7 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
             .spectra
             .profile
             .iter()
+            .filter(visible(&c.spectra.profile))
             .map(|&(q, v)| (q / um, v * um.powi(3)))
             .collect(),
         style: Style::Line,
@@ -235,6 +260,24 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
             ],
             style: Style::Dashed,
             colour: PALETTE[1],
+        });
+    }
+    // A slope that gives no Hurst exponent (outside (0, 1]: not self-affine over the band) is
+    // drawn as what it is, with the caveat, rather than left unexplained.
+    let fitted = -c.spectra.fit_slope / 2.0 - 1.0;
+    if c.spectra.hurst.is_none() && fitted.is_finite() && q1 > q0 {
+        let line = |q: f64| 10f64.powf(c.spectra.fit_intercept + c.spectra.fit_slope * q.log10());
+        psd.series.push(Series {
+            label: format!(
+                "slope: H = {} outside (0, 1]: not self-affine",
+                crate::io::text::approx((fitted * 1e3).round() / 1e3),
+            ),
+            points: vec![
+                (q0 / um, line(q0) * um.powi(4)),
+                (q1 / um, line(q1) * um.powi(4)),
+            ],
+            style: Style::Dashed,
+            colour: PALETTE[3],
         });
     }
     psd.x_band = Some((q0 / um, q1 / um));
@@ -386,11 +429,13 @@ fn spot_outlines(solution: &RoughSolution) -> Vec<Vec<(f64, f64)>> {
 }
 
 /// The rough scene's sheet of its solved contact (`solution`, solved by the study; the area
-/// against load, of a nominally flat surface, solved by [`rough_study::area_curve`]). `on_row`
-/// is called per evaluated grid row.
+/// against load, of a nominally flat surface, solved by [`rough_study::area_curve`]), its xz
+/// section through the report's maximum in `maxima` (the `contact` report's, from
+/// [`rough_study::findings`]). `on_row` is called per evaluated grid row.
 pub fn rough_sheet(
     scene: &Scene,
     solution: &RoughSolution,
+    maxima: &StressMaxima,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Sheet, SheetError> {
     if scene.contact.kind != ContactKind::Rough {
@@ -401,8 +446,6 @@ pub fn rough_sheet(
     let unit = scene.figure.stress_unit.label("");
     let unit = unit.trim();
     let outlines = spot_outlines(solution);
-    let nx = surface.heights.shape()[1];
-    let [dx, dy] = surface.heights.spacing_m();
     let top = surface
         .heights
         .heights_m()
@@ -423,7 +466,7 @@ pub fn rough_sheet(
     );
     let mut topography = topography;
     topography.mark = Mark::None;
-    let pressure = xy_map(
+    let mut pressure = xy_map(
         "Contact pressure",
         &format!(
             "mean {:.1} MPa, max {:.0} MPa",
@@ -436,68 +479,33 @@ pub fn rough_sheet(
         ColorMap::Inferno,
         Vec::new(),
     );
+    robust_colours(&mut pressure);
 
     // The fields under the solved contact, computed by the study.
-    let fields = crate::study::rough_sheet::sheet_fields(scene, solution, on_row)?;
-    let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
+    let fields = crate::study::rough_sheet::sheet_fields(scene, solution, maxima, on_row)?;
+    let section_map = section_figure(scene, solution, &fields);
     let quantity = scene.figure.quantity;
-    let (peak_row, xz, max_depth) = (fields.peak_row, &fields.xz, fields.max_depth);
-    let values_xz = fields.xz_pa.mapv(|v| v * stress_per_pa);
-    let traction: Vec<TractionSample> = (0..nx)
-        .map(|i| {
-            let p = solution.pressure_pa[[peak_row, i]] * stress_per_pa;
-            TractionSample {
-                x: (i as f64 + 0.5) * dx * 1e6,
-                p,
-                q: friction * p,
-            }
-        })
-        .collect();
     let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
-    let section_map = Figure {
-        title: format!(
-            "{} in the xz section through the highest pressure",
-            quantity.description()
-        ),
-        panels: vec![Panel {
-            subtitle: format!(
-                "y = {:.1} µm; μ = {friction}, ν = {poisson}",
-                (peak_row as f64 + 0.5) * dy * 1e6
-            ),
-            x: Axis::new(xz.u.min, xz.u.max, xz.u.count),
-            z: Axis::new(0.0, xz.v.max, xz.v.count),
-            values: values_xz,
-            traction,
-            half_width: 0.0,
-            outlines: Vec::new(),
-            scale: None,
-        }],
-        value_label: quantity_label.clone(),
-        x_label: "x (µm)".into(),
-        z_label: "z (µm)".into(),
-        vertical_is_depth: true,
-        traction_label: scene
-            .figure
-            .stress_unit
-            .label(if friction > 0.0 { "p, q" } else { "p" }),
-        colormap: scene.figure.colormap,
-        levels: scene.figure.levels.clone(),
-        mark: scene.figure.mark.unwrap_or(Mark::Max),
-        panel_width_px: 2 * MAP_WIDTH,
-    };
     let values_xy = fields.xy_pa.mapv(|v| v * stress_per_pa);
     let mut depth_map = xy_map(
         &format!(
-            "{} at the depth of the section's maximum",
-            quantity.description()
+            "{} at the depth of the report's largest {}",
+            quantity.description(),
+            fields.reported.quantity.symbol()
         ),
-        &format!("z = {:.2} µm; spots outlined", max_depth),
+        &format!(
+            "z = {} µm; spots outlined",
+            crate::io::text::approx(fields.xy_depth)
+        ),
         &surface.heights,
         values_xy,
         &quantity_label,
         scene.figure.colormap,
         outlines,
     );
+    if quantity.kind() == crate::stress::QuantityKind::NonNegative {
+        robust_colours(&mut depth_map);
+    }
     depth_map.levels = scene.figure.levels.clone();
     if let Some(scale) = depth_map.panels[0].scale.as_mut() {
         scale.levels = scene.figure.levels.clone();
@@ -530,6 +538,131 @@ pub fn rough_sheet(
         ],
     };
     Ok(sheet)
+}
+
+/// The xz section through the report's maximum (`fields`, from
+/// [`crate::study::rough_sheet::sheet_fields`]) with the tractions along it above, its subtitle
+/// saying where it is and how its marked maximum compares with the report's.
+fn section_figure(scene: &Scene, solution: &RoughSolution, fields: &RoughSheetFields) -> Figure {
+    let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
+    let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
+    let quantity = scene.figure.quantity;
+    let xz = &fields.xz;
+    let traction: Vec<TractionSample> = fields
+        .columns
+        .iter()
+        .enumerate()
+        .map(|(k, &column)| {
+            let p = solution.pressure_pa[[fields.row, column]] * stress_per_pa;
+            TractionSample {
+                x: xz.u.value(k),
+                p,
+                q: friction * p,
+            }
+        })
+        .collect();
+    let y = match xz.section {
+        crate::field::Section::Xz { y } => y,
+        _ => f64::NAN,
+    };
+    let reported = &fields.reported;
+    let symbol = reported.quantity.symbol();
+    let mut subtitle = format!("y = {} µm", crate::io::text::approx(y));
+    if fields.centred {
+        subtitle.push_str(", centred on the maximum (periodic)");
+    }
+    subtitle.push_str(&format!("; μ = {friction}, ν = {poisson}; "));
+    subtitle.push_str(&section_agreement(scene, fields));
+    let values = fields.xz_pa.mapv(|v| v * stress_per_pa);
+    let mut outlines = Vec::new();
+    if let Some(level) = crate::figure::yield_level(scene, stress_per_pa) {
+        let (lines, note) = level.mark(quantity, &values, &xz.u, &xz.v);
+        outlines = lines;
+        subtitle.push_str(&format!("; {note}"));
+    }
+    let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
+    // A non-negative quantity's colours to the 99.5 % quantile of the section (a single
+    // cell's spike would darken the rest); beyond in the top colour, the maximum labelled.
+    let (top, clipped) = crate::render::robust_top(values.as_slice().unwrap_or(&[]));
+    let scale =
+        (quantity.kind() == crate::stress::QuantityKind::NonNegative && clipped).then(|| {
+            PanelScale {
+                value_label: quantity_label.clone(),
+                colormap: scene.figure.colormap,
+                levels: scene.figure.levels.clone(),
+                range: Some((0.0, top)),
+            }
+        });
+    Figure {
+        title: format!(
+            "{} in the xz section through the report's largest {symbol}",
+            quantity.description()
+        ),
+        panels: vec![Panel {
+            subtitle,
+            x: xz.u,
+            z: xz.v,
+            values,
+            traction,
+            half_width: 0.0,
+            outlines,
+            scale,
+        }],
+        value_label: quantity_label,
+        x_label: "x (µm)".into(),
+        z_label: "z (µm)".into(),
+        vertical_is_depth: true,
+        traction_label: scene
+            .figure
+            .stress_unit
+            .label(if friction > 0.0 { "p, q" } else { "p" }),
+        colormap: scene.figure.colormap,
+        levels: scene.figure.levels.clone(),
+        mark: scene.figure.mark.unwrap_or(Mark::Max),
+        panel_width_px: 2 * MAP_WIDTH,
+    }
+}
+
+/// How the section's marked maximum compares with the report's: the same (to 1e-9 of it), or
+/// the difference stated (a sample above the report's, which refines depth only around its
+/// best layer; the report's point outside the depth range drawn); for a quantity the report
+/// does not search, where the report's von Mises maximum is.
+fn section_agreement(scene: &Scene, fields: &RoughSheetFields) -> String {
+    let reported = &fields.reported;
+    let symbol = reported.quantity.symbol();
+    let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
+    let unit = scene.figure.stress_unit.symbol();
+    let value = |pa: f64| format!("{} {unit}", crate::io::text::approx(pa * stress_per_pa));
+    let reported_pa = reported.extreme.value_over_p0 * rough_study::REFERENCE_PRESSURE_PA;
+    let at = format!(
+        "x = {} µm, z = {} µm",
+        crate::io::text::approx(reported.extreme.x_over_a),
+        crate::io::text::approx(reported.extreme.z_over_a)
+    );
+    if scene.figure.quantity != reported.quantity {
+        return format!(
+            "the report's largest {symbol}, {}, at {at}",
+            value(reported_pa)
+        );
+    }
+    let (z0, z1) = (fields.xz.v.min, fields.xz.v.max);
+    let z = reported.extreme.z_over_a;
+    if !(z >= z0 - 1e-9 * z1.abs() && z <= z1 + 1e-9 * z1.abs()) {
+        return format!(
+            "the report's largest {symbol}, {}, lies at z = {} µm, outside the depths drawn",
+            value(reported_pa),
+            crate::io::text::approx(z)
+        );
+    }
+    let largest = fields.xz_largest.value_pa;
+    if (largest - reported_pa).abs() <= 1e-9 * reported_pa.abs() {
+        return format!("max = the report's {symbol}");
+    }
+    format!(
+        "the marked max differs from the report's largest {symbol}, {} at {at}, by {:+.2} %",
+        value(reported_pa),
+        100.0 * (largest - reported_pa) / reported_pa
+    )
 }
 
 /// Real area against mean pressure: the solver at fractions and multiples of the scene's mean

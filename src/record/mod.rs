@@ -55,7 +55,7 @@ use crate::field::FieldError;
 use crate::figure;
 use crate::render::chart::{chart_png, Chart, Series, Style, PALETTE};
 use crate::render::colormap::ColorScale;
-use crate::render::{ColorMap, Figure, Mark, Panel};
+use crate::render::{robust_top, ColorMap, Figure, Mark, Panel};
 use crate::scene::{ContactKind, Scene, SweepParameter};
 use crate::study;
 use layout::{Layout, Node, View, ViewKind};
@@ -274,31 +274,6 @@ fn colour_range(map: ColorMap, lo: f64, hi: f64, fixed: Option<(f64, f64)>) -> (
         }
     };
     (grow(scale.lo), grow(scale.hi))
-}
-
-/// The quantile of a sweep's values (over all its steps) that sets the top of a robust colour
-/// range ([`robust_top`]).
-const ROBUST_QUANTILE: f64 = 0.995;
-
-/// The top of a robust colour range of `values` (all steps of a sweep; only the positive ones,
-/// where a field is mostly zero, as a pressure outside the contact): their
-/// [`ROBUST_QUANTILE`] quantile, so that a few spikes (a single cell at twice the hardness) do
-/// not darken every other value; values beyond are drawn in the top colour, the true maximum
-/// still labelled. Returns the top and whether it is below the largest value.
-fn robust_top(values: &[f64]) -> (f64, bool) {
-    let mut positive: Vec<f64> = values
-        .iter()
-        .copied()
-        .filter(|v| v.is_finite() && *v > 0.0)
-        .collect();
-    if positive.is_empty() {
-        return (0.0, false);
-    }
-    positive.sort_by(f64::total_cmp);
-    let largest = positive[positive.len() - 1];
-    let at = ((positive.len() - 1) as f64 * ROBUST_QUANTILE).round() as usize;
-    let top = positive[at];
-    (top, top < largest)
 }
 
 /// The Rerun colour map closest to a figure's.

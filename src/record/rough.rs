@@ -73,11 +73,21 @@ pub fn record(
         Some(_) => None,
         None => Some(crate::study::surface::characterise(scene).map_err(rerun_error)?),
     };
-    let drawing = match &characterisation {
-        Some(c) => {
+    // A rough contact's findings, computed once: the report states its maxima and the
+    // sheet's section passes through them.
+    let findings = match solution {
+        Some(solution) => Some(rough_study::findings(scene, solution).map_err(rerun_error)?),
+        None => None,
+    };
+    let drawing = match (&characterisation, solution, &findings) {
+        (Some(c), _, _) => {
             Drawing::Sheet(crate::figure::rough::surface_sheet(scene, c).map_err(rerun_error)?)
         }
-        None => figure::draw(scene, solution, on_row).map_err(rerun_error)?,
+        (None, Some(solution), Some(findings)) => Drawing::Sheet(
+            crate::figure::rough::rough_sheet(scene, solution, &findings.maxima, on_row)
+                .map_err(rerun_error)?,
+        ),
+        _ => figure::draw(scene, solution, on_row).map_err(rerun_error)?,
     };
     let Drawing::Sheet(sheet) = &drawing else {
         return Err(rerun_error("a surface scene draws a sheet"));
@@ -88,17 +98,16 @@ pub fn record(
     let exaggeration = log_topography(stream, &surface.heights)?;
     // The report's maximum: the depth steps include its depth and show its value there.
     let mut reported = None;
-    let report = match solution {
-        Some(solution) => {
-            let findings = rough_study::findings(scene, solution).map_err(rerun_error)?;
+    let report = match (solution, &findings) {
+        (Some(solution), Some(findings)) => {
             let maximum = findings.maxima.von_mises;
             reported = Some(super::rough_depth::Reported {
                 value_pa: maximum.value_over_p0 * rough_study::REFERENCE_PRESSURE_PA,
                 z: maximum.z_over_a,
             });
-            ContactReport::new(scene, solution, &findings).text(scene)
+            ContactReport::new(scene, solution, findings).text(scene)
         }
-        None => {
+        _ => {
             let c = characterisation
                 .as_ref()
                 .ok_or_else(|| rerun_error("a surface scene is characterised"))?;
@@ -620,7 +629,7 @@ impl LoadChart {
 fn contact_colours() -> String {
     format!(
         "run to the {} % quantile of all loads' pressures (one cell's spike does not set them; a pressure beyond is drawn in the top colour, its step's title says so and the labelled maximum keeps its value)",
-        section::short(super::ROBUST_QUANTILE * 100.0)
+        section::short(crate::render::ROBUST_QUANTILE * 100.0)
     )
 }
 

@@ -325,6 +325,21 @@ fn colorbar<DB: DrawingBackend>(
         (left, top),
     ];
     painter.stroke(&frame, pens.axis, INK)?;
+    // Values beyond the colour range: a triangle in the end colour on that end.
+    let height = 0.9 * (right - left);
+    for (beyond, base, tip, value) in [
+        (group.beyond[0], bottom, bottom + height, scale.lo),
+        (group.beyond[1], top, top - height, scale.hi),
+    ] {
+        if beyond {
+            let [r, g, b] = scale.rgb(value);
+            let triangle = [(left, base), (right, base), (0.5 * (left + right), tip)];
+            painter.fill_polygon(&triangle, RGBAColor(r, g, b, 1.0))?;
+            let mut outline = triangle.to_vec();
+            outline.push(triangle[0]);
+            painter.stroke(&outline, pens.axis, INK)?;
+        }
+    }
     for (value, label) in bar_layout.ticks.values.iter().zip(&bar_layout.ticks.labels) {
         let y = y_of(*value).clamp(top, bottom);
         painter.stroke(

@@ -172,6 +172,48 @@ pub enum Mark {
     None,
 }
 
+/// The quantile of a map's values (a sweep's: over all its steps) that sets the top of a
+/// robust colour range ([`robust_top`]).
+pub const ROBUST_QUANTILE: f64 = 0.995;
+
+/// The top of a robust colour range of `values` (a map, or all steps of a sweep; only the positive ones,
+/// where a field is mostly zero, as a pressure outside the contact): their
+/// [`ROBUST_QUANTILE`] quantile, so that a few spikes (a single cell at twice the hardness) do
+/// not darken every other value; values beyond are drawn in the top colour, the true maximum
+/// still labelled. Returns the top and whether it is below the largest value.
+pub fn robust_top(values: &[f64]) -> (f64, bool) {
+    let mut positive: Vec<f64> = values
+        .iter()
+        .copied()
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .collect();
+    if positive.is_empty() {
+        return (0.0, false);
+    }
+    positive.sort_by(f64::total_cmp);
+    let largest = positive[positive.len() - 1];
+    let at = ((positive.len() - 1) as f64 * ROBUST_QUANTILE).round() as usize;
+    let top = positive[at];
+    (top, top < largest)
+}
+
+/// Splits an axis or colour-bar caption into its name and its unit as written after a number:
+/// `σvM / p0` gives (`σvM`, ` p0`), `p (MPa)` gives (`p`, ` MPa`), `x/a` gives (`x`, `a`).
+pub fn name_and_unit(label: &str) -> (String, String) {
+    let label = label.trim();
+    if let (Some(open), true) = (label.rfind(" ("), label.ends_with(')')) {
+        let unit = &label[open + 2..label.len() - 1];
+        return (label[..open].to_string(), format!(" {unit}"));
+    }
+    if let Some((name, unit)) = label.rsplit_once(" / ") {
+        return (name.to_string(), format!(" {unit}"));
+    }
+    if let Some((name, unit)) = label.rsplit_once('/') {
+        return (name.to_string(), unit.to_string());
+    }
+    (label.to_string(), String::new())
+}
+
 /// Errors of drawing.
 #[derive(Debug, thiserror::Error)]
 pub enum RenderError {
@@ -460,7 +502,7 @@ mod tests {
             "z/a",
             "τ1 / p0",
             "p, q / p0",
-            "max 1.00 at",
+            "max 1.00 p0 at x = \u{2212}0.50a, z = 0.80a",
         ] {
             assert!(svg.contains(text), "no `{text}` in the SVG");
         }
@@ -531,6 +573,39 @@ mod tests {
     /// Whether the columns `x0..x1` are white over the rows `y0..y1`.
     fn white_columns(image: &image::RgbImage, x0: i32, x1: i32, y0: i32, y1: i32) -> bool {
         (x0..x1).all(|x| (y0..y1).all(|y| image.get_pixel(x as u32, y as u32).0 == [255; 3]))
+    }
+
+    #[test]
+    fn a_clipped_colour_range_ends_its_bar_in_triangles_of_the_end_colours() {
+        // The difference spans ±0.024 (0.01 x (1 + 0.2 z) at x = ±2, z = 1.6); colours to ±0.01.
+        let mut figure = compared(Mark::None);
+        figure.panels[2].scale = Some(PanelScale {
+            range: Some((-0.01, 0.01)),
+            ..difference_scale()
+        });
+        let plan = Plan::new(&figure).expect("plan");
+        assert_eq!(plan.groups[0].beyond, [false, false]);
+        assert_eq!(plan.groups[1].beyond, [true, true]);
+        let image = render_png(&figure).expect("render");
+        let bar = plan.layout.colorbars[1].rect;
+        let centre = (bar.x + bar.w / 2) as u32;
+        let (top, bottom) = (
+            plan.groups[1].scale.rgb(0.01),
+            plan.groups[1].scale.rgb(-0.01),
+        );
+        // Just outside the bar's ends, in the middle of the triangles.
+        let above = image.get_pixel(centre, (bar.y - bar.w / 3) as u32).0;
+        let below = image.get_pixel(centre, (bar.bottom() + bar.w / 3) as u32).0;
+        assert_eq!((above, below), (top, bottom));
+        // Unclipped: nothing drawn there.
+        let unclipped = compared(Mark::None);
+        let image = render_png(&unclipped).expect("render");
+        let plan = Plan::new(&unclipped).expect("plan");
+        let bar = plan.layout.colorbars[1].rect;
+        let above = image
+            .get_pixel((bar.x + bar.w / 2) as u32, (bar.y - bar.w / 3) as u32)
+            .0;
+        assert_eq!(above, [255; 3]);
     }
 
     #[test]

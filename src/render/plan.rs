@@ -9,6 +9,7 @@ use super::layout::{Layout, PanelLayout, Rect, TextSizes};
 use super::scales::{scale_groups, ScaleGroup};
 use super::ticks::{format_fixed, format_levels, format_significant};
 use super::{ColorMap, Figure, Mark, Panel, RenderError};
+use crate::field::Axis;
 
 /// A box of text: the box (for the background) and where the text sits.
 #[derive(Clone, Debug, PartialEq)]
@@ -268,7 +269,7 @@ fn plan_panel(
                 .filter(|(m, _)| *m != maximum)
                 .map(|(_, b)| *b),
         );
-        if let Some(extreme) = plan_extreme(panel, pl, sizes, maximum, &avoid)? {
+        if let Some(extreme) = plan_extreme(figure, panel, pl, sizes, maximum, &avoid)? {
             taken.push([
                 extreme.at.0 - r,
                 extreme.at.1 - r,
@@ -392,8 +393,62 @@ fn coordinate_decimals(span: f64) -> usize {
     (2 - span.abs().log10().floor() as i32).clamp(0, 6) as usize
 }
 
+/// One number of decimals for both coordinates of a marked sample: at least what each axis's
+/// span asks ([`coordinate_decimals`]), more while a coordinate is off by more than a
+/// hundredth of the finer sample spacing, but no more than shows that spacing to three digits.
+fn marker_decimals(x: f64, z: f64, x_axis: &Axis, z_axis: &Axis) -> usize {
+    let base = coordinate_decimals(x_axis.max - x_axis.min)
+        .max(coordinate_decimals(z_axis.max - z_axis.min));
+    let step = x_axis.step().abs().min(z_axis.step().abs());
+    if !(step.is_finite() && step > 0.0) {
+        return base;
+    }
+    let limit = ((2.0 - step.log10().floor()).max(0.0) as usize).clamp(base, 6);
+    let exact = |value: f64, decimals: usize| {
+        let scale = 10f64.powi(decimals as i32);
+        ((value * scale).round() / scale - value).abs() <= 0.01 * step
+    };
+    (base..=limit)
+        .find(|&d| exact(x, d) && exact(z, d))
+        .unwrap_or(limit)
+}
+
+/// The label of a marked extreme, in the units of the figure's captions: `max 0.300 p0 at
+/// x = 0.000a, z = 0.785a`, `max 1659 MPa at x = 109.500 µm, z = 0.375 µm` (both coordinates
+/// with the same decimals, [`marker_decimals`]; a coordinate within 1e-9 of the span of zero
+/// is 0).
+fn marker_text(
+    figure: &Figure,
+    panel: &Panel,
+    maximum: bool,
+    value: f64,
+    (x, z): (f64, f64),
+) -> String {
+    let caption = panel
+        .scale
+        .as_ref()
+        .map_or(figure.value_label.as_str(), |s| s.value_label.as_str());
+    let (_, unit) = super::name_and_unit(caption);
+    let (horizontal, length) = super::name_and_unit(&figure.x_label);
+    let (vertical, _) = super::name_and_unit(&figure.z_label);
+    let span = (panel.x.max - panel.x.min)
+        .abs()
+        .max((panel.z.max - panel.z.min).abs());
+    let snap = |c: f64| if c.abs() <= 1e-9 * span { 0.0 } else { c };
+    let (x, z) = (snap(x), snap(z));
+    let decimals = marker_decimals(x, z, &panel.x, &panel.z);
+    format!(
+        "{} {}{unit} at {horizontal} = {}{length}, {vertical} = {}{length}",
+        if maximum { "max" } else { "min" },
+        format_significant(value),
+        format_fixed(x, decimals),
+        format_fixed(z, decimals),
+    )
+}
+
 /// Finds the largest (or smallest) sampled value of a panel and places its label.
 fn plan_extreme(
+    figure: &Figure,
     panel: &Panel,
     pl: &PanelLayout,
     sizes: &TextSizes,
@@ -409,13 +464,7 @@ fn plan_extreme(
     let z = panel.z.value(j);
     let value = v0;
 
-    let text = format!(
-        "{} {} at ({}, {})",
-        if maximum { "max" } else { "min" },
-        format_significant(value),
-        format_fixed(x, coordinate_decimals(pl.x_max - pl.x_min)),
-        format_fixed(z, coordinate_decimals(pl.z_max - pl.z_min)),
-    );
+    let text = marker_text(figure, panel, maximum, value, (x, z));
     let at = (pl.px(x), pl.pz(z));
     let size = sizes.mark;
     let width = font::text_width(&text, size)?;
@@ -610,4 +659,93 @@ fn point_at(line: &[(f64, f64)], s: f64) -> Option<(f64, f64)> {
         travelled += length;
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::{ColorMap, Levels, PanelScale};
+    use ndarray::Array2;
+
+    fn figure(value_label: &str, x_label: &str, z_label: &str, x: Axis, z: Axis) -> Figure {
+        Figure {
+            title: String::new(),
+            panels: vec![Panel {
+                subtitle: String::new(),
+                x,
+                z,
+                values: Array2::zeros((z.count, x.count)),
+                traction: Vec::new(),
+                half_width: 0.0,
+                outlines: Vec::new(),
+                scale: None,
+            }],
+            value_label: value_label.into(),
+            x_label: x_label.into(),
+            z_label: z_label.into(),
+            vertical_is_depth: true,
+            traction_label: String::new(),
+            colormap: ColorMap::Viridis,
+            levels: Levels::Count(0),
+            mark: Mark::Max,
+            panel_width_px: 300,
+        }
+    }
+
+    #[test]
+    fn marker_labels_carry_units_and_one_precision() {
+        // A normalised section, 4a by 2a, 801 samples across: one decimals count for both.
+        let f = figure(
+            "τ1 / p0",
+            "x/a",
+            "z/a",
+            Axis::new(-2.0, 2.0, 801),
+            Axis::new(0.0, 2.0, 401),
+        );
+        let text = |f: &Figure, max: bool, v: f64, at: (f64, f64)| {
+            marker_text(f, &f.panels[0], max, v, at)
+        };
+        assert_eq!(
+            text(&f, true, 0.30028, (3e-13, 0.785)),
+            "max 0.300 p0 at x = 0.000a, z = 0.785a"
+        );
+        assert_eq!(
+            text(&f, true, 0.3, (0.18, 0.19)),
+            "max 0.300 p0 at x = 0.18a, z = 0.19a"
+        );
+        assert_eq!(
+            text(&f, false, -0.25, (-0.86, 0.5)),
+            "min \u{2212}0.250 p0 at x = \u{2212}0.86a, z = 0.50a"
+        );
+        // A rough section in µm and MPa: depth samples 0.375 µm apart, 1 µm cells along x.
+        let f = figure(
+            "σvM (MPa)",
+            "x (µm)",
+            "z (µm)",
+            Axis::new(45.5, 172.5, 128),
+            Axis::new(0.0, 50.25, 135),
+        );
+        assert_eq!(
+            text(&f, true, 1658.99, (109.5, 0.375)),
+            "max 1659 MPa at x = 109.500 µm, z = 0.375 µm"
+        );
+        // A map seen from above: y, not z; its own scale's unit.
+        let mut f = figure(
+            "σvM (MPa)",
+            "x (µm)",
+            "y (µm)",
+            Axis::new(0.5, 127.5, 128),
+            Axis::new(0.5, 127.5, 128),
+        );
+        f.panels[0].scale = Some(PanelScale {
+            value_label: "p (GPa)".into(),
+            colormap: ColorMap::Inferno,
+            levels: Levels::Count(0),
+            range: None,
+        });
+        assert_eq!(
+            text(&f, true, 2.9289, (100.5, 107.5)),
+            "max 2.93 GPa at x = 100.5 µm, y = 107.5 µm"
+        );
+    }
 }

@@ -24,6 +24,10 @@ pub(crate) struct ScaleGroup<'f> {
     pub scale: ColorScale,
     /// Contour levels of the group's maps, also marked on its colour bar.
     pub levels: Vec<f64>,
+    /// Whether the group's values reach below and above its colour range (a range given by
+    /// [`PanelScale::range`](super::PanelScale::range)): those are drawn in the end colours,
+    /// and the colour bar ends in a triangle on that side (as matplotlib's `extend`).
+    pub beyond: [bool; 2],
 }
 
 /// The scale groups of `figure`, left to right; none when it has no panels.
@@ -41,8 +45,11 @@ pub(crate) fn scale_groups(figure: &Figure) -> Vec<ScaleGroup<'_>> {
             let values = figure.panels[panels.clone()]
                 .iter()
                 .map(|p| p.values.view());
-            let (min, max) = wanted.range.unwrap_or_else(|| finite_range(values));
+            let data = finite_range(values);
+            let (min, max) = wanted.range.unwrap_or(data);
             let scale = ColorScale::for_range(wanted.colormap, min, max);
+            let slack = 1e-12 * (scale.hi - scale.lo).abs();
+            let beyond = [data.0 < scale.lo - slack, data.1 > scale.hi + slack];
             let skip_zero = wanted.colormap != ColorMap::Diverging && min >= 0.0;
             ScaleGroup {
                 panels,
@@ -50,6 +57,7 @@ pub(crate) fn scale_groups(figure: &Figure) -> Vec<ScaleGroup<'_>> {
                 colormap: wanted.colormap,
                 scale,
                 levels: choose_levels(wanted.levels, min, max, skip_zero),
+                beyond,
             }
         })
         .collect()

@@ -89,6 +89,20 @@ pub fn hertz(scene: &Scene, maxima: &SceneMaxima) -> String {
     out
 }
 
+/// Positions of maxima closer to zero than this (units of a) are zero: the compass search of
+/// [`crate::study::assess::maximum`] places a smooth maximum to about 1e-8 a, so an on-axis
+/// maximum lands a few 1e-9 a off the axis, which would print as `x = 8.4564e-10 mm`.
+const POSITION_RESOLUTION_OVER_A: f64 = 1e-6;
+
+/// `value_over_a`, or 0 within [`POSITION_RESOLUTION_OVER_A`] of it.
+fn snap_position(value_over_a: f64) -> f64 {
+    if value_over_a.abs() < POSITION_RESOLUTION_OVER_A {
+        0.0
+    } else {
+        value_over_a
+    }
+}
+
 fn mm(m: f64) -> String {
     format!("{} mm", text::fixed(m * 1e3, 4))
 }
@@ -369,6 +383,11 @@ fn write_maxima(out: &mut String, scene: &Scene, found: &SceneMaxima) -> std::fm
     };
     let dimensional = contact.scale.is_some();
     let describe = |e: &Extreme| {
+        let (x, y, z) = (
+            snap_position(e.x_over_a),
+            snap_position(e.y_over_a),
+            snap_position(e.z_over_a),
+        );
         let mut text = format!("{:.4} p0", e.value_over_p0);
         if dimensional {
             let _ = write!(
@@ -380,22 +399,18 @@ fn write_maxima(out: &mut String, scene: &Scene, found: &SceneMaxima) -> std::fm
         if point {
             let _ = write!(
                 text,
-                " at x = {:.3} a, y = {}{:.3} a, z = {:.3} a",
-                e.x_over_a,
-                if e.mirrored_in_y { "±" } else { "" },
-                e.y_over_a,
-                e.z_over_a
+                " at x = {x:.3} a, y = {}{y:.3} a, z = {z:.3} a",
+                if e.mirrored_in_y && y != 0.0 {
+                    "±"
+                } else {
+                    ""
+                },
             );
         } else {
-            let _ = write!(text, " at x = {:.3} a, z = {:.3} a", e.x_over_a, e.z_over_a);
+            let _ = write!(text, " at x = {x:.3} a, z = {z:.3} a");
         }
         if dimensional {
-            let _ = write!(
-                text,
-                " (x = {}, z = {})",
-                mm(e.x_over_a * a_m),
-                mm(e.z_over_a * a_m)
-            );
+            let _ = write!(text, " (x = {}, z = {})", mm(x * a_m), mm(z * a_m));
         }
         text
     };

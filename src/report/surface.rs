@@ -368,7 +368,7 @@ impl SurfaceReport {
             |v: Option<f64>, f: &dyn Fn(f64) -> String| v.map_or_else(|| "n/a".to_string(), f);
         writeln!(
             out,
-            "surface {source}: {} x {} samples, spacing {:.4} x {:.4} um ({:.1} x {:.1} um)",
+            "surface {source}: {} x {} samples, spacing {:.4} x {:.4} µm ({:.1} x {:.1} µm)",
             self.columns,
             self.rows,
             um(self.spacing_m[0]),
@@ -385,19 +385,19 @@ impl SurfaceReport {
         writeln!(out, "height (ISO 25178-2)")?;
         writeln!(
             out,
-            "  Sa  {:>12.5} um     arithmetic mean height",
+            "  Sa  {:>12.5} µm     arithmetic mean height",
             um(self.Sa)
         )?;
         writeln!(
             out,
-            "  Sq  {:>12.5} um     root mean square height",
+            "  Sq  {:>12.5} µm     root mean square height",
             um(self.Sq)
         )?;
         writeln!(out, "  Ssk {:>12.4}        skewness", self.Ssk)?;
         writeln!(out, "  Sku {:>12.4}        kurtosis", self.Sku)?;
-        writeln!(out, "  Sp  {:>12.5} um     highest peak", um(self.Sp))?;
-        writeln!(out, "  Sv  {:>12.5} um     deepest valley", um(self.Sv))?;
-        writeln!(out, "  Sz  {:>12.5} um     maximum height", um(self.Sz))?;
+        writeln!(out, "  Sp  {:>12.5} µm     highest peak", um(self.Sp))?;
+        writeln!(out, "  Sv  {:>12.5} µm     deepest valley", um(self.Sv))?;
+        writeln!(out, "  Sz  {:>12.5} µm     maximum height", um(self.Sz))?;
         writeln!(out, "hybrid")?;
         writeln!(
             out,
@@ -412,7 +412,7 @@ impl SurfaceReport {
         writeln!(out, "spatial (autocorrelation threshold 0.2)")?;
         writeln!(
             out,
-            "  Sal {:>12} um     autocorrelation length",
+            "  Sal {:>12} µm     autocorrelation length",
             optional(self.Sal, &|v| format!("{:.4}", um(v)))
         )?;
         writeln!(
@@ -431,7 +431,7 @@ impl SurfaceReport {
         )?;
         writeln!(
             out,
-            "  Ra {:.5} um, Rq {:.5} um, Rsk {}, Rku {}",
+            "  Ra {:.5} µm, Rq {:.5} µm, Rsk {}, Rku {}",
             um(self.Ra),
             um(self.Rq),
             optional(self.Rsk, &|v| format!("{v:.4}")),
@@ -440,7 +440,7 @@ impl SurfaceReport {
         writeln!(out, "spectrum")?;
         writeln!(
             out,
-            "  Hurst exponent H {}   fractal dimension D = 3 - H {}   (fit over wavelengths {:.3} .. {:.3} um)",
+            "  Hurst exponent H {}   fractal dimension D = 3 - H {}   (fit over wavelengths {:.3} .. {:.3} µm)",
             optional(self.hurst, &|v| format!("{v:.4}")),
             optional(self.fractal_dimension, &|v| format!("{v:.4}")),
             um(self.hurst_band_m[0]),
@@ -463,19 +463,19 @@ impl SurfaceReport {
         )?;
         writeln!(
             out,
-            "  mean tip radius (um)        {:>12}    {:>12.3}",
+            "  mean tip radius (µm)        {:>12}    {:>12.3}",
             or_na(um(self.summit_radius_m), 3),
             um(self.mccool_summit_radius_m)
         )?;
         writeln!(
             out,
-            "  summit height std (um)      {:>12}    {:>12.5}",
+            "  summit height std (µm)      {:>12}    {:>12.5}",
             or_na(um(self.summit_height_std_m), 5),
             um(self.mccool_summit_height_std_m)
         )?;
         writeln!(
             out,
-            "  mean summit height (um)     {:>12}    {:>12.5}",
+            "  mean summit height (µm)     {:>12}    {:>12.5}",
             or_na(um(self.summit_mean_height_m), 5),
             um(self.mccool_summit_mean_height_m)
         )?;
@@ -495,7 +495,7 @@ impl SurfaceReport {
             )?;
             writeln!(
                 out,
-                "  separation (um)   contacts (1/mm²)   real area (%)   mean pressure (MPa)"
+                "  separation (µm)   contacts (1/mm²)   real area (%)   mean pressure (MPa)"
             )?;
             for (point, k) in points.iter().zip(GW_SEPARATIONS_IN_SIGMA) {
                 writeln!(
@@ -511,7 +511,7 @@ impl SurfaceReport {
         let [row, column] = c.asperity.at;
         writeln!(
             out,
-            "highest asperity: row {row}, column {column}, {:.4} um above the mean plane; tip radius {} um along x, {} um along y",
+            "highest asperity: row {row}, column {column}, {:.4} µm above the mean plane; tip radius {} µm along x, {} µm along y",
             um(self.asperity_height_m),
             optional(self.asperity_radius_m, &|v| format!("{:.3}", um(v))),
             optional(c.asperity.radius_y_m, &|v| format!("{:.3}", um(v)))
@@ -523,7 +523,7 @@ impl SurfaceReport {
         ) {
             writeln!(
                 out,
-                "  as a Hertz sphere on a flat at an approach of h/5 = {:.4} um: p0 = {:.1} MPa, a = {:.4} um, load {:.4e} N",
+                "  as a Hertz sphere on a flat at an approach of h/5 = {:.4} µm: p0 = {:.1} MPa, a = {:.4} µm, load {:.4e} N",
                 um(self.asperity_height_m / 5.0),
                 p0 * 1e-6,
                 um(a),

@@ -143,7 +143,7 @@ impl GearPathReport {
             "s (mm)",
             "pairs",
             "w (N/mm)",
-            "a (um)",
+            "a (µm)",
             "p0 (MPa)",
             "V1",
             "V2",
@@ -318,7 +318,7 @@ impl ThermalReport {
             let percent = |new: f64, old: f64| 100.0 * (new - old) / old;
             writeln!(
                 out,
-                "  coupled thermo-mechanical contact: converged in {} iterations (pressure change {:.1e} < {:.0e}); thermal bulge over the contact {:.3} um",
+                "  coupled thermo-mechanical contact: converged in {} iterations (pressure change {:.1e} < {:.0e}); thermal bulge over the contact {:.3} µm",
                 c.iterations,
                 c.pressure_changes.last().copied().unwrap_or(0.0),
                 c.tolerance,
@@ -355,7 +355,7 @@ impl ThermalReport {
         )?;
         writeln!(
             out,
-            "  body 1 flash temperature: max {:.2} K at x = {:.2} um, y = {:.2} um; mean over the contact {:.2} K",
+            "  body 1 flash temperature: max {:.2} K at x = {:.2} µm, y = {:.2} µm; mean over the contact {:.2} K",
             self.max_temperature_rise_k,
             um(self.max_temperature_x_m),
             um(self.max_temperature_y_m),
@@ -373,7 +373,7 @@ impl ThermalReport {
         }
         writeln!(
             out,
-            "  von Mises maxima (body 1): thermal {:.1} MPa at depth {:.2} um; contact alone {:.1} MPa at depth {:.2} um, x = {:.2} um; total {:.1} MPa at depth {:.2} um, x = {:.2} um",
+            "  von Mises maxima (body 1): thermal {:.1} MPa at depth {:.2} µm; contact alone {:.1} MPa at depth {:.2} µm, x = {:.2} µm; total {:.1} MPa at depth {:.2} µm, x = {:.2} µm",
             mpa(self.thermal_von_mises_max_pa),
             um(self.thermal_von_mises_max_depth_m),
             mpa(self.contact_von_mises_max_pa),
@@ -385,14 +385,14 @@ impl ThermalReport {
         )?;
         writeln!(
             out,
-            "  Tresca (s1 - s3) maxima: contact alone {:.1} MPa; total {:.1} MPa at depth {:.2} um",
+            "  Tresca (s1 - s3) maxima: contact alone {:.1} MPa; total {:.1} MPa at depth {:.2} µm",
             mpa(self.contact_tresca_max_pa),
             mpa(self.total_tresca_max_pa),
             um(self.total_tresca_max_depth_m)
         )?;
         writeln!(
             out,
-            "  grid: {} x {} cells of {:.3} x {:.3} um; maxima searched at {} depths to {:.2} um",
+            "  grid: {} x {} cells of {:.3} x {:.3} µm; maxima searched at {} depths to {:.2} µm",
             self.columns,
             self.rows,
             um(self.spacing_m[0]),

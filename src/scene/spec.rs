@@ -407,6 +407,9 @@ pub struct FigureSpec {
     pub horizontal: (f64, f64),
     /// Range along the vertical axis (depth z, or y for an xy section), in `length_unit`.
     pub vertical: (f64, f64),
+    /// Whether the scene gave the vertical range (`[figure] z` of an xz section): a rough
+    /// scene's section otherwise takes its depth from the solved contact.
+    pub depth_given: bool,
     pub length_unit: LengthUnit,
     pub stress_unit: StressUnit,
     /// Samples along the horizontal axis; the vertical one follows with the same spacing.
@@ -418,6 +421,18 @@ pub struct FigureSpec {
     pub width_px: u32,
     pub svg: bool,
 }
+
+/// A rough scene's xz section shows at least this many of its map's cells along x (or the
+/// whole row, if shorter).
+pub const ROUGH_SECTION_MIN_CELLS: usize = 8;
+
+/// A rough scene's xz section is drawn at least this fraction of its width deep (at equal
+/// scale): a quarter, so that the sheet's 840 px wide section is at least 210 px tall, room
+/// for its colour bar's ticks and caption. A shallower depth range narrows the section.
+pub const ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH: f64 = 0.25;
+
+/// A rough scene's `[figure] z` reaches at most this many times the map's width in depth.
+pub const ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH: f64 = 10.0;
 
 /// One panel: the contact with its own friction and Poisson ratio, cut at its own position.
 #[derive(Clone, Debug, PartialEq)]

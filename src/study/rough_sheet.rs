@@ -1,33 +1,85 @@
-//! What a rough scene's sheet draws, computed once here from the solved contact: the stress
-//! in the xz section through the highest pressure (down to twice the search depth), the stress
-//! in the xy plane at the depth of that section's maximum, and, for a nominally flat surface,
-//! the real area against load ([`super::rough::area_curve`]). The sheet
-//! ([`crate::figure::rough`]) only converts units and draws.
+//! What a rough scene's sheet draws, computed once here from the solved contact and the
+//! report's maxima ([`super::rough::findings`]): the stress in the xz section through the
+//! report's largest value (its row, centred on it when the contact is periodic, from the
+//! surface down to twice the search depth or the scene's `[figure] z`, never thinner than a
+//! quarter of its width), the stress in the xy plane at the depth of that maximum, and, for a
+//! nominally flat surface, the real area against load ([`super::rough::area_curve`]). The
+//! sheet ([`crate::figure::rough`]) only converts units and draws.
 
 use ndarray::Array2;
 
+use super::assess::{Extreme, StressMaxima};
 use super::rough::{self, search_depth_m, RoughStudyError, REFERENCE_LENGTH_M};
 use super::surface::SurfaceStudyError;
 use crate::contact::rough::RoughSolution;
 use crate::field::{self, Axis, FieldError, Plane, Section};
-use crate::scene::Scene;
+use crate::operator::elastic::Periodicity;
+use crate::scene::{Scene, ROUGH_SECTION_MIN_CELLS, ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH};
 use crate::stress::Quantity;
 use crate::surface::generate::Form;
 use crate::surface::stats::Characterisation;
 
+/// The report's maximum the xz section passes through.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReportedMaximum {
+    /// [`Quantity::VonMises`] or [`Quantity::MaxShear`]: the figure's quantity when the report
+    /// states its maximum, else von Mises.
+    pub quantity: Quantity,
+    /// Its value (MPa, the reference pressure) and place (µm, the reference length), as the
+    /// `contact` report states them.
+    pub extreme: Extreme,
+}
+
+impl ReportedMaximum {
+    /// The report's maximum of `quantity` in `maxima` (von Mises for a quantity the report
+    /// does not search).
+    pub fn of(maxima: &StressMaxima, quantity: Quantity) -> Self {
+        match quantity {
+            Quantity::MaxShear => Self {
+                quantity,
+                extreme: maxima.max_shear,
+            },
+            _ => Self {
+                quantity: Quantity::VonMises,
+                extreme: maxima.von_mises,
+            },
+        }
+    }
+}
+
+/// The largest sample of a drawn section: value (Pa) and place (µm).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SampledMaximum {
+    pub value_pa: f64,
+    pub x: f64,
+    pub z: f64,
+}
+
 /// The fields of a rough scene's sheet.
 #[derive(Clone, Debug)]
 pub struct RoughSheetFields {
-    /// The row of the highest pressure (the xz section's `y` is its centre).
-    pub peak_row: usize,
-    /// The xz section, over the cell centres along x and from the surface down, in the
-    /// reference length (µm).
+    /// The report's maximum the section passes through.
+    pub reported: ReportedMaximum,
+    /// The map row of the section (the reported maximum's; the section's `y` is its centre).
+    pub row: usize,
+    /// The map column under each sample of the section along x (a periodic contact's section
+    /// may run across the map's edge: its columns wrap around).
+    pub columns: Vec<usize>,
+    /// Whether the section is centred on the reported maximum across the periodic map's
+    /// edges (its x then runs beyond the map where the field repeats).
+    pub centred: bool,
+    /// The xz section drawn, in the reference length (µm): along x over cell centres (a
+    /// window of the row, see [`section_window`]), in depth from the depth range's top.
     pub xz: Plane,
     /// The scene's quantity on `xz`, Pa, `[z, x]`.
     pub xz_pa: Array2<f64>,
-    /// The depth of the largest value in the xz section, µm: the depth of the xy plane.
-    pub max_depth: f64,
-    /// The xy plane at `max_depth`, over the cell centres.
+    /// The largest value in `xz_pa` and where it is.
+    pub xz_largest: SampledMaximum,
+    /// The depth range was the scene's (`[figure] z`), not the default.
+    pub depth_given: bool,
+    /// The depth of the xy plane, µm: the reported maximum's.
+    pub xy_depth: f64,
+    /// The xy plane at `xy_depth`, over the cell centres.
     pub xy: Plane,
     /// The scene's quantity on `xy`, Pa, `[y, x]`.
     pub xy_pa: Array2<f64>,
@@ -50,11 +102,47 @@ pub enum RoughSheetError {
     Surface(#[from] SurfaceStudyError),
 }
 
-/// The sheet's fields of rough `scene` under its `solution`; `on_row` is called per evaluated
-/// grid row.
+/// At most this many depth rows: each is a DC-FFT layer of the whole map.
+const MAX_SECTION_ROWS: usize = 4096;
+
+/// How many of a row's `nx` cells (each `ax` wide) a section `span` deep shows: enough that
+/// the section is no thinner than [`ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH`] of its width (four times its depth),
+/// at least [`ROUGH_SECTION_MIN_CELLS`], at most the row.
+pub fn section_window(span: f64, ax: f64, nx: usize) -> usize {
+    let wanted = (span / ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH / ax).ceil();
+    let wanted = if wanted.is_finite() && wanted > 0.0 {
+        wanted.min(nx as f64) as usize
+    } else {
+        nx
+    };
+    wanted.max(ROUGH_SECTION_MIN_CELLS.min(nx)).min(nx)
+}
+
+/// The depth samples from `z0` to (at least) `z1`, evenly spaced at most `step` apart, with
+/// `exact` among them when it lies in `(z0, z1]` (the reported maximum's depth, so that the
+/// section samples the report's point). The last sample may lie up to one step below `z1`.
+fn depth_axis(z0: f64, z1: f64, step: f64, exact: f64) -> Axis {
+    let span = z1 - z0;
+    let rows = |h: f64| ((span / h) - 1e-9).ceil().max(2.0) as usize;
+    if exact > z0 && exact <= z1 {
+        let k = (((exact - z0) / step) - 1e-9).ceil().max(1.0);
+        let h = (exact - z0) / k;
+        let m = rows(h);
+        if m <= MAX_SECTION_ROWS {
+            return Axis::new(z0, z0 + m as f64 * h, m + 1);
+        }
+    }
+    let m = rows(step);
+    Axis::new(z0, z0 + m as f64 * step, m + 1)
+}
+
+/// The sheet's fields of rough `scene` under its `solution`, the xz section through the
+/// report's maximum in `maxima` (from [`super::rough::findings`]); `on_row` is called per
+/// evaluated grid row.
 pub fn sheet_fields(
     scene: &Scene,
     solution: &RoughSolution,
+    maxima: &StressMaxima,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<RoughSheetFields, RoughSheetError> {
     let surface = scene.surface.as_ref().ok_or(RoughStudyError::NotRough)?;
@@ -65,35 +153,78 @@ pub fn sheet_fields(
     let stresses = rough::stress_solution(solution, friction, poisson)
         .map_err(|e| FieldError::Numerical(e.to_string()))?;
     let quantity = scene.figure.quantity;
-    let ((peak_row, _), _) =
-        solution
-            .pressure_pa
-            .indexed_iter()
-            .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &p)| {
-                if p > best.1 {
-                    (at, p)
-                } else {
-                    best
-                }
-            });
+    let reported = ReportedMaximum::of(maxima, quantity);
     let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
     let cell = ax.min(ay);
-    let depth_m = (2.0 * search_depth_m(solution)).min(0.5 * (nx as f64 * dx).min(ny as f64 * dy));
-    let layers = ((depth_m / REFERENCE_LENGTH_M) / cell).ceil().max(4.0) as usize + 1;
-    let centres_x = Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx);
-    let xz = Plane {
-        section: Section::Xz {
-            y: (peak_row as f64 + 0.5) * ay,
-        },
-        u: centres_x,
-        v: Axis::new(0.0, (layers - 1) as f64 * cell, layers),
+    let centre_index = |u: f64, a: f64, n: usize| -> usize {
+        let f = (u / a - 0.5).round();
+        if f.is_finite() && f > 0.0 {
+            (f as usize).min(n - 1)
+        } else {
+            0
+        }
     };
-    let xz_pa = field::evaluate(&stresses, &xz, &[quantity], on_row)?
+    let row = centre_index(reported.extreme.y_over_a, ay, ny);
+    let column = centre_index(reported.extreme.x_over_a, ax, nx);
+
+    // The depth range: the scene's, or down to twice the search depth (within half the map),
+    // never thinner than a quarter of the section's width.
+    let default_depth = (2.0 * search_depth_m(solution))
+        .min(0.5 * (nx as f64 * dx).min(ny as f64 * dy))
+        / REFERENCE_LENGTH_M;
+    let given = scene.figure.depth_given.then(|| {
+        let per_unit = scene.figure.length_unit.metres(REFERENCE_LENGTH_M) / REFERENCE_LENGTH_M;
+        (
+            scene.figure.vertical.0 * per_unit,
+            scene.figure.vertical.1 * per_unit,
+        )
+    });
+    let span = given.map_or(default_depth, |(z0, z1)| z1 - z0);
+    let window = section_window(span, ax, nx);
+    let (z0, z1) = given.unwrap_or_else(|| {
+        let width = window as f64 * ax;
+        (
+            0.0,
+            default_depth
+                .max(ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH * width)
+                .max(4.0 * cell),
+        )
+    });
+    let step = cell.min((z1 - z0) / 32.0).max((z1 - z0) / 512.0);
+    let depths = depth_axis(z0, z1, step, reported.extreme.z_over_a);
+
+    // The window along the row: centred on the maximum (across the edges of a periodic map,
+    // whose field repeats; within an isolated one).
+    let periodic = solution.periodicity == Periodicity::Periodic;
+    let half = (window / 2) as isize;
+    let first = if periodic {
+        column as isize - half
+    } else {
+        (column as isize - half).clamp(0, (nx - window) as isize)
+    };
+    let centred = periodic;
+    let columns: Vec<usize> = (0..window)
+        .map(|k| (first + k as isize).rem_euclid(nx as isize) as usize)
+        .collect();
+    let x_of = |k: usize| (first as f64 + k as f64 + 0.5) * ax;
+    let centres_x = Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx);
+    let y = (row as f64 + 0.5) * ay;
+    let whole_row = Plane {
+        section: Section::Xz { y },
+        u: centres_x,
+        v: depths,
+    };
+    let row_pa = field::evaluate(&stresses, &whole_row, &[quantity], on_row)?
         .values
         .index_axis(ndarray::Axis(1), 0)
         .mapv(|v| v * 1e6);
-    // Depth of the largest value in the section: the xy section is taken there.
-    let ((deepest_row, _), _) =
+    let xz_pa = Array2::from_shape_fn((depths.count, window), |(j, k)| row_pa[[j, columns[k]]]);
+    let xz = Plane {
+        section: Section::Xz { y },
+        u: Axis::new(x_of(0), x_of(window - 1), window),
+        v: depths,
+    };
+    let ((best_row, best_column), best) =
         xz_pa
             .indexed_iter()
             .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &v)| {
@@ -103,9 +234,14 @@ pub fn sheet_fields(
                     best
                 }
             });
-    let max_depth = xz.v.value(deepest_row);
+    let xz_largest = SampledMaximum {
+        value_pa: best,
+        x: xz.u.value(best_column),
+        z: xz.v.value(best_row),
+    };
+    let xy_depth = reported.extreme.z_over_a;
     let xy = Plane {
-        section: Section::Xy { z: max_depth },
+        section: Section::Xy { z: xy_depth },
         u: centres_x,
         v: Axis::new(0.5 * ay, (ny as f64 - 0.5) * ay, ny),
     };
@@ -121,10 +257,15 @@ pub fn sheet_fields(
         _ => (None, None),
     };
     Ok(RoughSheetFields {
-        peak_row,
+        reported,
+        row,
+        columns,
+        centred,
         xz,
         xz_pa,
-        max_depth,
+        xz_largest,
+        depth_given: given.is_some(),
+        xy_depth,
         xy,
         xy_pa,
         area_curve,
@@ -231,6 +372,41 @@ pub fn depth_layers(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_depth_axis_holds_the_reported_depth_and_reaches_the_range() {
+        // The worn scene: cells of 1 µm, the report's maximum at 0.375 µm, 50 µm deep.
+        let axis = depth_axis(0.0, 50.3, 1.0, 0.375);
+        assert_eq!(axis.min, 0.0);
+        assert!(axis.max >= 50.3 && axis.max < 50.3 + axis.step());
+        assert!((axis.step() - 0.375).abs() < 1e-15);
+        assert!((axis.value(1) - 0.375).abs() < 1e-15);
+        // A depth of several steps: the step shrinks to divide it, at most the one asked.
+        let axis = depth_axis(0.0, 10.0, 1.0, 3.125);
+        assert!(axis.step() <= 1.0 && axis.step() > 0.5);
+        let k = (3.125 / axis.step()).round() as usize;
+        assert!((axis.value(k) - 3.125).abs() < 1e-12, "{axis:?}");
+        // Outside the range, or at its top, the step is the one asked.
+        for exact in [0.0, 12.0, f64::NAN] {
+            let axis = depth_axis(0.0, 10.0, 0.5, exact);
+            assert_eq!((axis.count, axis.max), (21, 10.0), "{exact}");
+        }
+        // From a depth below the surface.
+        let axis = depth_axis(2.0, 4.0, 0.25, 2.3);
+        assert!(
+            (axis.value(2) - 2.3).abs() < 1e-12 && axis.max >= 4.0,
+            "{axis:?}"
+        );
+    }
+
+    #[test]
+    fn a_section_window_is_four_times_as_wide_as_deep_within_the_row() {
+        assert_eq!(section_window(50.0, 1.0, 128), 128);
+        assert_eq!(section_window(0.6, 0.15625, 64), 16);
+        assert_eq!(section_window(0.01, 0.15625, 64), ROUGH_SECTION_MIN_CELLS);
+        assert_eq!(section_window(0.01, 0.15625, 5), 5);
+        assert_eq!(section_window(f64::NAN, 1.0, 32), 32);
+    }
 
     #[test]
     fn depth_planes_grow_geometrically_and_hold_the_exact_depth() {

@@ -56,22 +56,7 @@ pub fn position_text_3d(scene: &Scene, [x, y, z]: [f32; 3]) -> String {
     )
 }
 
-/// Splits an axis or colour-bar caption into its name and its unit as written after a number:
-/// `σvM / p0` gives (`σvM`, ` p0`), `p (MPa)` gives (`p`, ` MPa`), `x/a` gives (`x`, `a`).
-pub(super) fn name_and_unit(label: &str) -> (String, String) {
-    let label = label.trim();
-    if let (Some(open), true) = (label.rfind(" ("), label.ends_with(')')) {
-        let unit = &label[open + 2..label.len() - 1];
-        return (label[..open].to_string(), format!(" {unit}"));
-    }
-    if let Some((name, unit)) = label.rsplit_once(" / ") {
-        return (name.to_string(), format!(" {unit}"));
-    }
-    if let Some((name, unit)) = label.rsplit_once('/') {
-        return (name.to_string(), unit.to_string());
-    }
-    (label.to_string(), String::new())
-}
+pub(super) use crate::render::name_and_unit;
 
 /// How a map's values and positions are written in its labels, from the figure's captions.
 #[derive(Clone, Debug, PartialEq)]

@@ -267,9 +267,11 @@ impl Validator<'_> {
         for (name, range) in [(horizontal_name, horizontal), (vertical_name, vertical)] {
             self.range_within_reach(&format!("figure.{name}"), range, unit_over_a, suffix)?;
         }
-        // At equal scale: neither a sliver nor a tower.
+        // At equal scale: neither a sliver nor a tower. (A rough scene's section is as wide
+        // as its map, checked with the map: `rough_section_depth`.)
+        let sheet = matches!(contact.kind, ContactKind::Rough | ContactKind::Surface);
         let aspect = (vertical.1 - vertical.0) / (horizontal.1 - horizontal.0);
-        if !(1.0 / MAX_ASPECT..=MAX_ASPECT).contains(&aspect) {
+        if !sheet && !(1.0 / MAX_ASPECT..=MAX_ASPECT).contains(&aspect) {
             let key = if range_of(vertical_name).is_some() || range_of(horizontal_name).is_none() {
                 vertical_name
             } else {
@@ -363,7 +365,7 @@ impl Validator<'_> {
             }
         };
         let map_px = f64::from(width_px) * aspect;
-        if map_px > MAX_MAP_PX {
+        if !sheet && map_px > MAX_MAP_PX {
             return Err(self.error(
                 "figure.width",
                 format!(
@@ -378,6 +380,7 @@ impl Validator<'_> {
             section,
             horizontal,
             vertical,
+            depth_given: section.vertical_is_depth() && range_of(vertical_name).is_some(),
             length_unit,
             stress_unit,
             resolution,

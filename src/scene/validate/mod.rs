@@ -21,6 +21,8 @@ use super::raw::{
 use super::spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
     RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
+    ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
 use super::traction_csv;
@@ -232,6 +234,20 @@ impl Validator<'_> {
                 ));
             }
         }
+        let moving = raw
+            .sweep
+            .as_ref()
+            .is_some_and(|sweep| sweep.parameter == "position");
+        if !moving {
+            self.numerical_ranges(
+                &contact,
+                &figure,
+                &numerical,
+                tractions.as_deref(),
+                &raw.panels,
+                &panels,
+            )?;
+        }
         if panels.len() > 6 {
             return Err(self.error(
                 "panel",
@@ -260,6 +276,145 @@ impl Validator<'_> {
             scene.volume = Some(self.volume(volume, &scene.contact, &scene.figure)?);
         }
         Ok(scene)
+    }
+
+    /// A numerical panel of a point, elliptical or traction-grid contact is sampled at the
+    /// traction grid's cell centres, so it ends where the grid ends: a figure range (or a
+    /// section's position) reaching more than one cell beyond the grid would be cut there
+    /// silently. It is refused instead, naming the grid's extent and the `numerical.extent`
+    /// that would cover it (the grid is `extent` semi-axes each way; a traction file's grid is
+    /// its own).
+    fn numerical_ranges(
+        &self,
+        contact: &Contact,
+        figure: &FigureSpec,
+        numerical: &Numerical,
+        tractions: Option<&crate::solution::dcfft::TractionGrid>,
+        raw_panels: &[raw::RawPanel],
+        panels: &[PanelSpec],
+    ) -> Result<(), SceneError> {
+        if contact.kind == ContactKind::Line {
+            return Ok(());
+        }
+        let drawn_numerically =
+            |p: &PanelSpec| p.method != Method::ClosedForm || !contact.has_closed_form();
+        if !panels.iter().any(drawn_numerically) {
+            return Ok(());
+        }
+        let a_m = contact.half_width_m();
+        let unit_over_a = figure.length_unit.metres(a_m) / a_m;
+        let suffix = unit_after(figure.length_unit);
+        // The grid along x and y, in units of a: (lo, hi, cell).
+        let (x_grid, y_grid) = match tractions {
+            Some(grid) => {
+                let ([x0, y0], [dx, dy], [ny, nx]) = (grid.origin(), grid.cell(), grid.shape());
+                ((x0, x0 + nx as f64 * dx, dx), (y0, y0 + ny as f64 * dy, dy))
+            }
+            None => {
+                let e = numerical.extent_over_a;
+                let stretch = if contact.kind == ContactKind::Elliptical {
+                    contact.aspect
+                } else {
+                    1.0
+                };
+                let cells = numerical.cells as f64;
+                (
+                    (-e, e, 2.0 * e / cells),
+                    (-e * stretch, e * stretch, 2.0 * e * stretch / cells),
+                )
+            }
+        };
+        let (h, v, normal) = figure.section.coordinates();
+        let grid_of = |name: &str| if name == "x" { x_grid } else { y_grid };
+        let fix = |name: &str, lo: f64, hi: f64| -> String {
+            let (g0, g1, _) = grid_of(name);
+            let within = format!(
+                "give figure.{name} within [{}, {}]{suffix}",
+                crate::io::text::approx(g0 / unit_over_a),
+                crate::io::text::approx(g1 / unit_over_a)
+            );
+            if tractions.is_some() {
+                return format!("{within}: the traction file's grid ends there");
+            }
+            let semi = if name == "y" && contact.kind == ContactKind::Elliptical {
+                contact.aspect
+            } else {
+                1.0
+            };
+            let needed = (lo.abs().max(hi.abs()) / semi).ceil();
+            if needed <= 20.0 {
+                format!(
+                    "{within}, or raise numerical.extent to {} (and numerical.cells in proportion, to keep the cells' size)",
+                    crate::io::text::number(needed)
+                )
+            } else {
+                format!("{within} (numerical.extent reaches 20 semi-axes at most)")
+            }
+        };
+        let outside = |name: &str, lo: f64, hi: f64| {
+            let (g0, g1, cell) = grid_of(name);
+            lo < g0 - cell * (1.0 + 1e-9) || hi > g1 + cell * (1.0 + 1e-9)
+        };
+        let grid_words = |name: &str| {
+            let (g0, g1, _) = grid_of(name);
+            match tractions {
+                Some(_) => format!(
+                    "the traction file's grid, which covers {name} = [{}, {}]{suffix}",
+                    crate::io::text::approx(g0 / unit_over_a),
+                    crate::io::text::approx(g1 / unit_over_a)
+                ),
+                None => format!(
+                    "the numerical grid, which covers {name} = ±{}{suffix} (numerical.extent = {} semi-axes)",
+                    crate::io::text::approx(g1 / unit_over_a),
+                    crate::io::text::number(numerical.extent_over_a)
+                ),
+            }
+        };
+        let mut ranges = vec![(h, figure.horizontal)];
+        if !figure.section.vertical_is_depth() {
+            ranges.push((v, figure.vertical));
+        }
+        for (name, (lo, hi)) in ranges {
+            let (lo_a, hi_a) = (lo * unit_over_a, hi * unit_over_a);
+            if outside(name, lo_a, hi_a) {
+                return Err(self.error(
+                    &format!("figure.{name}"),
+                    format!(
+                        "the range [{}, {}]{suffix} reaches beyond {}; the numerical panels would end there, cut",
+                        crate::io::text::number(lo),
+                        crate::io::text::number(hi),
+                        grid_words(name)
+                    ),
+                    Some(&fix(name, lo_a, hi_a)),
+                ));
+            }
+        }
+        // A section's position along its normal (not the depth of an xy plane).
+        if figure.section != SectionKind::Xy {
+            for (i, panel) in panels.iter().enumerate() {
+                let at_a = panel.at * unit_over_a;
+                if drawn_numerically(panel) && outside(normal, at_a, at_a) {
+                    let key = if raw_panels.get(i).is_some_and(|p| p.at.is_some()) {
+                        format!("panel[{i}].at")
+                    } else {
+                        "figure.at".to_string()
+                    };
+                    return Err(self.error(
+                        &key,
+                        format!(
+                            "the section at {normal} = {}{suffix} lies beyond {}",
+                            crate::io::text::number(panel.at),
+                            grid_words(normal)
+                        ),
+                        Some(
+                            &fix(normal, at_a, at_a)
+                                .replace(&format!("figure.{normal}"), "the section"),
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     fn method(&self, key: &str, value: Option<&str>) -> Result<Method, SceneError> {

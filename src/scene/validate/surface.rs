@@ -304,7 +304,7 @@ impl Validator<'_> {
                         rolloff_wavelength_m: rolloff,
                         cutoff_wavelength_m: cutoff,
                     },
-                    format!("self-affine, H = {}, roll-off {:.4} um, cutoff {:.4} um", crate::io::text::number(hurst), rolloff * 1e6, cutoff * 1e6),
+                    format!("self-affine, H = {}, roll-off {:.4} µm, cutoff {:.4} µm", crate::io::text::number(hurst), rolloff * 1e6, cutoff * 1e6),
                 )
             }
             (None, Some(length)) => {
@@ -315,7 +315,7 @@ impl Validator<'_> {
                     Spectrum::Gaussian {
                         correlation_length_m: length,
                     },
-                    format!("Gaussian autocorrelation, correlation length {:.4} um", length * 1e6),
+                    format!("Gaussian autocorrelation, correlation length {:.4} µm", length * 1e6),
                 )
             }
             (Some(_), Some(_)) => {
@@ -540,7 +540,10 @@ impl Validator<'_> {
             ("figure.at", raw.figure.at.is_some()),
             ("figure.x", raw.figure.x.is_some()),
             ("figure.y", raw.figure.y.is_some()),
-            ("figure.z", raw.figure.z.is_some()),
+            (
+                "figure.z",
+                raw.figure.z.is_some() && contact.kind == ContactKind::Surface,
+            ),
             ("figure.resolution", raw.figure.resolution.is_some()),
         ] {
             if given {
@@ -599,6 +602,9 @@ impl Validator<'_> {
             self.rough_control(rough, key, &surface.heights, hardness_key)?;
         }
         let figure = self.figure(&raw.figure, &contact)?;
+        if figure.depth_given {
+            self.rough_section_depth(&figure, &surface.heights)?;
+        }
         let thermal = self.thermal(&raw, &contact)?;
         let [ny, nx] = surface.heights.shape();
         let mut scene = Scene {
@@ -641,6 +647,63 @@ impl Validator<'_> {
     }
 }
 impl Validator<'_> {
+    /// A rough scene's `[figure] z`: the depth range of its xz section, which is drawn over
+    /// at least [`ROUGH_SECTION_MIN_CELLS`] of the map's cells along x (the whole row when the
+    /// range is deep) at equal scale and at least
+    /// [`ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH`] as deep as wide: the range spans at least that
+    /// fraction of those cells, and at most [`ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH`] times the
+    /// map's width.
+    fn rough_section_depth(
+        &self,
+        figure: &FigureSpec,
+        heights: &crate::surface::HeightMap,
+    ) -> Result<(), SceneError> {
+        let per_um = figure.length_unit.metres(1e-6) / 1e-6;
+        let (z0, z1) = figure.vertical;
+        let span_um = (z1 - z0) * per_um;
+        let [_, nx] = heights.shape();
+        let cell_um = heights.spacing_m()[0] * 1e6;
+        let width_um = nx as f64 * cell_um;
+        let suffix = unit_after(figure.length_unit);
+        let shallowest_um =
+            ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH * ROUGH_SECTION_MIN_CELLS.min(nx) as f64 * cell_um;
+        let in_unit = |um: f64| crate::io::text::approx(um / per_um);
+        if span_um < shallowest_um * (1.0 - 1e-9) {
+            return Err(self.error(
+                "figure.z",
+                format!(
+                    "the depth range [{}, {}] spans {}{suffix}, less than a quarter of the {} cells ({}{suffix}) a section shows at least",
+                    crate::io::text::number(z0),
+                    crate::io::text::number(z1),
+                    in_unit(span_um),
+                    ROUGH_SECTION_MIN_CELLS.min(nx),
+                    in_unit(ROUGH_SECTION_MIN_CELLS.min(nx) as f64 * cell_um),
+                ),
+                Some(&format!(
+                    "give a range at least {}{suffix} deep, or a surface with finer samples",
+                    in_unit(shallowest_um)
+                )),
+            ));
+        }
+        if span_um > ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH * width_um {
+            return Err(self.error(
+                "figure.z",
+                format!(
+                    "the depth range [{}, {}] is more than {} times as deep as the map is wide ({}{suffix}): the section would be a tower",
+                    crate::io::text::number(z0),
+                    crate::io::text::number(z1),
+                    crate::io::text::compact(ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH),
+                    in_unit(width_um),
+                ),
+                Some(&format!(
+                    "give a range at most {}{suffix} deep",
+                    in_unit(ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH * width_um)
+                )),
+            ));
+        }
+        Ok(())
+    }
+
     /// The roll-off and cutoff wavelengths of a self-affine spectrum: each as given, or a
     /// default that fits the map and the other one: the roll-off a quarter of the shorter side
     /// (at least the cutoff given, at most the side), the cutoff four spacings (at most the roll-off, at least

@@ -30,6 +30,7 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         npy_path("--pressure", path)?;
     }
     let bar = solver_bar();
+    let started = std::time::Instant::now();
     let solution = study::rough::solve(&scene, &mut |iteration, residual| {
         bar.set_position(iteration as u64);
         bar.set_message(format!("residual {residual:.1e}"));
@@ -40,8 +41,19 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         "subsurface maxima: DC-FFT layers down to {:.1} µm",
         study::rough::search_depth_m(&solution) * 1e6
     ));
+    let solved = started.elapsed();
     let findings = study::rough::findings(&scene, &solution);
     maxima_bar.finish_and_clear();
+    // The two phases' wall-clock times, for the README's scaling table (never in the report,
+    // which stays the same from run to run).
+    if std::env::var_os("STRESSFIELD_TIMINGS").is_some() {
+        eprintln!(
+            "timings: solve {:.3} s ({} iterations), subsurface maxima {:.3} s",
+            solved.as_secs_f64(),
+            solution.iterations,
+            (started.elapsed() - solved).as_secs_f64()
+        );
+    }
     let report = ContactReport::new(&scene, &solution, &findings?);
     // Frictional heating on the solved pressure, when the scene asks for it.
     let thermal = match scene.thermal {

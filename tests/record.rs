@@ -975,9 +975,9 @@ fn a_speed_sweep_records_the_temperature_sweeping_back_on_the_peclet_timeline() 
     for name in [
         "body 1's surface temperature rise (K) against Pe",
         "xz section through the contact's centre (K), depth down",
-        "max ΔT against Pe",
-        "hottest point against Pe",
-        "share against Pe",
+        "max ΔT vs Pe",
+        "hottest x vs Pe",
+        "share vs Pe",
     ] {
         assert!(views.iter().any(|v| v == name), "{name} not in {views:?}");
     }

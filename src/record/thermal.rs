@@ -406,28 +406,26 @@ fn plan_layout(surface: &Frame, section: &Frame, blok: bool, sweeps: bool) -> La
         ],
         vec![SURFACE_SHARE, SECTION_SHARE],
     );
+    // Short tab names, so that every tab fits beside the others (issue 23, item 4).
     let mut plots = vec![
-        view2d("max ΔT against Pe", "charts/max_temperature", None),
-        view2d("hottest point against Pe", "charts/max_position", None),
+        view2d("max ΔT vs Pe", "charts/max_temperature", None),
+        view2d("hottest x vs Pe", "charts/max_position", None),
     ];
     if blok {
-        plots.push(view2d("share against Pe", "charts/share", None));
+        plots.push(view2d("share vs Pe", "charts/share", None));
     }
-    plots.push(Node::View(
-        View::new(
-            ViewKind::TimeSeries,
-            "flash temperatures (K) by step",
-            "series",
-        )
-        .with_contents(&[
+    // The temperatures by step (hover, zoom) beside the documents, where the tabs fit.
+    let by_step = Node::View(
+        View::new(ViewKind::TimeSeries, "ΔT by step", "series").with_contents(&[
             "$origin/max_temperature_rise_k",
             "$origin/mean_temperature_rise_k",
         ]),
-    ));
+    );
     let documents = Node::Tabs(
         vec![
             Node::View(View::new(ViewKind::TextDocument, "scene", "description")),
             Node::View(View::new(ViewKind::TextLog, "steps", "log")),
+            by_step,
         ],
         0,
     );

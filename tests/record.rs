@@ -95,45 +95,20 @@ impl Contents {
 
     /// The labels logged at `path` (a `Points2D`), every row in order.
     pub(crate) fn labels(&self, path: &str) -> Vec<String> {
-        self.chunks
-            .get(path)
-            .unwrap_or_else(|| panic!("no entity {path}"))
-            .iter()
-            .flat_map(|chunk| {
-                chunk
-                    .iter_component::<rerun::components::Text>(
-                        rerun::Points2D::descriptor_labels().component,
-                    )
-                    .flat_map(|batch| {
-                        batch
-                            .iter()
-                            .map(|t| t.as_str().to_string())
-                            .collect::<Vec<_>>()
-                    })
-                    .collect::<Vec<_>>()
-            })
-            .collect()
+        texts(
+            self.chunks
+                .get(path)
+                .unwrap_or_else(|| panic!("no entity {path}")),
+            rerun::Points2D::descriptor_labels().component,
+        )
     }
 
     /// The texts of the recording's text documents (the scene's description or report).
     pub(crate) fn text_documents(&self) -> Vec<String> {
-        self.chunks
-            .values()
-            .flatten()
-            .flat_map(|chunk| {
-                chunk
-                    .iter_component::<rerun::components::Text>(
-                        rerun::TextDocument::descriptor_text().component,
-                    )
-                    .flat_map(|batch| {
-                        batch
-                            .iter()
-                            .map(|t| t.as_str().to_string())
-                            .collect::<Vec<_>>()
-                    })
-                    .collect::<Vec<_>>()
-            })
-            .collect()
+        texts(
+            self.chunks.values().flatten(),
+            rerun::TextDocument::descriptor_text().component,
+        )
     }
 
     /// The names of the layout's views, as the viewer shows them on their tabs.
@@ -1493,4 +1468,25 @@ fn spawning_without_a_viewer_installed_fails_clearly() {
     assert!(!output.status.success(), "{text}");
     assert!(text.contains("cannot start a Rerun viewer"), "{text}");
     assert!(text.contains("pip install"), "{text}");
+}
+
+/// Every text of `component` in `chunks`, in order.
+fn texts<'a>(
+    chunks: impl IntoIterator<Item = &'a Chunk>,
+    component: rerun::ComponentIdentifier,
+) -> Vec<String> {
+    chunks
+        .into_iter()
+        .flat_map(|chunk| {
+            chunk
+                .iter_component::<rerun::components::Text>(component)
+                .flat_map(|batch| {
+                    batch
+                        .iter()
+                        .map(|t| t.as_str().to_string())
+                        .collect::<Vec<_>>()
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect()
 }

@@ -283,7 +283,7 @@ fn a_hurst_slope_outside_its_meaning_is_drawn_with_the_caveat() {
         );
         let scene = Scene::parse(&text, "s", "s.toml").expect("valid");
         let c = stressfield::study::surface::characterise(&scene).expect("characterised");
-        let sheet = stressfield::figure::rough::surface_sheet(&scene, &c).expect("sheet");
+        let sheet = stressfield::figure::surface::surface_sheet(&scene, &c).expect("sheet");
         let psd = sheet
             .rows
             .iter()

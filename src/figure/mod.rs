@@ -6,6 +6,7 @@
 //! figure and sheet types), [`crate::report`] (the tables of a sheet), [`crate::io`].
 
 pub mod rough;
+pub mod surface;
 pub mod thermal;
 
 use crate::field::{FieldError, Plane, Section};
@@ -76,7 +77,7 @@ pub fn draw(
                 scene, solution, &maxima, on_row,
             )?)
         }
-        ContactKind::Surface => Drawing::Sheet(crate::figure::rough::surface_sheet(
+        ContactKind::Surface => Drawing::Sheet(crate::figure::surface::surface_sheet(
             scene,
             &study::surface::characterise(scene).map_err(crate::figure::rough::SheetError::from)?,
         )?),

@@ -81,7 +81,7 @@ pub fn record(
     };
     let drawing = match (&characterisation, solution, &findings) {
         (Some(c), _, _) => {
-            Drawing::Sheet(crate::figure::rough::surface_sheet(scene, c).map_err(rerun_error)?)
+            Drawing::Sheet(crate::figure::surface::surface_sheet(scene, c).map_err(rerun_error)?)
         }
         (None, Some(solution), Some(findings)) => Drawing::Sheet(
             crate::figure::rough::rough_sheet(scene, solution, &findings.maxima, on_row)

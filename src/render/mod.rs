@@ -16,6 +16,7 @@ mod layout;
 mod paint;
 mod plan;
 mod scales;
+pub use scales::{name_and_unit, robust_top, ROBUST_QUANTILE};
 mod svg;
 pub mod table;
 mod ticks;
@@ -170,48 +171,6 @@ pub enum Mark {
     Min,
     Both,
     None,
-}
-
-/// The quantile of a map's values (a sweep's: over all its steps) that sets the top of a
-/// robust colour range ([`robust_top`]).
-pub const ROBUST_QUANTILE: f64 = 0.995;
-
-/// The top of a robust colour range of `values` (a map, or all steps of a sweep; only the positive ones,
-/// where a field is mostly zero, as a pressure outside the contact): their
-/// [`ROBUST_QUANTILE`] quantile, so that a few spikes (a single cell at twice the hardness) do
-/// not darken every other value; values beyond are drawn in the top colour, the true maximum
-/// still labelled. Returns the top and whether it is below the largest value.
-pub fn robust_top(values: &[f64]) -> (f64, bool) {
-    let mut positive: Vec<f64> = values
-        .iter()
-        .copied()
-        .filter(|v| v.is_finite() && *v > 0.0)
-        .collect();
-    if positive.is_empty() {
-        return (0.0, false);
-    }
-    positive.sort_by(f64::total_cmp);
-    let largest = positive[positive.len() - 1];
-    let at = ((positive.len() - 1) as f64 * ROBUST_QUANTILE).round() as usize;
-    let top = positive[at];
-    (top, top < largest)
-}
-
-/// Splits an axis or colour-bar caption into its name and its unit as written after a number:
-/// `σvM / p0` gives (`σvM`, ` p0`), `p (MPa)` gives (`p`, ` MPa`), `x/a` gives (`x`, `a`).
-pub fn name_and_unit(label: &str) -> (String, String) {
-    let label = label.trim();
-    if let (Some(open), true) = (label.rfind(" ("), label.ends_with(')')) {
-        let unit = &label[open + 2..label.len() - 1];
-        return (label[..open].to_string(), format!(" {unit}"));
-    }
-    if let Some((name, unit)) = label.rsplit_once(" / ") {
-        return (name.to_string(), format!(" {unit}"));
-    }
-    if let Some((name, unit)) = label.rsplit_once('/') {
-        return (name.to_string(), unit.to_string());
-    }
-    (label.to_string(), String::new())
 }
 
 /// Errors of drawing.

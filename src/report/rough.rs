@@ -203,7 +203,7 @@ impl ContactReport {
         )?;
         writeln!(
             out,
-            "  (maxima at cell centres of DC-FFT layers, one cell and then an eighth of a cell apart, searched to {:.3} µm{})",
+            "  (maxima at cell centres of DC-FFT layers, one cell apart near the surface and a fifth of their depth below, refined by bisection to a sixteenth of a cell, searched to {:.3} µm{})",
             um(self.search_depth_m),
             if self.periodic {
                 "; the tractions repeat with the surface"

@@ -189,8 +189,9 @@ pub fn search_depth_m(solution: &RoughSolution) -> f64 {
 }
 
 /// The subsurface maxima under the solved pressure (and `q = μ p`; periodic when the contact
-/// is), from DC-FFT layers at the cell centres, one cell apart and refined to an eighth of a
-/// cell around the best ([`grid_maxima_to_depth`]), down to [`search_depth_m`].
+/// is), from DC-FFT layers at the cell centres, one cell apart near the surface and a fifth of
+/// their depth below, refined by bisection to a sixteenth of a cell around the best
+/// ([`grid_maxima_to_depth`]), down to [`search_depth_m`].
 pub fn subsurface_maxima(
     solution: &RoughSolution,
     friction: f64,

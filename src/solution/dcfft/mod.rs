@@ -87,7 +87,7 @@ pub struct DcFft {
     periodicity: Periodicity,
     /// Periodic: the mean tractions `[p̄, q̄x, q̄y]`, whose stress is uniform.
     mean: [f64; 3],
-    /// Periodic: the layers from a cell down, in Fourier space ([`spectral`]).
+    /// Periodic: the layers from half a cell down, in Fourier space ([`spectral`]).
     spectral: Option<spectral::SpectralLayers>,
 }
 
@@ -98,7 +98,7 @@ impl DcFft {
     }
 
     /// As [`DcFft::new`] for a grid that is one period of tractions repeating in x and y:
-    /// layers from one cell down in Fourier space ([`spectral`]), the shallower ones from
+    /// layers from half a cell down in Fourier space ([`spectral`]), the shallower ones from
     /// the cells' periodic influence coefficients (module doc).
     pub fn periodic(grid: &TractionGrid, poisson: f64) -> Result<Self, DcFftError> {
         let mut fft = Self::periodic_by_cells(grid, poisson)?;
@@ -245,7 +245,7 @@ impl DcFft {
     }
 
     /// The influence coefficients of depth `z` for [`DcFft::component_into`]: fills
-    /// `quadrant`, of the length of [`Workspace`]'s (`18 nx ny`).
+    /// `quadrant`, of the length of [`Workspace`]'s (`6 L nx ny` for the `L` loads present).
     pub fn influence_into(&self, z: f64, quadrant: &mut Vec<f64>) {
         for block in self.influence_blocks(quadrant, 1) {
             self.fill_influence(z, block);
@@ -280,9 +280,10 @@ impl DcFft {
         let (cells, height) = (nx * ny, 2 * ny);
         // Row transforms of this component's coefficients, for each load.
         let periodic = self.periodicity == Periodicity::Periodic;
-        for ((load, _), load_rows) in self.tractions.iter().zip(rows.iter_mut()) {
+        for (slot, ((load, _), load_rows)) in self.tractions.iter().zip(rows.iter_mut()).enumerate()
+        {
             let (parity_x, parity_y) = load.parity(c);
-            let offset = (*load as usize * 6 + c) * cells;
+            let offset = (slot * 6 + c) * cells;
             let coefficients = &quadrant[offset..offset + cells];
             // Row b of the wrap-around grid: offsets 0..nx, a zero, then the mirror.
             let fill_row = |b: usize, line: &mut [f64]| {
@@ -341,7 +342,7 @@ impl DcFft {
         Ok(out)
     }
 
-    /// Splits `quadrant` (resized to the length of [`Workspace`]'s, `18 nx ny`) into at most
+    /// Splits `quadrant` (resized to the length of [`Workspace`]'s, `6 L nx ny`) into at most
     /// `blocks` blocks of consecutive offset rows, to be filled by
     /// [`DcFft::fill_influence`], possibly on different threads; together they make the
     /// influence coefficients that [`DcFft::influence_into`] computes in one piece.
@@ -351,7 +352,7 @@ impl DcFft {
         blocks: usize,
     ) -> Vec<InfluenceBlock<'q>> {
         let [ny, nx] = self.shape;
-        quadrant.resize(18 * nx * ny, 0.0);
+        quadrant.resize(6 * self.tractions.len() * nx * ny, 0.0);
         // Periodic coefficients are needed on the rows b <= ny/2 only: the others are their
         // mirror (C_per(a, ny - b) = C_per(a, -b)), read so by `component_into`.
         let filled = match self.periodicity {
@@ -362,7 +363,7 @@ impl DcFft {
         let mut out: Vec<InfluenceBlock<'q>> = (0..filled.div_ceil(rows_per_block))
             .map(|k| InfluenceBlock {
                 rows: k * rows_per_block..((k + 1) * rows_per_block).min(filled),
-                arrays: Vec::with_capacity(18),
+                arrays: Vec::with_capacity(6 * self.tractions.len()),
             })
             .collect();
         for array in quadrant.chunks_exact_mut(nx * ny) {
@@ -375,15 +376,14 @@ impl DcFft {
     }
 
     /// Fills one block of [`DcFft::influence_blocks`] with the coefficients of depth `z`: the
-    /// stresses at offsets `(a dx, b dy)`, `0 <= a < nx`, `b` in the block's rows, as 18 arrays
-    /// `[load][component][b][a]` (those of absent loads are left alone).
+    /// stresses at offsets `(a dx, b dy)`, `0 <= a < nx`, `b` in the block's rows, as six
+    /// arrays per load present, `[load][component][b][a]` with the loads in the order of their
+    /// transforms: only the loads present take memory (at 2048², six arrays of coefficients
+    /// are 200 MB for each worker).
     pub fn fill_influence(&self, z: f64, block: InfluenceBlock<'_>) {
         let nx = self.shape[1];
-        let present = |load: Load| self.tractions.iter().any(|(l, _)| *l == load);
-        let loads: Vec<Load> = [Load::Pressure, Load::ShearX, Load::ShearY]
-            .into_iter()
-            .filter(|&load| present(load))
-            .collect();
+        // The loads present, in the order of their transforms and coefficients.
+        let loads: Vec<Load> = self.tractions.iter().map(|(load, _)| *load).collect();
         if self.periodicity == Periodicity::Periodic {
             self.fill_periodic_influence(z, block, &loads);
             return;
@@ -392,9 +392,9 @@ impl DcFft {
         let first_row = rows.start;
         uniform_patch_offset_rows(self.cell, z, nx, rows, self.poisson, |a, b, s| {
             let index = (b - first_row) * nx + a;
-            for &load in &loads {
+            for (slot, &load) in loads.iter().enumerate() {
                 let stress = load.stress(s);
-                let first = load as usize * 6;
+                let first = slot * 6;
                 let values = [
                     stress.xx, stress.yy, stress.zz, stress.yz, stress.xz, stress.xy,
                 ];
@@ -417,10 +417,8 @@ impl DcFft {
         let [ny, nx] = self.shape;
         let images = PERIODIC_IMAGES;
         let InfluenceBlock { rows, mut arrays } = block;
-        for &load in loads {
-            for array in &mut arrays[load as usize * 6..load as usize * 6 + 6] {
-                array.fill(0.0);
-            }
+        for array in &mut arrays[..6 * loads.len()] {
+            array.fill(0.0);
         }
         let reach_x = (2 * images + 1) * nx / 2;
         let reach_y = (2 * images + 1) * ny / 2;
@@ -460,9 +458,9 @@ impl DcFft {
                     let row = row_of(s) - rows.start;
                     let plus = row * nx + a % nx;
                     let minus = row * nx + (nx - a % nx) % nx;
-                    for &load in loads {
+                    for (slot, &load) in loads.iter().enumerate() {
                         let stress = load.stress(stresses);
-                        let first = load as usize * 6;
+                        let first = slot * 6;
                         for c in 0..6 {
                             let (parity_x, parity_y) = load.parity(c);
                             let sign = if mirrored { parity_y } else { 1.0 };
@@ -486,11 +484,10 @@ impl DcFft {
                 for (sy, wy) in centred_offsets(b as f64 * dy, periods[1]) {
                     for (sx, wx) in centred_offsets(a as f64 * dx, periods[0]) {
                         let far = far_images([sx, sy], z, self.cell, periods, images, self.poisson);
-                        for &load in loads {
+                        for (slot, &load) in loads.iter().enumerate() {
                             let stress = load.stress(&far);
                             for c in 0..6 {
-                                arrays[load as usize * 6 + c][index] +=
-                                    wx * wy * component(stress, c);
+                                arrays[slot * 6 + c][index] += wx * wy * component(stress, c);
                             }
                         }
                     }
@@ -501,7 +498,7 @@ impl DcFft {
 }
 
 /// A block of rows of the influence coefficients of a layer ([`DcFft::influence_blocks`]):
-/// the rows `b` of each of the 18 arrays `[load][component]`.
+/// the rows `b` of each of the six arrays `[component]` of each load present.
 pub struct InfluenceBlock<'q> {
     rows: std::ops::Range<usize>,
     arrays: Vec<&'q mut [f64]>,

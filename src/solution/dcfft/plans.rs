@@ -201,7 +201,7 @@ impl FftBuffers {
 /// (`144 nx ny` bytes) and a component's spectra ([`ComponentWorkspace`]) for layers from the
 /// cells, or a spectrum and its transform's scratch for spectral layers.
 pub struct Workspace {
-    /// `[load][component][b][a]`: 18 arrays of `nx ny`.
+    /// `[load][component][b][a]`: six arrays of `nx ny` per load present.
     pub(super) quadrant: Vec<f64>,
     pub(super) component: Option<ComponentWorkspace>,
     pub(super) spectral: Option<super::spectral::SpectralWork>,

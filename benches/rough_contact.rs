@@ -4,10 +4,15 @@
 //! - periodic: pressed to a mean pressure of 0.01 E* (the problem Tamaas was timed on, README);
 //! - non-periodic: the same roughness on a ball of radius 1 mm under 5 N (E* = 1 GPa), so that
 //!   the isolated contact stays inside the grid.
+//!
+//! And (issue 22) what `stressfield contact` computes after reading the heights: the periodic
+//! solve followed by the subsurface maxima search of its report (`with_maxima`), on the same
+//! surfaces. Tamaas's solve alone is the target (README, speed section).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use stressfield::contact::rough::{solve, Control, RoughContactProblem, DEFAULT_TOLERANCE};
 use stressfield::operator::elastic::Periodicity;
+use stressfield::study::rough::subsurface_maxima;
 use stressfield::surface::generate::{generate, Amplitude, Form, Generator, Spectrum};
 use stressfield::surface::HeightMap;
 
@@ -65,6 +70,18 @@ fn rough_contact(c: &mut Criterion) {
             group.bench_with_input(BenchmarkId::new(*name, n), &problem, |b, problem| {
                 b.iter(|| solve(problem, &mut |_, _| {}))
             });
+            if *periodicity == Periodicity::Periodic {
+                group.bench_with_input(
+                    BenchmarkId::new("periodic_with_maxima", n),
+                    &problem,
+                    |b, problem| {
+                        b.iter(|| {
+                            let solution = solve(problem, &mut |_, _| {}).expect("solved");
+                            subsurface_maxima(&solution, 0.0, 0.3).expect("searched")
+                        })
+                    },
+                );
+            }
         }
     }
     group.finish();

@@ -447,18 +447,28 @@ fn evaluate_layers<T: Precision>(
     Ok(values.into_inner().unwrap_or_else(|e| e.into_inner()))
 }
 
+/// The working memory of the cell-based layers of all workers together above which the
+/// layers of an isolated grid run one after another, each split over the threads (an
+/// isolated 2048² grid with friction needs 0.8 GB per worker: the influence coefficients of
+/// two loads, their row spectra and the layer, [`DcFft::worker_bytes`]).
+const PARALLEL_LAYERS_BYTES: usize = 1 << 30;
+
 /// Computes the DC-FFT layers of `fft` at `depths` and calls `take(index, z, layer)` for each
 /// (in no particular order) with the layer `[component, y, x]`, in parallel: over the depths
 /// when there are at least as many as threads, each worker holding one layer's working set;
-/// otherwise layer after layer, each split into blocks of influence-coefficient rows and then
-/// into its six components, which run in parallel.
+/// otherwise, or where those working sets together would exceed [`PARALLEL_LAYERS_BYTES`]
+/// (isolated grids, whose layers are all cell-based), layer after layer, each split into
+/// blocks of influence-coefficient rows and then into its six components, which run in
+/// parallel.
 pub fn for_each_dcfft_layer<F>(fft: &DcFft, depths: &[f64], take: F) -> Result<(), DcFftError>
 where
     F: Fn(usize, f64, ndarray::ArrayView3<f64>) + Sync,
 {
     let [ny, nx] = fft.shape();
     let threads = rayon::current_num_threads();
-    if depths.len() >= threads {
+    let fits = fft.periodicity() == crate::operator::elastic::Periodicity::Periodic
+        || fft.worker_bytes().saturating_mul(threads) <= PARALLEL_LAYERS_BYTES;
+    if depths.len() >= threads && fits {
         return depths
             .par_iter()
             .enumerate()

@@ -194,6 +194,15 @@ impl DcFft {
         }
     }
 
+    /// The bytes one worker holds for a cell-based layer: the influence coefficients (six
+    /// arrays per load present), a component's row spectra (one per load and one of the
+    /// result) and the layer itself, `(64 L + 64) nx ny` for `L` loads.
+    pub fn worker_bytes(&self) -> usize {
+        let [ny, nx] = self.shape;
+        let loads = self.tractions.len();
+        (48 * loads + 16 * (loads + 1) + 48) * nx * ny
+    }
+
     /// Fresh working memory for [`DcFft::component_into`].
     pub fn component_workspace(&self) -> ComponentWorkspace {
         let [ny, _] = self.shape;

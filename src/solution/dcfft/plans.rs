@@ -198,7 +198,7 @@ impl FftBuffers {
 
 /// The working memory of one depth layer (reused from layer to layer by one worker), each
 /// part allocated when first needed: the influence coefficients of one quadrant of offsets
-/// (`144 nx ny` bytes) and a component's spectra ([`ComponentWorkspace`]) for layers from the
+/// (`48 L nx ny` bytes for `L` loads) and a component's spectra ([`ComponentWorkspace`]) for layers from the
 /// cells, or a spectrum and its transform's scratch for spectral layers.
 pub struct Workspace {
     /// `[load][component][b][a]`: six arrays of `nx ny` per load present.

@@ -211,13 +211,14 @@ struct Bracket {
 /// [`grid_maxima`] searched no deeper than `max_depth` (units of a) either.
 ///
 /// The layers are a quarter of a cell apart in the first cell, one cell apart down to five
-/// cells and a fifth of their depth apart below ([`search_depths`]). Each quantity's best layer, and any other local maximum in depth within
-/// [`RIVAL_PEAK_MARGIN`] of it, is then refined between its neighbours: a peak deeper than
-/// ten cells first by the vertex of the parabola through its three layers (kept where it
-/// beats the layers `dz/16` above and below it), otherwise by bisection: the two depths
-/// halfway to the bracket's ends are evaluated, the best of the three becomes the middle of a
-/// bracket half as wide, until the bracket's halves are at most `dz/16`. The
-/// maximum reported is the largest of every layer evaluated, so refining never loses a value.
+/// cells and a fifth of their depth apart below ([`search_depths`]). Each quantity's best
+/// layer, and any other local maximum in depth within [`RIVAL_PEAK_MARGIN`] of it, is then
+/// refined between its neighbours by bisection: the two depths halfway to the bracket's ends
+/// are evaluated, the best of the three becomes the middle of a bracket half as wide, until
+/// the bracket's halves are at most `dz/16`. A peak deeper than ten cells is first tried at
+/// the vertex of the parabola through its three layers; where the vertex beats the layers a
+/// quarter of a cell above and below it, the bisection starts from that bracket. The maximum
+/// reported is the largest of every layer evaluated, so refining never loses a value.
 pub fn grid_maxima_to_depth(
     tractions: &PointTractions,
     max_depth: f64,

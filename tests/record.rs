@@ -707,6 +707,22 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
             contents.paths()
         );
     }
+    // Issue 23, item 4: the main area's tabs have short names, so that all seven show: the
+    // sheet's maps by what they show, not by their figure titles.
+    let views = contents.view_names();
+    for name in [
+        "topography",
+        "pressure",
+        "σvM xz section",
+        "σvM at depth",
+        "figure",
+    ] {
+        assert!(views.iter().any(|v| v == name), "{name} not in {views:?}");
+    }
+    assert!(
+        views.iter().all(|v| v.chars().count() <= 24),
+        "a tab name too long for its tab: {views:?}"
+    );
     // The pressure map at every load, its title following the load; a chart per step.
     assert_eq!(contents.rows_on("/contact/field", "load"), 3);
     assert_eq!(contents.rows_on("/charts/contact_fraction", "load"), 3);

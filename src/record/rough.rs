@@ -657,6 +657,43 @@ pub(super) fn load_text(scene: &Scene, solution: &RoughSolution) -> String {
     }
 }
 
+/// The longest tab name of a map view: seven tabs of this many characters fit side by side in
+/// the main area of the stock viewer's default window (issue 23, item 4).
+const TAB_NAME_CHARS: usize = 16;
+
+/// A map's tab name: its figure title is a sentence ("Contact pressure", "von Mises stress in
+/// the xz section through the report's largest σvM"), too long for a tab, so the sheet's own
+/// maps are named by what they show ("topography", "pressure", "σvM xz section", "σvM at
+/// depth", the symbol taken from the colour bar's caption); any other map by its title, cut
+/// to [`TAB_NAME_CHARS`] with an ellipsis (the full title stays in the view's own caption).
+fn tab_name(map: &Figure) -> String {
+    let title = map.title.as_str();
+    let symbol = map
+        .value_label
+        .split(" (")
+        .next()
+        .unwrap_or("")
+        .trim()
+        .to_string();
+    if title.starts_with("Topography") {
+        return "topography".into();
+    }
+    if title.starts_with("Contact pressure") {
+        return "pressure".into();
+    }
+    if title.contains("in the xz section") {
+        return format!("{symbol} xz section");
+    }
+    if title.contains("at the depth of") {
+        return format!("{symbol} at depth");
+    }
+    if title.chars().count() <= TAB_NAME_CHARS {
+        return title.to_string();
+    }
+    let cut: String = title.chars().take(TAB_NAME_CHARS - 1).collect();
+    format!("{}…", cut.trim_end())
+}
+
 /// The frames of the 2-D views that the layout shows.
 struct Frames<'a> {
     maps: &'a [Frame],
@@ -701,7 +738,7 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
     }
     main.push(view2d("figure".into(), "sheet", None));
     for (k, (map, frame)) in maps.iter().zip(frames.maps).enumerate() {
-        main.push(view2d(map.title.clone(), &format!("maps/{k}"), Some(frame)));
+        main.push(view2d(tab_name(map), &format!("maps/{k}"), Some(frame)));
     }
     let main = Node::Tabs(main, 0);
     let mut side = vec![Node::View(View::new(

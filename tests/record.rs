@@ -810,7 +810,7 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     };
     let maxima = contents.labels("/depth/maximum/label");
     assert_eq!(maxima.len(), layers + 1, "{maxima:?}");
-    // Within the report's refinement (an eighth of a cell) of the largest of all layers.
+    // Within the report's refinement (a sixteenth of a cell) of the largest of all layers.
     let deepest_largest = maxima[..layers].iter().map(value).fold(0.0, f64::max);
     assert!(
         value(&maxima[layers]) >= deepest_largest / 1.005,

@@ -287,31 +287,51 @@ impl DcFft {
         } = workspace;
         let scale = 1.0 / (4 * nx * ny) as f64;
         let (cells, height) = (nx * ny, 2 * ny);
-        // Row transforms of this component's coefficients, for each load.
+        // Row transforms of this component's coefficients, for each load; two loads of
+        // opposite parity in x (the pressure and the shear along x) share one ([`Packed`]).
         let periodic = self.periodicity == Periodicity::Periodic;
-        for (slot, ((load, _), load_rows)) in self.tractions.iter().zip(rows.iter_mut()).enumerate()
-        {
-            let (parity_x, parity_y) = load.parity(c);
+        let packed = Packed::of(&self.tractions, c);
+        let fill = |slot: usize, b: usize, line: &mut [f64], add: bool| {
+            let (parity_x, parity_y) = self.tractions[slot].0.parity(c);
             let offset = (slot * 6 + c) * cells;
             let coefficients = &quadrant[offset..offset + cells];
             // Row b of the wrap-around grid: offsets 0..nx, a zero, then the mirror.
-            let fill_row = |b: usize, line: &mut [f64]| {
-                // Periodic rows beyond ny/2 are the mirror of row ny - b.
-                let (b, sign) = if periodic && 2 * b > ny {
-                    (ny - b, parity_y)
+            // Periodic rows beyond ny/2 are the mirror of row ny - b.
+            let (b, sign) = if periodic && 2 * b > ny {
+                (ny - b, parity_y)
+            } else {
+                (b, 1.0)
+            };
+            let source = &coefficients[b * nx..(b + 1) * nx];
+            let put = |target: &mut f64, value: f64| {
+                if add {
+                    *target += value;
                 } else {
-                    (b, 1.0)
-                };
-                let source = &coefficients[b * nx..(b + 1) * nx];
-                for (target, value) in line[..nx].iter_mut().zip(source) {
-                    *target = sign * value;
-                }
-                line[nx] = 0.0;
-                for (target, value) in line[nx + 1..].iter_mut().rev().zip(&source[1..]) {
-                    *target = sign * parity_x * value;
+                    *target = value;
                 }
             };
-            self.plans.row_spectra(fill_row, buffers, load_rows)?;
+            for (target, value) in line[..nx].iter_mut().zip(source) {
+                put(target, sign * value);
+            }
+            line[nx] = 0.0;
+            for (target, value) in line[nx + 1..].iter_mut().rev().zip(&source[1..]) {
+                put(target, sign * parity_x * value);
+            }
+        };
+        match packed {
+            Some(Packed { even, odd, .. }) => {
+                let fill_row = |b: usize, line: &mut [f64]| {
+                    fill(even, b, line, false);
+                    fill(odd, b, line, true);
+                };
+                self.plans.row_spectra(fill_row, buffers, &mut rows[0])?;
+            }
+            None => {
+                for (slot, load_rows) in rows.iter_mut().enumerate().take(self.tractions.len()) {
+                    let fill_row = |b: usize, line: &mut [f64]| fill(slot, b, line, false);
+                    self.plans.row_spectra(fill_row, buffers, load_rows)?;
+                }
+            }
         }
         // Column by column chunk: forward transforms, products with the tractions'
         // spectra summed over the loads, inverse transforms.
@@ -319,16 +339,34 @@ impl DcFft {
             let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
             let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
             sum.fill(Complex::new(0.0, 0.0));
-            for ((load, traction), load_rows) in self.tractions.iter().zip(rows.iter()) {
-                let more = Rows::Mirrored {
-                    parity: load.parity(c).1,
-                };
-                let scratch = &mut buffers.scratch;
+            let window =
+                |slot: usize| &self.tractions[slot].1[start * height..start * height + length];
+            if let Some(Packed {
+                even,
+                odd,
+                parity_y,
+            }) = packed
+            {
+                let more = Rows::Mirrored { parity: parity_y };
                 self.plans
-                    .column_chunk(load_rows, more, start, chunk, scratch);
-                let traction = &traction[start * height..start * height + length];
-                for ((total, coefficient), t) in sum.iter_mut().zip(&*chunk).zip(traction) {
-                    *total += coefficient * t;
+                    .column_chunk(&rows[0], more, start, chunk, &mut buffers.scratch);
+                let (t_even, t_odd) = (window(even), window(odd));
+                for (((total, r), te), to) in sum.iter_mut().zip(&*chunk).zip(t_even).zip(t_odd) {
+                    let (k_even, k_odd) = Packed::split(*r, parity_y);
+                    *total += k_even * te + k_odd * to;
+                }
+            } else {
+                for ((load, traction), load_rows) in self.tractions.iter().zip(rows.iter()) {
+                    let more = Rows::Mirrored {
+                        parity: load.parity(c).1,
+                    };
+                    let scratch = &mut buffers.scratch;
+                    self.plans
+                        .column_chunk(load_rows, more, start, chunk, scratch);
+                    let traction = &traction[start * height..start * height + length];
+                    for ((total, coefficient), t) in sum.iter_mut().zip(&*chunk).zip(traction) {
+                        *total += coefficient * t;
+                    }
                 }
             }
             self.plans
@@ -502,6 +540,55 @@ impl DcFft {
                     }
                 }
             }
+        }
+    }
+}
+
+/// Two loads whose coefficients of one component have opposite parity in x, transformed
+/// together: the pressure and the shear along x (each component is even in x for one of them
+/// and odd for the other, with the same parity in y). The rows of a real sequence even in x
+/// transform to real spectra, those of an odd one to imaginary spectra, so the real transform
+/// of their sum holds both: `E + iO`, with `E` the even load's and `iO` the odd load's. Along
+/// the columns both are real (or, with parity −1 in y, imaginary) sequences of the same
+/// parity, so the complex transform `R` of `E + iO` holds both again ([`Packed::split`]).
+/// Half the forward transforms of a layer with friction.
+#[derive(Clone, Copy, Debug)]
+struct Packed {
+    /// The slots of the loads even and odd in x.
+    even: usize,
+    odd: usize,
+    /// Their common parity in y.
+    parity_y: f64,
+}
+
+impl Packed {
+    /// The packing of component `c` of `tractions`: two loads of opposite parity in x and the
+    /// same in y, or `None`.
+    fn of(tractions: &[(Load, Vec<Complex<f64>>)], c: usize) -> Option<Self> {
+        let [(first, _), (second, _)] = tractions else {
+            return None;
+        };
+        let ((x1, y1), (x2, y2)) = (first.parity(c), second.parity(c));
+        if x1 == x2 || y1 != y2 {
+            return None;
+        }
+        let (even, odd) = if x1 > 0.0 { (0, 1) } else { (1, 0) };
+        Some(Self {
+            even,
+            odd,
+            parity_y: y1,
+        })
+    }
+
+    /// The even and odd loads' coefficient spectra from the transform `r` of the packed
+    /// rows: with `Ê`, `Ô` the column transforms of `E`, `O`, `r = Ê + iÔ`, and the odd load's
+    /// spectrum is `iÔ`. Parity +1 in y: `Ê`, `Ô` real, so `Ê = Re r`, `iÔ = i Im r`. Parity −1:
+    /// both imaginary, `Ê = i Im r`, `iÔ = Re r`.
+    fn split(r: Complex<f64>, parity_y: f64) -> (Complex<f64>, Complex<f64>) {
+        if parity_y > 0.0 {
+            (Complex::new(r.re, 0.0), Complex::new(0.0, r.im))
+        } else {
+            (Complex::new(0.0, r.im), Complex::new(r.re, 0.0))
         }
     }
 }

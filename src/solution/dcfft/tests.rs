@@ -46,6 +46,8 @@ fn fft_equals_direct_summation_on_small_grids() {
         0.3,
     );
     assert_layers_agree(&grid([20, 20], [true, true, false]), &[0.0, 0.01, 2.0], 0.5);
+    // The pressure and the shear along x transformed together (`Packed`), on an odd grid.
+    assert_layers_agree(&grid([9, 14], [true, true, false]), &[0.0, 0.05, 0.6], 0.3);
     assert_layers_agree(&grid([7, 5], [false, false, true]), &[0.0, 0.2], 0.0);
     // Degenerate shapes: one cell, one row, one column.
     assert_layers_agree(&grid([1, 1], [true, true, true]), &[0.0, 0.5], 0.3);

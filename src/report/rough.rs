@@ -203,7 +203,7 @@ impl ContactReport {
         )?;
         writeln!(
             out,
-            "  (maxima at cell centres of DC-FFT layers, one cell apart near the surface and a fifth of their depth below, refined by bisection to a sixteenth of a cell, searched to {:.3} µm{})",
+            "  (maxima at cell centres of DC-FFT layers: quarters of the first cell, then one cell apart to five cells and a fifth of their depth below, refined to a sixteenth of a cell; searched to {:.3} µm{})",
             um(self.search_depth_m),
             if self.periodic {
                 "; the tractions repeat with the surface"

@@ -19,7 +19,7 @@ use ndarray::Array2;
 
 use crate::contact::rough::RoughSolution;
 use crate::field::{Axis, FieldError};
-use crate::render::chart::{Cell, Chart, Scale as ChartScale, Series, Sheet, Style, PALETTE};
+use crate::render::chart::{Cell, Chart, Series, Sheet, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, Scene};
 use crate::study::assess::StressMaxima;
@@ -372,13 +372,11 @@ fn section_agreement(scene: &Scene, fields: &RoughSheetFields) -> String {
 /// Real area against mean pressure: the solver at fractions and multiples of the scene's mean
 /// pressure, the GW prediction and the linear law.
 fn area_against_load(solved: Vec<(f64, f64)>, c: &Characterisation, e_star: f64) -> Chart {
-    let mut chart = Chart::new(
+    let mut chart = Chart::log_log(
         "Real area against load",
         "mean pressure p / E*",
         "real area A/A0",
     );
-    chart.x_scale = ChartScale::Log;
-    chart.y_scale = ChartScale::Log;
     chart.series.push(Series {
         label: "solved (this surface)".into(),
         points: solved.clone(),

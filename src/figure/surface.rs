@@ -111,13 +111,11 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
         style: Style::Line,
         colour: PALETTE[1],
     });
-    let mut psd = Chart::new(
+    let mut psd = Chart::log_log(
         "Power spectral density",
         "wavenumber q (rad/µm)",
         "C (µm⁴), C1D (µm³)",
     );
-    psd.x_scale = ChartScale::Log;
-    psd.y_scale = ChartScale::Log;
     // Rings whose power is numerically zero (beyond a generated spectrum's cutoff: rounding
     // noise, 1e-12 of the largest or less) would stretch the log axis over 20 decades.
     let visible = |points: &[(f64, f64)]| {
@@ -260,13 +258,11 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
             style: Style::Line,
             colour: PALETTE[1],
         });
-        let mut area = Chart::new(
+        let mut area = Chart::log_log(
             "Real area against load (GW)",
             "mean pressure p / E*",
             "real area A/A0",
         );
-        area.x_scale = ChartScale::Log;
-        area.y_scale = ChartScale::Log;
         area.series.push(Series {
             label: "Greenwood–Williamson".into(),
             points: curves

@@ -71,6 +71,15 @@ pub struct Chart {
 }
 
 impl Chart {
+    /// A chart with logarithmic axes in x and y (spectra, area against load).
+    pub fn log_log(title: &str, x_label: &str, y_label: &str) -> Self {
+        Self {
+            x_scale: Scale::Log,
+            y_scale: Scale::Log,
+            ..Self::new(title, x_label, y_label)
+        }
+    }
+
     pub fn new(title: &str, x_label: &str, y_label: &str) -> Self {
         Self {
             title: title.into(),

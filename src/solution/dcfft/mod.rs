@@ -327,7 +327,7 @@ impl DcFft {
                 self.plans.row_spectra(fill_row, buffers, &mut rows[0])?;
             }
             None => {
-                for (slot, load_rows) in rows.iter_mut().enumerate().take(self.tractions.len()) {
+                for (slot, load_rows) in rows.iter_mut().enumerate() {
                     let fill_row = |b: usize, line: &mut [f64]| fill(slot, b, line, false);
                     self.plans.row_spectra(fill_row, buffers, load_rows)?;
                 }
@@ -551,7 +551,9 @@ impl DcFft {
 /// of their sum holds both: `E + iO`, with `E` the even load's and `iO` the odd load's. Along
 /// the columns both are real (or, with parity −1 in y, imaginary) sequences of the same
 /// parity, so the complex transform `R` of `E + iO` holds both again ([`Packed::split`]).
-/// Half the forward transforms of a layer with friction.
+/// Half the forward transforms of a layer with friction. (The two-real-sequences-in-one
+/// transform of Press, Teukolsky, Vetterling & Flannery, *Numerical Recipes*, 3rd ed.,
+/// Cambridge University Press (2007), §12.3, here with the parities doing the separation.)
 #[derive(Clone, Copy, Debug)]
 struct Packed {
     /// The slots of the loads even and odd in x.

@@ -293,33 +293,43 @@ fn imaginary(load: Load, c: usize) -> bool {
 /// `q_s = n·e_q`, `q_t = t·e_q` for the unit shear along `e_q`, rotated to x and y; written
 /// out in real arithmetic, since this runs once per alias and wavenumber.
 fn unit_kernel(load: Load, k: [f64; 2], magnitude: f64, z: f64, nu: f64) -> [f64; 6] {
-    let (nx, ny) = (k[0] / magnitude, k[1] / magnitude);
+    let n = [k[0] / magnitude, k[1] / magnitude];
     let kz = magnitude * z;
     let e = (-kz).exp();
     if load == Load::Pressure {
-        let (ss, tt) = (-(1.0 - kz) * e, -2.0 * nu * e);
-        return [
-            nx * nx * ss + ny * ny * tt,
-            ny * ny * ss + nx * nx * tt,
+        // Real amplitudes of σss, σtt, σzz (σst = σtz = 0); imaginary one of σsz.
+        return rotated(
+            n,
+            -(1.0 - kz) * e,
+            -2.0 * nu * e,
+            0.0,
             -(1.0 + kz) * e,
-            ny * kz * e,
-            nx * kz * e,
-            nx * ny * (ss - tt),
-        ];
+            kz * e,
+            0.0,
+        );
     }
     let (q_s, q_t) = if load == Load::ShearX {
-        (nx, -ny)
+        (n[0], -n[1])
     } else {
-        (ny, nx)
+        (n[1], n[0])
     };
     // Imaginary amplitudes of σss, σtt, σst, σzz; real ones of σsz, σtz.
-    let (ss, tt, st, zz) = (
+    rotated(
+        n,
         q_s * (2.0 - kz) * e,
         2.0 * nu * q_s * e,
         q_t * e,
         q_s * kz * e,
-    );
-    let (sz, tz) = (-q_s * (1.0 - kz) * e, -q_t * e);
+        -q_s * (1.0 - kz) * e,
+        -q_t * e,
+    )
+}
+
+/// The components in x and y (order of [`super::COMPONENTS`]) of a wave's stress given in the
+/// frame of its direction `n` (`s` along it, `t = (-n_y, n_x)` across it): the in-plane tensor
+/// rotated from `(n, t)` to `(x, y)`.
+fn rotated(n: [f64; 2], ss: f64, tt: f64, st: f64, zz: f64, sz: f64, tz: f64) -> [f64; 6] {
+    let [nx, ny] = n;
     [
         nx * nx * ss + ny * ny * tt - 2.0 * nx * ny * st,
         ny * ny * ss + nx * nx * tt + 2.0 * nx * ny * st,
@@ -340,43 +350,42 @@ fn sinc(u: f64) -> f64 {
 }
 
 #[cfg(test)]
-/// The stress at depth `z` of the traction wave `(p, qx, qy) exp(i k·x)` of wavevector
-/// `k ≠ 0` of length `magnitude` (module doc), its components in the order of
-/// [`super::COMPONENTS`].
-fn wave_stress(
-    k: [f64; 2],
-    magnitude: f64,
-    z: f64,
-    nu: f64,
-    p: Complex<f64>,
-    qx: Complex<f64>,
-    qy: Complex<f64>,
-) -> [Complex<f64>; 6] {
-    let (nx, ny) = (k[0] / magnitude, k[1] / magnitude);
-    let kz = magnitude * z;
-    let e = (-kz).exp();
-    let i = Complex::new(0.0, 1.0);
-    let q_s = nx * qx + ny * qy;
-    let q_t = -ny * qx + nx * qy;
-    let zz = -(p * (1.0 + kz) - i * q_s * kz) * e;
-    let sz = (-q_s * (1.0 - kz) + i * p * kz) * e;
-    let tz = -q_t * e;
-    let ss = (-p * (1.0 - kz) + i * q_s * (2.0 - kz)) * e;
-    let tt = 2.0 * nu * (-p + i * q_s) * e;
-    let st = i * q_t * e;
-    [
-        nx * nx * ss + ny * ny * tt - 2.0 * nx * ny * st,
-        ny * ny * ss + nx * nx * tt + 2.0 * nx * ny * st,
-        zz,
-        ny * sz + nx * tz,
-        nx * sz - ny * tz,
-        nx * ny * (ss - tt) + (nx * nx - ny * ny) * st,
-    ]
-}
-
-#[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The stress at depth `z` of the traction wave `(p, qx, qy) exp(i k·x)` of wavevector
+    /// `k ≠ 0` of length `magnitude` in the complex formulas of the module doc, its components
+    /// in the order of [`super::COMPONENTS`]: the reference of [`unit_kernel`].
+    fn wave_stress(
+        k: [f64; 2],
+        magnitude: f64,
+        z: f64,
+        nu: f64,
+        p: Complex<f64>,
+        qx: Complex<f64>,
+        qy: Complex<f64>,
+    ) -> [Complex<f64>; 6] {
+        let (nx, ny) = (k[0] / magnitude, k[1] / magnitude);
+        let kz = magnitude * z;
+        let e = (-kz).exp();
+        let i = Complex::new(0.0, 1.0);
+        let q_s = nx * qx + ny * qy;
+        let q_t = -ny * qx + nx * qy;
+        let zz = -(p * (1.0 + kz) - i * q_s * kz) * e;
+        let sz = (-q_s * (1.0 - kz) + i * p * kz) * e;
+        let tz = -q_t * e;
+        let ss = (-p * (1.0 - kz) + i * q_s * (2.0 - kz)) * e;
+        let tt = 2.0 * nu * (-p + i * q_s) * e;
+        let st = i * q_t * e;
+        [
+            nx * nx * ss + ny * ny * tt - 2.0 * nx * ny * st,
+            ny * ny * ss + nx * nx * tt + 2.0 * nx * ny * st,
+            zz,
+            ny * sz + nx * tz,
+            nx * sz - ny * tz,
+            nx * ny * (ss - tt) + (nx * nx - ny * ny) * st,
+        ]
+    }
 
     #[test]
     fn unit_kernels_are_the_waves_stresses() {

@@ -152,6 +152,24 @@ impl Contents {
             .collect()
     }
 
+    /// The timeline the time panel opens on.
+    pub(crate) fn time_panel_timeline(&self) -> Vec<String> {
+        use rerun::external::re_sdk_types::blueprint::archetypes::TimePanelBlueprint;
+        self.layout
+            .get("/time_panel")
+            .into_iter()
+            .flatten()
+            .flat_map(|chunk| {
+                chunk
+                    .iter_component::<rerun::blueprint::components::TimelineName>(
+                        TimePanelBlueprint::descriptor_timeline().component,
+                    )
+                    .flat_map(|batch| batch.iter().map(|s| s.0.to_string()).collect::<Vec<_>>())
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+
     /// The blueprint entities whose path ends with `suffix`.
     fn layout_paths(&self, suffix: &str) -> Vec<&str> {
         self.layout
@@ -290,8 +308,6 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
         "/sections/0/colorbar/labels",
         "/sections/0/maximum",
         "/sections/0/maximum/label",
-        "/charts/0/maximum",
-        "/charts/0/depth",
         "/series/0/maximum",
         "/series/0/maximum_depth",
         "/series/friction",
@@ -325,9 +341,25 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
     assert_eq!(depths[5].1, 0.0, "{depths:?}");
     // The maximum rises with friction.
     assert!(maxima.windows(2).all(|w| w[1].1 > w[0].1), "{maxima:?}");
-    // The charts against μ: one image per step.
-    assert_eq!(contents.rows("/charts/0/maximum"), 6);
-    assert_eq!(contents.rows("/charts/0/depth"), 6);
+    // Issue 23, item 8: the plots are the viewer's own (hover, zoom), against μ itself: every
+    // step is also on the timeline `μ × 10`, which the time panel opens on.
+    assert_eq!(contents.time_panel_timeline(), vec!["μ × 10".to_string()]);
+    let against_mu = contents.scalars("/series/0/maximum", "μ × 10");
+    let times: Vec<i64> = against_mu.iter().map(|(t, _)| *t).collect();
+    assert_eq!(times, vec![0, 1, 2, 3, 4, 5]);
+    assert_eq!(
+        against_mu.iter().map(|(_, v)| *v).collect::<Vec<_>>(),
+        maxima.iter().map(|(_, v)| *v).collect::<Vec<_>>()
+    );
+    let views = contents.view_names();
+    for name in ["max, min / p0 vs μ", "depth vs μ"] {
+        assert!(views.iter().any(|v| v == name), "{name} not in {views:?}");
+    }
+    assert!(
+        !contents.paths().iter().any(|p| p.starts_with("/charts")),
+        "raster charts left: {:?}",
+        contents.paths()
+    );
     // The title row follows the step (the first label of each row), with the traction legend.
     let titles = contents.labels("/sections/0/title");
     assert!(titles[0].starts_with("step 1 of 6: μ = 0"), "{titles:?}");
@@ -370,6 +402,32 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
             "{panel}: {:?}",
             contents.layout.keys()
         );
+    }
+}
+
+/// Issue 23, item 8: each step is also logged at its swept value, on a timeline whose name
+/// gives the unit of its integers; the coarsest power of ten that holds the values exactly,
+/// else one that puts a hundred units between the closest two.
+#[test]
+fn the_swept_value_has_a_timeline_of_its_own_in_a_stated_unit() {
+    let moving = "format = 1\n[contact]\nkind = \"line\"\n[figure]\nquantity = \"sxz\"\nx = [-3.0, 3.0]\nz = [0.0, 2.0]\n[sweep]\nparameter = \"position\"\nvalues = [-2.0, -0.8660254037844386, 0.0, 0.8660254037844386, 2.0]\n";
+    let ball = "format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[sweep]\nparameter = \"load\"\nvalues = [\"50 N\", \"100 N\", \"800 N\"]\n";
+    let cases: [(&str, Option<(&str, Vec<i64>)>); 6] = [
+        (FRICTION_SWEEP, Some(("μ × 10", vec![0, 1, 2, 3, 4, 5]))),
+        (SMALL_SWEEP, Some(("μ × 10", vec![0, 3]))),
+        (ROUGH_SWEEP, Some(("W (mN)", vec![50, 200, 500]))),
+        (ball, Some(("W (N)", vec![50, 100, 800]))),
+        (
+            moving,
+            Some(("x0/a × 1000", vec![-2000, -866, 0, 866, 2000])),
+        ),
+        // Péclet numbers spanning decades: charts on logarithmic axes instead.
+        (SPEED_SWEEP, None),
+    ];
+    for (text, expected) in cases {
+        let got = record::value_timeline(&scene(text)).map(|v| (v.name, v.values));
+        let expected = expected.map(|(name, values)| (name.to_string(), values));
+        assert_eq!(got, expected, "{text}");
     }
 }
 
@@ -693,9 +751,9 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
         "/contact/colorbar/labels",
         "/contact/title",
         "/contact/maximum/label",
-        "/charts/contact_fraction",
-        "/charts/spots",
-        "/charts/max_pressure",
+        "/series/contact_fraction",
+        "/series/spots",
+        "/series/max_pressure_mpa",
         "/depth/field",
         "/depth/colorbar/labels",
         "/maps/0/field",
@@ -723,9 +781,27 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
         views.iter().all(|v| v.chars().count() <= 24),
         "a tab name too long for its tab: {views:?}"
     );
-    // The pressure map at every load, its title following the load; a chart per step.
+    // The pressure map at every load, its title following the load.
     assert_eq!(contents.rows_on("/contact/field", "load"), 3);
-    assert_eq!(contents.rows_on("/charts/contact_fraction", "load"), 3);
+    // Issue 23, item 8: native plots against the load itself, on the timeline `W (mN)` that
+    // the time panel opens on.
+    assert_eq!(contents.time_panel_timeline(), vec!["W (mN)".to_string()]);
+    for path in [
+        "/series/contact_fraction",
+        "/series/spots",
+        "/series/max_pressure_mpa",
+    ] {
+        let times: Vec<i64> = contents
+            .scalars(path, "W (mN)")
+            .iter()
+            .map(|(t, _)| *t)
+            .collect();
+        assert_eq!(times, vec![50, 200, 500], "{path}");
+    }
+    assert_eq!(contents.rows_on("/contact/field", "W (mN)"), 3);
+    for name in ["peak p (MPa) vs W", "A/A0 vs W", "spots vs W"] {
+        assert!(views.iter().any(|v| v == name), "{name} not in {views:?}");
+    }
     let titles = contents.labels("/contact/title");
     assert_eq!(titles.len(), 4, "{titles:?}");
     for (k, load) in ["0.05", "0.2", "0.5"].iter().enumerate() {
@@ -736,13 +812,7 @@ fn a_rough_load_sweep_has_map_views_with_colour_bars_and_charts_against_the_load
     }
     // On the timeline `depth` the load's views are not empty: one row each, at its start and
     // on that timeline only, the last load with a title that says so.
-    for path in [
-        "/contact/field",
-        "/contact/title",
-        "/charts/contact_fraction",
-        "/charts/spots",
-        "/charts/max_pressure",
-    ] {
+    for path in ["/contact/field", "/contact/title"] {
         assert_eq!(contents.times_on(path, "depth", "load"), vec![1], "{path}");
     }
     assert!(

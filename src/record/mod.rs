@@ -53,7 +53,7 @@ use rerun::RecordingStream;
 use crate::contact::rough::RoughSolution;
 use crate::field::FieldError;
 use crate::figure;
-use crate::render::chart::{chart_png, Chart, Series, Style, PALETTE};
+use crate::render::chart::{chart_png, Chart, PALETTE};
 use crate::render::colormap::ColorScale;
 use crate::render::{robust_top, ColorMap, Figure, Mark, Panel};
 use crate::scene::{ContactKind, Scene, SweepParameter};
@@ -149,6 +149,84 @@ pub fn record_to_file(
 /// The name of the timeline of a scene's steps.
 pub fn timeline(scene: &Scene) -> &'static str {
     scene.sweep.as_ref().map_or("step", |s| s.parameter.key())
+}
+
+/// The swept parameter as a timeline of its own (issue 23, item 8): the viewer plots scalars
+/// against a timeline, never against another logged value, so every step is also logged at
+/// its parameter's value, an integer in the unit the timeline's name gives (`μ × 100`,
+/// `W (N)`, `W (mN)`, `x0/a × 10`, `x0 (µm)`). The time panel opens on it, so the plots run
+/// against the parameter. `None` for a single step, and for a speed sweep: its Péclet numbers
+/// span decades, and its charts are drawn on logarithmic axes instead.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ValueTimeline {
+    pub name: String,
+    /// Each step's value in the timeline's unit.
+    pub values: Vec<i64>,
+}
+
+impl ValueTimeline {
+    /// The timeline's name as the stream takes it.
+    fn timeline(&self) -> Result<rerun::TimelineName, RecordError> {
+        rerun::TimelineName::try_new(&self.name).map_err(|e| RecordError::Rerun(e.to_string()))
+    }
+}
+
+/// See [`ValueTimeline`].
+pub fn value_timeline(scene: &Scene) -> Option<ValueTimeline> {
+    if is_speed_sweep(scene) {
+        return None;
+    }
+    let (label, xs) = panels::parameter_axis(scene)?;
+    if xs.len() < 2 {
+        return None;
+    }
+    let integral = |k: i32| {
+        xs.iter().all(|&x| {
+            let scaled = x * 10f64.powi(k);
+            (scaled - scaled.round()).abs() <= 1e-9 * scaled.abs().max(1.0)
+        })
+    };
+    // The coarsest power of ten that holds every value exactly; else one that resolves the
+    // closest two values into a hundred units.
+    let k = (0..=6).find(|&k| integral(k)).unwrap_or_else(|| {
+        let mut sorted = xs.clone();
+        sorted.sort_by(f64::total_cmp);
+        let gap = sorted
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .filter(|g| *g > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        if gap.is_finite() {
+            ((100.0 / gap).log10().ceil() as i32).clamp(0, 9)
+        } else {
+            0
+        }
+    });
+    // A unit one prefix smaller where the label has one that takes it.
+    let smaller = [
+        (" (N)", " (mN)", " (µN)"),
+        (" (mm)", " (µm)", " (nm)"),
+        (" (kN/m)", " (N/m)", " (mN/m)"),
+    ];
+    let (name, k) = match smaller.iter().find(|(unit, ..)| label.ends_with(unit)) {
+        Some((unit, milli, micro)) if (1..=6).contains(&k) => {
+            let stem = &label[..label.len() - unit.len()];
+            if k <= 3 {
+                (format!("{stem}{milli}"), 3)
+            } else {
+                (format!("{stem}{micro}"), 6)
+            }
+        }
+        _ if k == 0 => (label.clone(), 0),
+        _ => (format!("{label} × {}", 10i64.pow(k as u32)), k),
+    };
+    Some(ValueTimeline {
+        name,
+        values: xs
+            .iter()
+            .map(|&x| (x * 10f64.powi(k)).round() as i64)
+            .collect(),
+    })
 }
 
 /// Whether `scene` sweeps the sliding speed (a Péclet sweep, recorded by [`thermal`]).
@@ -313,20 +391,29 @@ pub fn describe(scene: &Scene) -> String {
         let first = sweep.describe(0, scene);
         let last = sweep.describe(sweep.values.len() - 1, scene);
         text.push_str(&format!(
-            "**Sweep** over {}: {} steps, from {first} to {last}, on the timeline `{}`.\n\n",
+            "**Sweep** over {}: {} steps, from {first} to {last}, on the timeline `{}` (steps counted from 1)",
             sweep.parameter.key(),
             sweep.values.len(),
             sweep.parameter.key()
         ));
+        match value_timeline(scene) {
+            Some(values) => text.push_str(&format!(
+                " and on the timeline `{}`, the swept value itself ({} to {}). The time panel opens on the second, so the plots (hover them, zoom with the wheel) run against the swept value.\n\n",
+                values.name,
+                values.values[0],
+                values.values[values.values.len() - 1]
+            )),
+            None => text.push_str(".\n\n"),
+        }
         if sweep.parameter == SweepParameter::Position {
             text.push_str("The field is drawn in a fixed body frame as the contact's centre moves to x0: the stress history of each material point.");
             if sweep.values.len() > 1 && !sweep.material_points.is_empty() {
                 let (from, to) = (sweep.values[0], sweep.values[sweep.values.len() - 1]);
                 let unit = scene.figure.length_unit.suffix();
                 text.push_str(&format!(
-                    " The material points' histories (σxx, σzz, τxz, the principal shear τ1 and σvM) run against the step: step n is x0 = {}{unit} + (n − 1) × {}{unit}; the extremes chart is against x0 itself.",
+                    " The material points' histories (σxx, σzz, τxz, the principal shear τ1 and σvM) run against x0 (from {}{unit} to {}{unit}), like the extremes and the depth of the maximum.",
                     crate::io::text::number(from),
-                    crate::io::text::number((to - from) / (sweep.values.len() - 1) as f64),
+                    crate::io::text::number(to),
                 ));
             }
             text.push_str("\n\n");

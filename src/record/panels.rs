@@ -57,6 +57,7 @@ pub(super) fn record_sections(
 ) -> Result<Summary, RecordError> {
     let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
     let timeline = timeline(scene);
+    let values = super::value_timeline(scene);
     let panels = scene.panels.len();
     stream.log_static(
         "description",
@@ -154,7 +155,6 @@ pub(super) fn record_sections(
     layout::send(stream, &plan_layout(scene, figure0, &frames, levels), live)?;
     flush()?;
     let mut volume_triangles = 0;
-    let mut history: Vec<Vec<(f64, f64, f64)>> = vec![Vec::new(); panels];
     for step in 0..steps {
         let step_scene = step_scene(scene, step)?;
         let figure = match first.take() {
@@ -162,6 +162,9 @@ pub(super) fn record_sections(
             None => figure::build(&step_scene, &study::panel_fields(&step_scene, on_row)?),
         };
         stream.set_time_sequence(timeline, step_time(step));
+        if let Some(values) = &values {
+            stream.set_time_sequence(values.timeline()?, values.values[step]);
+        }
         let mut title = String::new();
         if let Some(sweep) = &scene.sweep {
             let text = sweep.describe(step, scene);
@@ -209,23 +212,6 @@ pub(super) fn record_sections(
                 stream.log(
                     format!("series/{k}/minimum"),
                     &rerun::Scalars::new([e.value]),
-                )?;
-            }
-            if steps > 1 {
-                let value = |e: Option<section::Extreme>| e.map_or(f64::NAN, |e| e.value);
-                history[k].push((
-                    value(largest),
-                    value(smallest),
-                    largest.map_or(f64::NAN, |e| e.v),
-                ));
-                log_charts(
-                    stream,
-                    scene,
-                    &figure,
-                    k,
-                    &history[k],
-                    ranges[k],
-                    &frames[k],
                 )?;
             }
         }
@@ -303,7 +289,10 @@ pub(super) fn log_series_styles(
         )?;
         stream.log_static(
             format!("series/{k}/maximum_depth"),
-            &line(format!("depth of max {symbol}"), PALETTE[2]),
+            &line(
+                format!("depth of max {symbol}, {}", figure.z_label),
+                PALETTE[2],
+            ),
         )?;
     }
     if let Some(sweep) = &scene.sweep {
@@ -341,102 +330,6 @@ pub(super) fn history_components(scene: &Scene) -> Vec<(&'static str, String)> {
         components.push((quantity.key(), quantity.symbol().to_string()));
     }
     components
-}
-
-/// The extremes of panel `k` and the depth of its maximum against the swept parameter, for the
-/// steps so far (the current one marked), drawn as chart images. `history` holds (max, min,
-/// depth of max) per step.
-pub(super) fn log_charts(
-    stream: &RecordingStream,
-    scene: &Scene,
-    figure: &Figure,
-    k: usize,
-    history: &[(f64, f64, f64)],
-    range: (f64, f64),
-    frame: &Frame,
-) -> Result<(), RecordError> {
-    let Some((x_label, xs)) = parameter_axis(scene) else {
-        return Ok(());
-    };
-    let x_range = xs
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-            (a.min(x), b.max(x))
-        });
-    let symbol = scene.figure.quantity.symbol();
-    let current = history.len() - 1;
-    let mut chart = Chart::new(
-        &format!(
-            "extremes of {symbol} against {}",
-            x_label.split(' ').next().unwrap_or("")
-        ),
-        &x_label,
-        &figure.value_label,
-    );
-    chart.x_range = Some(x_range);
-    // A quarter of the span free above the data (the legend's corner), and a little below a
-    // negative minimum, so that its line is not drawn on the axis.
-    let headroom = |(lo, hi): (f64, f64)| {
-        let span = hi - lo;
-        (
-            if lo < 0.0 { lo - 0.05 * span } else { lo },
-            hi + 0.25 * span,
-        )
-    };
-    chart.y_range = Some(headroom((range.0.min(0.0), range.1)));
-    chart.width_px = 520;
-    chart.height_px = 400;
-    let add = |label: &str, column: usize, colour: [u8; 3], chart: &mut Chart| {
-        let pick = |h: &(f64, f64, f64)| [h.0, h.1, h.2][column];
-        let points: Vec<(f64, f64)> = history
-            .iter()
-            .zip(&xs)
-            .map(|(h, &x)| (x, pick(h)))
-            .filter(|(_, y)| y.is_finite())
-            .collect();
-        if points.is_empty() {
-            return;
-        }
-        chart.series.push(Series {
-            label: label.to_string(),
-            points,
-            style: Style::Line,
-            colour,
-        });
-        let now = pick(&history[current]);
-        if now.is_finite() {
-            chart.series.push(Series {
-                label: String::new(),
-                points: vec![(xs[current], now)],
-                style: Style::Markers,
-                colour,
-            });
-        }
-    };
-    add(&format!("max {symbol}"), 0, PALETTE[1], &mut chart);
-    add(&format!("min {symbol}"), 1, PALETTE[0], &mut chart);
-    let png = chart_png_bytes;
-    stream.log(
-        format!("charts/{k}/maximum"),
-        &rerun::EncodedImage::from_file_contents(png(&chart)?),
-    )?;
-    if figure.vertical_is_depth {
-        let mut depth = Chart::new(
-            &format!("depth of the maximum of {symbol}"),
-            &x_label,
-            &figure.z_label,
-        );
-        depth.x_range = Some(x_range);
-        depth.y_range = Some(headroom((frame.v.0.max(0.0), frame.v.1)));
-        depth.width_px = 520;
-        depth.height_px = 400;
-        add(&format!("depth of max {symbol}"), 2, PALETTE[2], &mut depth);
-        stream.log(
-            format!("charts/{k}/depth"),
-            &rerun::EncodedImage::from_file_contents(png(&depth)?),
-        )?;
-    }
-    Ok(())
 }
 
 /// A chart drawn as PNG bytes, for an `EncodedImage`.
@@ -549,26 +442,26 @@ pub(super) fn plan_layout(
                     format!("history/{k}/point{j}"),
                 )));
             }
-            plots.push(Node::View(View::new(
-                ViewKind::Spatial2D(None),
-                format!("max, min vs {parameter}{}", panel_suffix(k)),
-                format!("charts/{k}/maximum"),
-            )));
-            if figure.vertical_is_depth {
-                plots.push(Node::View(View::new(
-                    ViewKind::Spatial2D(None),
-                    format!("depth vs {parameter}{}", panel_suffix(k)),
-                    format!("charts/{k}/depth"),
-                )));
-            }
+            // Native plots (hover, zoom) against the parameter's own timeline, which the time
+            // panel opens on ([`super::value_timeline`]).
             plots.push(Node::View(
                 View::new(
                     ViewKind::TimeSeries,
-                    format!("by step{}", panel_suffix(k)),
+                    format!("max, min {unit} vs {parameter}{}", panel_suffix(k)),
                     format!("series/{k}"),
                 )
                 .with_contents(&["$origin/maximum", "$origin/minimum"]),
             ));
+            if figure.vertical_is_depth {
+                plots.push(Node::View(
+                    View::new(
+                        ViewKind::TimeSeries,
+                        format!("depth vs {parameter}{}", panel_suffix(k)),
+                        format!("series/{k}"),
+                    )
+                    .with_contents(&["$origin/maximum_depth"]),
+                ));
+            }
         }
     }
     let documents = Node::Tabs(documents, 0);
@@ -586,7 +479,9 @@ pub(super) fn plan_layout(
             .sweep
             .as_ref()
             .filter(|s| s.values.len() > 1)
-            .map(|_| timeline(scene).to_string()),
+            .map(|_| {
+                super::value_timeline(scene).map_or_else(|| timeline(scene).to_string(), |v| v.name)
+            }),
     }
 }
 

@@ -12,16 +12,18 @@
 //!   with y up, as in the figure.
 //! - Rough scenes with a `[sweep]` of the load, on the timeline `load`: the map view
 //!   `contact` (pressure in MPa, the spots outlined, the load and spot count in its title) at
-//!   every load; `charts/<name>` (the real area fraction, the spot count and the largest
-//!   pressure against the load W, as chart images, the current load marked); and the series
-//!   `series/load_n`, `series/contact_fraction`, `series/spots`, `series/max_pressure_mpa`.
+//!   every load, also logged on a timeline of the load itself (`W (mN)`, see
+//!   [`super::value_timeline`]), which the time panel opens on; and the series
+//!   `series/load_n`, `series/contact_fraction`, `series/spots`, `series/max_pressure_mpa`,
+//!   plotted natively against the load (the real area fraction, the spot count and the
+//!   largest pressure against W).
 //! - Rough scenes, on the timeline `depth` (layers numbered from the surface): the map view
 //!   `depth`, the sheet's stress quantity in planes parallel to the surface from the surface
 //!   down (the depth in its title), under the scene's own load.
 //! - A view shows only what is logged on the timeline the time panel is on, so with a load
 //!   sweep each timeline also holds one step of the other's views: on `load` (at its first
-//!   step) the layer of the largest value, on `depth` (at its first step) the last load with
-//!   its charts; their titles say which timeline steps through them.
+//!   step) the layer of the largest value, on `depth` (at its first step) the last load;
+//!   their titles say which timeline steps through them.
 
 use rerun::RecordingStream;
 
@@ -31,7 +33,7 @@ use super::{RecordError, Summary};
 use crate::contact::rough::{self, Control, RoughSolution};
 use crate::field::Axis;
 use crate::figure::{self, Drawing};
-use crate::render::chart::{Cell, Chart, Series, Style, PALETTE};
+use crate::render::chart::{Cell, PALETTE};
 use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::report::rough::ContactReport;
 use crate::scene::{ContactKind, Scene};
@@ -144,12 +146,10 @@ pub fn record(
         })
         .collect();
     let rough = scene.contact.kind == ContactKind::Rough;
-    let timeline = rough.then(|| {
-        if scene.sweep.is_some() {
-            "load"
-        } else {
-            "depth"
-        }
+    let timeline = rough.then(|| match super::value_timeline(scene) {
+        Some(values) if scene.sweep.is_some() => values.name,
+        _ if scene.sweep.is_some() => "load".to_string(),
+        _ => "depth".to_string(),
     });
     let view_px = main_view_px(timeline.is_some());
     let mut map_frames = Vec::with_capacity(maps.len());
@@ -226,7 +226,7 @@ pub fn record(
     if let (Some(frame), Some(solution), Some(reported)) = (&depth_frame, solution, reported) {
         // The depth steps are at the scene's own load, on their own timeline (and, with a load
         // sweep, the layer of the report's maximum at the first load: see log_depth_steps).
-        stream.disable_timeline("load");
+        disable_load_timelines(stream, scene);
         let on_load = contact_frame.is_some();
         super::rough_depth::log_depth_steps(
             stream, scene, solution, reported, frame, on_load, on_row, flush,
@@ -439,11 +439,28 @@ fn log_load_sweep(
         .rough
         .and_then(|r| r.hardness_pa)
         .map(|h| h * 1e-6);
-    let charts = load_charts(&solutions);
     let steps = sweep.values.len();
+    let values = super::value_timeline(scene);
+    for (path, name, [r, g, b]) in [
+        ("series/max_pressure_mpa", "largest p (MPa)", PALETTE[1]),
+        ("series/contact_fraction", "real area A/A0", PALETTE[0]),
+        ("series/spots", "contact spots", PALETTE[2]),
+        ("series/load_n", "W (N)", PALETTE[6]),
+    ] {
+        stream.log_static(
+            path,
+            &rerun::SeriesLines::new()
+                .with_names([name])
+                .with_colors([rerun::Color::from_rgb(r, g, b)])
+                .with_widths([2.0]),
+        )?;
+    }
     let mut last = None;
     for (k, (solution, &load)) in solutions.iter().zip(&sweep.values).enumerate() {
         stream.set_time_sequence("load", super::step_time(k));
+        if let Some(values) = &values {
+            stream.set_time_sequence(values.timeline()?, values.values[k]);
+        }
         let indicator = solution
             .pressure_pa
             .mapv(|p| if p > 0.0 { 1.0 } else { 0.0 });
@@ -509,20 +526,13 @@ fn log_load_sweep(
             "series/max_pressure_mpa",
             &rerun::Scalars::new([solution.max_pressure_pa * 1e-6]),
         )?;
-        for chart in &charts {
-            let png = chart.png(&sweep.values, k)?;
-            stream.log(
-                format!("charts/{}", chart.name),
-                &rerun::EncodedImage::from_file_contents(png),
-            )?;
-        }
         flush()?;
         last = Some((figure, shown, title));
     }
-    // On the timeline `depth` the load's views show the last load and the whole curves, not
-    // nothing (a view shows only what is logged on the timeline the time panel is on).
+    // On the timeline `depth` the load's map shows the last load, not nothing (a view shows
+    // only what is logged on the timeline the time panel is on).
     if let Some((figure, shown, title)) = last {
-        stream.disable_timeline("load");
+        disable_load_timelines(stream, scene);
         stream.set_time_sequence("depth", super::step_time(0));
         log_map_step(
             stream,
@@ -534,94 +544,19 @@ fn log_load_sweep(
             range,
             &format!("{title} (the last load: the timeline \"load\" steps through the loads)"),
         )?;
-        for chart in &charts {
-            let png = chart.png(&sweep.values, steps - 1)?;
-            stream.log(
-                format!("charts/{}", chart.name),
-                &rerun::EncodedImage::from_file_contents(png),
-            )?;
-        }
         stream.disable_timeline("depth");
         flush()?;
     }
     Ok(solutions.len())
 }
 
-/// A quantity of the load sweep against the load, drawn up to the current step.
-struct LoadChart {
-    /// Entity name under `charts/`.
-    name: &'static str,
-    title: &'static str,
-    y_label: &'static str,
-    values: Vec<f64>,
-    colour: [u8; 3],
-}
-
-/// The charts of a rough load sweep: one quantity (one unit) each.
-fn load_charts(solutions: &[crate::contact::rough::RoughSolution]) -> Vec<LoadChart> {
-    let of = |f: &dyn Fn(&crate::contact::rough::RoughSolution) -> f64| {
-        solutions.iter().map(f).collect::<Vec<f64>>()
-    };
-    vec![
-        LoadChart {
-            name: "contact_fraction",
-            title: "real area against load",
-            y_label: "real area A/A0 (%)",
-            values: of(&|s| 100.0 * s.contact_fraction),
-            colour: PALETTE[0],
-        },
-        LoadChart {
-            name: "spots",
-            title: "contact spots against load",
-            y_label: "spots",
-            values: of(&|s| s.spots as f64),
-            colour: PALETTE[2],
-        },
-        LoadChart {
-            name: "max_pressure",
-            title: "largest pressure against load",
-            y_label: "max p (MPa)",
-            values: of(&|s| s.max_pressure_pa * 1e-6),
-            colour: PALETTE[1],
-        },
-    ]
-}
-
-impl LoadChart {
-    /// The chart at step `current` (the steps so far, the current one marked) as a PNG.
-    fn png(&self, loads: &[f64], current: usize) -> Result<Vec<u8>, RecordError> {
-        let span = |values: &[f64]| {
-            values
-                .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-                    (a.min(v), b.max(v))
-                })
-        };
-        let (x_lo, x_hi) = span(loads);
-        let (_, y_hi) = span(&self.values);
-        let mut chart = Chart::new(self.title, "W (N)", self.y_label);
-        chart.x_range = Some((x_lo.min(0.0), x_hi));
-        chart.y_range = Some((0.0, (1.08 * y_hi).max(1e-9)));
-        chart.width_px = 520;
-        chart.height_px = 400;
-        chart.series.push(Series {
-            label: String::new(),
-            points: loads
-                .iter()
-                .zip(&self.values)
-                .take(current + 1)
-                .map(|(&x, &y)| (x, y))
-                .collect(),
-            style: Style::Line,
-            colour: self.colour,
-        });
-        chart.series.push(Series {
-            label: String::new(),
-            points: vec![(loads[current], self.values[current])],
-            style: Style::Markers,
-            colour: self.colour,
-        });
-        super::chart_png_bytes(&chart)
+/// Stops logging on the load sweep's timelines (the step's and the load's own).
+pub(super) fn disable_load_timelines(stream: &RecordingStream, scene: &Scene) {
+    stream.disable_timeline("load");
+    if let Some(values) = super::value_timeline(scene) {
+        if let Ok(name) = values.timeline() {
+            stream.disable_timeline(name);
+        }
     }
 }
 
@@ -700,7 +635,7 @@ struct Frames<'a> {
     contact: Option<&'a Frame>,
     depth: Option<&'a Frame>,
     /// The timeline the time panel opens on.
-    timeline: Option<&'static str>,
+    timeline: Option<String>,
 }
 
 /// The layout: the map views (for a rough scene first the pressure against load and the
@@ -759,13 +694,13 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
         plots.push(view2d("σvM, τ vs z".into(), "charts/depth_maxima", None));
     }
     if frames.contact.is_some() {
-        plots.push(view2d("peak p vs W".into(), "charts/max_pressure", None));
-        for (name, path) in [
-            ("area vs W", "charts/contact_fraction"),
-            ("spots vs W", "charts/spots"),
-        ] {
-            counts.push(view2d(name.into(), path, None));
-        }
+        // Native plots against the load's own timeline (hover, zoom).
+        let plot = |name: &str, path: &str| {
+            Node::View(View::new(ViewKind::TimeSeries, name, "series").with_contents(&[path]))
+        };
+        plots.push(plot("peak p (MPa) vs W", "$origin/max_pressure_mpa"));
+        counts.push(plot("A/A0 vs W", "$origin/contact_fraction"));
+        counts.push(plot("spots vs W", "$origin/spots"));
         side.push(Node::View(View::new(ViewKind::TextLog, "steps", "log")));
     }
     let side = match (plots.is_empty(), counts.is_empty()) {
@@ -785,6 +720,6 @@ fn plan_layout(maps: &[&Figure], scene: &Scene, frames: &Frames<'_>) -> Layout {
     };
     Layout {
         root: Node::Horizontal(vec![main, side], vec![super::MAIN_SHARE, super::SIDE_SHARE]),
-        timeline: frames.timeline.map(str::to_string),
+        timeline: frames.timeline.clone(),
     }
 }

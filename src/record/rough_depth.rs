@@ -128,6 +128,9 @@ pub(super) fn log_depth_steps(
     if let Some((figure, shown, range, title)) = preview.filter(|_| on_load) {
         stream.disable_timeline("depth");
         stream.set_time_sequence("load", step_time(0));
+        if let Some(values) = super::value_timeline(scene) {
+            stream.set_time_sequence(values.timeline()?, values.values[0]);
+        }
         let title = format!("{title} (the timeline \"depth\" steps through depth)");
         log_map_step(
             stream,
@@ -147,7 +150,7 @@ pub(super) fn log_depth_steps(
                 reported,
             )?),
         )?;
-        stream.disable_timeline("load");
+        super::rough::disable_load_timelines(stream, scene);
         flush()?;
     }
     Ok(())

@@ -438,3 +438,58 @@ fn a_difference_maps_colour_range_is_stated() {
     let (max, _, _) = panel_max(difference);
     assert!(max > 100.0 * range.1, "{max} against ±{}", range.1);
 }
+
+/// Issue 23, item 11: a section through the `hertz` report's maximum marks the report's value
+/// at the report's position (located on the closed form between the samples), and a section
+/// that misses it says where the body's maximum is.
+#[test]
+fn a_section_marks_the_reports_maximum_or_says_where_it_is() {
+    use stressfield::study::assess::scene_maxima;
+    // Through the maximum: the sliding sphere's xz section at y = 0 (μ = 0.3), the line
+    // contact's τ1.
+    for (name, tau1) in [("record_sphere_volume", false), ("line_tau1", true)] {
+        let (scene, built) = load(name);
+        let maxima = scene_maxima(&scene);
+        let report = if tau1 {
+            maxima.tau1.expect("a line contact's τ1")
+        } else {
+            maxima.maxima.expect("closed form").von_mises
+        };
+        let panel = &built.panels[0];
+        let peak = panel.peak.expect("a located peak");
+        let per_a = scene.length_unit_over_a();
+        assert!(
+            (peak.value - report.value_over_p0).abs() <= 1e-9,
+            "{name}: {peak:?} against {report:?}"
+        );
+        assert!(
+            (peak.x * per_a - report.x_over_a).abs() <= 1e-6
+                && (peak.z * per_a - report.z_over_a).abs() <= 1e-6,
+            "{name}: {peak:?} against {report:?}"
+        );
+        // The largest sample is up to half a grid step off, and lower.
+        let (sampled, ..) = panel_max(panel);
+        assert!(sampled <= peak.value, "{name}: {sampled} > {}", peak.value);
+        assert!(!panel.subtitle.contains("body's max"), "{}", panel.subtitle);
+    }
+    // Missing it: the ball on a flat, across the sliding direction at x = 0, while friction
+    // (μ = 0.1) moves the maximum to x = 0.026 mm.
+    let (scene, built) = load("sphere_ball_on_flat");
+    let report = scene_maxima(&scene).maxima.expect("closed form").von_mises;
+    let mpa_per_p0 = scene.contact.p0_pa() * 1e-6;
+    let panel = &built.panels[0];
+    let peak = panel.peak.expect("a located peak");
+    assert!(
+        peak.value < report.value_over_p0 * mpa_per_p0 - 1.0,
+        "{peak:?}"
+    );
+    let note = format!(
+        "body's max {:.0} MPa at x = 0.026, z = 0.110 mm",
+        report.value_over_p0 * mpa_per_p0
+    );
+    assert!(
+        panel.subtitle.contains(&note),
+        "{} lacks {note}",
+        panel.subtitle
+    );
+}

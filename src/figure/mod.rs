@@ -126,6 +126,33 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
                 spec.stress_unit.symbol(),
             ));
         }
+        // A section that misses the body's maximum (the `hertz` report's) says where it is:
+        // `body's max 1671 MPa at x = 0.026, z = 0.110 mm`, `… at x = 0.319a, y = ±0.2a, …`.
+        if let Some([value, x, y, z]) = computed.elsewhere_over_p0 {
+            let unit = spec.length_unit.suffix();
+            let each = unit == "a";
+            let at = |c: f64, last: bool| {
+                let c = if c.abs() <= 1e-6 { 0.0 } else { c };
+                let number = text::fixed(c * length_per_a, 3);
+                if each || last {
+                    format!("{number}{unit}")
+                } else {
+                    number
+                }
+            };
+            let y = match scene.contact.kind {
+                ContactKind::Line => String::new(),
+                _ if y.abs() <= 1e-6 => String::new(),
+                _ => format!("y = ±{}, ", at(y, false)),
+            };
+            subtitle.push_str(&format!(
+                "; body's max {} {} at x = {}, {y}z = {}",
+                text::significant(value * stress_per_p0, 3, 1e5, false),
+                spec.stress_unit.symbol(),
+                at(x, false),
+                at(z, true)
+            ));
+        }
         let mut outlines = outlines;
         // First yield: the line where the drawn stress reaches it, dashed, with the region
         // inside named; or that the section stays below it.
@@ -176,6 +203,13 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
                 levels: Levels::Count(8),
                 range: clip,
             }),
+            peak: computed
+                .peak_over_p0
+                .map(|[value, u, v]| crate::render::Peak {
+                    value: value * stress_per_p0,
+                    x: u * length_per_a,
+                    z: v * length_per_a,
+                }),
         });
     }
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
@@ -441,6 +475,7 @@ mod tests {
             half_width: 1.0,
             outlines: Vec::new(),
             scale: None,
+            peak: None,
         }
     }
 

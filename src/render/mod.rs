@@ -90,6 +90,18 @@ pub struct Panel {
     /// with the same scale that are not neighbours form separate groups, each with its own
     /// range and bar.
     pub scale: Option<PanelScale>,
+    /// The panel's largest value found off the grid, where the field could be evaluated
+    /// anywhere in the plane (display units): marked instead of the largest sample, so that a
+    /// section through the `hertz` report's maximum marks the report's value and position.
+    pub peak: Option<Peak>,
+}
+
+/// A maximum located between the samples of a panel (display units).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Peak {
+    pub value: f64,
+    pub x: f64,
+    pub z: f64,
 }
 
 /// A colour scale of its own for a panel (see [`Panel::scale`]), e.g. for a difference between
@@ -285,6 +297,7 @@ mod tests {
             half_width: 1.0,
             outlines: Vec::new(),
             scale: None,
+            peak: None,
         }
     }
 
@@ -522,6 +535,7 @@ mod tests {
                 panel("numerical", numerical),
                 Panel {
                     scale: Some(difference_scale()),
+                    peak: None,
                     ..panel("numerical − closed form", difference)
                 },
             ],

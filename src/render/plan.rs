@@ -436,7 +436,15 @@ fn marker_text(
         .max((panel.z.max - panel.z.min).abs());
     let snap = |c: f64| if c.abs() <= 1e-9 * span { 0.0 } else { c };
     let (x, z) = (snap(x), snap(z));
-    let decimals = marker_decimals(x, z, &panel.x, &panel.z);
+    // A peak located off the grid: one decimal more than the axes' spans ask, up to three (as
+    // the `hertz` report prints positions: 0.786a), not the digits that tell a sample apart.
+    let decimals = if maximum && panel.peak.is_some() {
+        let base = coordinate_decimals(panel.x.max - panel.x.min)
+            .max(coordinate_decimals(panel.z.max - panel.z.min));
+        base.max((base + 1).min(3))
+    } else {
+        marker_decimals(x, z, &panel.x, &panel.z)
+    };
     format!(
         "{} {}{unit} at {horizontal} = {}{length}, {vertical} = {}{length}",
         if maximum { "max" } else { "min" },
@@ -459,10 +467,12 @@ fn plan_extreme(
         return Ok(None);
     };
     // The sampled extreme, not an interpolated one: the maxima of contact fields often sit on
-    // a kink (the contact edge, the surface), where a fitted parabola would overshoot.
-    let x = panel.x.value(i);
-    let z = panel.z.value(j);
-    let value = v0;
+    // a kink (the contact edge, the surface), where a fitted parabola would overshoot. Where
+    // the study located the maximum between the samples on the field itself, that one.
+    let (value, x, z) = match panel.peak.filter(|_| maximum) {
+        Some(peak) => (peak.value, peak.x, peak.z),
+        None => (v0, panel.x.value(i), panel.z.value(j)),
+    };
 
     let text = marker_text(figure, panel, maximum, value, (x, z));
     let at = (pl.px(x), pl.pz(z));
@@ -679,6 +689,7 @@ mod tests {
                 half_width: 0.0,
                 outlines: Vec::new(),
                 scale: None,
+                peak: None,
             }],
             value_label: value_label.into(),
             x_label: x_label.into(),

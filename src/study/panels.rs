@@ -8,6 +8,7 @@ use ndarray::Array2;
 use crate::field::{self, Axis, FieldError, Plane, Section};
 use crate::scene::{ContactKind, Method, Scene};
 use crate::solution::Solution;
+use crate::stress::Quantity;
 
 /// Number of samples of the traction profile across a panel.
 const TRACTION_SAMPLES: usize = 601;
@@ -25,6 +26,15 @@ pub struct PanelField {
     pub traction: Vec<(f64, f64, f64)>,
     /// Half the contact's chord on that line, over `a` (0 when the contact has no outline).
     pub half_width_over_a: f64,
+    /// The plane's largest value of the quantity and where it is, `[value / p0, u / a, v / a]`,
+    /// refined between the samples ([`refined_peak`]) for a closed form and a quantity whose
+    /// maximum the `hertz` report gives; `None` otherwise (the largest sample is marked).
+    pub peak_over_p0: Option<[f64; 3]>,
+    /// The body's maximum of the quantity under this panel's contact, as the `hertz` report
+    /// finds it ([`super::assess::maximum`]), `[value / p0, x / a, y / a, z / a]`, when this
+    /// plane misses it (its largest value is more than 1e-4 p0 below): the figure says where
+    /// the body's maximum is.
+    pub elsewhere_over_p0: Option<[f64; 4]>,
 }
 
 /// Evaluates every panel of `scene` (in parallel within each panel), after checking that the
@@ -72,14 +82,95 @@ pub fn panel_fields(
             .fold(0.0f64, |m, v| m.max(v.abs()));
         values.mapv_inplace(|v| if v.abs() <= 1e-12 * largest { 0.0 } else { v });
         let (traction, half_width_over_a) = surface_line(scene, &plane, &solution);
+        let reported = matches!(
+            quantity,
+            Quantity::VonMises | Quantity::MaxShear | Quantity::Tau1
+        );
+        let peak_over_p0 = (panel.method == Method::ClosedForm && reported)
+            .then(|| refined_peak(&solution, &plane, &values, quantity))
+            .flatten();
+        // The body's maximum under this panel's contact (its friction and Poisson's ratio),
+        // found as the `hertz` report finds it.
+        let elsewhere_over_p0 = peak_over_p0.and_then(|[peak, ..]| {
+            let extreme = super::assess::maximum(&solution, quantity, false);
+            (peak < extreme.value_over_p0 - 1e-4).then_some([
+                extreme.value_over_p0,
+                extreme.x_over_a,
+                extreme.y_over_a,
+                extreme.z_over_a,
+            ])
+        });
         fields.push(PanelField {
             plane,
             values_over_p0: values,
             traction,
             half_width_over_a,
+            peak_over_p0,
+            elsewhere_over_p0,
         });
     }
     Ok(fields)
+}
+
+/// The largest value of `quantity` in `plane`, `[value / p0, u / a, v / a]`: from the
+/// largest sample of `values`, a compass search in the plane (the pattern search of
+/// Hooke & Jeeves, *J. ACM* 8, 1961, with the step halved down to 1e-9 a), the search that
+/// finds the `hertz` report's maxima in the volume ([`super::assess::maximum`]). A section
+/// through the report's maximum so marks the report's value at the report's position, where
+/// the largest sample would be up to half a grid step off. The search stays in the panel and
+/// below the surface; a peak found more than one grid step from its sample (a ridge leading
+/// elsewhere) is not used.
+pub fn refined_peak(
+    solution: &Solution,
+    plane: &Plane,
+    values: &Array2<f64>,
+    quantity: Quantity,
+) -> Option<[f64; 3]> {
+    let ((iv, iu), _) = values
+        .indexed_iter()
+        .filter(|(_, v)| v.is_finite())
+        .max_by(|a, b| a.1.total_cmp(b.1))?;
+    let (du, dv) = (plane.u.step().abs(), plane.v.step().abs());
+    if !(du.is_finite() && dv.is_finite() && du > 0.0 && dv > 0.0) {
+        return None;
+    }
+    let depth = !matches!(plane.section, Section::Xy { .. });
+    let (u_lo, u_hi) = (plane.u.min.min(plane.u.max), plane.u.min.max(plane.u.max));
+    let (mut v_lo, v_hi) = (plane.v.min.min(plane.v.max), plane.v.min.max(plane.v.max));
+    if depth {
+        v_lo = v_lo.max(0.0);
+    }
+    let value = |u: f64, v: f64| {
+        let (x, y, z) = match plane.section {
+            Section::Xz { y } => (u, y, v),
+            Section::Yz { x } => (x, u, v),
+            Section::Xy { z } => (u, v, z),
+        };
+        quantity.of(&solution.stress_over_p0(x, y, z))
+    };
+    let start = (plane.u.value(iu), plane.v.value(iv));
+    let mut at = start;
+    let mut best = value(at.0, at.1);
+    if !best.is_finite() {
+        return None;
+    }
+    let (mut hu, mut hv) = (du, dv);
+    while hu.max(hv) > 1e-9 {
+        let mut improved = false;
+        for (su, sv) in [(hu, 0.0), (-hu, 0.0), (0.0, hv), (0.0, -hv)] {
+            let trial = ((at.0 + su).clamp(u_lo, u_hi), (at.1 + sv).clamp(v_lo, v_hi));
+            let v = value(trial.0, trial.1);
+            if v > best {
+                (at, best) = (trial, v);
+                improved = true;
+            }
+        }
+        if !improved {
+            hu *= 0.5;
+            hv *= 0.5;
+        }
+    }
+    ((at.0 - start.0).abs() <= du && (at.1 - start.1).abs() <= dv).then_some([best, at.0, at.1])
 }
 
 /// Where `plane` meets the surface: the tractions along that line and the contact's extent on

@@ -227,7 +227,8 @@ pub struct Extreme {
     pub v: f64,
 }
 
-/// The extremes the figure marks (its [`Mark`]): the largest and/or the smallest finite value.
+/// The extremes the figure marks (its [`Mark`]): the largest (its [`Panel::peak`] where the
+/// study located it between the samples) and/or the smallest finite value.
 pub fn extremes(panel: &Panel, mark: Mark) -> (Option<Extreme>, Option<Extreme>) {
     let finite = || panel.values.indexed_iter().filter(|(_, v)| v.is_finite());
     let at = |((row, column), &value): ((usize, usize), &f64)| Extreme {
@@ -235,7 +236,15 @@ pub fn extremes(panel: &Panel, mark: Mark) -> (Option<Extreme>, Option<Extreme>)
         u: panel.x.value(column),
         v: panel.z.value(row),
     };
-    let largest = finite().max_by(|a, b| a.1.total_cmp(b.1)).map(at);
+    // The maximum the study located between the samples, as the PNG figure marks it.
+    let largest = match panel.peak {
+        Some(peak) => Some(Extreme {
+            value: peak.value,
+            u: peak.x,
+            v: peak.z,
+        }),
+        None => finite().max_by(|a, b| a.1.total_cmp(b.1)).map(at),
+    };
     let smallest = finite().min_by(|a, b| a.1.total_cmp(b.1)).map(at);
     match mark {
         Mark::Max => (largest, None),

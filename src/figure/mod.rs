@@ -132,7 +132,9 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
             let unit = spec.length_unit.suffix();
             let each = unit == "a";
             let at = |c: f64, last: bool| {
-                let c = if c.abs() <= 1e-6 { 0.0 } else { c };
+                if c.abs() <= 1e-6 {
+                    return "0".to_string();
+                }
                 let number = text::fixed(c * length_per_a, 3);
                 if each || last {
                     format!("{number}{unit}")

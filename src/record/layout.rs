@@ -10,8 +10,8 @@ use rerun::blueprint::components::{
     QueryExpression, RootContainer, RowShare, TimelineName, ViewClass,
 };
 use rerun::external::re_sdk_types::blueprint::archetypes::{
-    ContainerBlueprint, EyeControls3D, LineGrid3D, PanelBlueprint, PlotLegend, TimePanelBlueprint,
-    ViewBlueprint, ViewContents, ViewportBlueprint, VisualBounds2D,
+    ContainerBlueprint, EyeControls3D, LineGrid3D, PanelBlueprint, PlotLegend, TensorScalarMapping,
+    TimePanelBlueprint, ViewBlueprint, ViewContents, ViewportBlueprint, VisualBounds2D,
 };
 use rerun::RecordingStream;
 
@@ -34,7 +34,8 @@ pub enum ViewKind {
     TimeSeries,
     TextDocument,
     TextLog,
-    Tensor,
+    /// A tensor view, its values coloured by this colour map.
+    Tensor(rerun::components::Colormap),
 }
 
 impl ViewKind {
@@ -45,7 +46,7 @@ impl ViewKind {
             ViewKind::TimeSeries => "TimeSeries",
             ViewKind::TextDocument => "TextDocument",
             ViewKind::TextLog => "TextLog",
-            ViewKind::Tensor => "Tensor",
+            ViewKind::Tensor(_) => "Tensor",
         }
     }
 }
@@ -159,6 +160,12 @@ fn log_node(stream: &RecordingStream, node: &Node, ids: &mut Ids) -> Result<Stri
                             .with_position(eye.position)
                             .with_look_target(eye.target)
                             .with_eye_up(eye.up),
+                    )?;
+                }
+                ViewKind::Tensor(colormap) => {
+                    stream.log(
+                        format!("{path}/TensorScalarMapping"),
+                        &TensorScalarMapping::new().with_colormap(*colormap),
                     )?;
                 }
                 ViewKind::TimeSeries => {

@@ -421,7 +421,7 @@ pub fn describe(scene: &Scene) -> String {
     }
     text.push_str("Conventions: z points into the body (depth drawn downwards), tension positive, q = μp acts in +x on the body (trailing edge x = −a).\n\n");
     text.push_str(&format!(
-        "**Reading the views.** Hovering the map shows `Val`: the value of {} in the unit of the colour bar ({}). The viewer also prints it as a \"Depth\" in m or mm, because the map is stored as a depth image: ignore that line. The colour range is the same at every step (from a coarse preview of all steps, rounded up); the marked extremes and the title row follow the step.",
+        "**Reading the views.** Hovering the map shows `Val`: the value of {} in the unit of the colour bar ({}). The viewer also prints it as a \"Depth\" in m or mm, because the map is stored as a depth image: ignore that line. The colour range is the same at every step (from a coarse preview of all steps, rounded up); the marked extremes and the title row follow the step. The tab `values` holds the same numbers as a tensor (rows z, columns x, hover to read them) in the map's colours and colour range: read its colours on the map's colour bar.",
         scene.figure.quantity.symbol(),
         scene.figure.stress_unit.label(scene.figure.quantity.symbol()),
     ));

@@ -67,12 +67,18 @@ pub(super) fn record_sections(
     let coarse = preview(scene);
     let mut spans = vec![(f64::INFINITY, f64::NEG_INFINITY); panels];
     let mut volume_largest = 0.0f64;
+    // The largest traction of the sweep: the strip above the map keeps one scale, so the
+    // profiles grow with the load (issue 23, item 8).
+    let mut traction_peak = 0.0f64;
     for step in 0..steps {
         let coarse_step = step_scene(&coarse, step)?;
         let figure = figure::build(&coarse_step, &study::panel_fields(&coarse_step, &|| {})?);
         for (span, panel) in spans.iter_mut().zip(&figure.panels) {
             for &v in panel.values.iter().filter(|v| v.is_finite()) {
                 *span = (span.0.min(v), span.1.max(v));
+            }
+            for sample in &panel.traction {
+                traction_peak = traction_peak.max(sample.p.abs()).max(sample.q.abs());
             }
         }
         if let Some(spec) = &scene.volume {
@@ -192,6 +198,7 @@ pub(super) fn record_sections(
                     mark: figure.mark,
                     material: &material,
                     values: true,
+                    traction_peak: Some(traction_peak).filter(|&t| t > 0.0 && steps > 1),
                 },
             )?;
             let (largest, smallest) = section::extremes(panel, figure.mark);
@@ -400,9 +407,13 @@ pub(super) fn plan_layout(
         "scene",
         "description",
     ))];
-    for k in 0..figure.panels.len() {
+    // The raw values in the map's colours and colour range, so the map's colour bar reads them
+    // (the tensor view draws none of its own).
+    for (k, panel) in figure.panels.iter().enumerate() {
         documents.push(Node::View(View::new(
-            ViewKind::Tensor,
+            ViewKind::Tensor(super::rerun_colormap(section::panel_colormap(
+                figure, panel,
+            ))),
             format!("values {}", k + 1),
             format!("sections/{k}/values"),
         )));

@@ -324,6 +324,7 @@ pub(super) fn log_map_step(
             mark: map.mark,
             material: &[],
             values: false,
+            traction_peak: None,
         },
     )
 }

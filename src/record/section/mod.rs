@@ -271,6 +271,9 @@ pub struct Changing<'a> {
     pub material: &'a [(f64, f64)],
     /// Also log the raw values as a tensor (`<base>/values`).
     pub values: bool,
+    /// The traction the strip's height stands for, fixed over a sweep (so the profiles grow
+    /// with the load); `None`: the step's own largest traction.
+    pub traction_peak: Option<f64>,
 }
 
 /// The panel (as [`displayed`]) at the current step, or statically: field, raw values,
@@ -303,9 +306,12 @@ pub fn log_step(
             stream,
             when,
             format!("{base}/values"),
+            // The map's colour range (its view's tab names the colour map): the colours read
+            // on the map's colour bar.
             &rerun::Tensor::try_from(values32)
                 .map_err(|e| RecordError::Rerun(e.to_string()))?
-                .with_dim_names([figure.z_label.clone(), figure.x_label.clone()]),
+                .with_dim_names([figure.z_label.clone(), figure.x_label.clone()])
+                .with_value_range(rerun::components::ValueRange::new(range.0, range.1)),
         )?;
     }
     let notation = changing.notation;
@@ -320,7 +326,7 @@ pub fn log_step(
             .map(|s| s.p.abs().max(s.q.abs()))
             .fold(0.0f64, f64::max);
         if peak > 0.0 {
-            let scale = frame.strip / peak;
+            let scale = frame.strip / changing.traction_peak.unwrap_or(peak).max(peak);
             let profile = |f: &dyn Fn(&crate::render::TractionSample) -> f64| -> Vec<[f32; 2]> {
                 panel
                     .traction

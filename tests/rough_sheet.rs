@@ -1,6 +1,7 @@
 //! A rough scene's sheet agrees with its `contact` report (issue 23, items 10 and 11): the xz
 //! section passes through the report's maximum and marks its value at its depth, the xy map
-//! lies at that depth, the section is sized for reading, and `[figure] z` sets its depth range.
+//! lies at that depth, the section is sized for reading, and `[figure] z` sets its depth range;
+//! a periodic contact's maps are centred on that maximum, a contact on the seam drawn whole.
 
 use std::path::Path;
 
@@ -174,6 +175,190 @@ fn an_isolated_and_a_small_periodic_sheet_mark_the_reports_maximum() {
         .replace("seed = 5", "seed = 5\nsphere_radius = \"50 um\"");
     let isolated = Scene::parse(&isolated, "isolated", "isolated.toml").expect("valid");
     assert_marks_the_report(&isolated);
+}
+
+/// The worn surface rolled so that the report's maximum lies under the corner cell (0, 0) and
+/// its contact straddles the periodic seam (`tests/data/worn_on_seam.asc`).
+fn on_the_seam() -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/rough_worn_on_seam.toml");
+    Scene::load(&path).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The three maps of a rough sheet.
+const MAPS: [&str; 3] = [
+    "Topography and contact spots",
+    "Contact pressure",
+    "von Mises stress σvM at the depth",
+];
+
+/// Issue 23, item 10: a periodic contact on the seam was drawn split into the maps' corners.
+/// Its maps are now rolled by whole cells to centre the report's maximum, their axes running on
+/// past the period, the marks and the section where they were.
+#[test]
+fn a_contact_on_the_periodic_seam_is_drawn_centred_on_the_maximum() {
+    let scene = on_the_seam();
+    let (solution, findings, sheet) = solved_sheet(&scene);
+    let reported = findings.maxima.von_mises;
+    // The scene does put the maximum on the seam: under the corner cell.
+    assert!(
+        (reported.x_over_a - 0.5).abs() < 1e-9 && (reported.y_over_a - 0.5).abs() < 1e-9,
+        "{reported:?}"
+    );
+    let (ny, nx) = solution.pressure_pa.dim();
+    let [dx, dy] = solution.spacing_m.map(|d| d * 1e6);
+    let roll = stressfield::study::rough_sheet::display_roll(&solution, &reported);
+    assert_eq!((roll.columns, roll.rows), (-64, -64));
+    let stored_mpa = solution.pressure_pa.mapv(|p| p * 1e-6);
+    for title in MAPS {
+        let panel = &map(&sheet, title).panels[0];
+        // Axes of cell centres, one piece from half a period left of the maximum's cell to
+        // half a period right, each the stored cell's centre modulo the period.
+        assert_eq!((panel.x.count, panel.z.count), (nx, ny));
+        assert!((panel.x.min - (-63.5)).abs() < 1e-12 && (panel.x.max - 63.5).abs() < 1e-12);
+        assert!((panel.z.min - (-63.5)).abs() < 1e-12 && (panel.z.max - 63.5).abs() < 1e-12);
+        for (axis, n, d, shift) in [
+            (&panel.x, nx, dx, roll.columns),
+            (&panel.z, ny, dy, roll.rows),
+        ] {
+            let values: Vec<f64> = axis.values().collect();
+            assert!(
+                values.windows(2).all(|w| w[1] > w[0]),
+                "{title}: {values:?}"
+            );
+            for (k, &u) in values.iter().enumerate() {
+                let stored = (k as isize + shift).rem_euclid(n as isize) as f64;
+                let periods = (u - (stored + 0.5) * d) / (n as f64 * d);
+                assert!(
+                    (periods - periods.round()).abs() < 1e-12,
+                    "{title}: {k} {u}"
+                );
+            }
+        }
+    }
+    // The pressure map shows every stored value once, each at its rolled cell.
+    let pressure = &map(&sheet, "Contact pressure").panels[0];
+    let mut shown: Vec<f64> = pressure.values.iter().copied().collect();
+    let mut stored: Vec<f64> = stored_mpa.iter().copied().collect();
+    shown.sort_by(f64::total_cmp);
+    stored.sort_by(f64::total_cmp);
+    assert!(shown
+        .iter()
+        .zip(&stored)
+        .all(|(a, b)| (a - b).abs() <= 1e-12 * b.abs()));
+    for ((j, i), &p) in pressure.values.indexed_iter() {
+        let at = [(j + ny / 2) % ny, (i + nx / 2) % nx];
+        assert!((p - stored_mpa[at]).abs() <= 1e-12 * p.abs(), "{j} {i}");
+    }
+    // The maximum at the centre cell, marked with the report's value at the report's place.
+    let depth = &map(&sheet, "von Mises stress σvM at the depth").panels[0];
+    let ((j, i), _) =
+        depth
+            .values
+            .indexed_iter()
+            .fold(((0, 0), f64::NEG_INFINITY), |best, (at, &v)| {
+                if v > best.1 {
+                    (at, v)
+                } else {
+                    best
+                }
+            });
+    assert!(
+        j.abs_diff(ny / 2) <= 1 && i.abs_diff(nx / 2) <= 1,
+        "{j} {i}"
+    );
+    assert_marks_the_report(&scene);
+    // The section lies within the maps' x range, on their cell centres, at the maximum's y.
+    let section = &map(&sheet, "von Mises stress σvM in the xz section").panels[0];
+    assert!(section.x.min >= pressure.x.min - 1e-9 && section.x.max <= pressure.x.max + 1e-9);
+    let offset = (section.x.min - pressure.x.min) / dx;
+    assert!((offset - offset.round()).abs() < 1e-9, "{offset}");
+    assert!(section
+        .subtitle
+        .starts_with("y = 0.5 µm, centred on the maximum"));
+    let topography = &map(&sheet, "Topography and contact spots").panels[0];
+    assert!(
+        topography
+            .subtitle
+            .ends_with("; periodic, centred on the maximum"),
+        "{}",
+        topography.subtitle
+    );
+    // The spots are outlined on the rolled map, within its axes.
+    assert!(!topography.outlines.is_empty());
+    assert!(topography
+        .outlines
+        .iter()
+        .flatten()
+        .all(|&(x, y)| { (panel_range(&topography.x, x)) && (panel_range(&topography.z, y)) }));
+
+    // The same surface unmoved (the shipped scene) looks the same: centred on the same cell,
+    // its maps are these, their axes shifted by the whole cells the surface was moved.
+    let (_, _, unmoved) = solved_sheet(&shipped("rough_worn_on_flat"));
+    for title in MAPS {
+        let (here, there) = (
+            &map(&sheet, title).panels[0],
+            &map(&unmoved, title).panels[0],
+        );
+        assert!(
+            (there.x.min - here.x.min - 109.0 * dx).abs() < 1e-9,
+            "{title}"
+        );
+        assert!(
+            (there.z.min - here.z.min - 78.0 * dy).abs() < 1e-9,
+            "{title}"
+        );
+        let top = here.values.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let differs = here
+            .values
+            .iter()
+            .zip(&there.values)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        // Measured: 0 (topography), 2.9e-11 of 2929 MPa (pressure), 1.5e-11 of 1660 MPa.
+        assert!(differs <= 1e-9 * top, "{title}: {differs} of {top}");
+    }
+}
+
+/// Whether `u` lies on `axis` (within a millionth of its span).
+fn panel_range(axis: &stressfield::field::Axis, u: f64) -> bool {
+    let slack = 1e-6 * (axis.max - axis.min);
+    u >= axis.min - slack && u <= axis.max + slack
+}
+
+/// An isolated contact's maps are drawn as stored: nothing lies beyond them.
+#[test]
+fn an_isolated_contacts_maps_are_not_rolled() {
+    let isolated = SMALL
+        .replace("periodic = true\n", "")
+        .replace("mean_pressure = \"20 MPa\"", "load = \"0.002 N\"")
+        .replace("seed = 5", "seed = 5\nsphere_radius = \"50 um\"");
+    let scene = Scene::parse(&isolated, "isolated", "isolated.toml").expect("valid");
+    let (solution, findings, sheet) = solved_sheet(&scene);
+    let roll = stressfield::study::rough_sheet::display_roll(&solution, &findings.maxima.von_mises);
+    assert!(roll.is_none(), "{roll:?}");
+    let (ny, nx) = solution.pressure_pa.dim();
+    let dx = solution.spacing_m[0] * 1e6;
+    let pressure = &map(&sheet, "Contact pressure").panels[0];
+    assert!((pressure.x.min - 0.5 * dx).abs() < 1e-12);
+    assert!((pressure.x.max - (nx as f64 - 0.5) * dx).abs() < 1e-12);
+    assert_eq!(pressure.values.dim(), (ny, nx));
+    for ((j, i), &p) in pressure.values.indexed_iter() {
+        let stored = solution.pressure_pa[[j, i]] * 1e-6;
+        assert!((p - stored).abs() <= 1e-12 * stored.abs(), "{j} {i}");
+    }
+    let topography = &map(&sheet, "Topography and contact spots").panels[0];
+    assert!(
+        !topography.subtitle.contains("centred"),
+        "{}",
+        topography.subtitle
+    );
+    // The rough ball's maximum is not at the map's centre cell: a roll would have moved it.
+    let reported = findings.maxima.von_mises;
+    let cell = [
+        (reported.y_over_a / (solution.spacing_m[1] * 1e6)).floor() as usize,
+        (reported.x_over_a / dx).floor() as usize,
+    ];
+    assert_ne!(cell, [ny / 2, nx / 2]);
 }
 
 #[test]

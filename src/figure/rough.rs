@@ -19,10 +19,12 @@ use ndarray::Array2;
 
 use crate::contact::rough::RoughSolution;
 use crate::field::{Axis, FieldError};
+use crate::operator::elastic::Periodicity;
 use crate::render::chart::{Cell, Chart, Series, Sheet, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, Scene};
 use crate::study::assess::StressMaxima;
+use crate::study::map_roll::Roll;
 use crate::study::rough::{self as rough_study, RoughStudyError};
 use crate::study::rough_sheet::RoughSheetFields;
 use crate::surface::generate::Form;
@@ -47,20 +49,25 @@ pub enum SheetError {
 
 pub(super) const MAP_WIDTH: u32 = 420;
 
-/// A map of `values` (`[ny, nx]`, display units) over the surface's plane in um.
+/// The axes `(x, y)` in µm of the cell centres of `map` shown rolled by `roll` (as stored:
+/// [`Roll::NONE`]).
+pub(super) fn map_axes_um(map: &HeightMap, roll: Roll) -> (Axis, Axis) {
+    let [dx, dy] = map.spacing_m();
+    roll.axes(map.shape(), [dx * 1e6, dy * 1e6])
+}
+
+/// A map of `values` (`[ny, nx]`, display units) over the surface's plane, on `axes` `(x, y)`
+/// in µm.
 pub(super) fn xy_map(
     title: &str,
     subtitle: &str,
-    map: &HeightMap,
+    axes: (Axis, Axis),
     values: Array2<f64>,
     value_label: &str,
     colormap: ColorMap,
     outlines: Vec<Vec<(f64, f64)>>,
 ) -> Figure {
-    let [ny, nx] = map.shape();
-    let [dx, dy] = map.spacing_m();
-    let x = Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx);
-    let z = Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny);
+    let (x, z) = axes;
     let finite = values.iter().filter(|v| v.is_finite());
     let (lo, hi) = finite.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
         (a.min(v), b.max(v))
@@ -121,15 +128,17 @@ pub fn gw_model(c: &Characterisation, e_star_pa: f64) -> GreenwoodWilliamson {
     }
 }
 
-/// The outlines of the contact spots: isolines of the loaded-cell indicator at 1/2, in um.
-fn spot_outlines(solution: &RoughSolution) -> Vec<Vec<(f64, f64)>> {
-    let indicator = solution
-        .pressure_pa
-        .mapv(|p| if p > 0.0 { 1.0 } else { 0.0 });
-    let (ny, nx) = indicator.dim();
+/// The outlines of the contact spots on the map shown rolled by `roll`: isolines of the
+/// loaded-cell indicator at 1/2, in um.
+fn spot_outlines(solution: &RoughSolution, roll: Roll) -> Vec<Vec<(f64, f64)>> {
+    let indicator = roll.apply(
+        solution
+            .pressure_pa
+            .mapv(|p| if p > 0.0 { 1.0 } else { 0.0 })
+            .view(),
+    );
     let [dx, dy] = solution.spacing_m;
-    let x = Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx);
-    let y = Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny);
+    let (x, y) = roll.axes([indicator.nrows(), indicator.ncols()], [dx * 1e6, dy * 1e6]);
     crate::render::contour_lines(indicator.view(), &x, &y, 0.5)
 }
 
@@ -150,26 +159,34 @@ pub fn rough_sheet(
     let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
     let unit = scene.figure.stress_unit.label("");
     let unit = unit.trim();
-    let outlines = spot_outlines(solution);
+    // The fields under the solved contact, computed by the study, and how the maps are shown:
+    // a periodic contact's centred on the report's maximum (a contact on the seam whole).
+    let fields = crate::study::rough_sheet::sheet_fields(scene, solution, maxima, on_row)?;
+    let roll = fields.roll;
+    let axes = map_axes_um(&surface.heights, roll);
+    let outlines = spot_outlines(solution, roll);
     let top = surface
         .heights
         .heights_m()
         .iter()
         .fold(f64::NEG_INFINITY, |m, &h| m.max(h));
-    let topography = xy_map(
+    let mut spots = format!(
+        "{} spots, {:.2} % of the area in contact",
+        solution.spots,
+        100.0 * solution.contact_fraction
+    );
+    if solution.periodicity == Periodicity::Periodic {
+        spots.push_str("; periodic, centred on the maximum");
+    }
+    let mut topography = xy_map(
         "Topography and contact spots",
-        &format!(
-            "{} spots, {:.2} % of the area in contact",
-            solution.spots,
-            100.0 * solution.contact_fraction
-        ),
-        &surface.heights,
-        surface.heights.heights_m().mapv(|h| (h - top) * 1e6),
+        &spots,
+        axes,
+        roll.apply(surface.heights.heights_m().mapv(|h| (h - top) * 1e6).view()),
         "height below the top (µm)",
         ColorMap::Viridis,
         outlines.clone(),
     );
-    let mut topography = topography;
     topography.mark = Mark::None;
     let mut pressure = xy_map(
         "Contact pressure",
@@ -178,20 +195,18 @@ pub fn rough_sheet(
             solution.mean_pressure_pa * 1e-6,
             solution.max_pressure_pa * 1e-6
         ),
-        &surface.heights,
-        solution.pressure_pa.mapv(|p| p * stress_per_pa),
+        axes,
+        roll.apply(solution.pressure_pa.mapv(|p| p * stress_per_pa).view()),
         &format!("p {unit}"),
         ColorMap::Inferno,
         Vec::new(),
     );
     robust_colours(&mut pressure);
 
-    // The fields under the solved contact, computed by the study.
-    let fields = crate::study::rough_sheet::sheet_fields(scene, solution, maxima, on_row)?;
     let section_map = section_figure(scene, solution, &fields);
     let quantity = scene.figure.quantity;
     let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
-    let values_xy = fields.xy_pa.mapv(|v| v * stress_per_pa);
+    let values_xy = roll.apply(fields.xy_pa.mapv(|v| v * stress_per_pa).view());
     let mut depth_map = xy_map(
         &format!(
             "{} at the depth of the report's largest {}",
@@ -202,7 +217,7 @@ pub fn rough_sheet(
             "z = {} µm; spots outlined",
             crate::io::text::approx(fields.xy_depth)
         ),
-        &surface.heights,
+        axes,
         values_xy,
         &quantity_label,
         scene.figure.colormap,

@@ -6,12 +6,13 @@
 
 use std::f64::consts::PI;
 
-use super::rough::{gw_model, xy_map, SheetError};
+use super::rough::{gw_model, map_axes_um, xy_map, SheetError};
 use crate::render::chart::{Cell, Chart, Scale as ChartScale, Series, Sheet, Style, PALETTE};
 use crate::render::table::Table;
 use crate::render::{ColorMap, Mark};
 use crate::report::surface::SurfaceReport;
 use crate::scene::Scene;
+use crate::study::map_roll::Roll;
 use crate::surface::stats::{self, Characterisation};
 
 /// The surface scene's sheet of its characterisation `c` (by
@@ -39,7 +40,7 @@ pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, Sheet
             surface.source,
             c.options.form.describe()
         ),
-        &surface.body1,
+        map_axes_um(&surface.body1, Roll::NONE),
         levelled.mapv(|h| h * 1e6),
         "height (µm)",
         ColorMap::Viridis,

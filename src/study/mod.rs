@@ -16,6 +16,7 @@ pub mod assess;
 pub mod coupled;
 pub mod gear_heating;
 mod grid;
+pub mod map_roll;
 pub mod memory;
 pub mod panels;
 pub mod rough;

@@ -3,12 +3,15 @@
 //! report's largest value (its row, centred on it when the contact is periodic, from the
 //! surface down to twice the search depth or the scene's `[figure] z`, never thinner than a
 //! quarter of its width), the stress in the xy plane at the depth of that maximum, and, for a
-//! nominally flat surface, the real area against load ([`super::rough::area_curve`]). The
-//! sheet ([`crate::figure::rough`]) only converts units and draws.
+//! nominally flat surface, the real area against load ([`super::rough::area_curve`]); and how
+//! the maps are shown ([`display_roll`]: a periodic contact's centred on that maximum, so that a
+//! contact on the periodic seam is drawn whole). The sheet ([`crate::figure::rough`]) only
+//! converts units, rolls its maps by that and draws.
 
 use ndarray::Array2;
 
 use super::assess::{Extreme, StressMaxima};
+use super::map_roll::{self, Roll};
 use super::rough::{self, search_depth_m, RoughStudyError, REFERENCE_LENGTH_M};
 use super::surface::SurfaceStudyError;
 use crate::contact::rough::RoughSolution;
@@ -77,9 +80,13 @@ pub struct RoughSheetFields {
     pub xz_largest: SampledMaximum,
     /// The depth range was the scene's (`[figure] z`), not the default.
     pub depth_given: bool,
+    /// How the sheet's maps (topography, pressure, `xy`) are shown: a periodic contact's
+    /// centred on the reported maximum ([`display_roll`]), an isolated one's as stored. The
+    /// section's window lies within the rolled maps' x range.
+    pub roll: Roll,
     /// The depth of the xy plane, µm: the reported maximum's.
     pub xy_depth: f64,
-    /// The xy plane at `xy_depth`, over the cell centres.
+    /// The xy plane at `xy_depth`, over the cell centres as stored (drawn rolled by `roll`).
     pub xy: Plane,
     /// The scene's quantity on `xy`, Pa, `[y, x]`.
     pub xy_pa: Array2<f64>,
@@ -100,6 +107,26 @@ pub enum RoughSheetError {
     Study(#[from] RoughStudyError),
     #[error(transparent)]
     Surface(#[from] SurfaceStudyError),
+}
+
+/// How a rough contact's maps are shown beside the section through `maximum` (the report's,
+/// [`ReportedMaximum::extreme`], in µm): a periodic contact's rolled by whole cells so that
+/// the maximum's cell is the map's centre cell (the contact around it drawn whole, not split
+/// across the seam; the maximum keeps its coordinates, the axes run on past the period), an
+/// isolated contact's as stored. Apply it with [`Roll::apply`] and [`Roll::axes`] (spacing in
+/// µm).
+///
+/// The maximum, not the pressure's centroid on the torus, because the section goes through it
+/// and both the section and the depth map mark it; and a rough surface's spots spread over the
+/// whole period have no meaningful centroid.
+pub fn display_roll(solution: &RoughSolution, maximum: &Extreme) -> Roll {
+    let (ny, nx) = solution.pressure_pa.dim();
+    let [dx, dy] = solution.spacing_m;
+    let cell = [
+        map_roll::cell_of(maximum.y_over_a, dy / REFERENCE_LENGTH_M, ny),
+        map_roll::cell_of(maximum.x_over_a, dx / REFERENCE_LENGTH_M, nx),
+    ];
+    map_roll::centring(solution.periodicity, cell, [ny, nx])
 }
 
 /// At most this many depth rows: each is a DC-FFT layer of the whole map.
@@ -156,16 +183,8 @@ pub fn sheet_fields(
     let reported = ReportedMaximum::of(maxima, quantity);
     let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
     let cell = ax.min(ay);
-    let centre_index = |u: f64, a: f64, n: usize| -> usize {
-        let f = (u / a - 0.5).round();
-        if f.is_finite() && f > 0.0 {
-            (f as usize).min(n - 1)
-        } else {
-            0
-        }
-    };
-    let row = centre_index(reported.extreme.y_over_a, ay, ny);
-    let column = centre_index(reported.extreme.x_over_a, ax, nx);
+    let row = map_roll::cell_of(reported.extreme.y_over_a, ay, ny);
+    let column = map_roll::cell_of(reported.extreme.x_over_a, ax, nx);
 
     // The depth range: the scene's, or down to twice the search depth (within half the map),
     // never thinner than a quarter of the section's width.
@@ -261,6 +280,7 @@ pub fn sheet_fields(
         row,
         columns,
         centred,
+        roll: display_roll(solution, &reported.extreme),
         xz,
         xz_pa,
         xz_largest,

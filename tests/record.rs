@@ -224,6 +224,31 @@ impl Contents {
     }
 }
 
+/// The points of the `LineStrips2D` logged at `path` (every row, every strip, in order).
+pub(crate) fn strip_points_2d(contents: &Contents, path: &str) -> Vec<[f32; 2]> {
+    contents
+        .chunks
+        .get(path)
+        .into_iter()
+        .flatten()
+        .flat_map(|chunk| {
+            chunk
+                .iter_component::<rerun::components::LineStrip2D>(
+                    rerun::LineStrips2D::descriptor_strips().component,
+                )
+                .flat_map(|batch| {
+                    batch
+                        .iter()
+                        .flat_map(|strip| {
+                            strip.0.iter().map(|p| [p.x(), p.y()]).collect::<Vec<_>>()
+                        })
+                        .collect::<Vec<_>>()
+                })
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
 /// The positions of the `Points3D` in a chunk.
 fn positions_3d(chunk: &Chunk) -> Vec<[f32; 3]> {
     chunk
@@ -1575,4 +1600,36 @@ fn texts<'a>(
                 .collect::<Vec<_>>()
         })
         .collect()
+}
+
+/// Issue 23, item 10: a periodic contact whose maximum lies under the map's corner cell is
+/// recorded as the sheet draws it, rolled by whole cells so the maximum is at the centre: the
+/// depth map spans x from −64 to 64 µm (128 cells of 1 µm), not 0 to 128 µm.
+#[test]
+fn a_periodic_contact_on_the_seam_is_recorded_centred_on_its_maximum() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests")
+        .join("data")
+        .join("rough_worn_on_seam.toml");
+    let scene = Scene::load(&path).expect("a valid scene");
+    let (_, contents) = record_in_memory(&scene);
+    let border = strip_points_2d(&contents, "/depth/border");
+    assert!(!border.is_empty(), "{:?}", contents.paths());
+    let (lo, hi) = border
+        .iter()
+        .fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), p| {
+            (a.min(p[0]), b.max(p[0]))
+        });
+    assert!(
+        (lo + 64.0).abs() < 1e-3 && (hi - 64.0).abs() < 1e-3,
+        "depth map from x = {lo} to {hi} µm"
+    );
+    // The labelled maximum is the report's, in its cell at the centre.
+    let labels = contents.labels("/depth/maximum/label");
+    assert!(
+        labels
+            .iter()
+            .any(|l| l == "max σvM = 1660 MPa at x = 0.500 µm, y = 0.500 µm"),
+        "{labels:?}"
+    );
 }

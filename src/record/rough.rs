@@ -37,7 +37,9 @@ use crate::render::chart::{Cell, PALETTE};
 use crate::render::{ColorMap, Figure, Mark, Panel};
 use crate::report::rough::ContactReport;
 use crate::scene::{ContactKind, Scene};
+use crate::study::map_roll::Roll;
 use crate::study::rough as rough_study;
+use crate::study::rough_sheet;
 use crate::surface::HeightMap;
 
 pub(super) fn rerun_error(e: impl std::fmt::Display) -> RecordError {
@@ -98,6 +100,15 @@ pub fn record(
         crate::render::encode_png(&drawing.png().map_err(rerun_error)?).map_err(rerun_error)?;
     stream.log_static("sheet", &rerun::EncodedImage::from_file_contents(png))?;
     let exaggeration = log_topography(stream, &surface.heights)?;
+    // A periodic contact's maps are drawn as the sheet draws them: rolled by whole cells so
+    // that the report's maximum is at their centre (a contact on the seam drawn whole).
+    let roll = match (solution, &findings) {
+        (Some(solution), Some(findings)) => rough_sheet::display_roll(
+            solution,
+            &rough_sheet::ReportedMaximum::of(&findings.maxima, scene.figure.quantity).extreme,
+        ),
+        _ => Roll::NONE,
+    };
     // The report's maximum: the depth steps include its depth and show its value there.
     let mut reported = None;
     let report = match (solution, &findings) {
@@ -106,6 +117,7 @@ pub fn record(
             reported = Some(super::rough_depth::Reported {
                 value_pa: maximum.value_over_p0 * rough_study::REFERENCE_PRESSURE_PA,
                 z: maximum.z_over_a,
+                roll,
             });
             ContactReport::new(scene, solution, findings).text(scene)
         }
@@ -179,7 +191,7 @@ pub fn record(
     }
     // The views of the load sweep and of the depth steps, framed before they are computed
     // (their colour ranges are not known yet: the frames allow for six-character ticks).
-    let surface_axes = surface_axes_um(&surface.heights);
+    let surface_axes = surface_axes_um(&surface.heights, roll);
     let contact_frame = (rough && scene.sweep.is_some()).then(|| {
         let map = pressure_figure(Panel {
             subtitle: String::new(),
@@ -223,7 +235,7 @@ pub fn record(
     flush()?;
     let mut steps = 1;
     if let Some(frame) = &contact_frame {
-        steps = log_load_sweep(stream, scene, frame, flush)?.max(1);
+        steps = log_load_sweep(stream, scene, frame, roll, flush)?.max(1);
     }
     if let (Some(frame), Some(solution), Some(reported)) = (&depth_frame, solution, reported) {
         // The depth steps are at the scene's own load, on their own timeline (and, with a load
@@ -330,13 +342,9 @@ pub(super) fn log_map_step(
 }
 
 /// The axes of a height map's cells, in µm (cell centres).
-fn surface_axes_um(map: &HeightMap) -> (Axis, Axis) {
-    let [ny, nx] = map.shape();
+fn surface_axes_um(map: &HeightMap, roll: Roll) -> (Axis, Axis) {
     let [dx, dy] = map.spacing_m();
-    (
-        Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx),
-        Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny),
-    )
+    roll.axes(map.shape(), [dx * 1e6, dy * 1e6])
 }
 
 /// A map figure of the contact pressure (MPa) in µm, seen from above.
@@ -413,6 +421,7 @@ fn log_load_sweep(
     stream: &RecordingStream,
     scene: &Scene,
     frame: &Frame,
+    roll: Roll,
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<usize, RecordError> {
     let Some(sweep) = &scene.sweep else {
@@ -435,7 +444,7 @@ fn log_load_sweep(
         .surface
         .as_ref()
         .ok_or_else(|| rerun_error("no surface"))?;
-    let (x, y) = surface_axes_um(&surface.heights);
+    let (x, y) = surface_axes_um(&surface.heights, roll);
     let range = (0.0, super::round_up(1.03 * top).max(1e-9));
     let hardness_mpa = scene
         .contact
@@ -464,9 +473,8 @@ fn log_load_sweep(
         if let Some(values) = &values {
             stream.set_time_sequence(values.timeline()?, values.values[k]);
         }
-        let indicator = solution
-            .pressure_pa
-            .mapv(|p| if p > 0.0 { 1.0 } else { 0.0 });
+        let pressure_pa = roll.apply(solution.pressure_pa.view());
+        let indicator = pressure_pa.mapv(|p| if p > 0.0 { 1.0 } else { 0.0 });
         let outlines = crate::render::contour_lines(indicator.view(), &x, &y, 0.5);
         let text = format!(
             "{}: {} spots, {} % in contact",
@@ -478,7 +486,7 @@ fn log_load_sweep(
             subtitle: text.clone(),
             x,
             z: y,
-            values: solution.pressure_pa.mapv(|p| p * 1e-6),
+            values: pressure_pa.mapv(|p| p * 1e-6),
             traction: Vec::new(),
             half_width: 0.0,
             outlines,

@@ -9,7 +9,6 @@ use super::rough::{load_text, log_map_static, log_map_step, rerun_error};
 use super::section::When;
 use super::{step_time, RecordError};
 use crate::contact::rough::RoughSolution;
-use crate::field::Axis;
 use crate::render::chart::{Chart, Series, Style, PALETTE};
 use crate::render::{Figure, Mark, Panel};
 use crate::scene::Scene;
@@ -21,6 +20,8 @@ use crate::study::rough_sheet::DepthLayer;
 pub(super) struct Reported {
     pub value_pa: f64,
     pub z: f64,
+    /// How the maps are rolled (a periodic contact's, centred on the report's maximum).
+    pub roll: crate::study::map_roll::Roll,
 }
 
 /// The scene's stress quantity in planes parallel to the surface, stepping down on the
@@ -64,6 +65,7 @@ pub(super) fn log_depth_steps(
                 .total_cmp(&(b.z - reported.z).abs())
         })
         .map_or(0, |(k, _)| k);
+    let (x_axis, y_axis) = reported.roll.axes([ny, nx], [dx * 1e6, dy * 1e6]);
     let mut preview = None;
     for (k, layer) in layers.iter().enumerate() {
         stream.set_time_sequence("depth", step_time(k));
@@ -72,9 +74,12 @@ pub(super) fn log_depth_steps(
             title: quantity.description().into(),
             panels: vec![Panel {
                 subtitle: String::new(),
-                x: Axis::new(0.5 * dx * 1e6, (nx as f64 - 0.5) * dx * 1e6, nx),
-                z: Axis::new(0.5 * dy * 1e6, (ny as f64 - 0.5) * dy * 1e6, ny),
-                values: layer.values_pa.mapv(|v| v * per_pa),
+                x: x_axis,
+                z: y_axis,
+                values: reported
+                    .roll
+                    .apply(layer.values_pa.view())
+                    .mapv(|v| v * per_pa),
                 traction: Vec::new(),
                 half_width: 0.0,
                 outlines: Vec::new(),

@@ -176,6 +176,7 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
                 levels: Levels::Count(8),
                 range: clip,
             }),
+            axes: None,
         });
     }
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
@@ -441,6 +442,7 @@ mod tests {
             half_width: 1.0,
             outlines: Vec::new(),
             scale: None,
+            axes: None,
         }
     }
 

@@ -39,6 +39,7 @@ pub(crate) fn map(
             half_width: 0.0,
             outlines,
             scale: None,
+            axes: None,
         }],
         value_label: value_label.into(),
         x_label: "x (µm)".into(),

@@ -190,6 +190,7 @@ pub fn record(
             half_width: 0.0,
             outlines: Vec::new(),
             scale: None,
+            axes: None,
         });
         let shown = section::displayed(&map, &map.panels[0]);
         Frame::new(&shown, false, view_px, 6)
@@ -208,6 +209,7 @@ pub fn record(
             half_width: 0.0,
             outlines: Vec::new(),
             scale: None,
+            axes: None,
         };
         Frame::new(&shown, false, view_px, 6)
     });
@@ -463,6 +465,7 @@ fn log_load_sweep(
             half_width: 0.0,
             outlines,
             scale: None,
+            axes: None,
         });
         let shown = section::displayed(&figure, &figure.panels[0]);
         if k == 0 {

@@ -79,6 +79,7 @@ pub(super) fn log_depth_steps(
                 half_width: 0.0,
                 outlines: Vec::new(),
                 scale: None,
+                axes: None,
             }],
             value_label: scene.figure.stress_unit.label(quantity.symbol()),
             x_label: "x (µm)".into(),

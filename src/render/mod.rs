@@ -39,7 +39,7 @@ pub struct Figure {
     /// Colour-bar caption with its unit, e.g. "τ1 / p0" or "σvM (MPa)", of the shared scale
     /// (panels whose `scale` is `None`).
     pub value_label: String,
-    /// e.g. "x/a" or "x (mm)".
+    /// e.g. "x/a" or "x (mm)" (of the panels without axes of their own, [`Panel::axes`]).
     pub x_label: String,
     /// Label of the vertical axis, e.g. "z/a" or "z (mm)" (depth, drawn downwards), or "y/a"
     /// for a plane parallel to the surface.
@@ -90,6 +90,48 @@ pub struct Panel {
     /// with the same scale that are not neighbours form separate groups, each with its own
     /// range and bar.
     pub scale: Option<PanelScale>,
+    /// The axes of a panel cut in another plane than the figure's (a yz section beside an xz
+    /// one, a plane parallel to the surface beside a depth section): `None` for the figure's
+    /// (`Figure::x_label`, `z_label`, `vertical_is_depth`). The panel keeps the colour scale
+    /// it shares; its vertical caption is drawn left of it when it differs from its left
+    /// neighbour's.
+    pub axes: Option<PanelAxes>,
+}
+
+/// The axes of a panel (see [`Panel::axes`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PanelAxes {
+    /// e.g. "y/a" or "y (mm)".
+    pub x_label: String,
+    /// e.g. "z/a" (a depth, drawn downwards) or "y/a".
+    pub z_label: String,
+    pub vertical_is_depth: bool,
+}
+
+/// The axes a panel is drawn with: its own or the figure's (see [`Figure::axes_of`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AxesOf<'a> {
+    pub x_label: &'a str,
+    pub z_label: &'a str,
+    pub vertical_is_depth: bool,
+}
+
+impl Figure {
+    /// The axes of `panel` (one of this figure's): its own ([`Panel::axes`]) or the figure's.
+    pub fn axes_of<'a>(&'a self, panel: &'a Panel) -> AxesOf<'a> {
+        match &panel.axes {
+            Some(own) => AxesOf {
+                x_label: &own.x_label,
+                z_label: &own.z_label,
+                vertical_is_depth: own.vertical_is_depth,
+            },
+            None => AxesOf {
+                x_label: &self.x_label,
+                z_label: &self.z_label,
+                vertical_is_depth: self.vertical_is_depth,
+            },
+        }
+    }
 }
 
 /// A colour scale of its own for a panel (see [`Panel::scale`]), e.g. for a difference between

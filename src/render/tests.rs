@@ -1,5 +1,6 @@
 //! Tests of the figure renderer: layout, colour scales, marks, PNG and SVG.
 
+use super::layout::PanelLayout;
 use super::*;
 
 /// A smooth bump centred at (`x0`, 0.8), the value 1 at its centre.
@@ -26,6 +27,7 @@ fn panel(subtitle: &str, f: impl Fn(f64, f64) -> f64) -> Panel {
         half_width: 1.0,
         outlines: Vec::new(),
         scale: None,
+        axes: None,
     }
 }
 
@@ -532,4 +534,88 @@ fn non_finite_values_do_not_break_the_figure() {
     figure.panels[1].values.fill(f64::NAN);
     let image = render_png(&figure).expect("render");
     assert!(image.width() > 0);
+}
+
+/// Panels in different planes (issue 23, item 13): a depth section, a plane parallel to the
+/// surface (y up, no strip, taller) and another depth section, on one colour scale. Each
+/// keeps its own axes: the plan view draws no strip and its own vertical caption, the section
+/// after it its captions again, with room for them; the colour bar spans the tallest map and
+/// each horizontal caption sits under its own map.
+#[test]
+fn panels_in_different_planes_keep_their_axes_on_one_scale() {
+    let plan_view = Panel {
+        z: Axis::new(-2.0, 2.0, 161),
+        values: Array2::from_shape_fn((161, 161), |(iy, ix)| {
+            0.8 * bump(0.0)(-2.0 + 0.025 * ix as f64, 0.8 - 2.0 + 0.025 * iy as f64)
+        }),
+        traction: Vec::new(),
+        axes: Some(PanelAxes {
+            x_label: "x/a".into(),
+            z_label: "y/a".into(),
+            vertical_is_depth: false,
+        }),
+        ..panel("plane z = 0.5a", bump(0.0))
+    };
+    let across = Panel {
+        axes: Some(PanelAxes {
+            x_label: "y/a".into(),
+            z_label: "z/a".into(),
+            vertical_is_depth: true,
+        }),
+        ..panel("yz plane", |x, z| 0.6 * bump(0.0)(x, z))
+    };
+    let base = figure(Levels::Count(6), Mark::Max);
+    let uniform = Plan::new(&base).expect("plan").layout;
+    let figure = Figure {
+        panels: vec![base.panels[0].clone(), plan_view, across],
+        ..base
+    };
+    assert_eq!(figure.colour_ranges(), vec![(0..3, (0.0, 1.0))]);
+    let plan = Plan::new(&figure).expect("plan");
+    let layout = &plan.layout;
+    let [xz, xy, yz] = [0, 1, 2].map(|i| &layout.panels[i]);
+    assert_eq!(
+        [xz.strip_drawn, xy.strip_drawn, yz.strip_drawn],
+        [true, false, true]
+    );
+    assert_eq!([xz.new_axes, xy.new_axes, yz.new_axes], [true, true, true]);
+    assert!(xz.z_down && !xy.z_down && yz.z_down);
+    // y upwards in the plan view: its top row is y = 2.
+    assert!((xy.pz(2.0) - f64::from(xy.map.y)).abs() < 1e-9);
+    // Room for the captions left of the plan view: wider apart than two sections.
+    let gap = |a: &PanelLayout, b: &PanelLayout| b.map.x - a.map.right();
+    let uniform_gap = gap(&uniform.panels[0], &uniform.panels[1]);
+    assert!(
+        gap(xz, xy) > uniform_gap + 10,
+        "{} vs {uniform_gap}",
+        gap(xz, xy)
+    );
+    // One colour bar, as tall as the tallest map (the square plan view).
+    assert_eq!(layout.colorbars.len(), 1);
+    assert_eq!(layout.colorbars[0].rect.h, xy.map.h);
+    assert!(xy.map.h > xz.map.h);
+    assert!(xz.x_label_baseline < xy.x_label_baseline);
+    assert_eq!(xz.x_label_baseline, yz.x_label_baseline);
+    // The marks are written in each panel's coordinates.
+    let labels: Vec<&str> = plan
+        .panels
+        .iter()
+        .flat_map(|p| &p.extremes)
+        .map(|e| e.label.text.as_str())
+        .collect();
+    assert_eq!(labels.len(), 3, "{labels:?}");
+    assert!(
+        labels[0].contains("x = ") && labels[0].contains("z = "),
+        "{labels:?}"
+    );
+    assert!(
+        labels[1].contains("x = ") && labels[1].contains("y = "),
+        "{labels:?}"
+    );
+    assert!(
+        labels[2].contains("y = ") && labels[2].contains("z = "),
+        "{labels:?}"
+    );
+    render_png(&figure).expect("renders");
+    render_svg(&figure).expect("renders");
 }

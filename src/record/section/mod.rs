@@ -296,7 +296,10 @@ pub fn log_step(
             format!("{base}/values"),
             &rerun::Tensor::try_from(values32)
                 .map_err(|e| RecordError::Rerun(e.to_string()))?
-                .with_dim_names([figure.z_label.clone(), figure.x_label.clone()]),
+                .with_dim_names({
+                    let axes = figure.axes_of(panel);
+                    [axes.z_label.to_string(), axes.x_label.to_string()]
+                }),
         )?;
     }
     let notation = changing.notation;

@@ -230,6 +230,7 @@ fn map_figure(vertical_is_depth: bool) -> Figure {
             half_width: 0.0,
             outlines: vec![vec![(0.0, 10.0), (1.0, 20.0)]],
             scale: None,
+            axes: None,
         }],
         value_label: "p (MPa)".into(),
         x_label: "x (µm)".into(),

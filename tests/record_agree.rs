@@ -252,3 +252,63 @@ fn assert_no_backticks(contents: &Contents) {
         }
     }
 }
+
+/// A figure of panels in different planes (issue 23, item 13) records each in its own
+/// coordinates: the views name each panel's plane, the maxima are labelled in its coordinates,
+/// and only the depth sections chart the depth of their maximum.
+#[test]
+fn panels_in_different_planes_are_recorded_in_their_own_coordinates() {
+    let scene = scene(
+        r#"
+format = 1
+[contact]
+kind = "point"
+[figure]
+quantity = "von_mises"
+z = [0.0, 1.5]
+resolution = 41
+[[panel]]
+[[panel]]
+section = "yz"
+at = 0.2
+[[panel]]
+section = "xy"
+at = 0.48
+[sweep]
+parameter = "friction"
+values = [0.0, 0.3]
+"#,
+    );
+    let (summary, contents) = record_in_memory(&scene);
+    assert_eq!(summary.panels, 3);
+    let names = contents.view_names();
+    for (k, plane) in ["xz", "yz", "xy"].into_iter().enumerate() {
+        let name = format!("panel {}: σvM / p0 · {plane} section", k + 1);
+        assert!(names.contains(&name), "{name}: {names:?}");
+    }
+    for (k, (across, down)) in [("x = ", "z = "), ("y = ", "z = "), ("x = ", "y = ")]
+        .into_iter()
+        .enumerate()
+    {
+        let labels = contents.labels(&format!("/sections/{k}/maximum/label"));
+        assert_eq!(labels.len(), 2, "{labels:?}");
+        for label in &labels {
+            assert!(
+                label.contains(across) && label.contains(down),
+                "{k}: {label}"
+            );
+        }
+    }
+    for (k, depth) in [(0, true), (1, true), (2, false)] {
+        let steps = usize::from(depth) * 2;
+        let path = format!("/series/{k}/maximum_depth");
+        assert_eq!(contents.scalars(&path, "friction").len(), steps, "{path}");
+        let chart = format!("/charts/{k}/depth");
+        assert_eq!(contents.chunks.contains_key(&chart), depth, "{chart}");
+    }
+    let description = contents.text_documents().join("\n");
+    assert!(
+        description.contains("3 panel(s) of") && description.contains("xz, yz and xy sections"),
+        "{description}"
+    );
+}

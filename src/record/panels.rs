@@ -118,7 +118,7 @@ pub(super) fn record_sections(
         .map(|(panel, &range)| {
             let longest = section::longest_tick(range)
                 .max(section::panel_caption(figure0, panel).chars().count() / 2);
-            let has_strip = figure0.vertical_is_depth && !panel.traction.is_empty();
+            let has_strip = figure0.axes_of(panel).vertical_is_depth && !panel.traction.is_empty();
             Frame::new(panel, has_strip, view_px, longest)
         })
         .collect();
@@ -133,7 +133,7 @@ pub(super) fn record_sections(
                 map: section::panel_colormap(figure0, panel),
                 caption: &caption,
                 range: Some(ranges[k]),
-                surface: figure0.vertical_is_depth,
+                surface: figure0.axes_of(panel).vertical_is_depth,
                 material: &material,
             },
         )?;
@@ -198,7 +198,7 @@ pub(super) fn record_sections(
                     format!("series/{k}/maximum"),
                     &rerun::Scalars::new([e.value]),
                 )?;
-                if figure.vertical_is_depth {
+                if figure.axes_of(panel).vertical_is_depth {
                     stream.log(
                         format!("series/{k}/maximum_depth"),
                         &rerun::Scalars::new([e.v]),
@@ -420,11 +420,12 @@ pub(super) fn log_charts(
         format!("charts/{k}/maximum"),
         &rerun::EncodedImage::from_file_contents(png(&chart)?),
     )?;
-    if figure.vertical_is_depth {
+    let axes = figure.axes_of(&figure.panels[k]);
+    if axes.vertical_is_depth {
         let mut depth = Chart::new(
             &format!("depth of the maximum of {symbol}"),
             &x_label,
-            &figure.z_label,
+            axes.z_label,
         );
         depth.x_range = Some(x_range);
         depth.y_range = Some(headroom((frame.v.0.max(0.0), frame.v.1)));
@@ -458,7 +459,7 @@ pub(super) fn plan_layout(
         let mut name = format!(
             "{} · {} section",
             figure.value_label,
-            scene.figure.section.key()
+            scene.panels[k].section.key()
         );
         if figure.panels.len() > 1 {
             name = format!("panel {}: {name}", k + 1);
@@ -554,7 +555,7 @@ pub(super) fn plan_layout(
                 format!("max, min vs {parameter}{}", panel_suffix(k)),
                 format!("charts/{k}/maximum"),
             )));
-            if figure.vertical_is_depth {
+            if figure.axes_of(&figure.panels[k]).vertical_is_depth {
                 plots.push(Node::View(View::new(
                     ViewKind::Spatial2D(None),
                     format!("depth vs {parameter}{}", panel_suffix(k)),
@@ -616,7 +617,7 @@ pub(super) fn log_material_points(
     for (k, panel) in scene.panels.iter().enumerate() {
         let solution = study::solution(scene, panel)
             .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?;
-        let y = match scene.figure.section {
+        let y = match panel.section {
             crate::scene::SectionKind::Xz => panel.at * unit_over_a,
             _ => 0.0,
         };

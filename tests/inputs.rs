@@ -409,3 +409,68 @@ fn a_periodic_strip_is_refused_at_check() {
         "{message}"
     );
 }
+
+/// `[[panel]] section` (issue 23, item 13): a panel's own plane, refused where it cannot be
+/// drawn, each error naming the key and the fix; and a figure of xz, yz and xy panels accepted.
+#[test]
+fn a_panels_section_is_refused_naming_the_key_and_the_fix() {
+    const POINT: &str = "format = 1\n[contact]\nkind = \"point\"\n";
+    const THERMAL: &str = "format = 1\n[contact]\nkind = \"point\"\nload = \"50 N\"\nfriction = 0.1\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n[thermal]\nspeed = \"1 m/s\"\npartition = \"blok\"\n[sweep]\nparameter = \"peclet\"\nfrom = 0.1\nto = 10.0\nsteps = 3\n";
+    const ROUGH: &str = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 32\nspacing = \"0.5 um\"\nhurst = 0.8\nrolloff = \"8 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\n";
+    let cases: &[(String, &[&str])] = &[
+        (
+            format!("{POINT}[[panel]]\n[[panel]]\nsection = \"xq\"\n"),
+            &["key `panel[1].section`", "unknown section `xq`", "\"yz\" (depth across it)"],
+        ),
+        (
+            "format = 1\n[contact]\nkind = \"line\"\n[[panel]]\nsection = \"yz\"\n".into(),
+            &["key `panel[0].section`", "plane strain", "kind = \"point\""],
+        ),
+        // figure.at is a y: a yz panel needs its own x.
+        (
+            format!("{POINT}[figure]\nat = 0.5\n[[panel]]\n[[panel]]\nsection = \"yz\"\n"),
+            &["key `panel[1].at`", "figure.at is the y of the figure's xz sections", "give panel[1].at, the x of the yz section"],
+        ),
+        // A panel's position along its own plane's normal.
+        (
+            format!("{POINT}[figure]\nsection = \"xy\"\nat = 0.5\n[[panel]]\nsection = \"xz\"\nat = nan\n"),
+            &["key `panel[0].at`", "must be a finite y"],
+        ),
+        (
+            format!("{POINT}[[panel]]\nsection = \"xy\"\nat = -0.5\n"),
+            &["key `panel[0].at`", "z points into the body", "0 is the surface"],
+        ),
+        // The yz section's shape, checked with its own ranges.
+        (
+            format!("{POINT}[figure]\ny = [-0.005, 0.005]\nz = [0.0, 1.0]\n[[panel]]\n[[panel]]\nsection = \"yz\"\n"),
+            &["key `figure.z`", "the yz section would be drawn 100 times as tall"],
+        ),
+        (
+            format!("{POINT}[sweep]\nparameter = \"position\"\nvalues = [0.0, 1.0]\nmaterial_points = [[0.0, 0.5]]\n[[panel]]\n[[panel]]\nsection = \"yz\"\n"),
+            &["key `panel[1].section`", "material points (x, z) lie in xz sections", "remove panel[1].section"],
+        ),
+        (
+            format!("{THERMAL}[[panel]]\nsection = \"xz\"\n"),
+            &["key `panel[0].section`", "Péclet sweep records its own sections", "scene without [sweep]"],
+        ),
+        (
+            format!("{ROUGH}[[panel]]\nsection = \"yz\"\n"),
+            &["key `panel[0].section`", "chooses its own sections", "kind = \"point\" or \"elliptical\""],
+        ),
+    ];
+    let dir = tempfile::tempdir().expect("dir");
+    for (k, (text, fragments)) in cases.iter().enumerate() {
+        let path = dir.path().join(format!("case{k}.toml"));
+        std::fs::write(&path, text).expect("scene");
+        crate::cli::assert_fails_with(&run(&["check", path.to_str().expect("utf8")]), fragments);
+    }
+    // Each panel in its own plane, y drawn by the yz panel.
+    let path = dir.path().join("mixed.toml");
+    std::fs::write(
+        &path,
+        format!("{POINT}[figure]\ny = [-1.0, 1.0]\n[[panel]]\n[[panel]]\nsection = \"yz\"\nat = 0.3\n[[panel]]\nsection = \"xy\"\nat = 0.5\n"),
+    )
+    .expect("scene");
+    let output = run(&["check", path.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+}

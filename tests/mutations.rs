@@ -225,10 +225,7 @@ fn check_accepted(scene: &Scene) -> Result<(), String> {
     }
     let figure = &scene.figure;
     for v in [
-        figure.horizontal.0,
-        figure.horizontal.1,
-        figure.vertical.0,
-        figure.vertical.1,
+        figure.x.0, figure.x.1, figure.y.0, figure.y.1, figure.z.0, figure.z.1,
     ] {
         finite("a figure range", v)?;
     }

@@ -252,3 +252,96 @@ fn assert_no_backticks(contents: &Contents) {
         }
     }
 }
+
+/// A figure of panels in different planes (issue 23, item 13) records each in its own
+/// coordinates: the views name each panel's plane, the maxima are labelled in its coordinates,
+/// and only the depth sections chart the depth of their maximum.
+#[test]
+fn panels_in_different_planes_are_recorded_in_their_own_coordinates() {
+    let scene = scene(
+        r#"
+format = 1
+[contact]
+kind = "point"
+[figure]
+quantity = "von_mises"
+z = [0.0, 1.5]
+resolution = 41
+[[panel]]
+[[panel]]
+section = "yz"
+at = 0.2
+[[panel]]
+section = "xy"
+at = 0.48
+[sweep]
+parameter = "friction"
+values = [0.0, 0.3]
+"#,
+    );
+    let (summary, contents) = record_in_memory(&scene);
+    assert_eq!(summary.panels, 3);
+    let names = contents.view_names();
+    for (k, plane) in ["xz", "yz", "xy"].into_iter().enumerate() {
+        let name = format!("panel {}: σvM / p0 · {plane} section", k + 1);
+        assert!(names.contains(&name), "{name}: {names:?}");
+    }
+    for (k, (across, down)) in [("x = ", "z = "), ("y = ", "z = "), ("x = ", "y = ")]
+        .into_iter()
+        .enumerate()
+    {
+        let labels = contents.labels(&format!("/sections/{k}/maximum/label"));
+        assert_eq!(labels.len(), 2, "{labels:?}");
+        for label in &labels {
+            assert!(
+                label.contains(across) && label.contains(down),
+                "{k}: {label}"
+            );
+        }
+    }
+    for (k, depth) in [(0, true), (1, true), (2, false)] {
+        let steps = usize::from(depth) * 2;
+        let path = format!("/series/{k}/maximum_depth");
+        assert_eq!(contents.scalars(&path, "friction").len(), steps, "{path}");
+        // The native plot of the maximum's depth against μ, for depth sections only.
+        let view = format!("depth vs μ, panel {}", k + 1);
+        assert_eq!(contents.view_names().contains(&view), depth, "{view}");
+    }
+    let description = contents.text_documents().join("\n");
+    assert!(
+        description.contains("3 panel(s) of") && description.contains("xz, yz and xy sections"),
+        "{description}"
+    );
+}
+
+/// Issue 23, colour ranges: a sweep whose field grows by more than a decade takes each step's
+/// own range (its colour bar logged with the step, its title saying so), and panels on the
+/// figure's shared scale share one range, as in the PNG figure.
+#[test]
+fn a_sweep_spanning_decades_takes_each_steps_range_and_panels_share_one_scale() {
+    // p0 grows as W^(1/3): 0.1 N to 1000 N is a factor 21.5 in MPa.
+    let decades = "format = 1\n[contact]\nkind = \"point\"\nload = \"1 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[figure]\nquantity = \"von_mises\"\nlength_unit = \"mm\"\nstress_unit = \"MPa\"\nx = [-1.5, 1.5]\nz = [0.0, 1.5]\nresolution = 41\n[sweep]\nparameter = \"load\"\nvalues = [\"0.1 N\", \"10 N\", \"1000 N\"]\n";
+    let (_, contents) = record_in_memory(&scene(decades));
+    let bars = titles(&contents, "/sections/0/colorbar/labels", "load");
+    assert_eq!(bars.len(), 3, "{bars:?}");
+    let step_titles = titles(&contents, "/sections/0/title", "load");
+    assert_eq!(step_titles.len(), 3, "{step_titles:?}");
+    for (_, title) in &step_titles {
+        assert!(title.contains("(this step's range)"), "{title}");
+    }
+    // Each step's top colour is above its own maximum and below twice it (3 % spare, two
+    // digits rounded up), so the light load is not drawn dark.
+    let maxima = contents.scalars("/series/0/maximum", "load");
+    for ((_, title), (_, max)) in step_titles.iter().zip(&maxima) {
+        let top = number_after(title, "colours 0 to ");
+        assert!(top >= *max && top < 2.0 * max, "{title}: max {max}");
+    }
+    // A sweep within a decade keeps one range: the colour bar is static.
+    let (_, contents) = record_in_memory(&scene(FRICTION_SWEEP));
+    assert!(titles(&contents, "/sections/0/colorbar/labels", "friction").is_empty());
+    // Two panels on the shared scale (sections at y = 0 and y = 0.6a): one colour range.
+    let two = "format = 1\n[contact]\nkind = \"point\"\n[figure]\nquantity = \"von_mises\"\nresolution = 41\n[sweep]\nparameter = \"friction\"\nvalues = [0.0, 0.3]\n[[panel]]\n[[panel]]\nat = 0.6\n";
+    let (_, contents) = record_in_memory(&scene(two));
+    let bar = |k: usize| contents.labels(&format!("/sections/{k}/colorbar/labels"));
+    assert_eq!(bar(0), bar(1));
+}

@@ -493,3 +493,225 @@ fn a_section_marks_the_reports_maximum_or_says_where_it_is() {
         panel.subtitle
     );
 }
+
+/// Panels cut in different planes share one figure and one colour scale (issue 23, item 13):
+/// the shipped groove scene's xz and yz sections through the `hertz` report's maximum
+/// (0.6350 p0 at x = 0.392a, y = 0, z = 0.582a), and a sliding sphere's xz, yz and xy
+/// sections.
+#[test]
+fn panels_in_different_planes_share_one_colour_range_with_their_own_axes() {
+    let (scene, built) = load("ellipse_xz_yz");
+    let [xz, yz] = [&built.panels[0], &built.panels[1]];
+    assert_eq!(
+        built.colour_ranges(),
+        vec![(0..2, (0.0, panel_max(xz).0.max(panel_max(yz).0)))]
+    );
+    assert_eq!(
+        (built.x_label.as_str(), built.z_label.as_str()),
+        ("x (mm)", "z (mm)")
+    );
+    assert_eq!(xz.axes, None);
+    assert_eq!(
+        yz.axes,
+        Some(render::PanelAxes {
+            x_label: "y (mm)".into(),
+            z_label: "z (mm)".into(),
+            vertical_is_depth: true,
+        })
+    );
+    // Each panel over its own plane's range, both through the report's maximum.
+    let (a_mm, p0_mpa) = (
+        scene.contact.half_width_m() * 1e3,
+        scene.contact.p0_pa() * 1e-6,
+    );
+    assert!(xz.x.max < 0.3 && yz.x.max > 0.49, "{:?} {:?}", xz.x, yz.x);
+    for (panel, along) in [(xz, 0.392 * a_mm), (yz, 0.0)] {
+        let (max, u, z) = panel_max(panel);
+        assert!((max / p0_mpa - 0.6350).abs() < 5e-4, "{}", max / p0_mpa);
+        assert!((u - along).abs() < 0.01 * a_mm, "{u} vs {along}");
+        assert!((z / a_mm - 0.582).abs() < 0.02, "{}", z / a_mm);
+    }
+    // The yz panel's tractions run along y over the contact's chord at its x.
+    let chord = scene.contact.aspect * (1.0 - 0.392f64.powi(2)).sqrt() * a_mm;
+    assert!(
+        (yz.half_width - chord).abs() < 0.01 * chord,
+        "{} vs {chord}",
+        yz.half_width
+    );
+
+    // A depth section beside a plane parallel to the surface: one scale, each its own axes.
+    let text = "format = 1\n[contact]\nkind = \"point\"\nfriction = 0.2\n[figure]\nz = [0.0, 1.5]\nresolution = 81\n[[panel]]\nsection = \"xy\"\nat = 0.46\n[[panel]]\n[[panel]]\nsection = \"yz\"\n";
+    let scene = Scene::parse(text, "mixed", "mixed.toml").expect("valid");
+    let built = figure::build(
+        &scene,
+        &stressfield::study::panel_fields(&scene, &|| {}).expect("evaluates"),
+    );
+    let maxima: Vec<f64> = built.panels.iter().map(|p| panel_max(p).0).collect();
+    let largest = maxima.iter().copied().fold(0.0, f64::max);
+    // The sliding sphere's maximum lies off the yz plane: its panel alone would have a lower top.
+    assert!(maxima[2] < largest - 0.005, "{maxima:?}");
+    assert_eq!(built.colour_ranges(), vec![(0..3, (0.0, largest))]);
+    assert_eq!(
+        (built.x_label.as_str(), built.z_label.as_str()),
+        ("x/a", "y/a")
+    );
+    assert!(!built.vertical_is_depth && built.panels[0].traction.is_empty());
+    for (panel, x_label) in [(&built.panels[1], "x/a"), (&built.panels[2], "y/a")] {
+        let axes = built.axes_of(panel);
+        assert_eq!(
+            (axes.x_label, axes.z_label, axes.vertical_is_depth),
+            (x_label, "z/a", true)
+        );
+        assert!(!panel.traction.is_empty());
+    }
+    assert!(
+        built.panels[1].subtitle.starts_with("xz plane, y = 0"),
+        "{}",
+        built.panels[1].subtitle
+    );
+    assert!(
+        built.panels[2].subtitle.starts_with("yz plane, x = 0"),
+        "{}",
+        built.panels[2].subtitle
+    );
+    render::render_png(&built).expect("renders");
+}
+
+/// The yz section of a frictionless sphere is its xz section turned about the axis: σxx in the
+/// yz plane at x = 0.3a is σyy in the xz plane at y = 0.3a (the closed form, to rounding),
+/// where the figure's own xz panel differs.
+#[test]
+fn a_yz_panel_of_a_sphere_is_its_xz_section_turned() {
+    let figure_of = |quantity: &str, panels: &str| {
+        let text = format!("format = 1\n[contact]\nkind = \"point\"\n[figure]\nquantity = \"{quantity}\"\nz = [0.0, 1.5]\nresolution = 81\n{panels}");
+        let scene = Scene::parse(&text, "turned", "turned.toml").expect("valid");
+        figure::build(
+            &scene,
+            &stressfield::study::panel_fields(&scene, &|| {}).expect("evaluates"),
+        )
+    };
+    let mixed = figure_of(
+        "sxx",
+        "[[panel]]\nat = 0.3\n[[panel]]\nsection = \"yz\"\nat = 0.3\n",
+    );
+    let turned = figure_of("syy", "[[panel]]\nat = 0.3\n");
+    let (yz, xz) = (&mixed.panels[1], &turned.panels[0]);
+    assert_eq!((yz.x, yz.z), (xz.x, xz.z));
+    let largest = yz
+        .values
+        .iter()
+        .zip(&xz.values)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(largest < 1e-12, "{largest}");
+    let apart = yz
+        .values
+        .iter()
+        .zip(&mixed.panels[0].values)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(apart > 0.05, "{apart}");
+}
+
+/// Stresses on the axis of a frictionless elliptical Hertz contact (semi-axes `a` along x, `b`
+/// along y, peak pressure 1) at depth `z > 0`: `(σx, σy, σz)`, the principal stresses there.
+///
+/// Love's potentials of a normal pressure p (Johnson, *Contact Mechanics*, 1985, ch. 3): with
+/// `ψ = ∫∫ p/ρ dA` and `∂χ/∂z = ψ`,
+/// `σx = (2ν ∂ψ/∂z − z ∂²ψ/∂x² − (1 − 2ν) ∂²χ/∂x²)/2π` and `σz = (∂ψ/∂z − z ∂²ψ/∂z²)/2π`.
+/// For the Hertz pressure the potential is an integral over the ellipsoidal coordinate:
+/// `ψ = (π a b/2) ∫_λ^∞ (1 − x²/(a² + w) − y²/(b² + w) − z²/w) dw/Δ(w)`,
+/// `Δ = √((a² + w)(b² + w) w)`, `λ = z²` on the axis. So on the axis
+/// `σz = −a b/√((a² + z²)(b² + z²))` and `σx = (a b/2)(−2ν z I + z J_a − (1 − 2ν) L_a)`, with
+/// `I = ∫ dw/(wΔ)`, `J_a = ∫ dw/((a² + w)Δ)`, `L_a = ∫ (√w − z) dw/((a² + w)Δ)` over `w > z²`
+/// (`σy` with b for a): the stresses on the axis that Thomas & Hoersch (1930) gave with
+/// elliptic integrals, here as single integrals. For a = b they are the sphere's closed form
+/// (checked below), and for b = 2a they agree with Boussinesq's point force integrated over
+/// the contact to 1e-13 (checked when written, with mpmath).
+fn ellipse_axis_stresses(a: f64, b: f64, z: f64, nu: f64) -> (f64, f64, f64) {
+    let delta = |w: f64| ((a * a + w) * (b * b + w) * w).sqrt();
+    // ∫_{z²}^∞ f(w) dw with w = z²/t², smooth on t in (0, 1].
+    let integral = |f: &dyn Fn(f64) -> f64| {
+        stressfield::thermal::special::integrate(
+            |t: f64| {
+                if t <= 0.0 {
+                    return 0.0;
+                }
+                let w = z * z / (t * t);
+                f(w) * 2.0 * z * z / (t * t * t)
+            },
+            0.0,
+            1.0,
+            1e-15,
+        )
+    };
+    let i = integral(&|w| 1.0 / (w * delta(w)));
+    let horizontal = |c: f64| {
+        let j = integral(&|w| 1.0 / ((c * c + w) * delta(w)));
+        let l = integral(&|w| (w.sqrt() - z) / ((c * c + w) * delta(w)));
+        0.5 * a * b * (-2.0 * nu * z * i + z * j - (1.0 - 2.0 * nu) * l)
+    };
+    let sz = -a * b / ((a * a + z * z) * (b * b + z * z)).sqrt();
+    (horizontal(a), horizontal(b), sz)
+}
+
+fn von_mises((sx, sy, sz): (f64, f64, f64)) -> f64 {
+    (0.5 * ((sx - sy).powi(2) + (sy - sz).powi(2) + (sz - sx).powi(2))).sqrt()
+}
+
+/// An ellipse's yz section (numerical) peaks on the contact's axis at the closed-form maximum
+/// there, and equals the xz section of the ellipse turned a quarter (semi-axes swapped, the
+/// same grid turned with it).
+#[test]
+fn an_ellipse_yz_panel_peaks_at_the_closed_form_on_its_axis() {
+    // The reference against the sphere's closed form (Hamilton), where a = b.
+    for z in [0.1, 0.48, 1.3] {
+        let (sx, sy, sz) = ellipse_axis_stresses(1.0, 1.0, z, 0.3);
+        let s = stressfield::solution::sphere_hertz::stress_over_p0(0.0, 0.0, z, 0.0, 0.3);
+        for (ours, theirs) in [(sx, s.xx), (sy, s.yy), (sz, s.zz)] {
+            assert!((ours - theirs).abs() < 1e-12, "z = {z}: {ours} vs {theirs}");
+        }
+    }
+    let scene_of = |aspect: f64, panels: &str| {
+        let text = format!("format = 1\n[contact]\nkind = \"elliptical\"\naspect = {aspect}\nmethod = \"numerical\"\n[numerical]\ncells = 127\n{panels}");
+        let scene = Scene::parse(&text, "ellipse", "ellipse.toml").expect("valid");
+        let built = figure::build(
+            &scene,
+            &stressfield::study::panel_fields(&scene, &|| {}).expect("evaluates"),
+        );
+        (scene, built)
+    };
+    let (scene, built) = scene_of(2.0, "[[panel]]\n[[panel]]\nsection = \"yz\"\n");
+    let yz = &built.panels[1];
+    // The closed form's maximum on the axis, by golden-section search.
+    let on_axis = |z: f64| von_mises(ellipse_axis_stresses(1.0, 2.0, z, 0.3));
+    let (mut lo, mut hi) = (0.2, 1.5);
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    while hi - lo > 1e-9 {
+        let (c, d) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+        if on_axis(c) > on_axis(d) {
+            hi = d;
+        } else {
+            lo = c;
+        }
+    }
+    let (z_max, exact) = (0.5 * (lo + hi), on_axis(0.5 * (lo + hi)));
+    let (max, y, z) = panel_max(yz);
+    let cell = 4.0 / 127.0;
+    assert!(y.abs() < 0.5 * cell, "{y}");
+    assert!((z - z_max).abs() < cell, "{z} vs {z_max}");
+    // Measured 3.0e-4 (0.61059 against 0.61077 p0 at z = 0.622a; 127² cells, the nearest row).
+    assert!((max - exact).abs() < 1e-3 * exact, "{max} vs {exact}");
+    assert_eq!(scene.panels[1].at, 0.0);
+    // Off the axis: the xz section of the ellipse with its semi-axes swapped (b/a = 1/2, in
+    // units of its own a, half this one's), sampled at the same points turned.
+    let (_, turned) = scene_of(0.5, "");
+    let xz = &turned.panels[0];
+    assert_eq!(xz.values.dim(), yz.values.dim());
+    assert!((2.0 * xz.x.max - yz.x.max).abs() < 1e-12 && (2.0 * xz.z.max - yz.z.max).abs() < 1e-12);
+    let largest = yz
+        .values
+        .iter()
+        .zip(&xz.values)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    // Measured 9e-16: the same sums in another order.
+    assert!(largest < 1e-12, "{largest}");
+}

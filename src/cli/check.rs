@@ -41,14 +41,23 @@ fn check_summary(scene: &Scene) -> String {
             };
             format!("{kind}, {nx} x {ny} samples")
         }
-        (None, Some(panel)) => {
-            let plane = study::plane(scene, panel);
-            format!(
-                "{} panel(s), {} x {} points each",
-                scene.panels.len(),
-                plane.u.count,
-                plane.v.count
-            )
+        (None, Some(_)) => {
+            let sizes: Vec<(usize, usize)> = scene
+                .panels
+                .iter()
+                .map(|panel| {
+                    let plane = study::plane(scene, panel);
+                    (plane.u.count, plane.v.count)
+                })
+                .collect();
+            let text = |(u, v): (usize, usize)| format!("{u} x {v}");
+            if sizes.iter().all(|s| *s == sizes[0]) {
+                format!("{} panel(s), {} points each", sizes.len(), text(sizes[0]))
+            } else {
+                // Panels in different planes (or on another grid): each its own.
+                let all: Vec<String> = sizes.into_iter().map(text).collect();
+                format!("{} panel(s), {} points", all.len(), all.join(", "))
+            }
         }
         (None, None) => "no panels".into(),
     }

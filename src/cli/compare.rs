@@ -122,8 +122,9 @@ pub struct Rendered<'a> {
     pub field: Option<&'a [PanelField]>,
     /// The figure's stress unit, e.g. "p0" or "MPa".
     pub stress_unit: &'a str,
-    /// The figure's coordinate labels, e.g. "x/a" and "z/a", or "x (mm)" and "z (mm)".
-    pub axes: [String; 2],
+    /// Each panel's coordinate labels, e.g. "x/a" and "z/a", or "x (mm)" and "z (mm)" (panels
+    /// cut in different planes have different ones).
+    pub axes: Vec<[String; 2]>,
 }
 
 /// A reference file: its bytes, or `None` when it does not exist; at most
@@ -272,7 +273,7 @@ fn field_check(
     let mismatch = |why: String| FieldCheck {
         tolerance: options.field_tolerance,
         unit: rendered.stress_unit.to_string(),
-        axes: rendered.axes.clone(),
+        axes: rendered.axes.first().cloned().unwrap_or_default(),
         largest: None,
         mismatch: Some(why),
     };
@@ -282,14 +283,23 @@ fn field_check(
             path.display()
         ));
     };
+    let axes_of = |k: usize| rendered.axes.get(k).cloned().unwrap_or_default();
     match field_file::decode(bytes) {
-        Ok(reference) => field_file::compare(
-            actual,
-            &reference,
-            options.field_tolerance,
-            rendered.stress_unit,
-            [&rendered.axes[0], &rendered.axes[1]],
-        ),
+        Ok(reference) => {
+            let first = axes_of(0);
+            let mut check = field_file::compare(
+                actual,
+                &reference,
+                options.field_tolerance,
+                rendered.stress_unit,
+                [&first[0], &first[1]],
+            );
+            // The place of the largest difference in its own panel's coordinates.
+            if let Some(largest) = &check.largest {
+                check.axes = axes_of(largest.panel);
+            }
+            check
+        }
         Err(e) => mismatch(format!("{}: {e}", path.display())),
     }
 }

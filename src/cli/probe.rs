@@ -109,6 +109,8 @@ pub(super) fn probe_command(args: &ProbeArgs) -> Result<()> {
                 },
                 friction: mu,
                 poisson: nu,
+                // Probed at points, not on a section.
+                section: scene.figure.section,
                 at: 0.0,
                 subtitle: None,
             };

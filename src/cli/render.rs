@@ -100,11 +100,15 @@ pub(super) fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOpti
                         png: &output.png,
                         field: output.field.as_deref(),
                         stress_unit: scene.figure.stress_unit.symbol(),
-                        axes: {
-                            let (horizontal, vertical, _) = scene.figure.section.coordinates();
-                            let unit = scene.figure.length_unit;
-                            [unit.axis_label(horizontal), unit.axis_label(vertical)]
-                        },
+                        axes: scene
+                            .panels
+                            .iter()
+                            .map(|panel| {
+                                let (horizontal, vertical, _) = panel.section.coordinates();
+                                let unit = scene.figure.length_unit;
+                                [unit.axis_label(horizontal), unit.axis_label(vertical)]
+                            })
+                            .collect(),
                     };
                     let outcome = compare::check_scene(&rendered, compare, out_dir);
                     say(&bar, outcome.line());

@@ -11,7 +11,7 @@ pub mod thermal;
 
 use crate::field::{FieldError, Plane, Section};
 use crate::io::text;
-use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
+use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelAxes, PanelScale, TractionSample};
 use crate::scene::{ContactKind, LengthUnit, Method, PanelSpec, Scene, SectionKind, StressUnit};
 use crate::study;
 
@@ -91,6 +91,8 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
     let spec = &scene.figure;
     let units = study::DisplayUnits::of(scene);
     let (length_per_a, stress_per_p0) = (units.length_per_a, units.stress_per_p0);
+    // The figure's axes are the first panel's; a panel in another plane brings its own.
+    let first_section = scene.panels.first().map_or(spec.section, |p| p.section);
 
     let mut panels = Vec::with_capacity(scene.panels.len());
     for (panel, computed) in scene.panels.iter().zip(fields) {
@@ -212,18 +214,25 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
                     x: u * length_per_a,
                     z: v * length_per_a,
                 }),
+            // A panel cut in another plane than the first keeps the colour scale, with its own
+            // axes.
+            axes: (panel.section != first_section).then(|| axes(spec.length_unit, panel.section)),
         });
     }
     let mark = spec.mark.unwrap_or_else(|| auto_mark(&panels));
     let any_friction = panels.iter().flat_map(|p| &p.traction).any(|s| s.q != 0.0);
-    let (horizontal, vertical, _) = spec.section.coordinates();
+    let PanelAxes {
+        x_label,
+        z_label,
+        vertical_is_depth,
+    } = axes(spec.length_unit, first_section);
     Figure {
         title: title(scene),
         panels,
         value_label: spec.stress_unit.label(spec.quantity.symbol()),
-        x_label: spec.length_unit.axis_label(horizontal),
-        z_label: spec.length_unit.axis_label(vertical),
-        vertical_is_depth: spec.section.vertical_is_depth(),
+        x_label,
+        z_label,
+        vertical_is_depth,
         traction_label: spec
             .stress_unit
             .label(if any_friction { "p, q" } else { "p" }),
@@ -231,6 +240,17 @@ pub fn build(scene: &Scene, fields: &[study::panels::PanelField]) -> Figure {
         levels: spec.levels.clone(),
         mark,
         panel_width_px: spec.width_px,
+    }
+}
+
+/// The axes of a section drawn in `unit`: `x/a` and `z/a` (depth down) for xz, `y/a` and
+/// `z/a` for yz, `x/a` and `y/a` (y up) for xy.
+fn axes(unit: LengthUnit, section: SectionKind) -> PanelAxes {
+    let (horizontal, vertical, _) = section.coordinates();
+    PanelAxes {
+        x_label: unit.axis_label(horizontal),
+        z_label: unit.axis_label(vertical),
+        vertical_is_depth: section.vertical_is_depth(),
     }
 }
 
@@ -354,11 +374,11 @@ fn contact_outline(kind: ContactKind, aspect: f64) -> Vec<(f64, f64)> {
 
 /// Which plane a panel shows, for point contacts (a line contact is the same in every xz
 /// plane, so its panels need no such label): e.g. "xz plane, y = 0.5a" or "surface z = 0".
-fn section_label(scene: &Scene, plane: &Plane) -> Option<String> {
+fn section_label(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> Option<String> {
     if scene.contact.kind == ContactKind::Line {
         return None;
     }
-    let section = scene.figure.section;
+    let section = panel.section;
     let (_, _, normal) = section.coordinates();
     // The plane's own position (a numerical panel lies on the nearest row of cell centres).
     let at_over_a = match plane.section {
@@ -435,7 +455,7 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
         }
         (Method::Difference, _) => parts.push("numerical − closed form".into()),
     }
-    parts.extend(section_label(scene, plane));
+    parts.extend(section_label(scene, panel, plane));
     // Tractions from a file carry their own shear, and a and p0 are only the figure's units.
     let from_file = scene.contact.kind == ContactKind::Tractions;
     if !from_file {
@@ -478,6 +498,7 @@ mod tests {
             outlines: Vec::new(),
             scale: None,
             peak: None,
+            axes: None,
         }
     }
 

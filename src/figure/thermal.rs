@@ -40,6 +40,7 @@ pub(crate) fn map(
             outlines,
             scale: None,
             peak: None,
+            axes: None,
         }],
         value_label: value_label.into(),
         x_label: "x (µm)".into(),

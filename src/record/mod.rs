@@ -376,8 +376,20 @@ pub fn describe(scene: &Scene) -> String {
         "# {}\n\n",
         scene.title.clone().unwrap_or_else(|| scene.name.clone())
     );
+    // The panels' planes, each once: "xz section", "xz and yz sections".
+    let mut sections: Vec<&str> = Vec::new();
+    for panel in &scene.panels {
+        if !sections.contains(&panel.section.key()) {
+            sections.push(panel.section.key());
+        }
+    }
+    let sections = match sections.as_slice() {
+        [one] => format!("{one} section"),
+        [init @ .., last] => format!("{} and {last} sections", init.join(", ")),
+        [] => format!("{} section", scene.figure.section.key()),
+    };
     text.push_str(&format!(
-        "Scene `{}`: {} panel(s) of {} ({}), {} section.\n\n",
+        "Scene `{}`: {} panel(s) of {} ({}), {sections}.\n\n",
         scene.name,
         scene.panels.len(),
         scene.figure.quantity.description(),
@@ -385,7 +397,6 @@ pub fn describe(scene: &Scene) -> String {
             .figure
             .stress_unit
             .label(scene.figure.quantity.symbol()),
-        scene.figure.section.key(),
     ));
     if let Some(sweep) = &scene.sweep {
         let first = sweep.describe(0, scene);

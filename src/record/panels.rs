@@ -66,6 +66,8 @@ pub(super) fn record_sections(
     // The colour ranges from a coarse preview of every step.
     let coarse = preview(scene);
     let mut spans = vec![(f64::INFINITY, f64::NEG_INFINITY); panels];
+    // Each step's own spans too: a sweep whose field grows by decades takes each step's range.
+    let mut step_spans = Vec::with_capacity(steps);
     let mut volume_largest = 0.0f64;
     // The largest traction of the sweep: the strip above the map keeps one scale, so the
     // profiles grow with the load (issue 23, item 8).
@@ -73,14 +75,14 @@ pub(super) fn record_sections(
     for step in 0..steps {
         let coarse_step = step_scene(&coarse, step)?;
         let figure = figure::build(&coarse_step, &study::panel_fields(&coarse_step, &|| {})?);
-        for (span, panel) in spans.iter_mut().zip(&figure.panels) {
-            for &v in panel.values.iter().filter(|v| v.is_finite()) {
-                *span = (span.0.min(v), span.1.max(v));
-            }
+        let own: Vec<(f64, f64)> = figure.panels.iter().map(panel_span).collect();
+        for ((span, own), panel) in spans.iter_mut().zip(&own).zip(&figure.panels) {
+            *span = (span.0.min(own.0), span.1.max(own.1));
             for sample in &panel.traction {
                 traction_peak = traction_peak.max(sample.p.abs()).max(sample.q.abs());
             }
         }
+        step_spans.push(shared_scale(&figure.panels, own));
         if let Some(spec) = &scene.volume {
             let grid = study::volume::evaluate(&coarse_step, spec, (spec.points / 2).max(9))?;
             volume_largest = volume_largest.max(grid.largest());
@@ -93,15 +95,21 @@ pub(super) fn record_sections(
         &study::panel_fields(&first_scene, on_row)?,
     ));
     let figure0 = first.as_ref().expect("just built");
-    let ranges: Vec<(f64, f64)> = figure0
-        .panels
-        .iter()
-        .zip(&spans)
-        .map(|(panel, &(lo, hi))| {
-            let map = section::panel_colormap(figure0, panel);
-            colour_range(map, lo, hi, panel.scale.as_ref().and_then(|s| s.range))
-        })
-        .collect();
+    let range_of = |spans: &[(f64, f64)]| -> Vec<(f64, f64)> {
+        figure0
+            .panels
+            .iter()
+            .zip(spans)
+            .map(|(panel, &(lo, hi))| {
+                let map = section::panel_colormap(figure0, panel);
+                colour_range(map, lo, hi, panel.scale.as_ref().and_then(|s| s.range))
+            })
+            .collect()
+    };
+    let ranges = range_of(&shared_scale(&figure0.panels, spans));
+    // Decided on the preview; each step's range then comes from its own full-resolution field
+    // (a coarse preview can miss a small contact's peak).
+    let per_step = spans_decades(&step_spans);
     let view_px = section_view_px(scene);
     // The panels as drawn (a map seen from above with y up), and the material points there.
     let shown0: Vec<Panel> = figure0
@@ -125,7 +133,7 @@ pub(super) fn record_sections(
         .map(|(panel, &range)| {
             let longest = section::longest_tick(range)
                 .max(section::panel_caption(figure0, panel).chars().count() / 2);
-            let has_strip = figure0.vertical_is_depth && !panel.traction.is_empty();
+            let has_strip = figure0.axes_of(panel).vertical_is_depth && !panel.traction.is_empty();
             Frame::new(panel, has_strip, view_px, longest)
         })
         .collect();
@@ -139,8 +147,9 @@ pub(super) fn record_sections(
             &section::Fixed {
                 map: section::panel_colormap(figure0, panel),
                 caption: &caption,
-                range: Some(ranges[k]),
-                surface: figure0.vertical_is_depth,
+                // Per-step ranges: the colour bar is logged with each step.
+                range: (!per_step).then_some(ranges[k]),
+                surface: figure0.axes_of(panel).vertical_is_depth,
                 material: &material,
             },
         )?;
@@ -181,9 +190,41 @@ pub(super) fn record_sections(
                 &rerun::Scalars::new([sweep.values[step]]),
             )?;
         }
+        let step_ranges: Option<Vec<(f64, f64)>> = per_step.then(|| {
+            let own = figure.panels.iter().map(panel_span).collect();
+            shared_scale(&figure.panels, own)
+                .into_iter()
+                .zip(&figure.panels)
+                .map(|((lo, hi), panel)| {
+                    let map = section::panel_colormap(&figure, panel);
+                    colour_range(map, lo, hi, panel.scale.as_ref().and_then(|s| s.range))
+                })
+                .collect()
+        });
         for (k, panel) in figure.panels.iter().enumerate() {
-            let panel_title = step_title(scene, step, &title, &figure, panel);
+            let mut panel_title = step_title(scene, step, &title, &figure, panel);
             let shown = section::displayed(&figure, panel);
+            let range = match &step_ranges {
+                Some(step_ranges) => {
+                    let range = step_ranges[k];
+                    section::log_colour_bar(
+                        stream,
+                        section::When::Step,
+                        &format!("sections/{k}"),
+                        &frames[k],
+                        section::panel_colormap(&figure, panel),
+                        &section::panel_caption(&figure, panel),
+                        range,
+                    )?;
+                    panel_title.push_str(&format!(
+                        ",  colours {} to {} (this step's range)",
+                        section::short(range.0),
+                        section::short(range.1)
+                    ));
+                    range
+                }
+                None => ranges[k],
+            };
             section::log_step(
                 stream,
                 section::When::Step,
@@ -191,7 +232,7 @@ pub(super) fn record_sections(
                 &frames[k],
                 &figure,
                 &shown,
-                ranges[k],
+                range,
                 &section::Changing {
                     title: &panel_title,
                     notation: &section::Notation::of(&figure, panel),
@@ -208,7 +249,7 @@ pub(super) fn record_sections(
                     format!("series/{k}/maximum"),
                     &rerun::Scalars::new([e.value]),
                 )?;
-                if figure.vertical_is_depth {
+                if figure.axes_of(panel).vertical_is_depth {
                     stream.log(
                         format!("series/{k}/maximum_depth"),
                         &rerun::Scalars::new([e.v]),
@@ -234,6 +275,56 @@ pub(super) fn record_sections(
         panels,
         volume_triangles,
     })
+}
+
+/// A panel's smallest and largest finite values, its located peak included (a peak between
+/// coarse samples, under a small contact, may be well above them).
+fn panel_span(panel: &Panel) -> (f64, f64) {
+    let peak = panel.peak.map(|p| p.value);
+    panel
+        .values
+        .iter()
+        .chain(peak.as_ref())
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+            (a.min(v), b.max(v))
+        })
+}
+
+/// The spans of panels drawn on the figure's shared colour scale (`scale: None`) joined into
+/// one, as the PNG figure draws them; a panel with a scale of its own keeps its span.
+fn shared_scale(panels: &[Panel], spans: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    let joined = panels
+        .iter()
+        .zip(&spans)
+        .filter(|(p, _)| p.scale.is_none())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), (_, s)| {
+            (a.min(s.0), b.max(s.1))
+        });
+    panels
+        .iter()
+        .zip(spans)
+        .map(|(p, s)| if p.scale.is_none() { joined } else { s })
+        .collect()
+}
+
+/// Whether a sweep's field grows by a decade or more from step to step (the largest magnitude
+/// of a panel's step spans, its largest against its smallest, over 10): then one colour range
+/// would leave the first steps dark, and each step takes its own (said in its title).
+fn spans_decades(step_spans: &[Vec<(f64, f64)>]) -> bool {
+    let panels = step_spans.first().map_or(0, Vec::len);
+    step_spans.len() > 1
+        && (0..panels).any(|k| {
+            let sizes: Vec<f64> = step_spans
+                .iter()
+                .map(|s| s[k].0.abs().max(s[k].1.abs()))
+                .filter(|m| m.is_finite())
+                .collect();
+            let (lo, hi) = sizes
+                .iter()
+                .fold((f64::INFINITY, 0.0f64), |(a, b), &m| (a.min(m), b.max(m)));
+            hi > 0.0 && hi > 10.0 * lo
+        })
 }
 
 /// The title row of a panel at a step: the step and its parameter, then the rest of the
@@ -358,7 +449,7 @@ pub(super) fn plan_layout(
         let mut name = format!(
             "{} · {} section",
             figure.value_label,
-            scene.figure.section.key()
+            scene.panels[k].section.key()
         );
         if figure.panels.len() > 1 {
             name = format!("panel {}: {name}", k + 1);
@@ -463,7 +554,7 @@ pub(super) fn plan_layout(
                 )
                 .with_contents(&["$origin/maximum", "$origin/minimum"]),
             ));
-            if figure.vertical_is_depth {
+            if figure.axes_of(&figure.panels[k]).vertical_is_depth {
                 plots.push(Node::View(
                     View::new(
                         ViewKind::TimeSeries,
@@ -522,7 +613,7 @@ pub(super) fn log_material_points(
     for (k, panel) in scene.panels.iter().enumerate() {
         let solution = study::solution(scene, panel)
             .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?;
-        let y = match scene.figure.section {
+        let y = match panel.section {
             crate::scene::SectionKind::Xz => panel.at * unit_over_a,
             _ => 0.0,
         };

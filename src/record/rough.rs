@@ -203,6 +203,7 @@ pub fn record(
             outlines: Vec::new(),
             scale: None,
             peak: None,
+            axes: None,
         });
         let shown = section::displayed(&map, &map.panels[0]);
         Frame::new(&shown, false, view_px, 6)
@@ -222,6 +223,7 @@ pub fn record(
             outlines: Vec::new(),
             scale: None,
             peak: None,
+            axes: None,
         };
         Frame::new(&shown, false, view_px, 6)
     });
@@ -492,6 +494,7 @@ fn log_load_sweep(
             outlines,
             scale: None,
             peak: None,
+            axes: None,
         });
         let shown = section::displayed(&figure, &figure.panels[0]);
         if k == 0 {

@@ -85,6 +85,7 @@ pub(super) fn log_depth_steps(
                 outlines: Vec::new(),
                 scale: None,
                 peak: None,
+                axes: None,
             }],
             value_label: scene.figure.stress_unit.label(quantity.symbol()),
             x_label: "x (µm)".into(),

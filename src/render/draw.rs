@@ -8,7 +8,7 @@ use super::layout::{ColorbarLayout, Layout, PanelLayout};
 use super::paint::{Align, Painter};
 use super::plan::{marker_radius, PanelPlan, Plan, TextBox};
 use super::scales::ScaleGroup;
-use super::{Figure, Panel, RenderError};
+use super::{AxesOf, Figure, Panel, RenderError};
 
 const INK: RGBAColor = RGBAColor(0, 0, 0, 1.0);
 const TEXT: RGBAColor = RGBAColor(20, 20, 20, 1.0);
@@ -57,7 +57,6 @@ pub(crate) fn draw<DB: DrawingBackend>(
         .zip(&plan.panels)
         .enumerate()
     {
-        let first = index == 0;
         for line in &pp.contours {
             painter.stroke(line, pens.contour, CONTOUR)?;
         }
@@ -70,9 +69,9 @@ pub(crate) fn draw<DB: DrawingBackend>(
                 INK,
             )?;
         }
-        map_axes(painter, figure, layout, pl, first, &pens)?;
-        if layout.has_strips {
-            strip(painter, figure, layout, pl, pp, panel, first, &pens)?;
+        map_axes(painter, figure.axes_of(panel), layout, pl, &pens)?;
+        if pl.strip_drawn {
+            strip(painter, figure, layout, pl, pp, panel, &pens)?;
         }
         for label in &pp.contour_labels {
             text_box(painter, label)?;
@@ -126,13 +125,13 @@ fn rotated_baseline(centre: f64, size: f64) -> f64 {
     centre + (font::ascent(size) - font::descent(size)) / 2.0
 }
 
-/// The frame, ticks, numbers and axis labels of a map.
+/// The frame, ticks, numbers and axis labels of a map (the vertical one where the panel starts
+/// new axes).
 fn map_axes<DB: DrawingBackend>(
     painter: &mut Painter<'_, DB>,
-    figure: &Figure,
+    axes: AxesOf<'_>,
     layout: &Layout,
     pl: &PanelLayout,
-    first: bool,
     pens: &Pens,
 ) -> Result<(), RenderError> {
     let s = layout.sizes.tick;
@@ -168,23 +167,22 @@ fn map_axes<DB: DrawingBackend>(
     let (centre_x, centre_z) = map.center();
     let size = layout.sizes.label;
     painter.text(
-        &figure.x_label,
+        axes.x_label,
         (centre_x, pl.x_label_baseline),
         size,
         Align::Center,
         false,
         TEXT,
     )?;
-    if first {
+    if pl.new_axes {
         let at = (rotated_baseline(pl.rotated_label_x, size), centre_z);
-        painter.text(&figure.z_label, at, size, Align::Center, true, TEXT)?;
+        painter.text(axes.z_label, at, size, Align::Center, true, TEXT)?;
     }
     Ok(())
 }
 
 /// The traction strip above a map: p(x) (filled below), q(x) dashed, contact edges, its axis
-/// and legend.
-#[allow(clippy::too_many_arguments)]
+/// and legend (and its caption where the panel starts new axes).
 fn strip<DB: DrawingBackend>(
     painter: &mut Painter<'_, DB>,
     figure: &Figure,
@@ -192,7 +190,6 @@ fn strip<DB: DrawingBackend>(
     pl: &PanelLayout,
     pp: &PanelPlan,
     panel: &Panel,
-    first: bool,
     pens: &Pens,
 ) -> Result<(), RenderError> {
     let s = layout.sizes.tick;
@@ -236,7 +233,7 @@ fn strip<DB: DrawingBackend>(
         let end = left - layout.tick_length - layout.tick_gap;
         painter.text(label, (end, y + cap / 2.0), s, Align::Right, false, TEXT)?;
     }
-    if first {
+    if pl.new_axes {
         let size = layout.sizes.label;
         let at = (rotated_baseline(pl.rotated_label_x, size), strip.center().1);
         painter.text(&figure.traction_label, at, size, Align::Center, true, TEXT)?;

@@ -93,6 +93,13 @@ pub(crate) struct PanelLayout {
     pub z_max: f64,
     /// Whether `z` grows downwards (a depth) or upwards.
     pub z_down: bool,
+    /// Whether the panel draws its traction strip (a figure with strips: every panel but a
+    /// plane parallel to the surface beside depth sections).
+    pub strip_drawn: bool,
+    /// Whether the vertical axis's caption (and the strip's) is drawn left of this panel: the
+    /// first panel, and one whose vertical axis or strip differs from its left neighbour's
+    /// (an xy section beside an xz one).
+    pub new_axes: bool,
 }
 
 impl PanelLayout {
@@ -219,6 +226,9 @@ impl Layout {
         // Tractions: one range for all strips, so panels compare at a glance. A figure whose
         // panels carry no traction profile (a plane parallel to the surface) has no strips.
         let has_strips = figure.panels.iter().any(|p| !p.traction.is_empty());
+        // Panels cut in different planes (their maps differ in shape): each horizontal caption
+        // under its own map, the colour bars as tall as their tallest map.
+        let mixed = figure.panels.iter().any(|p| p.axes.is_some());
         let (t_min, t_max) = traction_range(&figure.panels);
         let (strip_h, strip_ticks) = if has_strips {
             let traction_label_w = font::text_width(&figure.traction_label, sizes.label)?;
@@ -231,16 +241,43 @@ impl Layout {
             (0.0, Ticks::default())
         };
 
+        // Which panels draw a strip, and which start new vertical axes (their captions drawn
+        // left of them): panels cut in different planes may share a figure.
+        let strip_drawn: Vec<bool> = figure
+            .panels
+            .iter()
+            .map(|p| has_strips && (figure.axes_of(p).vertical_is_depth || !p.traction.is_empty()))
+            .collect();
+        let new_axes: Vec<bool> = (0..count)
+            .map(|i| {
+                i == 0
+                    || figure.axes_of(&figure.panels[i]).z_label
+                        != figure.axes_of(&figure.panels[i - 1]).z_label
+                    || (strip_drawn[i] && !strip_drawn[i - 1])
+            })
+            .collect();
+
         // Per-panel ticks and the width of the axis text left of each map.
         let mut axes = Vec::with_capacity(count);
-        for (panel, &map_h) in figure.panels.iter().zip(&map_heights) {
+        for ((panel, &map_h), &strip) in figure.panels.iter().zip(&map_heights).zip(&strip_drawn) {
             let x_ticks = horizontal_ticks(panel.x.min, panel.x.max, map_w, s);
             let z_ticks = vertical_ticks(panel.z.min, panel.z.max, map_h, tick_cap);
-            let widest = widest(&z_ticks.labels, s)?.max(widest(&strip_ticks.labels, s)?);
+            let mut widest = widest(&z_ticks.labels, s)?;
+            if strip {
+                widest = widest.max(self::widest(&strip_ticks.labels, s)?);
+            }
             axes.push((x_ticks, z_ticks, widest));
         }
         let gutter = |widest: f64| tick_length + tick_gap + widest;
         let rotated_column = label_line + 0.5 * s;
+        // Room for the captions of a panel that starts new axes after the first.
+        let captions = |i: usize| {
+            if i > 0 && new_axes[i] {
+                rotated_column
+            } else {
+                0.0
+            }
+        };
 
         // A subtitle at most three times its map's width, a title twice the maps' width; each
         // at least about eighty characters' worth (an average glyph is about 0.6 em).
@@ -267,7 +304,7 @@ impl Layout {
         for group in groups {
             for i in group.panels.clone() {
                 if i > 0 {
-                    let mut gap = 1.3 * s + gutter(axes[i].2);
+                    let mut gap = 1.3 * s + gutter(axes[i].2) + captions(i);
                     // Neighbouring subtitles keep a gap of one tick size.
                     let needed = (subtitle_widths[i - 1] + subtitle_widths[i]) / 2.0 + s - map_w;
                     gap = gap.max(needed);
@@ -275,14 +312,24 @@ impl Layout {
                     // After a colour bar: a wider gap than between panels, so that the bar reads
                     // as part of the group on its left, then this panel's axis numbers.
                     if let Some(bar) = colorbars.last().filter(|_| i == group.panels.start) {
-                        x = x.max(bar.right(label_line) + 2.5 * s + gutter(axes[i].2));
+                        x = x
+                            .max(bar.right(label_line) + 2.5 * s + gutter(axes[i].2) + captions(i));
                     }
                 }
                 map_x.push(x.round());
                 maps_right = x + map_w;
             }
             let bar_x = (maps_right + 1.2 * s).round();
-            let bar_h = map_heights[group.panels.start];
+            // As tall as the group's first map; maps cut in different planes differ in shape,
+            // and the bar then spans the tallest.
+            let bar_h = if mixed {
+                map_heights[group.panels.clone()]
+                    .iter()
+                    .copied()
+                    .fold(0.0, f64::max)
+            } else {
+                map_heights[group.panels.start]
+            };
             let ticks = vertical_ticks(group.scale.lo, group.scale.hi, bar_h, tick_cap);
             let text = widest(&ticks.labels, s)?;
             let label_x =
@@ -332,8 +379,10 @@ impl Layout {
         let strip_y = y.round();
         let strip_gap = if has_strips { (1.1 * s).round() } else { 0.0 };
         let map_y = strip_y + strip_h + strip_gap;
-        let x_tick_label_bottom = map_y + tallest + tick_length + tick_gap + tick_cap;
-        let x_label_baseline = x_tick_label_bottom + 0.7 * s + font::ascent(sizes.label);
+        let label_baseline = |map_h: f64| {
+            map_y + map_h + tick_length + tick_gap + tick_cap + 0.7 * s + font::ascent(sizes.label)
+        };
+        let x_label_baseline = label_baseline(tallest);
         let height = x_label_baseline + font::descent(sizes.label) + margin;
         if width > MAX_SIDE_PX || height > MAX_SIDE_PX {
             return Err(RenderError::Draw(format!(
@@ -347,7 +396,8 @@ impl Layout {
             .iter()
             .zip(axes)
             .zip(map_x.iter().zip(&map_heights))
-            .map(|((panel, (x_ticks, z_ticks, widest)), (&mx, &mh))| {
+            .enumerate()
+            .map(|(i, ((panel, (x_ticks, z_ticks, widest)), (&mx, &mh)))| {
                 let mx = mx + shift;
                 PanelLayout {
                     map: rect(mx, map_y, map_w, mh),
@@ -356,12 +406,18 @@ impl Layout {
                     z_ticks,
                     strip_ticks: strip_ticks.clone(),
                     rotated_label_x: mx - gutter(widest) - 0.5 * s - label_line / 2.0,
-                    x_label_baseline,
+                    x_label_baseline: if mixed {
+                        label_baseline(mh)
+                    } else {
+                        x_label_baseline
+                    },
                     x_min: panel.x.min,
                     x_max: panel.x.max,
                     z_min: panel.z.min,
                     z_max: panel.z.max,
-                    z_down: figure.vertical_is_depth,
+                    z_down: figure.axes_of(panel).vertical_is_depth,
+                    strip_drawn: strip_drawn[i],
+                    new_axes: new_axes[i],
                 }
             })
             .collect();

@@ -429,8 +429,9 @@ fn marker_text(
         .as_ref()
         .map_or(figure.value_label.as_str(), |s| s.value_label.as_str());
     let (_, unit) = super::name_and_unit(caption);
-    let (horizontal, length) = super::name_and_unit(&figure.x_label);
-    let (vertical, _) = super::name_and_unit(&figure.z_label);
+    let axes = figure.axes_of(panel);
+    let (horizontal, length) = super::name_and_unit(axes.x_label);
+    let (vertical, _) = super::name_and_unit(axes.z_label);
     let span = (panel.x.max - panel.x.min)
         .abs()
         .max((panel.z.max - panel.z.min).abs());
@@ -690,6 +691,7 @@ mod tests {
                 outlines: Vec::new(),
                 scale: None,
                 peak: None,
+                axes: None,
             }],
             value_label: value_label.into(),
             x_label: x_label.into(),

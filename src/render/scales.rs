@@ -105,6 +105,17 @@ pub(crate) fn scale_groups(figure: &Figure) -> Vec<ScaleGroup<'_>> {
         .collect()
 }
 
+impl Figure {
+    /// The colour ranges the figure is drawn with: one `(panels, (lo, hi))` per group of
+    /// consecutive panels sharing a colour scale (one colour bar each), left to right.
+    pub fn colour_ranges(&self) -> Vec<(Range<usize>, (f64, f64))> {
+        scale_groups(self)
+            .into_iter()
+            .map(|group| (group.panels, (group.scale.lo, group.scale.hi)))
+            .collect()
+    }
+}
+
 /// What a panel asks of its colour scale.
 #[derive(PartialEq)]
 struct Scale<'f> {

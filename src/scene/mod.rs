@@ -250,7 +250,7 @@ mod tests {
         assert_eq!(scene.figure.length_unit, LengthUnit::Millimetre);
         assert_eq!(scene.figure.stress_unit, StressUnit::MegaPascal);
         // Default range ±2.5a, given in mm.
-        assert!((scene.figure.horizontal.1 - 0.625).abs() < 1e-12);
+        assert!((scene.figure.x.1 - 0.625).abs() < 1e-12);
         let explicit =
             parse("format = 1\n[contact]\nkind = \"line\"\na = 1\np0 = 1\n").expect("valid");
         assert_eq!(explicit.contact.scale, None);

@@ -202,6 +202,8 @@ pub struct RawFigure {
 #[serde(deny_unknown_fields)]
 pub struct RawPanel {
     pub method: Option<String>,
+    /// "xz", "yz" or "xy": this panel's section plane (default: the figure's).
+    pub section: Option<String>,
     pub at: Option<f64>,
     pub friction: Option<f64>,
     pub poisson: Option<f64>,

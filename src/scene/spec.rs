@@ -402,13 +402,15 @@ impl SectionKind {
 #[derive(Clone, Debug, PartialEq)]
 pub struct FigureSpec {
     pub quantity: Quantity,
+    /// The section of the panels that do not choose their own (`[[panel]] section`).
     pub section: SectionKind,
-    /// Range along the horizontal axis (x, or y for a yz section), in `length_unit`.
-    pub horizontal: (f64, f64),
-    /// Range along the vertical axis (depth z, or y for an xy section), in `length_unit`.
-    pub vertical: (f64, f64),
-    /// Whether the scene gave the vertical range (`[figure] z` of an xz section): a rough
-    /// scene's section otherwise takes its depth from the solved contact.
+    /// Ranges along x, y and the depth z (given or defaulted), in `length_unit`: each panel's
+    /// section draws the two in its plane ([`FigureSpec::ranges`]).
+    pub x: (f64, f64),
+    pub y: (f64, f64),
+    pub z: (f64, f64),
+    /// Whether the scene gave the depth range (`[figure] z`): a rough scene's section
+    /// otherwise takes its depth from the solved contact.
     pub depth_given: bool,
     pub length_unit: LengthUnit,
     pub stress_unit: StressUnit,
@@ -420,6 +422,18 @@ pub struct FigureSpec {
     pub mark: Option<Mark>,
     pub width_px: u32,
     pub svg: bool,
+}
+
+impl FigureSpec {
+    /// The horizontal and vertical ranges of a `section` of this figure (x and z, y and z, or
+    /// x and y), in `length_unit`.
+    pub fn ranges(&self, section: SectionKind) -> ((f64, f64), (f64, f64)) {
+        match section {
+            SectionKind::Xz => (self.x, self.z),
+            SectionKind::Yz => (self.y, self.z),
+            SectionKind::Xy => (self.x, self.y),
+        }
+    }
 }
 
 /// A rough scene's xz section shows at least this many of its map's cells along x (or the
@@ -434,12 +448,17 @@ pub const ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH: f64 = 0.25;
 /// A rough scene's `[figure] z` reaches at most this many times the map's width in depth.
 pub const ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH: f64 = 10.0;
 
-/// One panel: the contact with its own friction and Poisson ratio, cut at its own position.
+/// One panel: the contact with its own friction and Poisson ratio, cut in its own plane at its
+/// own position.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PanelSpec {
     pub method: Method,
     pub friction: f64,
     pub poisson: f64,
+    /// The plane the panel cuts: its own (`[[panel]] section`) or the figure's. Panels of one
+    /// figure may cut different planes (an xz and a yz section side by side), on one colour
+    /// scale, each with its own axes.
+    pub section: SectionKind,
     /// Position of the section along its normal (y for xz, x for yz, depth z for xy), in the
     /// figure's `length_unit`.
     pub at: f64,

@@ -1,6 +1,6 @@
-//! The grid planes of a scene's panels, in units of a: the figure's range at its resolution,
-//! or, for a numerical point-contact panel, the traction grid's cell centres (so that whole
-//! layers come from one DC-FFT each).
+//! The grid planes of a scene's panels, in units of a, each in its own section plane: the
+//! figure's ranges in that plane at its resolution, or, for a numerical point-contact panel,
+//! the traction grid's cell centres (so that whole layers come from one DC-FFT each).
 
 use crate::field::{Axis, Plane, Section};
 use crate::scene::{ContactKind, Method, Numerical, PanelSpec, Scene, SectionKind};
@@ -15,14 +15,13 @@ pub fn plane(scene: &Scene, panel: &PanelSpec) -> Plane {
         return grid_plane(scene, panel);
     }
     let unit_over_a = scene.length_unit_over_a();
-    let (u0, u1) = scene.figure.horizontal;
-    let (v0, v1) = scene.figure.vertical;
+    let ((u0, u1), (v0, v1)) = scene.figure.ranges(panel.section);
     let nu = scene.figure.resolution;
     let nv = grid_rows(nu, u1 - u0, v1 - v0);
     let u = Axis::new(u0 * unit_over_a, u1 * unit_over_a, nu);
     let v = Axis::new(v0 * unit_over_a, v1 * unit_over_a, nv);
     let at = panel.at * unit_over_a;
-    let section = match scene.figure.section {
+    let section = match panel.section {
         SectionKind::Xz => Section::Xz { y: at },
         SectionKind::Yz => Section::Yz { x: at },
         SectionKind::Xy => Section::Xy { z: at },
@@ -82,25 +81,26 @@ fn grid_plane(scene: &Scene, panel: &PanelSpec) -> Plane {
         Axis::new(lo, lo + (count - 1) as f64 * h, count.max(1))
     };
     let at = panel.at * unit_over_a;
-    let (section, u, v) = match scene.figure.section {
+    let (horizontal, vertical) = scene.figure.ranges(panel.section);
+    let (section, u, v) = match panel.section {
         SectionKind::Xz => (
             Section::Xz {
                 y: y_axis.nearest_centre(at),
             },
-            centres(&x_axis, scene.figure.horizontal),
-            depths(scene.figure.vertical, dz),
+            centres(&x_axis, horizontal),
+            depths(vertical, dz),
         ),
         SectionKind::Yz => (
             Section::Yz {
                 x: x_axis.nearest_centre(at),
             },
-            centres(&y_axis, scene.figure.horizontal),
-            depths(scene.figure.vertical, dz),
+            centres(&y_axis, horizontal),
+            depths(vertical, dz),
         ),
         SectionKind::Xy => (
             Section::Xy { z: at },
-            centres(&x_axis, scene.figure.horizontal),
-            centres(&y_axis, scene.figure.vertical),
+            centres(&x_axis, horizontal),
+            centres(&y_axis, vertical),
         ),
     };
     Plane { section, u, v }

@@ -42,7 +42,15 @@ pub fn figure_bytes(scene: &Scene) -> usize {
     // traction strip, the titles and the colour bars.
     let spec = &scene.figure;
     let width = spec.width_px as usize;
-    let aspect = (spec.vertical.1 - spec.vertical.0) / (spec.horizontal.1 - spec.horizontal.0);
+    // The tallest map (each panel in its own plane).
+    let aspect = scene
+        .panels
+        .iter()
+        .map(|panel| {
+            let (horizontal, vertical) = spec.ranges(panel.section);
+            (vertical.1 - vertical.0) / (horizontal.1 - horizontal.0)
+        })
+        .fold(0.0, f64::max);
     let map_height = (width as f64 * aspect).clamp(8.0, 1e9) as usize;
     let image_width = scene.panels.len() * (width + 200) + 400;
     let image_height = map_height + map_height / 4 + 400;

@@ -193,10 +193,7 @@ pub fn sheet_fields(
         / REFERENCE_LENGTH_M;
     let given = scene.figure.depth_given.then(|| {
         let per_unit = scene.figure.length_unit.metres(REFERENCE_LENGTH_M) / REFERENCE_LENGTH_M;
-        (
-            scene.figure.vertical.0 * per_unit,
-            scene.figure.vertical.1 * per_unit,
-        )
+        (scene.figure.z.0 * per_unit, scene.figure.z.1 * per_unit)
     });
     let span = given.map_or(default_depth, |(z0, z1)| z1 - z0);
     let window = section_window(span, ax, nx);

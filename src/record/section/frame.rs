@@ -9,7 +9,7 @@ use super::*;
 /// ([`Notation::position`]).
 pub fn displayed(figure: &Figure, panel: &Panel) -> Panel {
     let mut shown = panel.clone();
-    if !figure.vertical_is_depth {
+    if !figure.axes_of(panel).vertical_is_depth {
         let rows = panel.values.nrows();
         shown.values = ndarray::Array2::from_shape_fn(panel.values.dim(), |(row, column)| {
             panel.values[[rows - 1 - row, column]]

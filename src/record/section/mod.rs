@@ -310,7 +310,10 @@ pub fn log_step(
             // on the map's colour bar.
             &rerun::Tensor::try_from(values32)
                 .map_err(|e| RecordError::Rerun(e.to_string()))?
-                .with_dim_names([figure.z_label.clone(), figure.x_label.clone()])
+                .with_dim_names({
+                    let axes = figure.axes_of(panel);
+                    [axes.z_label.to_string(), axes.x_label.to_string()]
+                })
                 .with_value_range(rerun::components::ValueRange::new(range.0, range.1)),
         )?;
     }

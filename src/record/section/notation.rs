@@ -80,14 +80,15 @@ impl Notation {
             .as_ref()
             .map_or(figure.value_label.as_str(), |s| s.value_label.as_str());
         let (symbol, unit) = name_and_unit(caption);
-        let (horizontal, length) = name_and_unit(&figure.x_label);
-        let (vertical, _) = name_and_unit(&figure.z_label);
+        let axes = figure.axes_of(panel);
+        let (horizontal, length) = name_and_unit(axes.x_label);
+        let (vertical, _) = name_and_unit(axes.z_label);
         Self {
             symbol,
             unit,
             axes: (horizontal, vertical),
             length,
-            flipped: !figure.vertical_is_depth,
+            flipped: !axes.vertical_is_depth,
         }
     }
 

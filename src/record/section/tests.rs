@@ -231,6 +231,7 @@ fn map_figure(vertical_is_depth: bool) -> Figure {
             outlines: vec![vec![(0.0, 10.0), (1.0, 20.0)]],
             scale: None,
             peak: None,
+            axes: None,
         }],
         value_label: "p (MPa)".into(),
         x_label: "x (µm)".into(),

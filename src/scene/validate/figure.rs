@@ -71,19 +71,31 @@ impl Validator<'_> {
         Ok(())
     }
 
-    /// The position of a section along its normal: any y or x, a depth z >= 0; only 0 for a
-    /// line contact (its field does not depend on y).
+    /// A section plane written as `key = "xz"`, `"yz"` or `"xy"`.
+    pub(super) fn section_kind(&self, key: &str, text: &str) -> Result<SectionKind, SceneError> {
+        SectionKind::from_key(text).ok_or_else(|| {
+            self.error(
+                key,
+                format!("unknown section `{}`", crate::io::text::cut(text, 40)),
+                Some("use \"xz\" (depth below the sliding direction), \"yz\" (depth across it) or \"xy\" (a plane at a depth, 0 for the surface)"),
+            )
+        })
+    }
+
+    /// The position of a `section` of `figure` along its normal: any y or x, a depth z >= 0;
+    /// only 0 for a line contact (its field does not depend on y).
     pub(super) fn section_position(
         &self,
         key: &str,
         value: Option<f64>,
         contact: &Contact,
         figure: &FigureSpec,
+        section: SectionKind,
     ) -> Result<f64, SceneError> {
         let Some(at) = value else {
             return Ok(0.0);
         };
-        let (_, _, normal) = figure.section.coordinates();
+        let (_, _, normal) = section.coordinates();
         if !at.is_finite() {
             return Err(self.error(
                 key,
@@ -109,7 +121,7 @@ impl Validator<'_> {
                 Some("remove it; sections at other y are for point contacts"),
             ));
         }
-        if figure.section == SectionKind::Xy && at < 0.0 {
+        if section == SectionKind::Xy && at < 0.0 {
             return Err(self.error(
                 key,
                 format!(
@@ -122,10 +134,13 @@ impl Validator<'_> {
         Ok(at)
     }
 
+    /// The `[figure]` table; `own_sections` are the sections the `[[panel]]` tables choose
+    /// (`None` for the figure's), so that every range is checked against the planes drawn.
     pub(super) fn figure(
         &self,
         raw: &RawFigure,
         contact: &Contact,
+        own_sections: &[Option<SectionKind>],
     ) -> Result<FigureSpec, SceneError> {
         let quantity = match &raw.quantity {
             Some(key) => Quantity::from_key(key).ok_or_else(|| {
@@ -179,37 +194,60 @@ impl Validator<'_> {
             ));
         }
         let section = match &raw.section {
-            Some(key) => SectionKind::from_key(key).ok_or_else(|| {
-                self.error(
-                    "figure.section",
-                    format!("unknown section `{key}`"),
-                    Some("use \"xz\" (depth below the sliding direction), \"yz\" (depth across it) or \"xy\" (a plane at a depth, 0 for the surface)"),
-                )
-            })?,
+            Some(key) => self.section_kind("figure.section", key)?,
             None => SectionKind::Xz,
         };
-        if contact.kind == ContactKind::Line && section != SectionKind::Xz {
-            return Err(self.error(
-                "figure.section",
-                format!(
-                    "a line contact is plane strain: its {} sections only repeat the xz field",
-                    section.key()
-                ),
-                Some("use section = \"xz\" (the default), or kind = \"point\""),
-            ));
+        // The sections the panels draw, each with the key that chose it (the figure's first).
+        let mut drawn: Vec<(SectionKind, String)> = Vec::new();
+        if own_sections.iter().any(Option::is_none) || own_sections.is_empty() {
+            drawn.push((section, "figure.section".to_string()));
         }
-        let (horizontal_name, vertical_name, normal_name) = section.coordinates();
+        for (i, own) in own_sections.iter().enumerate() {
+            if let Some(kind) = *own {
+                if drawn.iter().all(|(k, _)| *k != kind) {
+                    drawn.push((kind, format!("panel[{i}].section")));
+                }
+            }
+        }
+        if contact.kind == ContactKind::Line {
+            if let Some((kind, key)) = drawn.iter().find(|(k, _)| *k != SectionKind::Xz) {
+                return Err(self.error(
+                    key,
+                    format!(
+                        "a line contact is plane strain: its {} sections only repeat the xz field",
+                        kind.key()
+                    ),
+                    Some("use section = \"xz\" (the default), or kind = \"point\""),
+                ));
+            }
+        }
         let ranges = [
             ("x", raw.x.as_ref()),
             ("y", raw.y.as_ref()),
             ("z", raw.z.as_ref()),
         ];
+        // A range no section draws (along the normal of every panel's plane) is an error, not
+        // ignored.
         for (name, range) in ranges {
-            if range.is_some() && name == normal_name {
+            let drawn_by = |kind: &SectionKind| {
+                let (h, v, _) = kind.coordinates();
+                h == name || v == name
+            };
+            if range.is_some() && !drawn.iter().any(|(kind, _)| drawn_by(kind)) {
+                let (kind, _) = &drawn[0];
+                let (horizontal_name, vertical_name, normal_name) = kind.coordinates();
+                let at_key = if drawn[0].1 == "figure.section" {
+                    "figure.at".to_string()
+                } else {
+                    drawn[0].1.replace(".section", ".at")
+                };
                 return Err(self.error(
                     &format!("figure.{name}"),
-                    format!("an {} section has no {name} range: {name} is fixed by figure.at", section.key()),
-                    Some(&format!("give figure.{horizontal_name} and figure.{vertical_name}, and the section's {normal_name} as figure.at")),
+                    format!(
+                        "an {} section has no {name} range: {name} is fixed by {at_key}",
+                        kind.key()
+                    ),
+                    Some(&format!("give figure.{horizontal_name} and figure.{vertical_name}, and the section's {normal_name} as {at_key}; a panel in another plane takes its own ([[panel]] section = ...)")),
                 ));
             }
         }
@@ -220,75 +258,91 @@ impl Validator<'_> {
                 .and_then(|(_, range)| *range)
         };
         let a_in_unit = contact.half_width_m() / length_unit.metres(contact.half_width_m());
-        let default_horizontal = match (contact.kind, section) {
-            (ContactKind::Line, _) => 2.5,
-            (
-                ContactKind::Point
-                | ContactKind::Tractions
-                | ContactKind::Rough
-                | ContactKind::Surface,
-                _,
-            ) => 2.0,
-            // Twice the semi-axis along the horizontal axis (b = aspect a along y).
-            (ContactKind::Elliptical, SectionKind::Yz) => 2.0 * contact.aspect,
-            (ContactKind::Elliptical, _) => 2.0,
-        };
-        let horizontal = self.range(
-            &format!("figure.{horizontal_name}"),
-            range_of(horizontal_name),
-            (
-                -default_horizontal * a_in_unit,
-                default_horizontal * a_in_unit,
-            ),
-        )?;
-        let default_vertical = if section.vertical_is_depth() {
-            (0.0, 2.0 * a_in_unit * contact.aspect.min(1.0))
+        // Defaults: twice the semi-axis along x (b = aspect a along y; 2.5a for a line
+        // contact), depth 0 to twice the smaller semi-axis.
+        let default_x = if contact.kind == ContactKind::Line {
+            2.5
         } else {
-            let b = 2.0 * a_in_unit * contact.aspect;
-            (-b, b)
+            2.0
         };
-        let vertical = self.range(
-            &format!("figure.{vertical_name}"),
-            range_of(vertical_name),
-            default_vertical,
+        let default_y = match contact.kind {
+            ContactKind::Line => 2.5,
+            ContactKind::Elliptical => 2.0 * contact.aspect,
+            _ => 2.0,
+        };
+        let x = self.range(
+            "figure.x",
+            range_of("x"),
+            (-default_x * a_in_unit, default_x * a_in_unit),
         )?;
-        if section.vertical_is_depth() && vertical.0 < 0.0 {
+        let y = self.range(
+            "figure.y",
+            range_of("y"),
+            (-default_y * a_in_unit, default_y * a_in_unit),
+        )?;
+        let z = self.range(
+            "figure.z",
+            range_of("z"),
+            (0.0, 2.0 * a_in_unit * contact.aspect.min(1.0)),
+        )?;
+        if z.0 < 0.0 {
             return Err(self.error(
                 "figure.z",
                 format!(
                     "depth must be >= 0 (z points into the body), got {}",
-                    crate::io::text::number(vertical.0)
+                    crate::io::text::number(z.0)
                 ),
                 Some("start the range at 0 for the surface"),
             ));
         }
         let unit_over_a = 1.0 / a_in_unit;
         let suffix = unit_after(length_unit);
-        for (name, range) in [(horizontal_name, horizontal), (vertical_name, vertical)] {
-            self.range_within_reach(&format!("figure.{name}"), range, unit_over_a, suffix)?;
+        let spec_ranges = |kind: SectionKind| match kind {
+            SectionKind::Xz => (x, z),
+            SectionKind::Yz => (y, z),
+            SectionKind::Xy => (x, y),
+        };
+        for (kind, _) in &drawn {
+            let (horizontal_name, vertical_name, _) = kind.coordinates();
+            let (horizontal, vertical) = spec_ranges(*kind);
+            for (name, range) in [(horizontal_name, horizontal), (vertical_name, vertical)] {
+                self.range_within_reach(&format!("figure.{name}"), range, unit_over_a, suffix)?;
+            }
         }
         // At equal scale: neither a sliver nor a tower. (A rough scene's section is as wide
         // as its map, checked with the map: `rough_section_depth`.)
         let sheet = matches!(contact.kind, ContactKind::Rough | ContactKind::Surface);
-        let aspect = (vertical.1 - vertical.0) / (horizontal.1 - horizontal.0);
-        if !sheet && !(1.0 / MAX_ASPECT..=MAX_ASPECT).contains(&aspect) {
-            let key = if range_of(vertical_name).is_some() || range_of(horizontal_name).is_none() {
-                vertical_name
-            } else {
-                horizontal_name
-            };
-            return Err(self.error(
-                &format!("figure.{key}"),
-                format!(
-                    "at equal scale the section would be drawn {} times as tall as it is wide ({} by {}{suffix}); keep the ratio between 1/{MAX_ASPECT} and {MAX_ASPECT}",
-                    crate::io::text::number((aspect * 1000.0).round() / 1000.0),
-                    crate::io::text::number(horizontal.1 - horizontal.0),
-                    crate::io::text::number(vertical.1 - vertical.0),
-                ),
-                Some(&format!(
-                    "adjust figure.{horizontal_name} or figure.{vertical_name}, or split the section into several panels"
-                )),
-            ));
+        let mut tallest = 0.0f64;
+        for (kind, _) in &drawn {
+            let (horizontal_name, vertical_name, _) = kind.coordinates();
+            let (horizontal, vertical) = spec_ranges(*kind);
+            let aspect = (vertical.1 - vertical.0) / (horizontal.1 - horizontal.0);
+            tallest = tallest.max(aspect);
+            if !sheet && !(1.0 / MAX_ASPECT..=MAX_ASPECT).contains(&aspect) {
+                let key =
+                    if range_of(vertical_name).is_some() || range_of(horizontal_name).is_none() {
+                        vertical_name
+                    } else {
+                        horizontal_name
+                    };
+                let which = if drawn.len() > 1 {
+                    format!("the {} section", kind.key())
+                } else {
+                    "the section".to_string()
+                };
+                return Err(self.error(
+                    &format!("figure.{key}"),
+                    format!(
+                        "at equal scale {which} would be drawn {} times as tall as it is wide ({} by {}{suffix}); keep the ratio between 1/{MAX_ASPECT} and {MAX_ASPECT}",
+                        crate::io::text::number((aspect * 1000.0).round() / 1000.0),
+                        crate::io::text::number(horizontal.1 - horizontal.0),
+                        crate::io::text::number(vertical.1 - vertical.0),
+                    ),
+                    Some(&format!(
+                        "adjust figure.{horizontal_name} or figure.{vertical_name}, or split the section into several panels"
+                    )),
+                ));
+            }
         }
         let resolution = match raw.resolution {
             None => 801,
@@ -364,7 +418,7 @@ impl Validator<'_> {
                 ))
             }
         };
-        let map_px = f64::from(width_px) * aspect;
+        let map_px = f64::from(width_px) * tallest;
         if !sheet && map_px > MAX_MAP_PX {
             return Err(self.error(
                 "figure.width",
@@ -378,9 +432,10 @@ impl Validator<'_> {
         Ok(FigureSpec {
             quantity,
             section,
-            horizontal,
-            vertical,
-            depth_given: section.vertical_is_depth() && range_of(vertical_name).is_some(),
+            x,
+            y,
+            z,
+            depth_given: range_of("z").is_some(),
             length_unit,
             stress_unit,
             resolution,

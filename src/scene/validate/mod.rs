@@ -166,22 +166,57 @@ impl Validator<'_> {
             }
         }
         let thermal = self.thermal(&raw, &contact)?;
-        let figure = self.figure(&raw.figure, &contact)?;
+        let own_sections = self.panel_sections(&raw)?;
+        let figure = self.figure(&raw.figure, &contact, &own_sections)?;
         let method = self.method("contact.method", raw.contact.method.as_deref())?;
         let numerical = self.numerical(raw.numerical.as_ref(), &contact)?;
         let tractions = self.tractions(&raw, &contact)?;
-        let at = self.section_position("figure.at", raw.figure.at, &contact, &figure)?;
+        let at = self.section_position(
+            "figure.at",
+            raw.figure.at,
+            &contact,
+            &figure,
+            figure.section,
+        )?;
         let mut panels = Vec::new();
-        for (i, panel) in raw.panels.iter().enumerate() {
+        for (i, (panel, own)) in raw.panels.iter().zip(&own_sections).enumerate() {
             let key = format!("panel[{i}]");
             let method = match panel.method.as_deref() {
                 Some(text) => self.method(&format!("{key}.method"), Some(text))?,
                 None => method,
             };
+            let section = own.unwrap_or(figure.section);
             let at = match panel.at {
-                Some(value) => {
-                    self.section_position(&format!("{key}.at"), Some(value), &contact, &figure)?
+                Some(value) => self.section_position(
+                    &format!("{key}.at"),
+                    Some(value),
+                    &contact,
+                    &figure,
+                    section,
+                )?,
+                // figure.at is a position along another axis: no default for this plane.
+                None if section != figure.section && raw.figure.at.is_some() => {
+                    let (_, _, figure_normal) = figure.section.coordinates();
+                    let position = match section {
+                        SectionKind::Xz => {
+                            "the y of the xz section (0 through the contact's centre)"
+                        }
+                        SectionKind::Yz => {
+                            "the x of the yz section (0 through the contact's centre)"
+                        }
+                        SectionKind::Xy => "the depth z of the xy section (0 for the surface)",
+                    };
+                    return Err(self.error(
+                        &format!("{key}.at"),
+                        format!(
+                            "this panel's {} section needs its own position: figure.at is the {figure_normal} of the figure's {} sections",
+                            section.key(),
+                            figure.section.key()
+                        ),
+                        Some(&format!("give {key}.at, {position}")),
+                    ));
                 }
+                None if section != figure.section => 0.0,
                 None => at,
             };
             let friction = match panel.friction {
@@ -196,6 +231,7 @@ impl Validator<'_> {
                 method,
                 friction,
                 poisson,
+                section,
                 at,
                 subtitle: panel.subtitle.clone(),
             });
@@ -205,6 +241,7 @@ impl Validator<'_> {
                 method,
                 friction: contact.friction,
                 poisson: contact.poisson,
+                section: figure.section,
                 at,
                 subtitle: None,
             });
@@ -278,6 +315,30 @@ impl Validator<'_> {
         Ok(scene)
     }
 
+    /// Each `[[panel]]`'s own section (`None`: the figure's). A speed (Péclet) sweep records
+    /// its own temperature sections, so a panel's section there is refused, not ignored.
+    fn panel_sections(&self, raw: &RawScene) -> Result<Vec<Option<SectionKind>>, SceneError> {
+        let speed_sweep = raw.sweep.as_ref().is_some_and(|s| s.parameter == "peclet");
+        let mut sections = Vec::with_capacity(raw.panels.len());
+        for (i, panel) in raw.panels.iter().enumerate() {
+            let key = format!("panel[{i}].section");
+            let Some(text) = &panel.section else {
+                sections.push(None);
+                continue;
+            };
+            let kind = self.section_kind(&key, text)?;
+            if speed_sweep {
+                return Err(self.error(
+                    &key,
+                    "a Péclet sweep records its own sections of the temperature (the surface and the xz section through the contact's centre), not the panels'",
+                    Some("remove it; draw the stress sections in a scene without [sweep]"),
+                ));
+            }
+            sections.push(Some(kind));
+        }
+        Ok(sections)
+    }
+
     /// A numerical panel of a point, elliptical or traction-grid contact is sampled at the
     /// traction grid's cell centres, so it ends where the grid ends: a figure range (or a
     /// section's position) reaching more than one cell beyond the grid would be cut there
@@ -324,7 +385,6 @@ impl Validator<'_> {
                 )
             }
         };
-        let (h, v, normal) = figure.section.coordinates();
         let grid_of = |name: &str| if name == "x" { x_grid } else { y_grid };
         let fix = |name: &str, lo: f64, hi: f64| -> String {
             let (g0, g1, _) = grid_of(name);
@@ -370,9 +430,15 @@ impl Validator<'_> {
                 ),
             }
         };
-        let mut ranges = vec![(h, figure.horizontal)];
-        if !figure.section.vertical_is_depth() {
-            ranges.push((v, figure.vertical));
+        // The ranges along the surface of every numerical panel's plane.
+        let mut ranges = Vec::new();
+        for panel in panels.iter().filter(|p| drawn_numerically(p)) {
+            let (h, v, _) = panel.section.coordinates();
+            let (horizontal, vertical) = figure.ranges(panel.section);
+            ranges.push((h, horizontal));
+            if !panel.section.vertical_is_depth() {
+                ranges.push((v, vertical));
+            }
         }
         for (name, (lo, hi)) in ranges {
             let (lo_a, hi_a) = (lo * unit_over_a, hi * unit_over_a);
@@ -390,8 +456,9 @@ impl Validator<'_> {
             }
         }
         // A section's position along its normal (not the depth of an xy plane).
-        if figure.section != SectionKind::Xy {
-            for (i, panel) in panels.iter().enumerate() {
+        for (i, panel) in panels.iter().enumerate() {
+            let (_, _, normal) = panel.section.coordinates();
+            if panel.section != SectionKind::Xy {
                 let at_a = panel.at * unit_over_a;
                 if drawn_numerically(panel) && outside(normal, at_a, at_a) {
                     let key = if raw_panels.get(i).is_some_and(|p| p.at.is_some()) {

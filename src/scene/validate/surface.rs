@@ -528,6 +528,13 @@ impl Validator<'_> {
         mut contact: Contact,
     ) -> Result<Scene, SceneError> {
         let surface = self.surface_spec(&raw, contact.kind)?;
+        if let Some(i) = raw.panels.iter().position(|p| p.section.is_some()) {
+            return Err(self.error(
+                &format!("panel[{i}].section"),
+                "a rough or surface scene chooses its own sections: the xz section through the report's maximum and the plane at its depth (or, for a surface, none)",
+                Some("remove the [[panel]] table; to cut a smooth contact in several planes use kind = \"point\" or \"elliptical\""),
+            ));
+        }
         for (key, given) in [
             ("panel", !raw.panels.is_empty()),
             ("tractions", raw.tractions.is_some()),
@@ -601,7 +608,7 @@ impl Validator<'_> {
             };
             self.rough_control(rough, key, &surface.heights, hardness_key)?;
         }
-        let figure = self.figure(&raw.figure, &contact)?;
+        let figure = self.figure(&raw.figure, &contact, &[])?;
         if figure.depth_given {
             self.rough_section_depth(&figure, &surface.heights)?;
         }
@@ -659,7 +666,7 @@ impl Validator<'_> {
         heights: &crate::surface::HeightMap,
     ) -> Result<(), SceneError> {
         let per_um = figure.length_unit.metres(1e-6) / 1e-6;
-        let (z0, z1) = figure.vertical;
+        let (z0, z1) = figure.z;
         let span_um = (z1 - z0) * per_um;
         let [_, nx] = heights.shape();
         let cell_um = heights.spacing_m()[0] * 1e6;

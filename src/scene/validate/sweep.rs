@@ -265,6 +265,22 @@ impl Validator<'_> {
                     Some("use figure.section = \"xz\""),
                 ));
             }
+            if let Some(i) = scene
+                .panels
+                .iter()
+                .position(|p| p.section != super::SectionKind::Xz)
+            {
+                return Err(self.error(
+                    &format!("panel[{i}].section"),
+                    format!(
+                        "material points (x, z) lie in xz sections: this panel's {} section has none to follow",
+                        scene.panels[i].section.key()
+                    ),
+                    Some(&format!(
+                        "remove panel[{i}].section, or record the material points in a scene of xz sections"
+                    )),
+                ));
+            }
         }
         Ok(Sweep {
             parameter,

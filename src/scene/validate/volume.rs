@@ -22,7 +22,7 @@ impl Validator<'_> {
             return Err(self.error(
                 "volume",
                 "a volume is recorded from the closed form, which this contact has not (elliptical, partial slip or tractions from a file)",
-                Some("record sections of it instead (figure.section = \"xz\", \"yz\" or \"xy\" with [[panel]] at = ...)"),
+                Some("record sections of it instead (figure.section, or each [[panel]]'s section = \"xz\", \"yz\" or \"xy\", with at = ...)"),
             ));
         }
         let quantity = match &raw.quantity {

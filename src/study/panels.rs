@@ -170,6 +170,9 @@ pub fn refined_peak(
             hv *= 0.5;
         }
     }
+    // A coordinate the search left a hair off zero (a symmetry plane) is zero.
+    let snap = |c: f64, d: f64| if c.abs() <= 1e-6 * d { 0.0 } else { c };
+    let at = (snap(at.0, du), snap(at.1, dv));
     ((at.0 - start.0).abs() <= du && (at.1 - start.1).abs() <= dv).then_some([best, at.0, at.1])
 }
 

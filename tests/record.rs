@@ -437,7 +437,9 @@ fn a_friction_sweep_has_one_time_point_per_step_and_the_maxima_of_the_closed_for
 fn the_swept_value_has_a_timeline_of_its_own_in_a_stated_unit() {
     let moving = "format = 1\n[contact]\nkind = \"line\"\n[figure]\nquantity = \"sxz\"\nx = [-3.0, 3.0]\nz = [0.0, 2.0]\n[sweep]\nparameter = \"position\"\nvalues = [-2.0, -0.8660254037844386, 0.0, 0.8660254037844386, 2.0]\n";
     let ball = "format = 1\n[contact]\nkind = \"point\"\nload = \"100 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[sweep]\nparameter = \"load\"\nvalues = [\"50 N\", \"100 N\", \"800 N\"]\n";
-    let cases: [(&str, Option<(&str, Vec<i64>)>); 6] = [
+    // (scene, the timeline's name and values, if any)
+    type Expected<'a> = Option<(&'a str, Vec<i64>)>;
+    let cases: [(&str, Expected); 6] = [
         (FRICTION_SWEEP, Some(("μ × 10", vec![0, 1, 2, 3, 4, 5]))),
         (SMALL_SWEEP, Some(("μ × 10", vec![0, 3]))),
         (ROUGH_SWEEP, Some(("W (mN)", vec![50, 200, 500]))),

@@ -133,41 +133,42 @@ impl Contents {
             .collect()
     }
 
-    /// The time panel's play state as the layout opens it (Paused at the first step, or
-    /// Following the newest).
-    fn play_state(&self) -> Vec<String> {
-        use rerun::external::re_sdk_types::blueprint::archetypes::TimePanelBlueprint;
+    /// The texts of one component of the time panel's blueprint.
+    fn time_panel<C: rerun::Component>(
+        &self,
+        component: rerun::ComponentIdentifier,
+        text: impl Fn(&C) -> String,
+    ) -> Vec<String> {
         self.layout
             .get("/time_panel")
             .into_iter()
             .flatten()
             .flat_map(|chunk| {
                 chunk
-                    .iter_component::<rerun::blueprint::components::PlayState>(
-                        TimePanelBlueprint::descriptor_play_state().component,
-                    )
-                    .flat_map(|batch| batch.iter().map(|s| s.to_string()).collect::<Vec<_>>())
+                    .iter_component::<C>(component)
+                    .flat_map(|batch| batch.iter().map(&text).collect::<Vec<_>>())
                     .collect::<Vec<_>>()
             })
             .collect()
     }
 
+    /// The time panel's play state as the layout opens it (Paused at the first step, or
+    /// Following the newest).
+    fn play_state(&self) -> Vec<String> {
+        use rerun::external::re_sdk_types::blueprint::archetypes::TimePanelBlueprint;
+        self.time_panel(
+            TimePanelBlueprint::descriptor_play_state().component,
+            |s: &rerun::blueprint::components::PlayState| s.to_string(),
+        )
+    }
+
     /// The timeline the time panel opens on.
     pub(crate) fn time_panel_timeline(&self) -> Vec<String> {
         use rerun::external::re_sdk_types::blueprint::archetypes::TimePanelBlueprint;
-        self.layout
-            .get("/time_panel")
-            .into_iter()
-            .flatten()
-            .flat_map(|chunk| {
-                chunk
-                    .iter_component::<rerun::blueprint::components::TimelineName>(
-                        TimePanelBlueprint::descriptor_timeline().component,
-                    )
-                    .flat_map(|batch| batch.iter().map(|s| s.0.to_string()).collect::<Vec<_>>())
-                    .collect::<Vec<_>>()
-            })
-            .collect()
+        self.time_panel(
+            TimePanelBlueprint::descriptor_timeline().component,
+            |s: &rerun::blueprint::components::TimelineName| s.0.to_string(),
+        )
     }
 
     /// The blueprint entities whose path ends with `suffix`.

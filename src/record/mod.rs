@@ -354,6 +354,14 @@ fn colour_range(map: ColorMap, lo: f64, hi: f64, fixed: Option<(f64, f64)>) -> (
     (grow(scale.lo), grow(scale.hi))
 }
 
+/// A plotted series' style: its name in the legend, its colour, a line 2 points wide.
+fn series_line(name: impl Into<String>, [r, g, b]: [u8; 3]) -> rerun::SeriesLines {
+    rerun::SeriesLines::new()
+        .with_names([name.into()])
+        .with_colors([rerun::Color::from_rgb(r, g, b)])
+        .with_widths([2.0])
+}
+
 /// The Rerun colour map closest to a figure's.
 fn rerun_colormap(map: ColorMap) -> rerun::components::Colormap {
     use rerun::components::Colormap;

@@ -370,24 +370,18 @@ pub(super) fn log_series_styles(
     figure: &Figure,
 ) -> Result<(), RecordError> {
     let symbol = scene.figure.quantity.symbol();
-    let line = |name: String, [r, g, b]: [u8; 3]| {
-        rerun::SeriesLines::new()
-            .with_names([name])
-            .with_colors([rerun::Color::from_rgb(r, g, b)])
-            .with_widths([2.0])
-    };
     for k in 0..figure.panels.len() {
         stream.log_static(
             format!("series/{k}/maximum"),
-            &line(format!("max {symbol}"), PALETTE[1]),
+            &super::series_line(format!("max {symbol}"), PALETTE[1]),
         )?;
         stream.log_static(
             format!("series/{k}/minimum"),
-            &line(format!("min {symbol}"), PALETTE[0]),
+            &super::series_line(format!("min {symbol}"), PALETTE[0]),
         )?;
         stream.log_static(
             format!("series/{k}/maximum_depth"),
-            &line(
+            &super::series_line(
                 format!("depth of max {symbol}, {}", figure.z_label),
                 PALETTE[2],
             ),
@@ -396,14 +390,14 @@ pub(super) fn log_series_styles(
     if let Some(sweep) = &scene.sweep {
         stream.log_static(
             format!("series/{}", sweep.parameter.key()),
-            &line(sweep.parameter.key().to_string(), PALETTE[6]),
+            &super::series_line(sweep.parameter.key().to_string(), PALETTE[6]),
         )?;
         for k in 0..figure.panels.len() {
             for j in 0..sweep.material_points.len() {
                 for (c, (key, name)) in history_components(scene).into_iter().enumerate() {
                     stream.log_static(
                         format!("history/{k}/point{j}/{key}"),
-                        &line(name, PALETTE[c % PALETTE.len()]),
+                        &super::series_line(name, PALETTE[c % PALETTE.len()]),
                     )?;
                 }
             }

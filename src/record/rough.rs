@@ -455,19 +455,13 @@ fn log_load_sweep(
         .map(|h| h * 1e-6);
     let steps = sweep.values.len();
     let values = super::value_timeline(scene);
-    for (path, name, [r, g, b]) in [
+    for (path, name, colour) in [
         ("series/max_pressure_mpa", "largest p (MPa)", PALETTE[1]),
         ("series/contact_fraction", "real area A/A0", PALETTE[0]),
         ("series/spots", "contact spots", PALETTE[2]),
         ("series/load_n", "W (N)", PALETTE[6]),
     ] {
-        stream.log_static(
-            path,
-            &rerun::SeriesLines::new()
-                .with_names([name])
-                .with_colors([rerun::Color::from_rgb(r, g, b)])
-                .with_widths([2.0]),
-        )?;
+        stream.log_static(path, &super::series_line(name, colour))?;
     }
     let mut last = None;
     for (k, (solution, &load)) in solutions.iter().zip(&sweep.values).enumerate() {

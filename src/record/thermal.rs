@@ -362,7 +362,7 @@ fn charts(sweep: &SpeedSweep, current: usize, blok: bool) -> Vec<(&'static str, 
 
 /// The names and colours of the time series (static).
 fn log_series_styles(stream: &RecordingStream) -> Result<(), RecordError> {
-    for (path, name, [r, g, b]) in [
+    for (path, name, colour) in [
         ("series/max_temperature_rise_k", "max ΔT (K)", PALETTE[1]),
         ("series/mean_temperature_rise_k", "mean ΔT (K)", PALETTE[0]),
         ("series/max_x_over_a", "x of the maximum / a", PALETTE[2]),
@@ -370,13 +370,7 @@ fn log_series_styles(stream: &RecordingStream) -> Result<(), RecordError> {
         ("series/peclet", "Pe", PALETTE[6]),
         ("series/sliding_speed_m_per_s", "V (m/s)", PALETTE[4]),
     ] {
-        stream.log_static(
-            path,
-            &rerun::SeriesLines::new()
-                .with_names([name])
-                .with_colors([rerun::Color::from_rgb(r, g, b)])
-                .with_widths([2.0]),
-        )?;
+        stream.log_static(path, &super::series_line(name, colour))?;
     }
     Ok(())
 }

@@ -46,31 +46,19 @@ pub fn maximum(solution: &Solution, quantity: Quantity, surface_only: bool) -> E
         }
     }
     // Directions the search may move in: x always, y for point contacts, z unless on the
-    // surface.
-    let axes: Vec<usize> = [(0, true), (1, three_d), (2, !surface_only)]
-        .into_iter()
-        .filter_map(|(axis, free)| free.then_some(axis))
-        .collect();
-    let mut h = step;
-    while h > 1e-9 {
-        let mut improved = false;
-        for &axis in &axes {
-            for sign in [1.0, -1.0] {
-                let mut p = best_at;
-                p[axis] += sign * h;
-                p[1] = p[1].max(0.0);
-                p[2] = p[2].max(0.0);
-                let v = value(p);
-                if v > best {
-                    (best_at, best) = (p, v);
-                    improved = true;
-                }
-            }
-        }
-        if !improved {
-            h *= 0.5;
-        }
-    }
+    // surface; y and z stay at or above 0.
+    let free = |moves: bool| if moves { step } else { 0.0 };
+    let (best_at, best) = super::compass::compass_maximum(
+        value,
+        best_at,
+        best,
+        [step, free(three_d), free(!surface_only)],
+        [
+            (f64::NEG_INFINITY, f64::INFINITY),
+            (0.0, f64::INFINITY),
+            (0.0, f64::INFINITY),
+        ],
+    );
     Extreme {
         value_over_p0: best,
         x_over_a: best_at[0],

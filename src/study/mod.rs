@@ -13,6 +13,7 @@
 
 pub mod admit;
 pub mod assess;
+mod compass;
 pub mod coupled;
 pub mod gear_heating;
 mod grid;

@@ -149,30 +149,20 @@ pub fn refined_peak(
         quantity.of(&solution.stress_over_p0(x, y, z))
     };
     let start = (plane.u.value(iu), plane.v.value(iv));
-    let mut at = start;
-    let mut best = value(at.0, at.1);
-    if !best.is_finite() {
+    let at_start = value(start.0, start.1);
+    if !at_start.is_finite() {
         return None;
     }
-    let (mut hu, mut hv) = (du, dv);
-    while hu.max(hv) > 1e-9 {
-        let mut improved = false;
-        for (su, sv) in [(hu, 0.0), (-hu, 0.0), (0.0, hv), (0.0, -hv)] {
-            let trial = ((at.0 + su).clamp(u_lo, u_hi), (at.1 + sv).clamp(v_lo, v_hi));
-            let v = value(trial.0, trial.1);
-            if v > best {
-                (at, best) = (trial, v);
-                improved = true;
-            }
-        }
-        if !improved {
-            hu *= 0.5;
-            hv *= 0.5;
-        }
-    }
+    let ([u, v], best) = super::compass::compass_maximum(
+        |[u, v]| value(u, v),
+        [start.0, start.1],
+        at_start,
+        [du, dv],
+        [(u_lo, u_hi), (v_lo, v_hi)],
+    );
     // A coordinate the search left a hair off zero (a symmetry plane) is zero.
     let snap = |c: f64, d: f64| if c.abs() <= 1e-6 * d { 0.0 } else { c };
-    let at = (snap(at.0, du), snap(at.1, dv));
+    let at = (snap(u, du), snap(v, dv));
     ((at.0 - start.0).abs() <= du && (at.1 - start.1).abs() <= dv).then_some([best, at.0, at.1])
 }
 

@@ -9,6 +9,26 @@ use std::f64::consts::PI;
 
 use crate::stress::Stress;
 
+/// The three unit loads of a rectangle, in the order of [`PatchStresses`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Load {
+    Pressure = 0,
+    ShearX = 1,
+    ShearY = 2,
+}
+
+impl Load {
+    /// The load that this one becomes when the half-space is turned about the diagonal
+    /// `x = y` (x and y exchanged): the pressure stays, the shears along x and y exchange.
+    pub(crate) fn turned(self) -> Self {
+        match self {
+            Load::Pressure => Load::Pressure,
+            Load::ShearX => Load::ShearY,
+            Load::ShearY => Load::ShearX,
+        }
+    }
+}
+
 /// A rectangle `x1 <= x <= x2`, `y1 <= y <= y2` of the surface (`x1 < x2`, `y1 < y2`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Rectangle {
@@ -182,48 +202,215 @@ pub fn uniform_patch_offset_rows(
     nu: f64,
     mut f: impl FnMut(usize, usize, &PatchStresses),
 ) {
+    offset_sums(cell, z, nx, rows, false, |b, sums| {
+        for a in sums.columns() {
+            f(a, b, &sums.at(a).stresses(nu));
+        }
+    });
+}
+
+/// The corner sums of [`uniform_patch_offset_rows`], a row of offsets at a time: calls
+/// `f(b, sums)` with the sums of the cells `a` in `sums.columns()` of row `b` (from which
+/// [`RowSums::component`] gives each load's stresses along the row). With `diagonal`, only the
+/// cells `a >= b`: on a grid of square cells the others are those cells turned about the
+/// diagonal `x = y` (the pressure's stresses with x and y exchanged, the shear along x's those
+/// of the shear along y; see [`uniform_patch`]), and their corners are not evaluated (about
+/// half of them).
+///
+/// Each term is held as an array along the row: the corners' terms, their differences along
+/// the row of corners (shared by the cells below and above it), and the cells' sums, the
+/// difference of two such rows.
+pub(crate) fn offset_sums(
+    cell: [f64; 2],
+    z: f64,
+    nx: usize,
+    rows: std::ops::Range<usize>,
+    diagonal: bool,
+    mut f: impl FnMut(usize, &RowSums),
+) {
     let z = z + 0.0;
     let [dx, dy] = cell;
     let columns: Vec<Edge> = (0..=nx)
         .map(|k| Edge::new((k as f64 - 0.5) * dx, z))
         .collect();
-    // Corners along one row of corners, and E(Y) = ln(R + X_(k+1)) - ln(R + X_k) along it.
-    let corner_row = |row: Edge, corners: &mut Vec<Corner>, ln_x: &mut Vec<f64>| {
-        corners.clear();
-        corners.extend(columns.iter().map(|&column| Corner::new(column, row, z)));
-        ln_x.clear();
-        ln_x.extend((0..nx).map(|k| {
-            let pair = [columns[k + 1], columns[k]];
-            log_difference(pair, row.rho, corners[k + 1].r, corners[k].r)
-        }));
-    };
-    let (mut below, mut above) = (Vec::with_capacity(nx + 1), Vec::with_capacity(nx + 1));
-    let (mut ln_x_below, mut ln_x_above) = (Vec::with_capacity(nx), Vec::with_capacity(nx));
+    // The first column of row b (and of the corners below and above it).
+    let first = |b: usize| if diagonal { b.min(nx) } else { 0 };
+    let mut corners = CornerRow::new(nx);
+    let (mut below, mut above) = (CornerRow::new(nx), CornerRow::new(nx));
+    let mut sums = RowSums::new(nx);
     let mut ln_y = vec![0.0; nx + 1];
     let mut row_below = Edge::new((rows.start as f64 - 0.5) * dy, z);
-    corner_row(row_below, &mut below, &mut ln_x_below);
+    below.evaluate(first(rows.start), &columns, row_below, z, &mut corners);
     for b in rows {
+        let from = first(b);
         let row_above = Edge::new((b as f64 + 0.5) * dy, z);
-        corner_row(row_above, &mut above, &mut ln_x_above);
-        // D(X) = ln(R + Y_(b+1)) - ln(R + Y_b) along each column of corners.
-        for (k, d) in ln_y.iter_mut().enumerate() {
-            *d = log_difference(
+        above.evaluate(from, &columns, row_above, z, &mut corners);
+        sums.from = from;
+        for (sum, (up, down)) in sums.terms[..CORNER_TERMS]
+            .iter_mut()
+            .zip(above.steps.iter().zip(&below.steps))
+        {
+            for (s, (u, d)) in sum[from..]
+                .iter_mut()
+                .zip(up[from..].iter().zip(&down[from..]))
+            {
+                *s = u - d;
+            }
+        }
+        // Σ ln(R + X) = E(Y_(b+1)) - E(Y_b), with E(Y) = ln(R + X_(a+1)) - ln(R + X_a).
+        for (s, (u, d)) in sums.terms[LX][from..]
+            .iter_mut()
+            .zip(above.ln_x[from..].iter().zip(&below.ln_x[from..]))
+        {
+            *s = u - d;
+        }
+        // Σ ln(R + Y) = D(X_(a+1)) - D(X_a), with D(X) = ln(R + Y_(b+1)) - ln(R + Y_b) along
+        // each column of corners.
+        for k in from..=nx {
+            ln_y[k] = log_difference(
                 [row_above, row_below],
                 columns[k].rho,
-                above[k].r,
-                below[k].r,
+                above.r[k],
+                below.r[k],
             );
         }
-        for a in 0..nx {
-            // Near edges x1 = -dx/2, y1 = -dy/2: X1 = X_(a+1), Y1 = Y_(b+1).
-            let corners = [[above[a + 1], below[a + 1]], [above[a], below[a]]];
-            let lx = ln_x_above[a] - ln_x_below[a];
-            let ly = ln_y[a + 1] - ln_y[a];
-            f(a, b, &CornerSums::new(&corners, lx, ly).stresses(nu));
+        for a in from..nx {
+            sums.terms[LY][a] = ln_y[a + 1] - ln_y[a];
         }
+        f(b, &sums);
         std::mem::swap(&mut below, &mut above);
-        std::mem::swap(&mut ln_x_below, &mut ln_x_above);
         row_below = row_above;
+    }
+}
+
+/// The number of [`Corner`] terms, and the indices of all terms of [`CornerSums`].
+const CORNER_TERMS: usize = 12;
+const TERMS: usize = 14;
+const TX: usize = 0;
+const TY: usize = 1;
+const AX: usize = 2;
+const BX: usize = 3;
+const AY: usize = 4;
+const BY: usize = 5;
+const U1: usize = 6;
+const U2: usize = 7;
+const V1: usize = 8;
+const V2: usize = 9;
+const W: usize = 10;
+const LZ: usize = 11;
+const LX: usize = 12;
+const LY: usize = 13;
+
+/// One row of corners `k = 0..=nx` (from some first column on): the distances `R`, the
+/// differences of each corner term between neighbours, `steps[t][k] = t(k + 1) - t(k)`, and
+/// `ln_x[k] = ln(R + X_(k+1)) - ln(R + X_k)`.
+struct CornerRow {
+    r: Vec<f64>,
+    steps: [Vec<f64>; CORNER_TERMS],
+    ln_x: Vec<f64>,
+}
+
+impl CornerRow {
+    fn new(nx: usize) -> Self {
+        Self {
+            r: vec![0.0; nx + 1],
+            steps: std::array::from_fn(|_| vec![0.0; nx + 1]),
+            ln_x: vec![0.0; nx + 1],
+        }
+    }
+
+    /// Evaluates the corners `(X_k, Y)` of the row `row`, `from <= k <= nx`, using `work`'s
+    /// `steps` to hold the terms before they are differenced.
+    fn evaluate(&mut self, from: usize, columns: &[Edge], row: Edge, z: f64, work: &mut Self) {
+        let nx = columns.len() - 1;
+        for (k, &column) in columns.iter().enumerate().skip(from) {
+            let corner = Corner::new(column, row, z);
+            self.r[k] = corner.r;
+            for (term, value) in work.steps.iter_mut().zip(corner.terms) {
+                term[k] = value;
+            }
+        }
+        for (steps, terms) in self.steps.iter_mut().zip(&work.steps) {
+            for k in from..nx {
+                steps[k] = terms[k + 1] - terms[k];
+            }
+        }
+        for k in from..nx {
+            let pair = [columns[k + 1], columns[k]];
+            self.ln_x[k] = log_difference(pair, row.rho, self.r[k + 1], self.r[k]);
+        }
+    }
+}
+
+/// The corner sums of one row of cells `b` ([`offset_sums`]): `terms[t][a]` for the cells `a`
+/// in [`RowSums::columns`].
+pub(crate) struct RowSums {
+    from: usize,
+    terms: [Vec<f64>; TERMS],
+}
+
+impl RowSums {
+    fn new(nx: usize) -> Self {
+        Self {
+            from: 0,
+            terms: std::array::from_fn(|_| vec![0.0; nx + 1]),
+        }
+    }
+
+    /// The cells `a` of the row.
+    pub(crate) fn columns(&self) -> std::ops::Range<usize> {
+        self.from..self.terms[0].len() - 1
+    }
+
+    /// The sums of cell `a`.
+    pub(crate) fn at(&self, a: usize) -> CornerSums {
+        CornerSums(std::array::from_fn(|t| self.terms[t][a]))
+    }
+
+    /// Component `c` (in the order `xx, yy, zz, yz, xz, xy`) of the stresses of `load` along
+    /// the row: `out[i]` for the cell `a = columns().start + i`.
+    pub(crate) fn component(&self, load: Load, c: usize, nu: f64, out: &mut [f64]) {
+        let [(t0, k0), (t1, k1), (t2, k2), (t3, k3)] = formula(load, c, nu);
+        let range = self.columns();
+        let term = |t: usize| &self.terms[t][range.clone()];
+        for ((((o, v0), v1), v2), v3) in out
+            .iter_mut()
+            .zip(term(t0))
+            .zip(term(t1))
+            .zip(term(t2))
+            .zip(term(t3))
+        {
+            *o = k0 * v0 + k1 * v1 + k2 * v2 + k3 * v3;
+        }
+    }
+}
+
+/// The stresses of the unit `load` as a linear combination of the corner sums (the formulas
+/// of [`uniform_patch`]): component `c` is `Σ coefficient × term` over the four pairs
+/// `(term, coefficient)` (unused pairs have coefficient 0 on the always finite `Tx`).
+fn formula(load: Load, c: usize, nu: f64) -> [(usize, f64); 4] {
+    let k = 0.5 / PI;
+    let n = 2.0 * nu * k;
+    let none = (TX, 0.0);
+    match (load, c) {
+        (Load::Pressure, 0) => [(TX, -k), (TY, -n), (AX, -k), none],
+        (Load::Pressure, 1) => [(TY, -k), (TX, -n), (AY, -k), none],
+        (Load::Pressure, 2) => [(TX, -k), (TY, -k), (AX, k), (AY, k)],
+        (Load::Pressure, 3) => [(BY, -k), none, none, none],
+        (Load::Pressure, 4) => [(BX, -k), none, none, none],
+        (Load::Pressure, _) => [(LZ, n - k), (W, -k), none, none],
+        (Load::ShearX, 0) => [(LY, 2.0 * k), (V1, n), (BX, k), (V2, k)],
+        (Load::ShearX, 1) => [(LY, n), (V1, -n), (V2, -k), none],
+        (Load::ShearX, 2) => [(BX, -k), none, none, none],
+        (Load::ShearX, 3) => [(W, -k), none, none, none],
+        (Load::ShearX, 4) => [(TX, -k), (TY, -k), (AX, -k), none],
+        (Load::ShearX, _) => [(LX, k), (U2, -k), (U1, -n), none],
+        (Load::ShearY, 0) => [(LX, n), (U1, -n), (U2, -k), none],
+        (Load::ShearY, 1) => [(LX, 2.0 * k), (U1, n), (BY, k), (U2, k)],
+        (Load::ShearY, 2) => [(BY, -k), none, none, none],
+        (Load::ShearY, 3) => [(TX, -k), (TY, -k), (AY, -k), none],
+        (Load::ShearY, 4) => [(W, -k), none, none, none],
+        (Load::ShearY, _) => [(LY, k), (V2, -k), (V1, -n), none],
     }
 }
 
@@ -250,18 +437,8 @@ impl Edge {
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Corner {
     pub(crate) r: f64,
-    tx: f64,
-    ty: f64,
-    ax: f64,
-    bx: f64,
-    ay: f64,
-    by: f64,
-    u1: f64,
-    u2: f64,
-    v1: f64,
-    v2: f64,
-    w: f64,
-    lz: f64,
+    /// `Tx, Ty, Ax, Bx, Ay, By, U1, U2, V1, V2, W, LZ` (indexed by [`TX`] ... [`LZ`]).
+    terms: [f64; CORNER_TERMS],
 }
 
 impl Corner {
@@ -273,10 +450,9 @@ impl Corner {
         if r == 0.0 {
             // The corner itself, on the surface: only ln(R + z) is singular; every bounded
             // term is taken as 0.
-            return Self {
-                lz: f64::NEG_INFINITY,
-                ..Self::default()
-            };
+            let mut terms = [0.0; CORNER_TERMS];
+            terms[LZ] = f64::NEG_INFINITY;
+            return Self { r, terms };
         }
         let inverse_r = 1.0 / r;
         let (u, v, w) = (x * inverse_r, y * inverse_r, z * inverse_r);
@@ -307,21 +483,21 @@ impl Corner {
         let (ax, bx) = over_r_plus(v, x, u, rho_x);
         let (ay, by) = over_r_plus(u, y, v, rho_y);
         let inverse_one_plus_w = 1.0 / one_plus_w;
-        Self {
-            r,
+        let terms = [
             tx,
             ty,
             ax,
             bx,
             ay,
             by,
-            u1: u * inverse_one_plus_w,
-            u2: w * u * inverse_one_plus_w,
-            v1: v * inverse_one_plus_w,
-            v2: w * v * inverse_one_plus_w,
+            u * inverse_one_plus_w,
+            w * u * inverse_one_plus_w,
+            v * inverse_one_plus_w,
+            w * v * inverse_one_plus_w,
             w,
-            lz: (r + z).ln(),
-        }
+            (r + z).ln(),
+        ];
+        Self { r, terms }
     }
 }
 
@@ -348,81 +524,50 @@ pub(crate) fn log_difference(edges: [Edge; 2], rho: f64, r1: f64, r2: f64) -> f6
     }
 }
 
-/// The corner sums of every term of [`uniform_patch`].
+/// The corner sums of every term of [`uniform_patch`], indexed by [`TX`] ... [`LY`].
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct CornerSums {
-    tx: f64,
-    ty: f64,
-    ax: f64,
-    bx: f64,
-    ay: f64,
-    by: f64,
-    u1: f64,
-    u2: f64,
-    v1: f64,
-    v2: f64,
-    w: f64,
-    lx: f64,
-    ly: f64,
-    lz: f64,
-}
+pub(crate) struct CornerSums([f64; TERMS]);
 
 impl CornerSums {
     /// `corners[i][j]` at `(x - x_{i+1}, y - y_{j+1})`; `lx = Σ ln(R + X)`, `ly = Σ ln(R + Y)`.
     #[inline]
     pub(crate) fn new(corners: &[[Corner; 2]; 2], lx: f64, ly: f64) -> Self {
         let [[c11, c12], [c21, c22]] = corners;
-        let sum = |f: fn(&Corner) -> f64| (f(c11) - f(c21)) - (f(c12) - f(c22));
-        Self {
-            tx: sum(|c| c.tx),
-            ty: sum(|c| c.ty),
-            ax: sum(|c| c.ax),
-            bx: sum(|c| c.bx),
-            ay: sum(|c| c.ay),
-            by: sum(|c| c.by),
-            u1: sum(|c| c.u1),
-            u2: sum(|c| c.u2),
-            v1: sum(|c| c.v1),
-            v2: sum(|c| c.v2),
-            w: sum(|c| c.w),
-            lx,
-            ly,
-            lz: sum(|c| c.lz),
+        let mut terms = [0.0; TERMS];
+        for (t, sum) in terms[..CORNER_TERMS].iter_mut().enumerate() {
+            *sum = (c11.terms[t] - c21.terms[t]) - (c12.terms[t] - c22.terms[t]);
+        }
+        terms[LX] = lx;
+        terms[LY] = ly;
+        Self(terms)
+    }
+
+    /// The stresses of the three unit loads.
+    #[inline]
+    pub(crate) fn stresses(&self, nu: f64) -> PatchStresses {
+        PatchStresses {
+            pressure: self.load(Load::Pressure, nu),
+            shear_x: self.load(Load::ShearX, nu),
+            shear_y: self.load(Load::ShearY, nu),
         }
     }
 
+    /// The stresses of one unit load ([`formula`]).
     #[inline]
-    pub(crate) fn stresses(&self, nu: f64) -> PatchStresses {
-        let k = 0.5 / PI;
-        let s = self;
-        let pressure = Stress {
-            xx: -k * (s.tx + 2.0 * nu * s.ty + s.ax),
-            yy: -k * (s.ty + 2.0 * nu * s.tx + s.ay),
-            zz: -k * (s.tx + s.ty - s.ax - s.ay),
-            yz: -k * s.by,
-            xz: -k * s.bx,
-            xy: k * ((2.0 * nu - 1.0) * s.lz - s.w),
+    pub(crate) fn load(&self, load: Load, nu: f64) -> Stress {
+        let c = |c: usize| {
+            formula(load, c, nu)
+                .iter()
+                .map(|&(t, k)| k * self.0[t])
+                .sum::<f64>()
         };
-        let shear_x = Stress {
-            xx: k * (2.0 * s.ly + 2.0 * nu * s.v1 + s.bx + s.v2),
-            yy: k * (2.0 * nu * (s.ly - s.v1) - s.v2),
-            zz: -k * s.bx,
-            yz: -k * s.w,
-            xz: -k * (s.tx + s.ty + s.ax),
-            xy: k * (s.lx - s.u2 - 2.0 * nu * s.u1),
-        };
-        let shear_y = Stress {
-            xx: k * (2.0 * nu * (s.lx - s.u1) - s.u2),
-            yy: k * (2.0 * s.lx + 2.0 * nu * s.u1 + s.by + s.u2),
-            zz: -k * s.by,
-            yz: -k * (s.tx + s.ty + s.ay),
-            xz: -k * s.w,
-            xy: k * (s.ly - s.v2 - 2.0 * nu * s.v1),
-        };
-        PatchStresses {
-            pressure,
-            shear_x,
-            shear_y,
+        Stress {
+            xx: c(0),
+            yy: c(1),
+            zz: c(2),
+            yz: c(3),
+            xz: c(4),
+            xy: c(5),
         }
     }
 }

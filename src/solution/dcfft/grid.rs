@@ -70,12 +70,7 @@ impl From<crate::operator::transform::TransformError> for DcFftError {
 }
 
 /// The three kinds of surface traction (the discriminant indexes stored coefficients).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Load {
-    Pressure = 0,
-    ShearX = 1,
-    ShearY = 2,
-}
+pub(crate) use crate::solution::patch::Load;
 
 impl Load {
     pub(super) fn stress(self, s: &PatchStresses) -> &Stress {

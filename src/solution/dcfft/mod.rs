@@ -44,7 +44,7 @@ use std::sync::Arc;
 use ndarray::{Array3, ArrayViewMut2, ArrayViewMut3, Axis};
 use rustfft::num_complex::Complex;
 
-use super::patch::uniform_patch_offset_rows;
+use super::patch::{offset_sums, uniform_patch_offset_rows};
 use crate::operator::elastic::Periodicity;
 
 /// Stresses of a [`TractionGrid`] at its cell centres, layer by layer, by DC-FFT.
@@ -256,9 +256,73 @@ impl DcFft {
     /// The influence coefficients of depth `z` for [`DcFft::component_into`]: fills
     /// `quadrant`, of the length of [`Workspace`]'s (`6 L nx ny` for the `L` loads present).
     pub fn influence_into(&self, z: f64, quadrant: &mut Vec<f64>) {
+        if self.turns_about_diagonal() {
+            self.fill_turned_influence(z, quadrant);
+            return;
+        }
         for block in self.influence_blocks(quadrant, 1) {
             self.fill_influence(z, block);
         }
+    }
+
+    /// Whether the coefficients of the offsets `a < b` are those of `(b, a)` turned about the
+    /// diagonal `x = y`: an isolated square grid of square cells.
+    fn turns_about_diagonal(&self) -> bool {
+        let ([ny, nx], [dx, dy]) = (self.shape, self.cell);
+        self.periodicity == Periodicity::NonPeriodic && nx == ny && dx == dy
+    }
+
+    /// [`DcFft::influence_into`] on a grid that [turns about its
+    /// diagonal](DcFft::turns_about_diagonal): each offset `(a, b)` with `a >= b` is evaluated
+    /// once ([`offset_sums`]) and gives the coefficients of both `(a, b)` and `(b, a)`. Turned
+    /// about `x = y`, a load on the cell at `(a, b)` seen from the origin is the turned load
+    /// ([`Load::turned`]: the pressure, or the other shear) at `(b, a)`, and its stresses have
+    /// x and y exchanged (`xx <-> yy`, `xz <-> yz`; `zz`, `xy` stay), the symmetry of the
+    /// formulas of [`super::patch::uniform_patch`]. About half the corner terms of the row by
+    /// row evaluation.
+    fn fill_turned_influence(&self, z: f64, quadrant: &mut Vec<f64>) {
+        let n = self.shape[1];
+        let cells = n * n;
+        let loads: Vec<Load> = self.tractions.iter().map(|(load, _)| *load).collect();
+        let arrays = 6 * loads.len();
+        quadrant.resize(arrays * cells, 0.0);
+        let nu = self.poisson;
+        // The turned values of a band of TURNED_BAND rows, `[array][b - first][a]`, written
+        // into the columns `b` of the rows `a` a cache line at a time.
+        let mut turned = vec![0.0; arrays * TURNED_BAND * n];
+        let mut first = 0;
+        let flush = |quadrant: &mut [f64], turned: &[f64], first: usize| {
+            let band = first..(first + TURNED_BAND).min(n);
+            for (array, values) in quadrant
+                .chunks_exact_mut(cells)
+                .zip(turned.chunks_exact(TURNED_BAND * n))
+            {
+                for a in band.start + 1..n {
+                    for b in band.start..band.end.min(a) {
+                        array[a * n + b] = values[(b - band.start) * n + a];
+                    }
+                }
+            }
+        };
+        offset_sums(self.cell, z, n, 0..n, true, |b, sums| {
+            if b >= first + TURNED_BAND {
+                flush(quadrant, &turned, first);
+                first = b;
+            }
+            for (slot, &load) in loads.iter().enumerate() {
+                for c in 0..6 {
+                    let array = (slot * 6 + c) * cells;
+                    let row = &mut quadrant[array + b * n + b..array + (b + 1) * n];
+                    sums.component(load, c, nu, row);
+                    // Turned: component c of the turned load is the exchanged component of
+                    // this one; the diagonal cell a = b is written but not used.
+                    let band = (slot * 6 + c) * TURNED_BAND + b - first;
+                    let row = &mut turned[band * n + b..(band + 1) * n];
+                    sums.component(load.turned(), EXCHANGED[c], nu, row);
+                }
+            }
+        });
+        flush(quadrant, &turned, first);
     }
 
     /// One stress component (`c` in the order of [`COMPONENTS`]) of a layer whose influence
@@ -437,16 +501,16 @@ impl DcFft {
         }
         let InfluenceBlock { rows, mut arrays } = block;
         let first_row = rows.start;
-        uniform_patch_offset_rows(self.cell, z, nx, rows, self.poisson, |a, b, s| {
-            let index = (b - first_row) * nx + a;
+        offset_sums(self.cell, z, nx, rows, false, |b, sums| {
+            let row = (b - first_row) * nx..(b - first_row + 1) * nx;
             for (slot, &load) in loads.iter().enumerate() {
-                let stress = load.stress(s);
-                let first = slot * 6;
-                let values = [
-                    stress.xx, stress.yy, stress.zz, stress.yz, stress.xz, stress.xy,
-                ];
-                for (array, value) in arrays[first..first + 6].iter_mut().zip(values) {
-                    array[index] = value;
+                for c in 0..6 {
+                    sums.component(
+                        load,
+                        c,
+                        self.poisson,
+                        &mut arrays[slot * 6 + c][row.clone()],
+                    );
                 }
             }
         });
@@ -543,6 +607,14 @@ impl DcFft {
         }
     }
 }
+
+/// The component with x and y exchanged, in the order of [`COMPONENTS`]: `xx <-> yy`,
+/// `yz <-> xz`.
+const EXCHANGED: [usize; 6] = [1, 0, 2, 4, 3, 5];
+
+/// Rows of influence coefficients whose turned values ([`DcFft::fill_turned_influence`]) are
+/// held before they are written as columns: eight values of a column fill a cache line.
+const TURNED_BAND: usize = 8;
 
 /// Two loads whose coefficients of one component have opposite parity in x, transformed
 /// together: the pressure and the shear along x (each component is even in x for one of them

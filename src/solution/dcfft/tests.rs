@@ -4,6 +4,10 @@ use super::*;
 use ndarray::Array2;
 
 fn grid(shape: [usize; 2], loads: [bool; 3]) -> TractionGrid {
+    grid_of_cells(shape, [0.1, 0.07], loads)
+}
+
+fn grid_of_cells(shape: [usize; 2], cell: [f64; 2], loads: [bool; 3]) -> TractionGrid {
     let [ny, nx] = shape;
     let field = |seed: f64| {
         Array2::from_shape_fn((ny, nx), |(j, i)| {
@@ -13,7 +17,7 @@ fn grid(shape: [usize; 2], loads: [bool; 3]) -> TractionGrid {
     };
     TractionGrid::new(
         [-0.4, 0.3],
-        [0.1, 0.07],
+        cell,
         loads[0].then(|| field(1.3)),
         loads[1].then(|| field(2.9)),
         loads[2].then(|| field(-1.7)),
@@ -53,6 +57,39 @@ fn fft_equals_direct_summation_on_small_grids() {
     assert_layers_agree(&grid([1, 1], [true, true, true]), &[0.0, 0.5], 0.3);
     assert_layers_agree(&grid([1, 6], [true, false, false]), &[0.1], 0.3);
     assert_layers_agree(&grid([5, 1], [false, true, false]), &[0.1], 0.3);
+}
+
+#[test]
+fn square_cells_turned_about_the_diagonal_equal_direct_summation() {
+    // An isolated square grid of square cells evaluates the offsets a >= b only and turns
+    // them about x = y for the others (`fill_turned_influence`); every combination of loads,
+    // since the shears exchange under the turn.
+    for loads in [
+        [true, true, true],
+        [true, true, false],
+        [true, false, false],
+        [false, true, false],
+        [false, false, true],
+        [false, true, true],
+    ] {
+        let grid = grid_of_cells([13, 13], [0.08, 0.08], loads);
+        assert!(DcFft::new(&grid, 0.3)
+            .expect("planned")
+            .turns_about_diagonal());
+        assert_layers_agree(&grid, &[0.0, 1e-6, 0.04, 0.9], 0.3);
+    }
+    assert_layers_agree(
+        &grid_of_cells([1, 1], [0.5, 0.5], [true; 3]),
+        &[0.0, 0.3],
+        0.25,
+    );
+    // The turn needs both: a square grid of oblong cells, an oblong grid of square cells.
+    for (shape, cell) in [([6, 6], [0.1, 0.07]), ([6, 7], [0.1, 0.1])] {
+        let grid = grid_of_cells(shape, cell, [true; 3]);
+        assert!(!DcFft::new(&grid, 0.3)
+            .expect("planned")
+            .turns_about_diagonal());
+    }
 }
 
 fn max_difference(a: &Array3<f64>, b: &Array3<f64>) -> f64 {

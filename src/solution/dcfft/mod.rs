@@ -402,7 +402,6 @@ impl DcFft {
         for start in (0..=nx).step_by(COLUMN_CHUNK) {
             let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
             let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
-            sum.fill(Complex::new(0.0, 0.0));
             let window =
                 |slot: usize| &self.tractions[slot].1[start * height..start * height + length];
             if let Some(Packed {
@@ -415,12 +414,22 @@ impl DcFft {
                 self.plans
                     .column_chunk(&rows[0], more, start, chunk, &mut buffers.scratch);
                 let (t_even, t_odd) = (window(even), window(odd));
-                for (((total, r), te), to) in sum.iter_mut().zip(&*chunk).zip(t_even).zip(t_odd) {
-                    let (k_even, k_odd) = Packed::split(*r, parity_y);
-                    *total += k_even * te + k_odd * to;
+                let terms = sum.iter_mut().zip(&*chunk).zip(t_even.iter().zip(t_odd));
+                // With parity +1 in y, Ê = Re r and iÔ = i Im r; with −1, Ê = i Im r and
+                // iÔ = Re r ([`Packed`]).
+                if parity_y > 0.0 {
+                    for ((total, r), (te, to)) in terms {
+                        *total = te * r.re + Complex::new(-to.im, to.re) * r.im;
+                    }
+                } else {
+                    for ((total, r), (te, to)) in terms {
+                        *total = Complex::new(-te.im, te.re) * r.im + to * r.re;
+                    }
                 }
             } else {
-                for ((load, traction), load_rows) in self.tractions.iter().zip(rows.iter()) {
+                for (slot, ((load, traction), load_rows)) in
+                    self.tractions.iter().zip(rows.iter()).enumerate()
+                {
                     let more = Rows::Mirrored {
                         parity: load.parity(c).1,
                     };
@@ -428,8 +437,11 @@ impl DcFft {
                     self.plans
                         .column_chunk(load_rows, more, start, chunk, scratch);
                     let traction = &traction[start * height..start * height + length];
-                    for ((total, coefficient), t) in sum.iter_mut().zip(&*chunk).zip(traction) {
-                        *total += coefficient * t;
+                    let terms = sum.iter_mut().zip(&*chunk).zip(traction);
+                    if slot == 0 {
+                        terms.for_each(|((total, k), t)| *total = k * t);
+                    } else {
+                        terms.for_each(|((total, k), t)| *total += k * t);
                     }
                 }
             }
@@ -622,7 +634,10 @@ const TURNED_BAND: usize = 8;
 /// transform to real spectra, those of an odd one to imaginary spectra, so the real transform
 /// of their sum holds both: `E + iO`, with `E` the even load's and `iO` the odd load's. Along
 /// the columns both are real (or, with parity −1 in y, imaginary) sequences of the same
-/// parity, so the complex transform `R` of `E + iO` holds both again ([`Packed::split`]).
+/// parity, so the complex transform `r` of `E + iO` holds both again: with `Ê`, `Ô` the column
+/// transforms of `E`, `O`, `r = Ê + iÔ`, and the odd load's spectrum is `iÔ`. Parity +1 in y:
+/// `Ê`, `Ô` real, so `Ê = Re r`, `iÔ = i Im r`. Parity −1: both imaginary, `Ê = i Im r`,
+/// `iÔ = Re r`.
 /// Half the forward transforms of a layer with friction. (The two-real-sequences-in-one
 /// transform of Press, Teukolsky, Vetterling & Flannery, *Numerical Recipes*, 3rd ed.,
 /// Cambridge University Press (2007), §12.3, here with the parities doing the separation.)
@@ -652,18 +667,6 @@ impl Packed {
             odd,
             parity_y: y1,
         })
-    }
-
-    /// The even and odd loads' coefficient spectra from the transform `r` of the packed
-    /// rows: with `Ê`, `Ô` the column transforms of `E`, `O`, `r = Ê + iÔ`, and the odd load's
-    /// spectrum is `iÔ`. Parity +1 in y: `Ê`, `Ô` real, so `Ê = Re r`, `iÔ = i Im r`. Parity −1:
-    /// both imaginary, `Ê = i Im r`, `iÔ = Re r`.
-    fn split(r: Complex<f64>, parity_y: f64) -> (Complex<f64>, Complex<f64>) {
-        if parity_y > 0.0 {
-            (Complex::new(r.re, 0.0), Complex::new(0.0, r.im))
-        } else {
-            (Complex::new(0.0, r.im), Complex::new(r.re, 0.0))
-        }
     }
 }
 

@@ -96,22 +96,34 @@ impl FftPlans {
         let [ny, nx] = self.shape;
         let (width, height) = (nx + 1, 2 * ny);
         let count = chunk.len() / height;
-        // Gather (a transpose of a narrow band: whole cache lines read per row).
-        for (r, row) in rows.chunks_exact(width).enumerate() {
-            for (t, value) in row[start..start + count].iter().enumerate() {
-                chunk[t * height + r] = *value;
-            }
-        }
+        // Gather (a transpose of a narrow band: whole cache lines read per row), with the
+        // rows beyond ny.
         let zero = Complex::new(0.0, 0.0);
-        for column in chunk.chunks_exact_mut(height) {
-            let (upper, lower) = column.split_at_mut(ny);
-            match more {
-                Rows::ZeroPadded => lower.fill(zero),
-                Rows::Mirrored { parity } => {
-                    lower[0] = zero;
-                    for (target, value) in lower[1..].iter_mut().rev().zip(&upper[1..]) {
-                        *target = parity * value;
+        match more {
+            Rows::ZeroPadded => {
+                for (r, row) in rows.chunks_exact(width).enumerate() {
+                    for (t, value) in row[start..start + count].iter().enumerate() {
+                        chunk[t * height + r] = *value;
                     }
+                }
+                for column in chunk.chunks_exact_mut(height) {
+                    column[ny..].fill(zero);
+                }
+            }
+            Rows::Mirrored { parity } => {
+                for (r, row) in rows.chunks_exact(width).enumerate() {
+                    let mirror = (height - r) % height;
+                    for (t, value) in row[start..start + count].iter().enumerate() {
+                        chunk[t * height + r] = *value;
+                        chunk[t * height + mirror] = parity * value;
+                    }
+                }
+                // Row ny; row 0 is its own mirror, written last with its own value.
+                for column in chunk.chunks_exact_mut(height) {
+                    column[ny] = zero;
+                }
+                for (t, value) in rows[start..start + count].iter().enumerate() {
+                    chunk[t * height] = *value;
                 }
             }
         }

@@ -298,8 +298,9 @@ impl DcFft {
                 .zip(turned.chunks_exact(TURNED_BAND * n))
             {
                 for a in band.start + 1..n {
-                    for b in band.start..band.end.min(a) {
-                        array[a * n + b] = values[(b - band.start) * n + a];
+                    let row = &mut array[a * n + band.start..a * n + band.end.min(a)];
+                    for (target, column) in row.iter_mut().zip(values.chunks_exact(n)) {
+                        *target = column[a];
                     }
                 }
             }

@@ -287,20 +287,31 @@ impl DcFft {
         let arrays = 6 * loads.len();
         quadrant.resize(arrays * cells, 0.0);
         let nu = self.poisson;
-        // The turned values of a band of TURNED_BAND rows, `[array][b - first][a]`, written
-        // into the columns `b` of the rows `a` a cache line at a time.
+        // The turned values of the shears in a band of TURNED_BAND rows,
+        // `[array][b - first][a]`, written into the columns `b` of the rows `a` a cache line
+        // at a time. The pressure's are its exchanged components, read from their rows.
         let mut turned = vec![0.0; arrays * TURNED_BAND * n];
         let mut first = 0;
         let flush = |quadrant: &mut [f64], turned: &[f64], first: usize| {
             let band = first..(first + TURNED_BAND).min(n);
-            for (array, values) in quadrant
-                .chunks_exact_mut(cells)
-                .zip(turned.chunks_exact(TURNED_BAND * n))
-            {
-                for a in band.start + 1..n {
-                    let row = &mut array[a * n + band.start..a * n + band.end.min(a)];
-                    for (target, column) in row.iter_mut().zip(values.chunks_exact(n)) {
-                        *target = column[a];
+            for (slot, load) in loads.iter().enumerate() {
+                for c in 0..6 {
+                    let array = (slot * 6 + c) * cells;
+                    for a in band.start + 1..n {
+                        let columns = band.start..band.end.min(a);
+                        if *load == Load::Pressure {
+                            let source = (slot * 6 + EXCHANGED[c]) * cells + a;
+                            for b in columns {
+                                quadrant[array + a * n + b] = quadrant[source + b * n];
+                            }
+                        } else {
+                            let values = &turned[(slot * 6 + c) * TURNED_BAND * n..];
+                            let row =
+                                &mut quadrant[array + a * n + columns.start..][..columns.len()];
+                            for (target, column) in row.iter_mut().zip(values.chunks_exact(n)) {
+                                *target = column[a];
+                            }
+                        }
                     }
                 }
             }
@@ -315,6 +326,9 @@ impl DcFft {
                     let array = (slot * 6 + c) * cells;
                     let row = &mut quadrant[array + b * n + b..array + (b + 1) * n];
                     sums.component(load, c, nu, row);
+                    if load == Load::Pressure {
+                        continue;
+                    }
                     // Turned: component c of the turned load is the exchanged component of
                     // this one; the diagonal cell a = b is written but not used.
                     let band = (slot * 6 + c) * TURNED_BAND + b - first;

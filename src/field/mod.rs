@@ -6,10 +6,12 @@
 use ndarray::{Array3, Array4, ArrayView2, ArrayView3, Axis as NdAxis};
 use rayon::prelude::*;
 
-use crate::solution::dcfft::{DcFft, DcFftError};
 use crate::solution::point_numerical::PointTractions;
 use crate::solution::Solution;
 use crate::stress::{Quantity, Stress};
+
+mod dcfft_layers;
+pub use dcfft_layers::for_each_dcfft_layer;
 
 /// Evenly spaced samples `min..=max` (`count >= 2`).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -445,70 +447,6 @@ fn evaluate_layers<T: Precision>(
     })
     .map_err(|e| FieldError::Numerical(e.to_string()))?;
     Ok(values.into_inner().unwrap_or_else(|e| e.into_inner()))
-}
-
-/// The working memory of the cell-based layers of all workers together above which the
-/// layers of an isolated grid run one after another, each split over the threads (an
-/// isolated 2048² grid with friction needs 0.8 GB per worker: the influence coefficients of
-/// two loads, their row spectra and the layer, [`DcFft::worker_bytes`]).
-const PARALLEL_LAYERS_BYTES: usize = 1 << 30;
-
-/// Computes the DC-FFT layers of `fft` at `depths` and calls `take(index, z, layer)` for each
-/// (in no particular order) with the layer `[component, y, x]`, in parallel: over the depths
-/// when there are at least as many as threads, each worker holding one layer's working set;
-/// otherwise, or where those working sets together would exceed [`PARALLEL_LAYERS_BYTES`]
-/// (isolated grids, whose layers are all cell-based), layer after layer, each split into
-/// blocks of influence-coefficient rows and then into its six components, which run in
-/// parallel.
-pub fn for_each_dcfft_layer<F>(fft: &DcFft, depths: &[f64], take: F) -> Result<(), DcFftError>
-where
-    F: Fn(usize, f64, ndarray::ArrayView3<f64>) + Sync,
-{
-    let [ny, nx] = fft.shape();
-    let threads = rayon::current_num_threads();
-    let fits = fft.periodicity() == crate::operator::elastic::Periodicity::Periodic
-        || fft.worker_bytes().saturating_mul(threads) <= PARALLEL_LAYERS_BYTES;
-    if depths.len() >= threads && fits {
-        return depths
-            .par_iter()
-            .enumerate()
-            .map_init(
-                || (fft.workspace(), Array3::zeros((6, ny, nx))),
-                |(workspace, layer), (index, &z)| {
-                    fft.layer_into(z, workspace, layer.view_mut())?;
-                    take(index, z, layer.view());
-                    Ok(())
-                },
-            )
-            .collect();
-    }
-    let mut quadrant = Vec::new();
-    let mut layer = Array3::zeros((6, ny, nx));
-    let mut spectral = None;
-    for (index, &z) in depths.iter().enumerate() {
-        // A spectral layer (on this thread: a few milliseconds per 256² layer).
-        if fft.is_spectral(z) {
-            let workspace = spectral.get_or_insert_with(|| fft.workspace());
-            fft.layer_into(z, workspace, layer.view_mut())?;
-            take(index, z, layer.view());
-            continue;
-        }
-        // A few blocks per thread, so that uneven blocks still balance.
-        fft.influence_blocks(&mut quadrant, 4 * threads)
-            .into_par_iter()
-            .for_each(|block| fft.fill_influence(z, block));
-        layer
-            .axis_iter_mut(NdAxis(0))
-            .into_par_iter()
-            .enumerate()
-            .map_init(
-                || fft.component_workspace(),
-                |workspace, (c, out)| fft.component_into(&quadrant, c, workspace, out),
-            )
-            .collect::<Result<(), _>>()?;
-        take(index, z, layer.view());
-    }
-    Ok(())
 }
 
 /// Scratch space reused from row to row by one worker.

@@ -62,12 +62,14 @@ use crate::operator::elastic::Periodicity;
 /// and summed, and one inverse transform gives the component.
 ///
 /// The coefficients are evaluated on one quadrant `a, b >= 0` (from corner terms shared between
-/// neighbouring cells, [`uniform_patch_offset_rows`]) and mirrored by their parity (each component
-/// is even or odd in x and in y about the loaded cell); the mirrored rows' transforms are the
-/// transformed rows times the parity. The tractions' spectra are computed once, in
-/// [`DcFft::new`]; each layer then costs one forward transform per load and component and one
-/// inverse per component, real-to-complex along rows (`realfft`) and complex along columns
-/// (`rustfft`). The column pass runs on a few columns at a time, from gathering through the
+/// neighbouring cells, [`offset_sums`]) and mirrored by their parity (each component is even or
+/// odd in x and in y about the loaded cell); the mirrored rows' transforms are the transformed
+/// rows times the parity. On an isolated square grid of square cells only the half `a >= b` of
+/// the quadrant is evaluated, the rest turned about the diagonal
+/// ([`DcFft::fill_turned_influence`]). The tractions' spectra are computed once, in
+/// [`DcFft::new`]; each layer then costs one forward transform per load and component (one for
+/// the pressure and the shear along x together, [`Packed`]) and one inverse per component,
+/// real-to-complex along rows (`realfft`) and complex along columns (`rustfft`). The column pass runs on a few columns at a time, from gathering through the
 /// products to the inverse transform, so that it works in cache.
 ///
 /// The result equals direct summation ([`TractionGrid::direct_layer`]) up to rounding (the

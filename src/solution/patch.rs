@@ -235,16 +235,16 @@ pub(crate) fn offset_sums(
         .collect();
     // The first column of row b (and of the corners below and above it).
     let first = |b: usize| if diagonal { b.min(nx) } else { 0 };
-    let mut corners = CornerRow::new(nx);
+    let mut terms: [Vec<f64>; CORNER_TERMS] = std::array::from_fn(|_| vec![0.0; nx + 1]);
     let (mut below, mut above) = (CornerRow::new(nx), CornerRow::new(nx));
     let mut sums = RowSums::new(nx);
     let mut ln_y = vec![0.0; nx + 1];
     let mut row_below = Edge::new((rows.start as f64 - 0.5) * dy, z);
-    below.evaluate(first(rows.start), &columns, row_below, z, &mut corners);
+    below.evaluate(first(rows.start), &columns, row_below, z, &mut terms);
     for b in rows {
         let from = first(b);
         let row_above = Edge::new((b as f64 + 0.5) * dy, z);
-        above.evaluate(from, &columns, row_above, z, &mut corners);
+        above.evaluate(from, &columns, row_above, z, &mut terms);
         sums.from = from;
         for (sum, (up, down)) in sums.terms[..CORNER_TERMS]
             .iter_mut()
@@ -319,18 +319,25 @@ impl CornerRow {
         }
     }
 
-    /// Evaluates the corners `(X_k, Y)` of the row `row`, `from <= k <= nx`, using `work`'s
-    /// `steps` to hold the terms before they are differenced.
-    fn evaluate(&mut self, from: usize, columns: &[Edge], row: Edge, z: f64, work: &mut Self) {
+    /// Evaluates the corners `(X_k, Y)` of the row `row`, `from <= k <= nx`, holding their
+    /// terms in `terms` before they are differenced.
+    fn evaluate(
+        &mut self,
+        from: usize,
+        columns: &[Edge],
+        row: Edge,
+        z: f64,
+        terms: &mut [Vec<f64>; CORNER_TERMS],
+    ) {
         let nx = columns.len() - 1;
         for (k, &column) in columns.iter().enumerate().skip(from) {
             let corner = Corner::new(column, row, z);
             self.r[k] = corner.r;
-            for (term, value) in work.steps.iter_mut().zip(corner.terms) {
+            for (term, value) in terms.iter_mut().zip(corner.terms) {
                 term[k] = value;
             }
         }
-        for (steps, terms) in self.steps.iter_mut().zip(&work.steps) {
+        for (steps, terms) in self.steps.iter_mut().zip(terms.iter()) {
             for k in from..nx {
                 steps[k] = terms[k + 1] - terms[k];
             }

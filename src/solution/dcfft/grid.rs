@@ -69,7 +69,7 @@ impl From<crate::operator::transform::TransformError> for DcFftError {
     }
 }
 
-/// The three kinds of surface traction (the discriminant indexes stored coefficients).
+// The three kinds of surface traction (the discriminant indexes stored coefficients).
 pub(crate) use crate::solution::patch::Load;
 
 impl Load {

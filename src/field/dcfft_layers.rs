@@ -15,11 +15,10 @@ const PARALLEL_LAYERS_BYTES: usize = 1 << 30;
 /// (in no particular order) with the layer `[component, y, x]`, in parallel: over the depths
 /// when there are at least as many as threads, each worker holding one layer's working set;
 /// otherwise, or where those working sets together would exceed [`PARALLEL_LAYERS_BYTES`]
-/// (isolated grids, whose layers are all cell-based), layer after layer, each split into
-/// blocks of influence-coefficient rows (or, on a grid that [turns about its
-/// diagonal](DcFft::turns_about_diagonal), filled on one thread in half the work) and then
-/// into its six components, which run in parallel. Either way a layer is the same to the
-/// last bit.
+/// (isolated grids, whose layers are all cell-based), layer after layer, each layer's
+/// influence coefficients split over the threads ([`DcFft::influence_in_parallel`]) and then
+/// its six components, which run in parallel. Either way a layer is the same to the last
+/// bit.
 pub fn for_each_dcfft_layer<F>(fft: &DcFft, depths: &[f64], take: F) -> Result<(), DcFftError>
 where
     F: Fn(usize, f64, ndarray::ArrayView3<f64>) + Sync,
@@ -53,16 +52,7 @@ where
             take(index, z, layer.view());
             continue;
         }
-        // A grid that turns about its diagonal fills its coefficients on this thread in half
-        // the work (and exactly as the parallel layers do); others in a few blocks per thread,
-        // so that uneven blocks still balance.
-        if fft.turns_about_diagonal() {
-            fft.influence_into(z, &mut quadrant);
-        } else {
-            fft.influence_blocks(&mut quadrant, 4 * threads)
-                .into_par_iter()
-                .for_each(|block| fft.fill_influence(z, block));
-        }
+        fft.influence_in_parallel(z, &mut quadrant, threads);
         layer
             .axis_iter_mut(NdAxis(0))
             .into_par_iter()

@@ -34,6 +34,7 @@ mod grid;
 mod images;
 mod plans;
 pub mod spectral;
+mod turned;
 
 pub use grid::*;
 pub use images::*;
@@ -259,12 +260,28 @@ impl DcFft {
     /// `quadrant`, of the length of [`Workspace`]'s (`6 L nx ny` for the `L` loads present).
     pub fn influence_into(&self, z: f64, quadrant: &mut Vec<f64>) {
         if self.turns_about_diagonal() {
-            self.fill_turned_influence(z, quadrant);
+            self.fill_turned_influence(z, quadrant, 1);
             return;
         }
         for block in self.influence_blocks(quadrant, 1) {
             self.fill_influence(z, block);
         }
+    }
+
+    /// [`DcFft::influence_into`] split over `threads` threads of the rayon pool (for one layer
+    /// at a time): the same coefficients to the last bit. A grid that [turns about its
+    /// diagonal](DcFft::turns_about_diagonal) is filled band by band, its rows in parallel and
+    /// then their turned values; others in blocks of rows, a few per thread, so that uneven
+    /// blocks still balance.
+    pub fn influence_in_parallel(&self, z: f64, quadrant: &mut Vec<f64>, threads: usize) {
+        use rayon::prelude::*;
+        if self.turns_about_diagonal() {
+            self.fill_turned_influence(z, quadrant, threads.max(1));
+            return;
+        }
+        self.influence_blocks(quadrant, 4 * threads.max(1))
+            .into_par_iter()
+            .for_each(|block| self.fill_influence(z, block));
     }
 
     /// Whether the coefficients of the offsets `a < b` are those of `(b, a)` turned about the
@@ -275,74 +292,6 @@ impl DcFft {
     pub fn turns_about_diagonal(&self) -> bool {
         let ([ny, nx], [dx, dy]) = (self.shape, self.cell);
         self.periodicity == Periodicity::NonPeriodic && nx == ny && dx == dy
-    }
-
-    /// [`DcFft::influence_into`] on a grid that [turns about its
-    /// diagonal](DcFft::turns_about_diagonal): each offset `(a, b)` with `a >= b` is evaluated
-    /// once ([`offset_sums`]) and gives the coefficients of both `(a, b)` and `(b, a)`. Turned
-    /// about `x = y`, a load on the cell at `(a, b)` seen from the origin is the turned load
-    /// ([`Load::turned`]: the pressure, or the other shear) at `(b, a)`, and its stresses have
-    /// x and y exchanged (`xx <-> yy`, `xz <-> yz`; `zz`, `xy` stay), the symmetry of the
-    /// formulas of [`super::patch::uniform_patch`]. About half the corner terms of the row by
-    /// row evaluation.
-    fn fill_turned_influence(&self, z: f64, quadrant: &mut Vec<f64>) {
-        let n = self.shape[1];
-        let cells = n * n;
-        let loads: Vec<Load> = self.tractions.iter().map(|(load, _)| *load).collect();
-        let arrays = 6 * loads.len();
-        quadrant.resize(arrays * cells, 0.0);
-        let nu = self.poisson;
-        // The turned values of the shears in a band of TURNED_BAND rows,
-        // `[array][b - first][a]`, written into the columns `b` of the rows `a` a cache line
-        // at a time. The pressure's are its exchanged components, read from their rows.
-        let mut turned = vec![0.0; arrays * TURNED_BAND * n];
-        let mut first = 0;
-        let flush = |quadrant: &mut [f64], turned: &[f64], first: usize| {
-            let band = first..(first + TURNED_BAND).min(n);
-            for (slot, load) in loads.iter().enumerate() {
-                for c in 0..6 {
-                    let array = (slot * 6 + c) * cells;
-                    for a in band.start + 1..n {
-                        let columns = band.start..band.end.min(a);
-                        if *load == Load::Pressure {
-                            let source = (slot * 6 + EXCHANGED[c]) * cells + a;
-                            for b in columns {
-                                quadrant[array + a * n + b] = quadrant[source + b * n];
-                            }
-                        } else {
-                            let values = &turned[(slot * 6 + c) * TURNED_BAND * n..];
-                            let row =
-                                &mut quadrant[array + a * n + columns.start..][..columns.len()];
-                            for (target, column) in row.iter_mut().zip(values.chunks_exact(n)) {
-                                *target = column[a];
-                            }
-                        }
-                    }
-                }
-            }
-        };
-        offset_sums(self.cell, z, n, 0..n, true, |b, sums| {
-            if b >= first + TURNED_BAND {
-                flush(quadrant, &turned, first);
-                first = b;
-            }
-            for (slot, &load) in loads.iter().enumerate() {
-                for (c, exchanged) in EXCHANGED.into_iter().enumerate() {
-                    let array = (slot * 6 + c) * cells;
-                    let row = &mut quadrant[array + b * n + b..array + (b + 1) * n];
-                    sums.component(load, c, nu, row);
-                    if load == Load::Pressure {
-                        continue;
-                    }
-                    // Turned: component c of the turned load is the exchanged component of
-                    // this one; the diagonal cell a = b is written but not used.
-                    let band = (slot * 6 + c) * TURNED_BAND + b - first;
-                    let row = &mut turned[band * n + b..(band + 1) * n];
-                    sums.component(load.turned(), exchanged, nu, row);
-                }
-            }
-        });
-        flush(quadrant, &turned, first);
     }
 
     /// One stress component (`c` in the order of [`COMPONENTS`]) of a layer whose influence
@@ -639,14 +588,6 @@ impl DcFft {
         }
     }
 }
-
-/// The component with x and y exchanged, in the order of [`COMPONENTS`]: `xx <-> yy`,
-/// `yz <-> xz`.
-const EXCHANGED: [usize; 6] = [1, 0, 2, 4, 3, 5];
-
-/// Rows of influence coefficients whose turned values ([`DcFft::fill_turned_influence`]) are
-/// held before they are written as columns: eight values of a column fill a cache line.
-const TURNED_BAND: usize = 8;
 
 /// Two loads whose coefficients of one component have opposite parity in x, transformed
 /// together: the pressure and the shear along x (each component is even in x for one of them

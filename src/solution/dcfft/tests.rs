@@ -92,6 +92,41 @@ fn square_cells_turned_about_the_diagonal_equal_direct_summation() {
     }
 }
 
+/// The coefficients split over threads, band by band, are those of one thread to the last
+/// bit: several bands of 64 rows and a short last one, parts of uneven length, the rows
+/// below each band in chunks; turned grids with every pair of loads, and a grid that does not
+/// turn (blocks of rows).
+#[test]
+fn coefficients_split_over_threads_equal_those_of_one_thread() {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(3)
+        .build()
+        .expect("a thread pool");
+    let cases = [
+        ([150, 150], [0.01, 0.01], [true, false, true]),
+        ([150, 150], [0.01, 0.01], [true, true, false]),
+        ([70, 70], [0.02, 0.02], [false, true, true]),
+        ([40, 45], [0.02, 0.03], [true, false, true]),
+    ];
+    for (shape, cell, loads) in cases {
+        let fft = DcFft::new(&grid_of_cells(shape, cell, loads), 0.3).expect("planned");
+        for z in [0.0, 0.013, 0.4] {
+            let mut one = Vec::new();
+            fft.influence_into(z, &mut one);
+            for threads in [2, 3, 5] {
+                let mut split = Vec::new();
+                pool.install(|| fft.influence_in_parallel(z, &mut split, threads));
+                assert!(
+                    one.iter()
+                        .zip(&split)
+                        .all(|(a, b)| a.to_bits() == b.to_bits()),
+                    "{shape:?}, z = {z}, {threads} threads: not the same bits"
+                );
+            }
+        }
+    }
+}
+
 fn max_difference(a: &Array3<f64>, b: &Array3<f64>) -> f64 {
     (a - b).iter().fold(0.0f64, |m, v| m.max(v.abs()))
 }

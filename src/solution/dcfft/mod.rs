@@ -25,10 +25,11 @@
 //! compare with a window of twelve images each way and with the closed form of a sinusoidal
 //! pressure.
 //!
-//! Threads: everything here runs on the calling thread. The work of a layer splits into
-//! independent pieces, blocks of influence-coefficient rows ([`DcFft::influence_blocks`]) and
-//! the six stress components ([`DcFft::component_into`]), and layers are independent of each
-//! other; `crate::field` runs them in parallel.
+//! Threads: everything here runs on the calling thread but [`DcFft::influence_in_parallel`].
+//! The work of a layer splits into its influence coefficients (in parallel there, or in
+//! blocks of rows, [`DcFft::influence_blocks`]) and the six stress components
+//! ([`DcFft::component_into`]), and layers are independent of each other; `crate::field`
+//! runs them in parallel.
 
 mod grid;
 mod images;

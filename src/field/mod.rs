@@ -392,35 +392,25 @@ fn evaluate_layers<T: Precision>(
     let (c0, r0) = (layout.first_column, layout.first_row);
     // Copies what a finished layer (`[component, y, x]`) contributes to the plane.
     let take = |index: usize, layer: ndarray::ArrayView3<f64>| {
-        // The rows of the plane this layer fills, each as (row index, stresses along u).
-        let rows: Vec<(usize, Vec<Stress>)> = match plane.section {
-            Section::Xz { .. } => {
-                vec![(
-                    index,
-                    (0..nu).map(|iu| stress(&layer, r0, c0 + iu)).collect(),
-                )]
+        // The rows of the plane this layer fills, and the stresses along u of each.
+        let rows: Vec<usize> = match plane.section {
+            Section::Xz { .. } | Section::Yz { .. } => vec![index],
+            Section::Xy { .. } => (0..nv).collect(),
+        };
+        let stresses_of = |iv: usize| -> Vec<Stress> {
+            match plane.section {
+                Section::Xz { .. } => (0..nu).map(|iu| stress(&layer, r0, c0 + iu)).collect(),
+                Section::Yz { .. } => (0..nu).map(|iu| stress(&layer, r0 + iu, c0)).collect(),
+                Section::Xy { .. } => (0..nu).map(|iu| stress(&layer, r0 + iv, c0 + iu)).collect(),
             }
-            Section::Yz { .. } => {
-                vec![(
-                    index,
-                    (0..nu).map(|iu| stress(&layer, r0 + iu, c0)).collect(),
-                )]
-            }
-            Section::Xy { .. } => (0..nv)
-                .map(|iv| {
-                    (
-                        iv,
-                        (0..nu).map(|iu| stress(&layer, r0 + iv, c0 + iu)).collect(),
-                    )
-                })
-                .collect(),
         };
         // The quantities of each row (in parallel: an xy section has all its rows here).
         let computed: Vec<(usize, Vec<Vec<T>>)> = rows
             .into_par_iter()
             .map_init(
                 || vec![0.0; nu],
-                |buffer, (iv, stresses)| {
+                |buffer, iv| {
+                    let stresses = stresses_of(iv);
                     let mut computed = Vec::with_capacity(quantities.len());
                     for &quantity in quantities {
                         fill_quantity(quantity, &stresses, buffer);

@@ -399,11 +399,7 @@ impl RowSums {
                 }
             }
             3 => {
-                for (((o, v0), v1), v2) in out
-                    .iter_mut()
-                    .zip(term(t0))
-                    .zip(term(t1))
-                    .zip(term(t2))
+                for (((o, v0), v1), v2) in out.iter_mut().zip(term(t0)).zip(term(t1)).zip(term(t2))
                 {
                     *o = k0 * v0 + k1 * v1 + k2 * v2;
                 }

@@ -19,8 +19,6 @@ const TURNED_BAND: usize = 8;
 /// more (one in 32 here, for two threads).
 const PARALLEL_BAND: usize = 64;
 
-/// One thread's rows of a band: the rows `b` (the offsets `a >= b`) of each array, and the
-/// turned values of the same rows.
 /// The loads present and the components, in the order of the arrays of coefficients.
 fn arrays_of(loads: &[Load]) -> impl Iterator<Item = (Load, usize)> + '_ {
     loads
@@ -45,6 +43,8 @@ fn write_row(
     }
 }
 
+/// One thread's rows of a band: the rows `b` (the offsets `a >= b`) of each array, and the
+/// turned values of the same rows.
 struct Part<'q> {
     rows: std::ops::Range<usize>,
     arrays: Vec<&'q mut [f64]>,

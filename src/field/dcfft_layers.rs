@@ -3,7 +3,7 @@
 use ndarray::{Array3, Axis as NdAxis};
 use rayon::prelude::*;
 
-use crate::solution::dcfft::{DcFft, DcFftError};
+use crate::solution::dcfft::{DcFft, DcFftError, COMPONENTS};
 
 /// The working memory of the cell-based layers of all workers together above which the
 /// layers of an isolated grid run one after another, each split over the threads (an
@@ -58,7 +58,7 @@ where
         // memory kept from layer to layer (at 2048² with friction, 0.2 GB each: allocated
         // afresh, its pages cost more than the layer's coefficients).
         let groups = workspaces.get_or_insert_with(|| {
-            (0..threads.clamp(1, 6))
+            (0..threads.clamp(1, COMPONENTS.len()))
                 .map(|_| fft.component_workspace())
                 .collect::<Vec<_>>()
         });

@@ -98,39 +98,60 @@ fn surface_layer_carries_the_cell_tractions() {
 
 #[test]
 fn parallel_layers_equal_single_layers() {
-    let grid = TractionGrid::new(
-        [-1.0, -1.0],
-        [0.25, 0.25],
-        Some(Array2::from_shape_fn((8, 8), |(j, i)| {
-            (i * j) as f64 / 49.0
-        })),
-        None,
-        Some(Array2::from_shape_fn((8, 8), |(j, i)| {
-            (i as f64 - j as f64) / 7.0
-        })),
-    )
-    .expect("valid input");
-    let fft = dcfft(&grid, 0.2);
-    let depths = [0.7, 0.0, 0.1, 2.5, 0.01];
-    let layers = all_layers(&fft, &depths);
-    // Three threads: five depths run in parallel over the depths; two depths run one after
-    // the other, each split into blocks of influence rows and into components.
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(3)
-        .build()
-        .expect("a thread pool");
-    for depths in [&depths[..], &depths[1..3]] {
-        let visited = std::sync::atomic::AtomicUsize::new(0);
-        pool.install(|| {
-            field::for_each_dcfft_layer(&fft, depths, |index, z, layer| {
-                let d = index + usize::from(depths.len() == 2);
-                assert_eq!(z, depths[index]);
-                assert_eq!(layer, layers.index_axis(Axis(0), d));
-                visited.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    // The pressure with a shear along y (a transform per load and component), and with a
+    // shear along x (the two loads in one transform per component), on a grid that turns
+    // about its diagonal and on an oblong one.
+    let pressure = Array2::from_shape_fn((8, 8), |(j, i)| (i * j) as f64 / 49.0);
+    let shear = Array2::from_shape_fn((8, 8), |(j, i)| (i as f64 - j as f64) / 7.0);
+    let oblong = |a: &Array2<f64>| Array2::from_shape_fn((6, 8), |(j, i)| a[[j, i]]);
+    let grids = [
+        TractionGrid::new(
+            [-1.0, -1.0],
+            [0.25, 0.25],
+            Some(pressure.clone()),
+            None,
+            Some(shear.clone()),
+        ),
+        TractionGrid::new(
+            [-1.0, -1.0],
+            [0.25, 0.25],
+            Some(pressure.clone()),
+            Some(shear.clone()),
+            None,
+        ),
+        TractionGrid::new(
+            [-1.0, -0.7],
+            [0.25, 0.3],
+            Some(oblong(&pressure)),
+            Some(oblong(&shear)),
+            None,
+        ),
+    ];
+    for grid in grids {
+        let grid = grid.expect("valid input");
+        let fft = dcfft(&grid, 0.2);
+        let depths = [0.7, 0.0, 0.1, 2.5, 0.01];
+        let layers = all_layers(&fft, &depths);
+        // Three threads: five depths run in parallel over the depths (each layer's six
+        // components together); two depths run one after the other, each split into blocks
+        // of influence rows and into components, one at a time.
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(3)
+            .build()
+            .expect("a thread pool");
+        for depths in [&depths[..], &depths[1..3]] {
+            let visited = std::sync::atomic::AtomicUsize::new(0);
+            pool.install(|| {
+                field::for_each_dcfft_layer(&fft, depths, |index, z, layer| {
+                    let d = index + usize::from(depths.len() == 2);
+                    assert_eq!(z, depths[index]);
+                    assert_eq!(layer, layers.index_axis(Axis(0), d));
+                    visited.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                })
             })
-        })
-        .expect("valid input");
-        assert_eq!(visited.into_inner(), depths.len());
+            .expect("valid input");
+            assert_eq!(visited.into_inner(), depths.len());
+        }
     }
 }
 

@@ -31,6 +31,7 @@
 //! ([`DcFft::component_into`]), and layers are independent of each other; `crate::field`
 //! runs them in parallel.
 
+mod components;
 mod grid;
 mod images;
 mod plans;
@@ -48,6 +49,7 @@ use rustfft::num_complex::Complex;
 
 use super::patch::{offset_sums, uniform_patch_offset_rows};
 use crate::operator::elastic::Periodicity;
+use components::COMPONENT_INDICES;
 
 /// Stresses of a [`TractionGrid`] at its cell centres, layer by layer, by DC-FFT.
 ///
@@ -189,38 +191,6 @@ impl DcFft {
         Arc::clone(&self.plans)
     }
 
-    /// Fresh working memory for [`DcFft::layer_into`].
-    pub fn workspace(&self) -> Workspace {
-        Workspace {
-            quadrant: Vec::new(),
-            component: None,
-            spectral: None,
-        }
-    }
-
-    /// The bytes one worker holds for a cell-based layer: the influence coefficients (six
-    /// arrays per load present), a component's row spectra (one per load and one of the
-    /// result) and the layer itself, `(64 L + 64) nx ny` for `L` loads.
-    pub fn worker_bytes(&self) -> usize {
-        let [ny, nx] = self.shape;
-        let loads = self.tractions.len();
-        (48 * loads + 16 * (loads + 1) + 48) * nx * ny
-    }
-
-    /// Fresh working memory for [`DcFft::component_into`].
-    pub fn component_workspace(&self) -> ComponentWorkspace {
-        let [ny, _] = self.shape;
-        let zero = Complex::new(0.0, 0.0);
-        let rows = self.plans.rows_len();
-        ComponentWorkspace {
-            rows: vec![vec![zero; rows]; self.tractions.len()],
-            result_rows: vec![zero; rows],
-            chunk: vec![zero; COLUMN_CHUNK * 2 * ny],
-            sum: vec![zero; COLUMN_CHUNK * 2 * ny],
-            buffers: FftBuffers::new(&self.plans),
-        }
-    }
-
     /// The stresses at depth `z >= 0` at every cell centre, `[component, y, x]` (shape
     /// `[6, ny, nx]`), computed on the calling thread with `workspace`.
     ///
@@ -243,16 +213,16 @@ impl DcFft {
         }
         workspace.spectral = None;
         self.influence_into(z, &mut workspace.quadrant);
+        let together = workspace.together;
         let component = workspace
             .component
-            .get_or_insert_with(|| self.component_workspace());
-        for c in 0..6 {
-            self.component_into(
-                &workspace.quadrant,
-                c,
-                component,
-                out.index_axis_mut(Axis(0), c),
-            )?;
+            .get_or_insert_with(|| self.components_workspace(together));
+        let mut outs: Vec<ArrayViewMut2<f64>> = out.axis_iter_mut(Axis(0)).collect();
+        for (group, outs) in COMPONENT_INDICES
+            .chunks(together)
+            .zip(outs.chunks_mut(together))
+        {
+            self.components_into(&workspace.quadrant, group, component, outs)?;
         }
         Ok(())
     }
@@ -293,138 +263,6 @@ impl DcFft {
     pub fn turns_about_diagonal(&self) -> bool {
         let ([ny, nx], [dx, dy]) = (self.shape, self.cell);
         self.periodicity == Periodicity::NonPeriodic && nx == ny && dx == dy
-    }
-
-    /// One stress component (`c` in the order of [`COMPONENTS`]) of a layer whose influence
-    /// coefficients are in `quadrant` ([`DcFft::influence_into`]), `[y, x]`. The six
-    /// components of a layer are independent, so callers may compute them on different
-    /// threads, each with its own [`ComponentWorkspace`].
-    ///
-    /// # Panics
-    /// If `out` is not `[ny, nx]` or `c >= 6`.
-    pub fn component_into(
-        &self,
-        quadrant: &[f64],
-        c: usize,
-        workspace: &mut ComponentWorkspace,
-        mut out: ArrayViewMut2<f64>,
-    ) -> Result<(), DcFftError> {
-        let [ny, nx] = self.shape;
-        assert!(c < 6, "stress component index {c} out of 0..6");
-        assert_eq!(out.shape(), [ny, nx], "component output must be [ny, nx]");
-        let ComponentWorkspace {
-            rows,
-            result_rows,
-            chunk,
-            sum,
-            buffers,
-        } = workspace;
-        let scale = 1.0 / (4 * nx * ny) as f64;
-        let (cells, height) = (nx * ny, 2 * ny);
-        // Row transforms of this component's coefficients, for each load; two loads of
-        // opposite parity in x (the pressure and the shear along x) share one ([`Packed`]).
-        let periodic = self.periodicity == Periodicity::Periodic;
-        let packed = Packed::of(&self.tractions, c);
-        let fill = |slot: usize, b: usize, line: &mut [f64], add: bool| {
-            let (parity_x, parity_y) = self.tractions[slot].0.parity(c);
-            let offset = (slot * 6 + c) * cells;
-            let coefficients = &quadrant[offset..offset + cells];
-            // Row b of the wrap-around grid: offsets 0..nx, a zero, then the mirror.
-            // Periodic rows beyond ny/2 are the mirror of row ny - b.
-            let (b, sign) = if periodic && 2 * b > ny {
-                (ny - b, parity_y)
-            } else {
-                (b, 1.0)
-            };
-            let source = &coefficients[b * nx..(b + 1) * nx];
-            let put = |target: &mut f64, value: f64| {
-                if add {
-                    *target += value;
-                } else {
-                    *target = value;
-                }
-            };
-            for (target, value) in line[..nx].iter_mut().zip(source) {
-                put(target, sign * value);
-            }
-            line[nx] = 0.0;
-            for (target, value) in line[nx + 1..].iter_mut().rev().zip(&source[1..]) {
-                put(target, sign * parity_x * value);
-            }
-        };
-        match packed {
-            Some(Packed { even, odd, .. }) => {
-                let fill_row = |b: usize, line: &mut [f64]| {
-                    fill(even, b, line, false);
-                    fill(odd, b, line, true);
-                };
-                self.plans.row_spectra(fill_row, buffers, &mut rows[0])?;
-            }
-            None => {
-                for (slot, load_rows) in rows.iter_mut().enumerate() {
-                    let fill_row = |b: usize, line: &mut [f64]| fill(slot, b, line, false);
-                    self.plans.row_spectra(fill_row, buffers, load_rows)?;
-                }
-            }
-        }
-        // Column by column chunk: forward transforms, products with the tractions'
-        // spectra summed over the loads, inverse transforms.
-        for start in (0..=nx).step_by(COLUMN_CHUNK) {
-            let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
-            let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
-            let window =
-                |slot: usize| &self.tractions[slot].1[start * height..start * height + length];
-            if let Some(Packed {
-                even,
-                odd,
-                parity_y,
-            }) = packed
-            {
-                let more = Rows::Mirrored { parity: parity_y };
-                self.plans
-                    .column_chunk(&rows[0], more, start, chunk, &mut buffers.scratch);
-                let (t_even, t_odd) = (window(even), window(odd));
-                let terms = sum.iter_mut().zip(&*chunk).zip(t_even.iter().zip(t_odd));
-                // With parity +1 in y, Ê = Re r and iÔ = i Im r; with −1, Ê = i Im r and
-                // iÔ = Re r ([`Packed`]).
-                if parity_y > 0.0 {
-                    for ((total, r), (te, to)) in terms {
-                        *total = te * r.re + Complex::new(-to.im, to.re) * r.im;
-                    }
-                } else {
-                    for ((total, r), (te, to)) in terms {
-                        *total = Complex::new(-te.im, te.re) * r.im + to * r.re;
-                    }
-                }
-            } else {
-                for (slot, ((load, traction), load_rows)) in
-                    self.tractions.iter().zip(rows.iter()).enumerate()
-                {
-                    let more = Rows::Mirrored {
-                        parity: load.parity(c).1,
-                    };
-                    let scratch = &mut buffers.scratch;
-                    self.plans
-                        .column_chunk(load_rows, more, start, chunk, scratch);
-                    let traction = &traction[start * height..start * height + length];
-                    let terms = sum.iter_mut().zip(&*chunk).zip(traction);
-                    if slot == 0 {
-                        terms.for_each(|((total, k), t)| *total = k * t);
-                    } else {
-                        terms.for_each(|((total, k), t)| *total += k * t);
-                    }
-                }
-            }
-            self.plans
-                .inverse_column_chunk(sum, start, result_rows, &mut buffers.scratch);
-        }
-        self.plans
-            .inverse_rows(result_rows, scale, buffers, out.view_mut())?;
-        let uniform = uniform_stress(self.mean, c);
-        if uniform != 0.0 {
-            out.mapv_inplace(|v| v + uniform);
-        }
-        Ok(())
     }
 
     /// The stresses of one layer, `[component, y, x]`, on the calling thread.
@@ -587,48 +425,6 @@ impl DcFft {
                 }
             }
         }
-    }
-}
-
-/// Two loads whose coefficients of one component have opposite parity in x, transformed
-/// together: the pressure and the shear along x (each component is even in x for one of them
-/// and odd for the other, with the same parity in y). The rows of a real sequence even in x
-/// transform to real spectra, those of an odd one to imaginary spectra, so the real transform
-/// of their sum holds both: `E + iO`, with `E` the even load's and `iO` the odd load's. Along
-/// the columns both are real (or, with parity −1 in y, imaginary) sequences of the same
-/// parity, so the complex transform `r` of `E + iO` holds both again: with `Ê`, `Ô` the column
-/// transforms of `E`, `O`, `r = Ê + iÔ`, and the odd load's spectrum is `iÔ`. Parity +1 in y:
-/// `Ê`, `Ô` real, so `Ê = Re r`, `iÔ = i Im r`. Parity −1: both imaginary, `Ê = i Im r`,
-/// `iÔ = Re r`.
-/// Half the forward transforms of a layer with friction. (The two-real-sequences-in-one
-/// transform of Press, Teukolsky, Vetterling & Flannery, *Numerical Recipes*, 3rd ed.,
-/// Cambridge University Press (2007), §12.3, here with the parities doing the separation.)
-#[derive(Clone, Copy, Debug)]
-struct Packed {
-    /// The slots of the loads even and odd in x.
-    even: usize,
-    odd: usize,
-    /// Their common parity in y.
-    parity_y: f64,
-}
-
-impl Packed {
-    /// The packing of component `c` of `tractions`: two loads of opposite parity in x and the
-    /// same in y, or `None`.
-    fn of(tractions: &[(Load, Vec<Complex<f64>>)], c: usize) -> Option<Self> {
-        let [(first, _), (second, _)] = tractions else {
-            return None;
-        };
-        let ((x1, y1), (x2, y2)) = (first.parity(c), second.parity(c));
-        if x1 == x2 || y1 != y2 {
-            return None;
-        }
-        let (even, odd) = if x1 > 0.0 { (0, 1) } else { (1, 0) };
-        Some(Self {
-            even,
-            odd,
-            parity_y: y1,
-        })
     }
 }
 

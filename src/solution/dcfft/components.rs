@@ -1,59 +1,39 @@
-//! The six stress components of a layer from its influence coefficients: row transforms of
-//! the coefficients, column transforms in chunks with the products by the tractions' spectra,
-//! inverse transforms ([`DcFft::component_into`], [`DcFft::components_into`]).
+//! The stress components of a layer from its influence coefficients: row transforms of the
+//! coefficients, column transforms in chunks with the products by the tractions' spectra,
+//! inverse transforms ([`DcFft::component_into`]).
 
 use ndarray::ArrayViewMut2;
 use rustfft::num_complex::Complex;
 
 use super::*;
 
-/// The component indices `0..6`, in the order of [`COMPONENTS`].
-pub(super) const COMPONENT_INDICES: [usize; 6] = [0, 1, 2, 3, 4, 5];
-
-/// The bytes of row spectra up to which a worker's [`DcFft::workspace`] holds those of all
-/// six components, so that each chunk of the tractions' spectra is read once per layer, not
-/// once per component (at 256² with friction the two spectra are 4 MB, beyond the 1 MB
-/// second-level cache of a core here, and were read six times per layer). Up to 1024² with
-/// friction (100 MB); larger grids take one component at a time.
-const TOGETHER_BYTES: usize = 128 << 20;
-
 impl DcFft {
-    /// Fresh working memory for [`DcFft::layer_into`]: the six components' row spectra
-    /// together where they take at most [`TOGETHER_BYTES`], else one component's.
+    /// Fresh working memory for [`DcFft::layer_into`].
     pub fn workspace(&self) -> Workspace {
-        let six = 6 * self.row_spectra_per_component() * self.plans.rows_len() * 16;
         Workspace {
             quadrant: Vec::new(),
-            together: if six <= TOGETHER_BYTES { 6 } else { 1 },
             component: None,
             spectral: None,
         }
     }
 
     /// The bytes one worker of [`DcFft::layer_into`] holds for a cell-based layer: the
-    /// influence coefficients (six arrays per load present, `48 L nx ny` for `L` loads), the
-    /// row spectra of the components computed together (`16 nx ny` each, one per component
-    /// with friction along x, else one per load and component) and the layer (`48 nx ny`).
+    /// influence coefficients (six arrays per load present, `48 L nx ny` for `L` loads), a
+    /// component's row spectra (`16 nx ny`: one array with friction along x, else one per
+    /// load) and the layer (`48 nx ny`).
     pub fn worker_bytes(&self) -> usize {
         let [ny, nx] = self.shape;
         let loads = self.tractions.len();
-        let together = self.workspace().together;
-        (48 * loads + 16 * together * self.row_spectra_per_component() + 48) * nx * ny
+        (48 * loads + 16 * self.row_spectra_per_component() + 48) * nx * ny
     }
 
-    /// Fresh working memory for [`DcFft::component_into`] (one component at a time).
+    /// Fresh working memory for [`DcFft::component_into`].
     pub fn component_workspace(&self) -> ComponentWorkspace {
-        self.components_workspace(1)
-    }
-
-    /// Working memory for `together` components computed together.
-    pub(super) fn components_workspace(&self, together: usize) -> ComponentWorkspace {
         let [ny, _] = self.shape;
         let zero = Complex::new(0.0, 0.0);
         let rows = self.plans.rows_len();
-        let per_component = self.row_spectra_per_component();
         ComponentWorkspace {
-            rows: vec![vec![vec![zero; rows]; per_component]; together],
+            rows: vec![vec![zero; rows]; self.row_spectra_per_component()],
             chunk: vec![zero; COLUMN_CHUNK * 2 * ny],
             sum: vec![zero; COLUMN_CHUNK * 2 * ny],
             buffers: FftBuffers::new(&self.plans),
@@ -63,9 +43,8 @@ impl DcFft {
     /// Arrays of row spectra per component: one where the loads pack ([`Packed`]), else one
     /// per load present.
     fn row_spectra_per_component(&self) -> usize {
-        COMPONENT_INDICES
-            .iter()
-            .map(|&c| match Packed::of(&self.tractions, c) {
+        (0..6)
+            .map(|c| match Packed::of(&self.tractions, c) {
                 Some(_) => 1,
                 None => self.tractions.len(),
             })
@@ -74,10 +53,11 @@ impl DcFft {
     }
 
     /// One stress component (`c` in the order of [`COMPONENTS`]) of a layer whose influence
-    /// coefficients are in `quadrant` ([`DcFft::influence_into`]), `[y, x]`. The six
-    /// components of a layer are independent, so callers may compute them on different
-    /// threads, each with its own [`ComponentWorkspace`]; the result is the same to the last
-    /// bit as [`DcFft::layer_into`]'s.
+    /// coefficients are in `quadrant` ([`DcFft::influence_into`]), `[y, x]`: the row
+    /// transforms of its coefficients, then chunk by chunk of columns their forward
+    /// transforms, the products with the tractions' spectra and the inverse transforms, then
+    /// the inverse row transforms. The six components of a layer are independent, so callers
+    /// may compute them on different threads, each with its own [`ComponentWorkspace`].
     ///
     /// # Panics
     /// If `out` is not `[ny, nx]` or `c >= 6`.
@@ -86,63 +66,30 @@ impl DcFft {
         quadrant: &[f64],
         c: usize,
         workspace: &mut ComponentWorkspace,
-        out: ArrayViewMut2<f64>,
-    ) -> Result<(), DcFftError> {
-        self.components_into(quadrant, &[c], workspace, &mut [out])
-    }
-
-    /// The components `group` of a layer (as [`DcFft::component_into`] each, `outs` in the
-    /// same order), computed together: their row transforms, then chunk by chunk of columns
-    /// the forward transforms, products and inverse transforms of each, so that a chunk of
-    /// the tractions' spectra is read from memory once for the group, then the inverse row
-    /// transforms. Each component's operations are those of [`DcFft::component_into`], in the
-    /// same order, so the results are the same to the last bit.
-    ///
-    /// # Panics
-    /// If an output is not `[ny, nx]`, a component is not below 6, the lengths of `group` and
-    /// `outs` differ, or `workspace` holds fewer components.
-    pub(super) fn components_into(
-        &self,
-        quadrant: &[f64],
-        group: &[usize],
-        workspace: &mut ComponentWorkspace,
-        outs: &mut [ArrayViewMut2<f64>],
+        mut out: ArrayViewMut2<f64>,
     ) -> Result<(), DcFftError> {
         let [ny, nx] = self.shape;
-        assert_eq!(group.len(), outs.len(), "one output per component");
-        assert!(
-            group.len() <= workspace.rows.len(),
-            "workspace for fewer components"
-        );
-        for (&c, out) in group.iter().zip(outs.iter()) {
-            assert!(c < 6, "stress component index {c} out of 0..6");
-            assert_eq!(out.shape(), [ny, nx], "component output must be [ny, nx]");
-        }
+        assert!(c < 6, "stress component index {c} out of 0..6");
+        assert_eq!(out.shape(), [ny, nx], "component output must be [ny, nx]");
         let ComponentWorkspace {
             rows,
             chunk,
             sum,
             buffers,
         } = workspace;
-        for (&c, rows) in group.iter().zip(rows.iter_mut()) {
-            self.coefficient_rows(quadrant, c, rows, buffers)?;
-        }
+        self.coefficient_rows(quadrant, c, rows, buffers)?;
         let height = 2 * ny;
         for start in (0..=nx).step_by(COLUMN_CHUNK) {
             let length = COLUMN_CHUNK.min(nx + 1 - start) * height;
             let (chunk, sum) = (&mut chunk[..length], &mut sum[..length]);
-            for (&c, rows) in group.iter().zip(rows.iter_mut()) {
-                self.product_columns(c, rows, start, chunk, sum, &mut buffers.scratch);
-            }
+            self.product_columns(c, rows, start, chunk, sum, &mut buffers.scratch);
         }
         let scale = 1.0 / (4 * nx * ny) as f64;
-        for ((&c, rows), out) in group.iter().zip(rows.iter_mut()).zip(outs.iter_mut()) {
-            self.plans
-                .inverse_rows(&mut rows[0], scale, buffers, out.view_mut())?;
-            let uniform = uniform_stress(self.mean, c);
-            if uniform != 0.0 {
-                out.mapv_inplace(|v| v + uniform);
-            }
+        self.plans
+            .inverse_rows(&mut rows[0], scale, buffers, out.view_mut())?;
+        let uniform = uniform_stress(self.mean, c);
+        if uniform != 0.0 {
+            out.mapv_inplace(|v| v + uniform);
         }
         Ok(())
     }

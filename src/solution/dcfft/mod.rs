@@ -44,12 +44,11 @@ pub use plans::*;
 
 use std::sync::Arc;
 
-use ndarray::{Array3, ArrayViewMut2, ArrayViewMut3, Axis};
+use ndarray::{Array3, ArrayViewMut3, Axis};
 use rustfft::num_complex::Complex;
 
 use super::patch::{offset_sums, uniform_patch_offset_rows};
 use crate::operator::elastic::Periodicity;
-use components::COMPONENT_INDICES;
 
 /// Stresses of a [`TractionGrid`] at its cell centres, layer by layer, by DC-FFT.
 ///
@@ -72,9 +71,11 @@ use components::COMPONENT_INDICES;
 /// the quadrant is evaluated, the rest turned about the diagonal
 /// ([`DcFft::fill_turned_influence`]). The tractions' spectra are computed once, in
 /// [`DcFft::new`]; each layer then costs one forward transform per load and component (one for
-/// the pressure and the shear along x together, [`Packed`]) and one inverse per component,
-/// real-to-complex along rows (`realfft`) and complex along columns (`rustfft`). The column pass runs on a few columns at a time, from gathering through the
-/// products to the inverse transform, so that it works in cache.
+/// the pressure and the shear along x together, `Packed` in `components.rs`) and one inverse
+/// per component, real-to-complex along rows (`realfft`) and complex along columns
+/// (`rustfft`) ([`DcFft::component_into`]). The column pass runs on a few columns at a time,
+/// from gathering through the products to the inverse transform, so that it works in cache,
+/// and writes the result's row spectra over the coefficients' columns it has read.
 ///
 /// The result equals direct summation ([`TractionGrid::direct_layer`]) up to rounding (the
 /// tests ask 1e-9 of the largest traction); its accuracy as an approximation of smooth
@@ -213,16 +214,11 @@ impl DcFft {
         }
         workspace.spectral = None;
         self.influence_into(z, &mut workspace.quadrant);
-        let together = workspace.together;
         let component = workspace
             .component
-            .get_or_insert_with(|| self.components_workspace(together));
-        let mut outs: Vec<ArrayViewMut2<f64>> = out.axis_iter_mut(Axis(0)).collect();
-        for (group, outs) in COMPONENT_INDICES
-            .chunks(together)
-            .zip(outs.chunks_mut(together))
-        {
-            self.components_into(&workspace.quadrant, group, component, outs)?;
+            .get_or_insert_with(|| self.component_workspace());
+        for (c, out) in out.axis_iter_mut(Axis(0)).enumerate() {
+            self.component_into(&workspace.quadrant, c, component, out)?;
         }
         Ok(())
     }

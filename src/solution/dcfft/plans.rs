@@ -210,25 +210,22 @@ impl FftBuffers {
 
 /// The working memory of one depth layer (reused from layer to layer by one worker), each
 /// part allocated when first needed: the influence coefficients of one quadrant of offsets
-/// (`48 L nx ny` bytes for `L` loads) and the components' spectra ([`ComponentWorkspace`],
-/// for all six components at once on grids small enough, [`DcFft::workspace`]) for layers
-/// from the cells, or a spectrum and its transform's scratch for spectral layers.
+/// (`48 L nx ny` bytes for `L` loads) and a component's spectra ([`ComponentWorkspace`]) for
+/// layers from the cells, or a spectrum and its transform's scratch for spectral layers.
 pub struct Workspace {
     /// `[load][component][b][a]`: six arrays of `nx ny` per load present.
     pub(super) quadrant: Vec<f64>,
-    /// How many components share a pass over the columns ([`ComponentWorkspace`]).
-    pub(super) together: usize,
     pub(super) component: Option<ComponentWorkspace>,
     pub(super) spectral: Option<super::spectral::SpectralWork>,
 }
 
-/// Working memory of the stress components of a layer that are computed together, one or
-/// more ([`DcFft::component_into`], [`DcFft::layer_into`]).
+/// Working memory of one stress component of a layer ([`DcFft::component_into`]).
 pub struct ComponentWorkspace {
-    /// Per component computed together, the row spectra of its coefficients: one array for
-    /// the pressure and the shear along x together ([`super::components`]'s `Packed`), else
-    /// one per load present. The first array then receives the row spectra of the result.
-    pub(super) rows: Vec<Vec<Vec<Complex<f64>>>>,
+    /// The row spectra of the component's coefficients: one array for the pressure and the
+    /// shear along x together (`Packed` in `components.rs`), else one per load present. The
+    /// first array then receives the row spectra of the result, column chunk by column chunk
+    /// (no array of its own: a 256² component's spectra then stay in a core's 1 MB cache).
+    pub(super) rows: Vec<Vec<Complex<f64>>>,
     /// Spectra of a chunk of columns: one load's coefficients, and the sum over loads.
     pub(super) chunk: Vec<Complex<f64>>,
     pub(super) sum: Vec<Complex<f64>>,

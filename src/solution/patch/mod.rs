@@ -5,7 +5,11 @@
 //! discretised into uniform rectangular cells is summed from them, directly or by DC-FFT
 //! ([`super::dcfft`]).
 
+mod atan;
+
 use std::f64::consts::PI;
+
+use atan::{atan2_right, atan2_right_in_place};
 
 use crate::stress::Stress;
 
@@ -308,6 +312,8 @@ struct CornerRow {
     r: Vec<f64>,
     steps: [Vec<f64>; CORNER_TERMS],
     ln_x: Vec<f64>,
+    /// The second arguments of the arc tangents `Tx`, `Ty`.
+    denominators: [Vec<f64>; 2],
 }
 
 impl CornerRow {
@@ -316,6 +322,7 @@ impl CornerRow {
             r: vec![0.0; nx + 1],
             steps: std::array::from_fn(|_| vec![0.0; nx + 1]),
             ln_x: vec![0.0; nx + 1],
+            denominators: [vec![0.0; nx + 1], vec![0.0; nx + 1]],
         }
     }
 
@@ -331,12 +338,17 @@ impl CornerRow {
     ) {
         let nx = columns.len() - 1;
         for (k, &column) in columns.iter().enumerate().skip(from) {
-            let corner = Corner::new(column, row, z);
+            let (corner, [x, y]) = Corner::before_arc_tangents(column, row, z);
             self.r[k] = corner.r;
             for (term, value) in terms.iter_mut().zip(corner.terms) {
                 term[k] = value;
             }
+            self.denominators[0][k] = x;
+            self.denominators[1][k] = y;
         }
+        let [x, y] = &self.denominators;
+        atan2_right_in_place(&mut terms[TX][from..], &x[from..]);
+        atan2_right_in_place(&mut terms[TY][from..], &y[from..]);
         for (steps, terms) in self.steps.iter_mut().zip(terms.iter()) {
             for k in from..nx {
                 steps[k] = terms[k + 1] - terms[k];
@@ -479,14 +491,25 @@ impl Corner {
     /// The corner `(X, Y)` of the column `X` and the row `Y`, at depth `z`.
     #[inline]
     pub(crate) fn new(column: Edge, row: Edge, z: f64) -> Self {
+        let (mut corner, [x, y]) = Self::before_arc_tangents(column, row, z);
+        corner.terms[TX] = atan2_right(corner.terms[TX], x);
+        corner.terms[TY] = atan2_right(corner.terms[TY], y);
+        corner
+    }
+
+    /// [`Corner::new`] but for the arc tangents: `Tx` and `Ty` hold the first arguments of
+    /// theirs, the second ones are returned (`Tx = atan2_right(terms[TX], x)`, the same for
+    /// `Ty`), so that a row of corners takes its arc tangents in one loop.
+    #[inline]
+    fn before_arc_tangents(column: Edge, row: Edge, z: f64) -> (Self, [f64; 2]) {
         let (x, y, rho_x, rho_y) = (column.offset, row.offset, column.rho, row.rho);
         let r = norm3(x, y, z);
         if r == 0.0 {
             // The corner itself, on the surface: only ln(R + z) is singular; every bounded
-            // term is taken as 0.
+            // term is taken as 0 (the arc tangents of 0 over 0 are 0).
             let mut terms = [0.0; CORNER_TERMS];
             terms[LZ] = f64::NEG_INFINITY;
-            return Self { r, terms };
+            return (Self { r, terms }, [0.0; 2]);
         }
         let inverse_r = 1.0 / r;
         let (u, v, w) = (x * inverse_r, y * inverse_r, z * inverse_r);
@@ -494,8 +517,8 @@ impl Corner {
         let one_plus_w = 1.0 + w;
         let numerator = u * v * (uu + vv);
         // Denominators are >= 0; atan2(0, 0) = 0 is the mean of the two sides.
-        let tx = numerator.atan2(one_plus_w * (uu + w * vv));
-        let ty = numerator.atan2(one_plus_w * (vv + w * uu));
+        let (tx, ty) = (numerator, numerator);
+        let denominators = [one_plus_w * (uu + w * vv), one_plus_w * (vv + w * uu)];
         // (z X, z²) / (R (R + Y)), dimensionless: (w u, w²) / (1 + v); `across` is X.
         let over_r_plus = |along: f64, across: f64, across_over_r: f64, rho: f64| {
             if along >= 0.0 {
@@ -531,7 +554,7 @@ impl Corner {
             w,
             (r + z).ln(),
         ];
-        Self { r, terms }
+        (Self { r, terms }, denominators)
     }
 }
 

@@ -132,9 +132,9 @@ fn parallel_layers_equal_single_layers() {
         let fft = dcfft(&grid, 0.2);
         let depths = [0.7, 0.0, 0.1, 2.5, 0.01];
         let layers = all_layers(&fft, &depths);
-        // Three threads: five depths run in parallel over the depths (each layer's six
-        // components together); two depths run one after the other, each split into blocks
-        // of influence rows and into components, one at a time.
+        // Three threads: five depths run in parallel over the depths (a whole layer per
+        // worker); two depths run one after the other, each split into blocks of influence
+        // rows (or bands of turned rows) and its components over the threads.
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(3)
             .build()

@@ -7,8 +7,8 @@ use crate::solution::dcfft::{DcFft, DcFftError, COMPONENTS};
 
 /// The working memory of the cell-based layers of all workers together above which the
 /// layers of an isolated grid run one after another, each split over the threads (an
-/// isolated 2048² grid with friction needs 0.8 GB per worker: the influence coefficients of
-/// two loads, their row spectra and the layer, [`DcFft::worker_bytes`]).
+/// isolated 2048² grid with friction needs 0.67 GB per worker: the influence coefficients of
+/// two loads, one component's row spectra and the layer, [`DcFft::worker_bytes`]).
 const PARALLEL_LAYERS_BYTES: usize = 1 << 30;
 
 /// Computes the DC-FFT layers of `fft` at `depths` and calls `take(index, z, layer)` for each
@@ -55,7 +55,7 @@ where
         }
         fft.influence_in_parallel(z, &mut quadrant, threads);
         // The six components over the threads, each worker with its component's working
-        // memory kept from layer to layer (at 2048² with friction, 0.2 GB each: allocated
+        // memory kept from layer to layer (at 2048² with friction, 0.07 GB each: allocated
         // afresh, its pages cost more than the layer's coefficients).
         let groups = workspaces.get_or_insert_with(|| {
             (0..threads.clamp(1, COMPONENTS.len()))

@@ -55,8 +55,8 @@ where
         }
         fft.influence_in_parallel(z, &mut quadrant, threads);
         // The six components over the threads, each worker with its component's working
-        // memory kept from layer to layer (at 2048² with friction, 0.07 GB each: allocated
-        // afresh, its pages cost more than the layer's coefficients).
+        // memory kept from layer to layer (at 2048² with friction, 0.07 GB each; allocated
+        // afresh for every layer, the 0.2 GB it then was cost more than the coefficients).
         let groups = workspaces.get_or_insert_with(|| {
             (0..threads.clamp(1, COMPONENTS.len()))
                 .map(|_| fft.component_workspace())

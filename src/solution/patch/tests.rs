@@ -66,6 +66,24 @@ fn shear_y_is_shear_x_with_x_and_y_exchanged() {
     }
 }
 
+/// Every component of the three loads' stresses within 1e-14 of `expected`'s (relative, or
+/// absolute below 1).
+fn assert_patches_close(got: &PatchStresses, expected: &PatchStresses, place: &str) {
+    for (g, e) in [
+        (got.pressure, expected.pressure),
+        (got.shear_x, expected.shear_x),
+        (got.shear_y, expected.shear_y),
+    ] {
+        let (g, e) = (components(&g), components(&e));
+        for i in 0..6 {
+            assert!(
+                (g[i] - e[i]).abs() < 1e-14 * e[i].abs().max(1.0),
+                "{place}: {g:?} vs {e:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn offsets_of_one_cell_equal_the_rectangle_formula() {
     let (cell, counts) = ([0.3, 0.2], [9, 7]);
@@ -75,19 +93,7 @@ fn offsets_of_one_cell_equal_the_rectangle_formula() {
             let (x, y) = (a as f64 * cell[0], b as f64 * cell[1]);
             let rect = Rectangle::centred(0.0, 0.0, 0.5 * cell[0], 0.5 * cell[1]);
             let expected = uniform_patch(x, y, z, rect, 0.3);
-            for (g, e) in [
-                (got.pressure, expected.pressure),
-                (got.shear_x, expected.shear_x),
-                (got.shear_y, expected.shear_y),
-            ] {
-                let (g, e) = (components(&g), components(&e));
-                for i in 0..6 {
-                    assert!(
-                        (g[i] - e[i]).abs() < 1e-14 * e[i].abs().max(1.0),
-                        "({a}, {b}, {z}): {g:?} vs {e:?}"
-                    );
-                }
-            }
+            assert_patches_close(got, &expected, &format!("({a}, {b}, {z})"));
             visited += 1;
         });
         assert_eq!(visited, 63);
@@ -106,16 +112,7 @@ fn blocks_of_rows_equal_the_whole() {
     assert_eq!(whole.len(), blocks.len());
     for ((a, b, s), (a2, b2, s2)) in whole.iter().zip(&blocks) {
         assert_eq!((a, b), (a2, b2));
-        for (g, e) in [
-            (s.pressure, s2.pressure),
-            (s.shear_x, s2.shear_x),
-            (s.shear_y, s2.shear_y),
-        ] {
-            let (g, e) = (components(&g), components(&e));
-            for i in 0..6 {
-                assert!((g[i] - e[i]).abs() < 1e-14 * e[i].abs().max(1.0));
-            }
-        }
+        assert_patches_close(s, s2, &format!("({a}, {b})"));
     }
 }
 

@@ -64,3 +64,4 @@ pub mod stress;
 pub mod study;
 pub mod surface;
 pub mod thermal;
+pub mod wear;

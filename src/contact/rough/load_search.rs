@@ -27,14 +27,15 @@
 
 use ndarray::{Array2, Zip};
 
-use super::{iterate, scale_to_mean, sum_active, RoughContactError, Settings, State, Target};
-use crate::operator::elastic::ElasticOperator;
+use super::{
+    iterate, scale_to_mean, sum_active, Compliance, RoughContactError, Settings, State, Target,
+};
 
 /// The capped load-controlled solve: `pressure` ends as the solution carrying
 /// `mean` × cells; returns the iterations made (all runs) and the residual (the larger of the
 /// last run's and the relative load error before the final scaling).
 pub(super) fn capped_under_load(
-    operator: &mut ElasticOperator,
+    operator: &mut Compliance,
     separation: &Array2<f64>,
     pressure: &mut Array2<f64>,
     state: &mut State,
@@ -237,7 +238,7 @@ fn brent(
 
 /// The approach of a converged load-controlled pressure: the mean gap over the loaded cells.
 fn elastic_approach(
-    operator: &mut ElasticOperator,
+    operator: &mut Compliance,
     separation: &Array2<f64>,
     pressure: &Array2<f64>,
     state: &mut State,

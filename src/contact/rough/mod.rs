@@ -37,7 +37,7 @@
 //!   algorithm for FFT-based BEM resolution, *Comput. Mech.* 60 (2017) 69–81 (the same
 //!   iteration with FFT, as Tamaas implements it).
 
-use ndarray::{Array2, ArrayView2, Zip};
+use ndarray::{Array2, ArrayView2, ArrayViewMut2, Zip};
 
 use crate::operator::elastic::{ElasticOperator, Periodicity};
 use crate::operator::transform::TransformError;
@@ -156,6 +156,9 @@ pub struct RoughSolution {
     pub largest_spot_cells: usize,
     /// Cells at the hardness cap.
     pub plastic_cells: usize,
+    /// The penetration (m, positive) of each cell at the hardness cap that penetrates, by
+    /// `[row, column]`: the plastic flow the cap absorbs there (empty without a hardness).
+    pub plastic_penetration_m: Vec<([usize; 2], f64)>,
     /// Mean of the gap over the grid, m.
     pub mean_gap_m: f64,
     pub iterations: usize,
@@ -178,9 +181,33 @@ fn parameter(name: &'static str, requirement: &'static str, value: f64) -> Rough
     }
 }
 
+/// What a solve may start from and add beyond the problem: a pressure to start from (a warm
+/// start, e.g. the solution of a neighbouring problem), and a local compliance added to the
+/// elastic one (the wear of a backward-Euler step, [`crate::wear`]).
+#[derive(Clone, Debug, Default)]
+pub struct Warm<'a> {
+    /// The starting pressure (Pa, the heights' shape): clipped to `[0, H]`, and under a given
+    /// load scaled to carry it. `None`: the mean pressure everywhere (or, under a given
+    /// approach, each cell pressed by its own interference).
+    pub pressure_pa: Option<ArrayView2<'a, f64>>,
+    /// `c` (m/Pa): every cell's displacement grows by `c p` besides the elastic `K p`. Zero
+    /// leaves the problem as it is.
+    pub local_compliance_m_per_pa: f64,
+}
+
 /// Solves the problem. `progress(iteration, residual)` is called after every iteration.
 pub fn solve(
     problem: &RoughContactProblem,
+    progress: &mut dyn FnMut(usize, f64),
+) -> Result<RoughSolution, RoughContactError> {
+    solve_warm(problem, &Warm::default(), progress)
+}
+
+/// Solves the problem from `warm`'s pressure with its local compliance added ([`Warm`]);
+/// with [`Warm::default`] this is [`solve`], bit for bit.
+pub fn solve_warm(
+    problem: &RoughContactProblem,
+    warm: &Warm,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<RoughSolution, RoughContactError> {
     let (ny, nx) = problem.heights_m.dim();
@@ -215,6 +242,30 @@ pub fn solve(
         .find(|(_, v)| !v.is_finite())
     {
         return Err(RoughContactError::NotFinite { row, column, value });
+    }
+    let local = warm.local_compliance_m_per_pa;
+    if !(local >= 0.0 && local.is_finite()) {
+        return Err(parameter(
+            "the local compliance",
+            "must be non-negative and finite",
+            local,
+        ));
+    }
+    if let Some(start) = &warm.pressure_pa {
+        if start.dim() != (ny, nx) {
+            return Err(parameter(
+                "the starting pressure",
+                "must have the heights' shape",
+                start.len() as f64,
+            ));
+        }
+        if let Some(&value) = start.iter().find(|p| !(p.is_finite() && **p >= 0.0)) {
+            return Err(parameter(
+                "the starting pressure",
+                "must be non-negative and finite",
+                value,
+            ));
+        }
     }
     let aspect = crate::operator::elastic::period_aspect([ny, nx], problem.spacing_m);
     if problem.periodicity == Periodicity::Periodic
@@ -286,16 +337,21 @@ pub fn solve(
         dx.min(dy)
     };
 
-    let mut operator = ElasticOperator::new(
-        [ny, nx],
-        problem.spacing_m,
-        problem.e_star_pa,
-        problem.periodicity,
-    )?;
-    // Local stiffness: a cell's own displacement per unit pressure (Love's centre value).
+    let mut operator = Compliance {
+        elastic: ElasticOperator::new(
+            [ny, nx],
+            problem.spacing_m,
+            problem.e_star_pa,
+            problem.periodicity,
+        )?,
+        local_m_per_pa: local,
+    };
+    // Local stiffness: a cell's own displacement per unit pressure (Love's centre value), and
+    // the local compliance.
     let own_compliance =
         crate::operator::elastic::uniform_patch_displacement(0.0, 0.0, dx / 2.0, dy / 2.0)
-            / (std::f64::consts::PI * problem.e_star_pa);
+            / (std::f64::consts::PI * problem.e_star_pa)
+            + local;
 
     let approach_given = match problem.control {
         Control::Approach { m } => Some(m),
@@ -318,9 +374,15 @@ pub fn solve(
     }
     // Start: the mean pressure everywhere, or, under a given approach, each cell pressed by
     // its own interference alone.
-    let mut pressure = match (target_mean, approach_given) {
-        (Some(mean), _) => Array2::from_elem((ny, nx), mean),
-        (None, approach) => {
+    let mut pressure = match (target_mean, approach_given, &warm.pressure_pa) {
+        (Some(mean), _, Some(start)) if start.sum() > 0.0 => {
+            let mut start = start.mapv(|p| p.min(hardness));
+            scale_to_mean(&mut start, mean * cells, hardness);
+            start
+        }
+        (None, Some(_), Some(start)) => start.mapv(|p| p.min(hardness)),
+        (Some(mean), _, _) => Array2::from_elem((ny, nx), mean),
+        (None, approach, _) => {
             let approach = approach.unwrap_or(0.0);
             if !(approach > 0.0 && approach.is_finite()) {
                 return Err(RoughContactError::NoContact {
@@ -390,6 +452,18 @@ pub fn solve(
         }
     };
     gap.mapv_inplace(|g| g - approach_m);
+    let plastic_penetration_m: Vec<([usize; 2], f64)> = if hardness.is_finite() {
+        Zip::indexed(&gap)
+            .and(&pressure)
+            .fold(Vec::new(), |mut cells, (row, column), &g, &p| {
+                if p >= hardness && g < 0.0 {
+                    cells.push(([row, column], -g));
+                }
+                cells
+            })
+    } else {
+        Vec::new()
+    };
     // In contact the gap is zero by definition (its rounding is the tolerance).
     Zip::from(&mut gap).and(&pressure).for_each(|g, &p| {
         if p > 0.0 {
@@ -444,9 +518,36 @@ pub fn solve(
         periodicity: problem.periodicity,
         approach_m,
         plastic_cells,
+        plastic_penetration_m,
         iterations,
         residual,
     })
+}
+
+/// The displacement per pressure the iteration works with: the elastic half-space's `K`
+/// plus a local compliance `c` (zero unless [`Warm`] gives one): `u = K p + c p`.
+struct Compliance {
+    elastic: ElasticOperator,
+    local_m_per_pa: f64,
+}
+
+impl Compliance {
+    /// `displacement = K pressure + c pressure`; allocates nothing.
+    fn apply(
+        &mut self,
+        pressure: ArrayView2<f64>,
+        mut displacement: ArrayViewMut2<f64>,
+    ) -> Result<(), TransformError> {
+        self.elastic
+            .apply(pressure.view(), displacement.view_mut())?;
+        if self.local_m_per_pa != 0.0 {
+            let c = self.local_m_per_pa;
+            Zip::from(&mut displacement)
+                .and(&pressure)
+                .for_each(|u, &p| *u += c * p);
+        }
+        Ok(())
+    }
 }
 
 /// Work arrays of the iteration.
@@ -489,7 +590,7 @@ enum Target {
 /// Polonsky & Keer's iteration from the given pressure until converged or the cap is
 /// reached: returns the iterations made and the residual (module doc).
 fn iterate(
-    operator: &mut ElasticOperator,
+    operator: &mut Compliance,
     separation: &Array2<f64>,
     pressure: &mut Array2<f64>,
     state: &mut State,

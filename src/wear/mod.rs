@@ -1,0 +1,350 @@
+//! Wear of a rough contact with sliding distance: Archard's law applied cell by cell to the
+//! solved pressure, stepped by backward Euler, and the wear read off a measured series of
+//! topographies.
+//!
+//! ## Archard's law, locally
+//! Archard's law `V = k W s` (worn volume `V`, normal load `W`, sliding distance `s`, the
+//! dimensional wear coefficient `k` in m³/(N m) = m²/N) holds at every point of the surface
+//! as `dh/ds = k p`: the local wear depth grows with the local pressure (Archard 1953, in the
+//! local form used for simulated wear by Põdra & Andersson 1999). Summed over the surface the
+//! worn volume grows by `k ds Σ p dA = k W ds` at every step, whatever the pressure.
+//!
+//! ## The step: backward Euler
+//! Explicit stepping (the wear `k ds p` of the pressure before the step) is stiff: the stable
+//! step shrinks with the cell size (about `dx / (E* k)`) and beyond it the pressure jumps from
+//! cell to cell. Here each step takes the wear of the pressure *at its end*: with the
+//! separation `s` of the surface before the step, the gap at its end is
+//!
+//! `g = s + k ds p - δ + K p = s - δ + (K + k ds I) p`,
+//!
+//! so the wear acts inside the contact solver as a local compliance `k ds` added to the elastic
+//! one (still symmetric and positive definite: Polonsky & Keer's iteration applies unchanged).
+//! The step is unconditionally stable (the implicit Euler method is A-stable), and its
+//! pressure is the static contact of the worn surface at the step's end: a series of the worn
+//! surfaces, solved one by one, gives the same pressures.
+//!
+//! ## Plastic flattening
+//! With a hardness `H`, the cells at the cap penetrate the counter-surface. Their penetration
+//! is made permanent: the worn surface is lowered by it at the step's end, as ContactMechanics
+//! keeps a plastic displacement. A perfectly plastic asperity that has flowed does not spring
+//! back; left as it was, the same asperity would be flattened again at every step and counted
+//! as new plastic flow each time. The flattened material is displaced, not removed: it is
+//! reported as its own volume, apart from the Archard wear (which stays `k W s` exactly).
+//!
+//! ## A measured series
+//! The wear between two measured topographies of one surface is what the later one lacks: the
+//! difference of heights, levelled by its median (the unworn majority of the map keeps its
+//! heights, so the median difference is the two measurements' offset of datum), counted where
+//! positive ([`measured_wear`]).
+//!
+//! ## References
+//! - J. F. Archard, Contact and rubbing of flat surfaces, *J. Appl. Phys.* 24 (1953) 981–988.
+//! - P. Põdra, S. Andersson, Simulating sliding wear with finite element method, *Tribol.
+//!   Int.* 32 (1999) 71–81.
+//! - M. T. Siniawski, S. J. Harris, Q. Wang, S. Liu, Wear initiation of steel sliding against
+//!   a thin boron carbide coating, *Tribol. Lett.* 15 (1) (2003) (the evolution of a steel
+//!   ball's wear scar, its pressure and its plastic area with sliding distance).
+//! - E. Hairer, G. Wanner, *Solving Ordinary Differential Equations II*, 2nd ed., Springer
+//!   (1996), ch. IV (the implicit Euler method's stability).
+
+use ndarray::{Array2, Zip};
+
+use crate::contact::rough::{self, RoughContactError, RoughContactProblem, RoughSolution};
+
+/// Archard's wear law with its dimensional coefficient.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Archard {
+    /// `k`, m²/N (m³ worn per N of load and m of sliding).
+    pub coefficient_m2_per_n: f64,
+}
+
+/// The sliding distance and its uniform steps.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Schedule {
+    /// The total sliding distance, m.
+    pub distance_m: f64,
+    /// Steps after the unworn contact.
+    pub steps: usize,
+}
+
+impl Schedule {
+    /// The sliding distance at the end of step `k` (0: the unworn contact), m.
+    pub fn distance_at(&self, k: usize) -> f64 {
+        if k >= self.steps {
+            self.distance_m
+        } else {
+            self.distance_m * k as f64 / self.steps as f64
+        }
+    }
+}
+
+/// Why an evolution stops.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum WearError {
+    #[error("{name} {requirement}, got {}", crate::io::text::number(*.value))]
+    Parameter {
+        name: &'static str,
+        requirement: &'static str,
+        value: f64,
+    },
+    #[error("at a sliding distance of {distance_m:.4e} m (step {step}) the wear depth reaches {depth_m:.4e} m, more than the surface's height range {range_m:.4e} m: the worn body would be worn through the map")]
+    WornThrough {
+        step: usize,
+        distance_m: f64,
+        depth_m: f64,
+        range_m: f64,
+    },
+    #[error("the wear k W s = {wear_m3:.4e} m³ over the sliding distance is more than the map holds above its lowest point, {capacity_m3:.4e} m³: the worn body would be worn through the map")]
+    TooMuchWear { wear_m3: f64, capacity_m3: f64 },
+    #[error("at a sliding distance of {distance_m:.4e} m (step {step}): {source}")]
+    Contact {
+        step: usize,
+        distance_m: f64,
+        source: RoughContactError,
+    },
+}
+
+/// One step of an evolution: the contact at the end of it and the surface it left.
+#[derive(Clone, Debug, PartialEq)]
+pub struct WearStep {
+    /// 0 for the unworn contact.
+    pub index: usize,
+    pub sliding_distance_m: f64,
+    /// The contact at the end of the step (the worn surface's static contact).
+    pub solution: RoughSolution,
+    /// The Archard wear so far, `Σ k ds p dA`, m³.
+    pub worn_volume_m3: f64,
+    /// The deepest wear so far, m.
+    pub max_wear_depth_m: f64,
+    /// The plastic flattening so far (displaced, not removed), m³.
+    pub plastic_volume_m3: f64,
+}
+
+/// A worn surface stepped along the sliding distance (module doc): each [`Evolution::step`]
+/// solves the next contact, warm-started from the last pressure.
+pub struct Evolution<'p> {
+    problem: RoughContactProblem<'p>,
+    law: Archard,
+    schedule: Schedule,
+    /// The worn combined heights, m, out of body 1.
+    heights_m: Array2<f64>,
+    wear_depth_m: Array2<f64>,
+    plastic_depth_m: Array2<f64>,
+    /// The height range of the unworn map: wear beyond it is refused.
+    range_m: f64,
+    next: usize,
+    last_pressure_pa: Option<Array2<f64>>,
+    worn_volume_m3: f64,
+    plastic_volume_m3: f64,
+}
+
+fn parameter(name: &'static str, requirement: &'static str, value: f64) -> WearError {
+    WearError::Parameter {
+        name,
+        requirement,
+        value,
+    }
+}
+
+impl<'p> Evolution<'p> {
+    /// An evolution of `problem`'s surface under Archard's law: `problem` gives the unworn
+    /// heights, the load (or mean pressure), the hardness and the solver's settings.
+    pub fn new(
+        problem: &RoughContactProblem<'p>,
+        law: Archard,
+        schedule: Schedule,
+    ) -> Result<Self, WearError> {
+        let k = law.coefficient_m2_per_n;
+        if !(k > 0.0 && k.is_finite()) {
+            return Err(parameter(
+                "the wear coefficient",
+                "must be positive and finite",
+                k,
+            ));
+        }
+        if !(schedule.distance_m > 0.0 && schedule.distance_m.is_finite()) {
+            return Err(parameter(
+                "the sliding distance",
+                "must be positive and finite",
+                schedule.distance_m,
+            ));
+        }
+        if schedule.steps == 0 {
+            return Err(parameter("the number of steps", "must be at least 1", 0.0));
+        }
+        if matches!(problem.control, rough::Control::Approach { .. }) {
+            return Err(parameter(
+                "the contact",
+                "must be pressed by a load or a mean pressure (under a fixed approach the worn surface would run out of contact)",
+                f64::NAN,
+            ));
+        }
+        let heights_m = problem.heights_m.to_owned();
+        let (low, high) = heights_m
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &h| {
+                (lo.min(h), hi.max(h))
+            });
+        let wear_m3 = k * nominal_load_n(problem) * schedule.distance_m;
+        let capacity_m3 = capacity_m3(&heights_m, problem.spacing_m);
+        if wear_m3 > capacity_m3 {
+            return Err(WearError::TooMuchWear {
+                wear_m3,
+                capacity_m3,
+            });
+        }
+        let shape = heights_m.raw_dim();
+        Ok(Self {
+            problem: problem.clone(),
+            law,
+            schedule,
+            heights_m,
+            wear_depth_m: Array2::zeros(shape),
+            plastic_depth_m: Array2::zeros(shape),
+            range_m: high - low,
+            next: 0,
+            last_pressure_pa: None,
+            worn_volume_m3: 0.0,
+            plastic_volume_m3: 0.0,
+        })
+    }
+
+    /// The worn heights after the last step (m, `[ny, nx]`, out of body 1).
+    pub fn heights_m(&self) -> &Array2<f64> {
+        &self.heights_m
+    }
+
+    /// The Archard wear depth so far (m, `[ny, nx]`).
+    pub fn wear_depth_m(&self) -> &Array2<f64> {
+        &self.wear_depth_m
+    }
+
+    /// The plastic flattening so far (m, `[ny, nx]`).
+    pub fn plastic_depth_m(&self) -> &Array2<f64> {
+        &self.plastic_depth_m
+    }
+
+    /// Steps in all, the unworn contact included.
+    pub fn len(&self) -> usize {
+        self.schedule.steps + 1
+    }
+
+    /// Never empty (the unworn contact is a step).
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// The next step, `None` after the last. Step 0 is the unworn contact, solved as
+    /// [`rough::solve`] solves it (bit for bit); each later one wears the surface over its
+    /// distance by backward Euler, warm-started from the pressure before.
+    /// `progress(iteration, residual)` follows the contact solver.
+    pub fn step(
+        &mut self,
+        progress: &mut dyn FnMut(usize, f64),
+    ) -> Result<Option<WearStep>, WearError> {
+        let index = self.next;
+        if index > self.schedule.steps {
+            return Ok(None);
+        }
+        let distance_m = self.schedule.distance_at(index);
+        let ds = if index == 0 {
+            0.0
+        } else {
+            distance_m - self.schedule.distance_at(index - 1)
+        };
+        let compliance = self.law.coefficient_m2_per_n * ds;
+        let problem = RoughContactProblem {
+            heights_m: self.heights_m.view(),
+            ..self.problem.clone()
+        };
+        let warm = rough::Warm {
+            pressure_pa: self.last_pressure_pa.as_ref().map(|p| p.view()),
+            local_compliance_m_per_pa: compliance,
+        };
+        let solution =
+            rough::solve_warm(&problem, &warm, progress).map_err(|source| WearError::Contact {
+                step: index,
+                distance_m,
+                source,
+            })?;
+        let cell_area = self.problem.spacing_m[0] * self.problem.spacing_m[1];
+        if compliance > 0.0 {
+            Zip::from(&mut self.heights_m)
+                .and(&mut self.wear_depth_m)
+                .and(&solution.pressure_pa)
+                .for_each(|h, w, &p| {
+                    let worn = compliance * p;
+                    *h -= worn;
+                    *w += worn;
+                });
+            self.worn_volume_m3 += compliance * solution.pressure_pa.sum() * cell_area;
+        }
+        // Plastic flattening: the penetration of the cells at the cap, kept.
+        for &([row, column], depth) in &solution.plastic_penetration_m {
+            self.heights_m[[row, column]] -= depth;
+            self.plastic_depth_m[[row, column]] += depth;
+            self.plastic_volume_m3 += depth * cell_area;
+        }
+        let max_wear_depth_m = self.wear_depth_m.iter().fold(0.0f64, |m, &w| m.max(w));
+        if max_wear_depth_m > self.range_m {
+            return Err(WearError::WornThrough {
+                step: index,
+                distance_m,
+                depth_m: max_wear_depth_m,
+                range_m: self.range_m,
+            });
+        }
+        self.last_pressure_pa = Some(solution.pressure_pa.clone());
+        self.next += 1;
+        Ok(Some(WearStep {
+            index,
+            sliding_distance_m: distance_m,
+            solution,
+            worn_volume_m3: self.worn_volume_m3,
+            max_wear_depth_m,
+            plastic_volume_m3: self.plastic_volume_m3,
+        }))
+    }
+}
+
+/// The load that presses `problem`'s surface: given, or the mean pressure over the map, N
+/// (zero under a given approach).
+pub fn nominal_load_n(problem: &RoughContactProblem) -> f64 {
+    let (ny, nx) = problem.heights_m.dim();
+    match problem.control {
+        rough::Control::Load { newtons } => newtons,
+        rough::Control::MeanPressure { pa } => {
+            pa * nx as f64 * ny as f64 * problem.spacing_m[0] * problem.spacing_m[1]
+        }
+        rough::Control::Approach { .. } => 0.0,
+    }
+}
+
+/// The volume of a map above its lowest point, `Σ (h - min h) dx dy` (m³): the most wear it
+/// can take.
+pub fn capacity_m3(heights_m: &Array2<f64>, spacing_m: [f64; 2]) -> f64 {
+    let low = heights_m.iter().fold(f64::INFINITY, |m, &h| m.min(h));
+    heights_m.iter().map(|&h| h - low).sum::<f64>() * spacing_m[0] * spacing_m[1]
+}
+
+/// The wear a later measurement `now` of a surface shows against the first, `first` (both m,
+/// the same grid): the depth `max(first - now - offset, 0)` with `offset` the median of
+/// `first - now` (the unworn majority of the map keeps its heights, so the median is the two
+/// measurements' offset of datum). Returns the depth map and the offset.
+pub fn measured_wear(first: &Array2<f64>, now: &Array2<f64>) -> (Array2<f64>, f64) {
+    let difference = first - now;
+    let mut sorted: Vec<f64> = difference.iter().copied().collect();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    let offset = if n == 0 {
+        0.0
+    } else if n % 2 == 1 {
+        sorted[n / 2]
+    } else {
+        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
+    };
+    (difference.mapv(|d| (d - offset).max(0.0)), offset)
+}
+
+#[cfg(test)]
+mod tests;

@@ -119,7 +119,7 @@ pub fn thermal(
     let scene = stressfield::study::load_scene(scene_path)?;
     if scene.thermal.is_none() {
         bail!(
-            "{} has no [thermal] table\nhint: add [thermal] with speed = \"2 m/s\" and the bodies' thermal properties (material = \"steel\", or conductivity, diffusivity, expansion); see the README's frictional heating section",
+            "{} has no [thermal] table\nhint: add [thermal] with speed = \"2 m/s\" and the bodies' thermal properties (material = \"steel\", or conductivity, diffusivity, expansion); see docs/heating.md",
             scene_path.display()
         );
     }

@@ -156,7 +156,7 @@ fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Err
         .and_then(|k| k.rsplit('.').next())
         .unwrap_or("key");
     let hint = if message.starts_with("unknown field") {
-        Some("remove or correct the key; the README lists every scene key".into())
+        Some("remove or correct the key; docs/reference.md lists every scene key".into())
     } else if message.starts_with("invalid type: integer")
         || message.starts_with("invalid type: floating point")
     {
@@ -213,7 +213,7 @@ fn unit_example(leaf: &str) -> &'static str {
         "a" | "approach" | "spacing" | "rms_height" | "rolloff" | "cutoff"
         | "correlation_length" => "\"1 um\"",
         "speed" | "body1_speed" | "body2_speed" => "\"2 m/s\"",
-        _ => "\"20 mm\" (the README gives each key's unit)",
+        _ => "\"20 mm\" (docs/reference.md gives each key's unit)",
     }
 }
 

@@ -375,7 +375,7 @@ impl Validator<'_> {
             self.error(
                 &format!("{key}.{name}"),
                 format!("missing thermal property `{name}`"),
-                Some(&format!("add {name} = {example}, or material = \"steel\" (the README lists the materials)")),
+                Some(&format!("add {name} = {example}, or material = \"steel\" (docs/reference.md lists the materials)")),
             )
         };
         let conductivity = value(

@@ -6,6 +6,7 @@ mod contact;
 mod figure;
 mod numerical;
 mod rough;
+mod rough_scene;
 mod surface;
 mod sweep;
 mod thermal;

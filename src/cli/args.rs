@@ -89,6 +89,20 @@ pub enum Command {
         #[arg(long, value_name = "FILE.png")]
         figure: Option<PathBuf>,
     },
+    /// The evolution of a rough contact with sliding distance (a scene with [wear] or
+    /// [[series]]): per step the real and plastic area, spots, pressures, worn volume and
+    /// depth, the subsurface maxima and, with [thermal], the flash temperature.
+    Wear {
+        scene: PathBuf,
+        /// Print one JSON object (SI units) instead of the table.
+        #[arg(long)]
+        json: bool,
+        /// Also write each step's worn heights (m, float64, [rows, columns], row = y) as
+        /// DIR/<scene>_step_NNN.npy, with DIR/<scene>_series.toml listing them as a
+        /// [[series]] to read back.
+        #[arg(long, value_name = "DIR")]
+        heights_out: Option<PathBuf>,
+    },
 }
 
 /// Options of `render`.

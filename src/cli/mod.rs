@@ -12,6 +12,7 @@ mod record;
 mod render;
 mod surface;
 mod thermal;
+mod wear;
 
 use std::path::{Path, PathBuf};
 
@@ -105,6 +106,11 @@ pub fn run(command: Command) -> Result<()> {
             temperature,
             figure,
         } => thermal::thermal(&scene, json, temperature.as_deref(), figure.as_deref()),
+        Command::Wear {
+            scene,
+            json,
+            heights_out,
+        } => wear::wear(&scene, json, heights_out.as_deref()),
     }
 }
 

@@ -20,6 +20,9 @@ pub enum Dimension {
     Expansion,
     /// Rotational speed (rad/s).
     RotationalSpeed,
+    /// Archard's dimensional wear coefficient: volume worn per load and sliding distance
+    /// (m³/(N m) = m²/N).
+    WearCoefficient,
 }
 
 impl Dimension {
@@ -38,6 +41,7 @@ impl Dimension {
                 ("nm", 1e-9),
                 ("pm", 1e-12),
                 ("in", 0.0254),
+                ("km", 1e3),
             ],
             Dimension::Pressure => &[
                 ("Pa", 1.0),
@@ -93,6 +97,18 @@ impl Dimension {
                 ("rad/s", 1.0),
                 ("rev/s", 2.0 * std::f64::consts::PI),
             ],
+            Dimension::WearCoefficient => &[
+                ("mm^3/(N m)", 1e-9),
+                ("mm^3/(N*m)", 1e-9),
+                ("mm^3/Nm", 1e-9),
+                ("mm3/(N m)", 1e-9),
+                ("mm3/Nm", 1e-9),
+                ("m^3/(N m)", 1.0),
+                ("m^3/(N*m)", 1.0),
+                ("m3/(N m)", 1.0),
+                ("m^2/N", 1.0),
+                ("m2/N", 1.0),
+            ],
         }
     }
 
@@ -112,6 +128,7 @@ impl Dimension {
             Dimension::SpecificHeat => "\"475 J/(kg K)\"",
             Dimension::Expansion => "\"11.5e-6 /K\"",
             Dimension::RotationalSpeed => "\"1500 rpm\"",
+            Dimension::WearCoefficient => "\"2e-6 mm^3/(N m)\"",
         }
     }
 
@@ -131,6 +148,7 @@ impl Dimension {
             Dimension::SpecificHeat => "J/(kg K)",
             Dimension::Expansion => "/K",
             Dimension::RotationalSpeed => "rad/s",
+            Dimension::WearCoefficient => "m^2/N",
         }
     }
 

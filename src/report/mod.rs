@@ -7,6 +7,7 @@ pub mod probe;
 pub mod rough;
 pub mod surface;
 pub mod thermal;
+pub mod wear;
 
 use std::fmt::Write;
 

@@ -25,9 +25,9 @@ use raw::RawScene;
 
 pub use spec::{
     Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit, Method, Numerical,
-    PanelSpec, RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec,
-    YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
-    ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
+    PanelSpec, RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody,
+    ThermalSpec, WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH,
+    ROUGH_SECTION_MIN_CELLS, ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
 
@@ -104,6 +104,8 @@ pub struct Scene {
     pub surface: Option<SurfaceSpec>,
     /// Frictional heating, when the scene has a `[thermal]` table.
     pub thermal: Option<ThermalSpec>,
+    /// A rough scene's evolution with sliding distance (`[wear]` or `[[series]]`).
+    pub wear: Option<WearSpec>,
 }
 
 impl Scene {

@@ -22,6 +22,30 @@ pub struct RawScene {
     pub counter_surface: Option<RawSurface>,
     /// Frictional heating (line, point, elliptical and rough scenes).
     pub thermal: Option<RawThermal>,
+    /// Archard wear of a rough scene's surface along the sliding distance.
+    pub wear: Option<RawWear>,
+    /// A rough scene's measured topographies at increasing sliding distances.
+    #[serde(default)]
+    pub series: Vec<RawSeriesEntry>,
+}
+
+/// `[wear]`: Archard's law stepped over the sliding distance.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawWear {
+    /// Dimensional wear coefficient, e.g. "2e-6 mm^3/(N m)".
+    pub coefficient: Option<String>,
+    /// Total sliding distance, e.g. "20 m".
+    pub distance: Option<String>,
+    pub steps: Option<i64>,
+}
+
+/// `[[series]]`: one measured topography and the sliding distance it was measured at.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawSeriesEntry {
+    pub file: Option<String>,
+    pub distance: Option<String>,
 }
 
 /// `[thermal]`: sliding speed, the bodies' speeds, the heat partition.

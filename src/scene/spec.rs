@@ -165,6 +165,33 @@ pub struct RoughSpec {
     pub max_iterations: usize,
 }
 
+/// How a rough scene's surface evolves with sliding distance.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WearSpec {
+    /// `[wear]`: Archard's law on body 1's surface, stepped uniformly (a rough body 2 slides
+    /// over it without wearing).
+    Archard {
+        /// `k`, m²/N.
+        coefficient_m2_per_n: f64,
+        /// Total sliding distance, m.
+        distance_m: f64,
+        steps: usize,
+    },
+    /// `[[series]]`: measured topographies; the scene's `[surface]` is the first of them.
+    Series(Vec<SeriesEntry>),
+}
+
+/// One measured topography of a series.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SeriesEntry {
+    pub distance_m: f64,
+    /// The file as the scene names it.
+    pub source: String,
+    /// The worn body's heights (body 1's), as read. A rough counter-surface slides over them:
+    /// the contact sees them plus the counter shifted by the distance ([`crate::wear::slid`]).
+    pub heights: Arc<HeightMap>,
+}
+
 /// The height map of a rough or surface scene.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfaceSpec {

@@ -133,10 +133,40 @@ pub fn solve(
         shape: [ny, nx],
         spacing_m: problem.spacing_m,
     };
+    iterate(
+        &grid,
+        isothermal,
+        spec,
+        friction,
+        progress,
+        &mut |distortion, _| {
+            let heights = &problem.heights_m + distortion;
+            let step = RoughContactProblem {
+                heights_m: heights.view(),
+                ..problem.clone()
+            };
+            Ok(rough::solve(&step, &mut |_, _| {})?)
+        },
+    )
+}
+
+/// The coupled iteration (module doc) on `grid` from the isothermal solution, whatever solves
+/// the contact: `solve(distortion, pressure)` solves the contact with the heights raised by
+/// `distortion` (m), from `pressure` if it wishes (a worn surface's step solves it with its
+/// wear compliance, [`crate::study::wear`]).
+pub fn iterate(
+    grid: &CellGrid,
+    isothermal: RoughSolution,
+    spec: &ThermalSpec,
+    friction: f64,
+    progress: &mut dyn FnMut(usize, f64),
+    solve: &mut dyn FnMut(&Array2<f64>, &Array2<f64>) -> Result<RoughSolution, CoupledError>,
+) -> Result<CoupledContact, CoupledError> {
+    let [ny, nx] = grid.shape;
     let blok = spec.partition == Partition::Blok;
-    let mut body1 = Body::new(&grid, &spec.body1, blok)?;
+    let mut body1 = Body::new(grid, &spec.body1, blok)?;
     let mut body2 = match &spec.body2 {
-        Some(b) if spec.partition.needs_body2() => Some(Body::new(&grid, b, blok)?),
+        Some(b) if spec.partition.needs_body2() => Some(Body::new(grid, b, blok)?),
         _ => None,
     };
     let mut pressure = isothermal.pressure_pa.clone();
@@ -166,12 +196,7 @@ pub fn solve(
         Zip::from(&mut distortion)
             .and(&target)
             .for_each(|w, &t| *w += relaxation * (t - *w));
-        let heights = &problem.heights_m + &distortion;
-        let step = RoughContactProblem {
-            heights_m: heights.view(),
-            ..problem.clone()
-        };
-        let heated = rough::solve(&step, &mut |_, _| {})?;
+        let heated = solve(&distortion, &pressure)?;
         let total: f64 = heated.pressure_pa.sum();
         let moved: f64 = Zip::from(&heated.pressure_pa)
             .and(&pressure)

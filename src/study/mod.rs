@@ -27,6 +27,7 @@ pub mod thermal;
 pub mod thermal_sections;
 pub mod thermal_sweep;
 pub mod volume;
+pub mod wear;
 
 use crate::contact::partial_slip::CattaneoMindlin;
 use crate::contact::ContactError;

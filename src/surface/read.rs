@@ -20,6 +20,11 @@
 //! traction CSV reader takes them, [`crate::io::grid_table`]); x and y in the length unit and z in
 //! the height unit of [`ReadOptions`] (both default to metres).
 //!
+//! ## NumPy (`.npy`)
+//! A 2-D float64 array `[rows, columns]` (row = y), as `contact --pressure`, `surface --heights`
+//! and `wear --heights-out` write them: heights in metres unless the caller gives a height
+//! unit; the spacing is the caller's (the file holds none).
+//!
 //! ## Missing points
 //! `NaN` (or any non-finite value) is refused with its row and column, unless the caller asks
 //! for [`Fill::Interpolate`]: each missing height becomes the mean of its valid neighbours,
@@ -112,6 +117,7 @@ pub fn read_surface(path: &Path, options: &ReadOptions) -> Result<HeightMap, Rea
             )?;
             Ok(map)
         }
+        "npy" => read_npy(path, &name, options),
         "xyz" => {
             let map = parse_xyz(&read_text(path)?, &name, options)?;
             agree(&map, options.spacing_m, None, &name)?;
@@ -119,6 +125,61 @@ pub fn read_surface(path: &Path, options: &ReadOptions) -> Result<HeightMap, Rea
         }
         _ => parse_ascii(&read_text(path)?, &name, options),
     }
+}
+
+/// Reads a `.npy` height matrix (module doc).
+fn read_npy(path: &Path, name: &str, options: &ReadOptions) -> Result<HeightMap, ReadError> {
+    let format = |message: String| ReadError::Format {
+        path: name.to_string(),
+        message,
+    };
+    let io = |source| ReadError::Io {
+        path: name.to_string(),
+        source,
+    };
+    let size = std::fs::metadata(path).map_err(io)?.len();
+    let limit = file_size_limit();
+    if size > limit {
+        return Err(ReadError::TooLarge {
+            path: name.to_string(),
+            size_mib: size >> 20,
+            limit_mib: limit >> 20,
+            needed_mib: size >> 20,
+        });
+    }
+    let bytes = std::fs::read(path).map_err(io)?;
+    let array = crate::io::archive::npy_f64(&bytes).map_err(format)?;
+    let [ny, nx] = match array.shape.as_slice() {
+        &[ny, nx] => [ny, nx],
+        other => {
+            return Err(format(format!(
+                "a height map is a 2-D array [rows, columns], this one has shape {other:?}"
+            )))
+        }
+    };
+    let Some(spacing) = options.spacing_m else {
+        return Err(format(
+            "an .npy file holds only heights: give its sample spacing (--spacing 1um, or spacing = \"1 um\" in the scene)".to_string(),
+        ));
+    };
+    let unit = options.height_unit_m.unwrap_or(1.0);
+    let mut heights = Array2::from_shape_vec((ny, nx), array.values)
+        .map_err(|e| format(e.to_string()))?
+        .mapv(|h| h * unit);
+    if let Some(((row, column), _)) = heights.indexed_iter().find(|(_, v)| !v.is_finite()) {
+        match options.fill {
+            Fill::Refuse => {
+                return Err(format(format!(
+                    "row {row}, column {column} is missing (not finite); fill missing points with fill = \"interpolate\" (--fill interpolate) or repair the file"
+                )))
+            }
+            Fill::Interpolate => interpolate_missing(&mut heights).map_err(format)?,
+        }
+    }
+    HeightMap::new(heights, spacing).map_err(|source| ReadError::Surface {
+        path: name.to_string(),
+        source,
+    })
 }
 
 /// A spacing or a height unit the caller gave (`--spacing`, `--height-unit`, or the scene's

@@ -31,6 +31,19 @@
 //! as new plastic flow each time. The flattened material is displaced, not removed: it is
 //! reported as its own volume, apart from the Archard wear (which stays `k W s` exactly).
 //!
+//! ## A rough counter-surface
+//! A rough body 2 that does not wear (a hard coating) slides over the worn body along +x: at
+//! sliding distance `s` its asperities stand where they stood at 0 shifted by `s` ([`slid`],
+//! whole cells, around its period). Within one step they pass over the worn body many times,
+//! so the worn body wears under their mean effect: the pressure against the counter's mean
+//! plane (to first order in the roughness: the macroscopic pressure of a rough contact is the
+//! smooth one where the roughness is small against the bulk deformation, Greenwood & Tripp
+//! 1967). The contact reported at each step is the instantaneous one, the worn body against
+//! the counter at that distance: through the counter's asperities, with the real and plastic
+//! areas that the load (not the growing scar) sets, as Greenwood & Williamson's model has it.
+//! Its plastic penetration is ploughing, material moved aside by the hard asperities (which
+//! this model cannot place), and is not kept.
+//!
 //! ## A measured series
 //! The wear between two measured topographies of one surface is what the later one lacks: the
 //! difference of heights, levelled by its median (the unworn majority of the map keeps its
@@ -44,10 +57,12 @@
 //! - M. T. Siniawski, S. J. Harris, Q. Wang, S. Liu, Wear initiation of steel sliding against
 //!   a thin boron carbide coating, *Tribol. Lett.* 15 (1) (2003) (the evolution of a steel
 //!   ball's wear scar, its pressure and its plastic area with sliding distance).
+//! - J. A. Greenwood, J. H. Tripp, The elastic contact of rough spheres, *J. Appl. Mech.* 34
+//!   (1967) 153–159.
 //! - E. Hairer, G. Wanner, *Solving Ordinary Differential Equations II*, 2nd ed., Springer
 //!   (1996), ch. IV (the implicit Euler method's stability).
 
-use ndarray::{Array2, Zip};
+use ndarray::{Array2, ArrayView2, Zip};
 
 use crate::contact::rough::{self, RoughContactError, RoughContactProblem, RoughSolution};
 
@@ -126,14 +141,19 @@ pub struct Evolution<'p> {
     problem: RoughContactProblem<'p>,
     law: Archard,
     schedule: Schedule,
-    /// The worn combined heights, m, out of body 1.
+    /// The worn heights, m, out of body 1 (the worn body).
     heights_m: Array2<f64>,
+    /// A rough counter-surface that slides over the worn body and does not wear (m, out of
+    /// body 2 towards body 1), shifted by the sliding distance at each step.
+    counter_m: Option<Array2<f64>>,
     wear_depth_m: Array2<f64>,
     plastic_depth_m: Array2<f64>,
     /// The height range of the unworn map: wear beyond it is refused.
     range_m: f64,
     next: usize,
     last_pressure_pa: Option<Array2<f64>>,
+    /// The last contact against the sliding counter-surface, to start the next from.
+    last_sliding_pressure_pa: Option<Array2<f64>>,
     worn_volume_m3: f64,
     plastic_volume_m3: f64,
 }
@@ -199,14 +219,26 @@ impl<'p> Evolution<'p> {
             law,
             schedule,
             heights_m,
+            counter_m: None,
             wear_depth_m: Array2::zeros(shape),
             plastic_depth_m: Array2::zeros(shape),
             range_m: high - low,
             next: 0,
             last_pressure_pa: None,
+            last_sliding_pressure_pa: None,
             worn_volume_m3: 0.0,
             plastic_volume_m3: 0.0,
         })
+    }
+
+    /// The worn body's heights (`problem`'s) pressed by a rough counter-surface `counter_m`
+    /// (m, the same grid, heights out of body 2 towards body 1) that slides over it along +x
+    /// and does not wear: at sliding distance `s` the contact sees the worn heights plus the
+    /// counter-surface shifted by `s` ([`slid`]; the counter is taken as periodic, as a
+    /// generated surface is). Only the worn body loses material.
+    pub fn sliding_against(mut self, counter_m: Array2<f64>) -> Self {
+        self.counter_m = Some(counter_m);
+        self
     }
 
     /// The worn heights after the last step (m, `[ny, nx]`, out of body 1).
@@ -234,39 +266,81 @@ impl<'p> Evolution<'p> {
         false
     }
 
-    /// The next step, `None` after the last. Step 0 is the unworn contact, solved as
-    /// [`rough::solve`] solves it (bit for bit); each later one wears the surface over its
-    /// distance by backward Euler, warm-started from the pressure before.
-    /// `progress(iteration, residual)` follows the contact solver.
-    pub fn step(
-        &mut self,
-        progress: &mut dyn FnMut(usize, f64),
-    ) -> Result<Option<WearStep>, WearError> {
+    /// Whether every step has been taken.
+    pub fn finished(&self) -> bool {
+        self.next > self.schedule.steps
+    }
+
+    /// The index and sliding distance of the next step, and the local compliance of its wear
+    /// (`k ds`, m/Pa; zero for the unworn contact).
+    fn next_step(&self) -> (usize, f64, f64) {
         let index = self.next;
-        if index > self.schedule.steps {
-            return Ok(None);
-        }
         let distance_m = self.schedule.distance_at(index);
         let ds = if index == 0 {
             0.0
         } else {
             distance_m - self.schedule.distance_at(index - 1)
         };
-        let compliance = self.law.coefficient_m2_per_n * ds;
+        (index, distance_m, self.law.coefficient_m2_per_n * ds)
+    }
+
+    /// The contact of the next step, not yet taken, that wears the surface: the worn surface
+    /// plus `offset` (m, a transient bulge such as the thermal distortion, which wears
+    /// nothing) against a smooth counter-surface, with the step's wear compliance, started from
+    /// `start` (else the last step's pressure). Step 0 is the unworn contact, solved as
+    /// [`rough::solve`] solves it (bit for bit). A rough counter-surface is not in it: its
+    /// asperities pass over the worn body many times within a step, so the worn body wears
+    /// under their mean, the pressure against the counter's mean plane (module doc).
+    pub fn solve_next<'s>(
+        &'s self,
+        offset: Option<ArrayView2<f64>>,
+        start: Option<ArrayView2<'s, f64>>,
+        progress: &mut dyn FnMut(usize, f64),
+    ) -> Result<RoughSolution, RoughContactError> {
+        let (_, _, compliance) = self.next_step();
+        let shifted = offset.map(|w| &self.heights_m + &w);
         let problem = RoughContactProblem {
-            heights_m: self.heights_m.view(),
+            heights_m: shifted.as_ref().unwrap_or(&self.heights_m).view(),
             ..self.problem.clone()
         };
         let warm = rough::Warm {
-            pressure_pa: self.last_pressure_pa.as_ref().map(|p| p.view()),
+            pressure_pa: start.or_else(|| self.last_pressure_pa.as_ref().map(|p| p.view())),
             local_compliance_m_per_pa: compliance,
         };
-        let solution =
-            rough::solve_warm(&problem, &warm, progress).map_err(|source| WearError::Contact {
-                step: index,
-                distance_m,
-                source,
-            })?;
+        rough::solve_warm(&problem, &warm, progress)
+    }
+
+    /// With a rough counter-surface ([`Evolution::sliding_against`]), the contact at the end of
+    /// the last step taken: the worn surface against the counter slid to that distance, static
+    /// (its plastic penetration is ploughing by the counter's asperities, which moves material
+    /// aside and is not kept); `None` without a counter.
+    pub fn sliding_contact(
+        &mut self,
+        progress: &mut dyn FnMut(usize, f64),
+    ) -> Result<Option<RoughSolution>, RoughContactError> {
+        let Some(counter) = &self.counter_m else {
+            return Ok(None);
+        };
+        let distance_m = self.schedule.distance_at(self.next.saturating_sub(1));
+        let combined = &self.heights_m + &slid(counter, distance_m, self.problem.spacing_m[0]);
+        let problem = RoughContactProblem {
+            heights_m: combined.view(),
+            ..self.problem.clone()
+        };
+        let warm = rough::Warm {
+            pressure_pa: self.last_sliding_pressure_pa.as_ref().map(|p| p.view()),
+            local_compliance_m_per_pa: 0.0,
+        };
+        let solution = rough::solve_warm(&problem, &warm, progress)?;
+        self.last_sliding_pressure_pa = Some(solution.pressure_pa.clone());
+        Ok(Some(solution))
+    }
+
+    /// Takes the next step with `solution`, the contact [`Evolution::solve_next`] found for
+    /// it: the wear `k ds p` and the plastic penetration at the cap are removed from the
+    /// surface.
+    pub fn commit(&mut self, solution: RoughSolution) -> Result<WearStep, WearError> {
+        let (index, distance_m, compliance) = self.next_step();
         let cell_area = self.problem.spacing_m[0] * self.problem.spacing_m[1];
         if compliance > 0.0 {
             Zip::from(&mut self.heights_m)
@@ -296,15 +370,56 @@ impl<'p> Evolution<'p> {
         }
         self.last_pressure_pa = Some(solution.pressure_pa.clone());
         self.next += 1;
-        Ok(Some(WearStep {
+        Ok(WearStep {
             index,
             sliding_distance_m: distance_m,
             solution,
             worn_volume_m3: self.worn_volume_m3,
             max_wear_depth_m,
             plastic_volume_m3: self.plastic_volume_m3,
-        }))
+        })
     }
+
+    /// The next step solved and taken, `None` after the last: each step after the unworn
+    /// contact wears the surface over its distance by backward Euler, warm-started from the
+    /// pressure before; with a rough counter-surface, the step's contact is then the one
+    /// against the counter slid to the step's distance ([`Evolution::sliding_contact`]).
+    /// `progress(iteration, residual)` follows the contact solver.
+    pub fn step(
+        &mut self,
+        progress: &mut dyn FnMut(usize, f64),
+    ) -> Result<Option<WearStep>, WearError> {
+        if self.finished() {
+            return Ok(None);
+        }
+        let (step, distance_m, _) = self.next_step();
+        let contact_error = |source| WearError::Contact {
+            step,
+            distance_m,
+            source,
+        };
+        let solution = self
+            .solve_next(None, None, progress)
+            .map_err(contact_error)?;
+        let mut taken = self.commit(solution)?;
+        if let Some(sliding) = self.sliding_contact(progress).map_err(contact_error)? {
+            taken.solution = sliding;
+        }
+        Ok(Some(taken))
+    }
+}
+
+/// A counter-surface (`[ny, nx]`, periodic) slid by `distance_m` along +x over cells `dx` wide:
+/// the point at `x` moves to `x + s`, rounded to whole cells and wrapped around the period.
+pub fn slid(counter: &Array2<f64>, distance_m: f64, dx: f64) -> Array2<f64> {
+    let nx = counter.ncols();
+    let shift = (distance_m / dx).round().rem_euclid(nx as f64) as usize % nx.max(1);
+    if shift == 0 {
+        return counter.clone();
+    }
+    Array2::from_shape_fn(counter.raw_dim(), |(j, i)| {
+        counter[[j, (i + nx - shift) % nx]]
+    })
 }
 
 /// The load that presses `problem`'s surface: given, or the mean pressure over the map, N

@@ -12,16 +12,17 @@ mod sweep;
 mod thermal;
 mod tractions;
 mod volume;
+mod wear;
 
 use std::path::Path;
 
 use super::raw::{
     self, CountOrList, NumberOrText, RawBody, RawContact, RawFigure, RawGenerate, RawScene,
-    RawSurface, RawSweep, RawVolume, TextOrList,
+    RawSurface, RawSweep, RawVolume, RawWear, TextOrList,
 };
 use super::spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
-    RoughSpec, Scale, SectionKind, StressUnit, SurfaceSpec, YieldStrength,
+    RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec, WearSpec, YieldStrength,
     ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
@@ -157,11 +158,13 @@ impl Validator<'_> {
         for (key, given) in [
             ("surface", raw.surface.is_some()),
             ("counter_surface", raw.counter_surface.is_some()),
+            ("wear", raw.wear.is_some()),
+            ("series", !raw.series.is_empty()),
         ] {
             if given {
                 return Err(self.error(
                     key,
-                    "a height map belongs to a rough or surface scene",
+                    "a height map (and its wear) belongs to a rough or surface scene",
                     Some("use contact.kind = \"rough\" (press it on a flat) or \"surface\" (characterise it)"),
                 ));
             }
@@ -306,6 +309,7 @@ impl Validator<'_> {
             load_centre_over_a: 0.0,
             thermal,
             surface: None,
+            wear: None,
         };
         if let Some(sweep) = &raw.sweep {
             scene.sweep = Some(self.sweep(sweep, &scene)?);

@@ -45,7 +45,7 @@ impl Validator<'_> {
                 return Err(self.error(
                     key,
                     "a rough or surface scene draws its own set of panels (topography, pressure, sections through the peak; or the surface's statistics)",
-                    Some("remove it; see the README's rough contact section"),
+                    Some("remove it; docs/rough-contact.md describes the sheet's sections"),
                 ));
             }
         }
@@ -104,7 +104,7 @@ impl Validator<'_> {
         let [ny, nx] = surface.heights.shape();
         let mut scene = Scene {
             name: name.into(),
-            title: raw.title,
+            title: raw.title.clone(),
             contact,
             figure,
             panels: Vec::new(),
@@ -118,8 +118,17 @@ impl Validator<'_> {
             load_centre_over_a: 0.0,
             thermal,
             surface: Some(surface),
+            wear: None,
         };
+        scene.wear = self.wear(&raw, &scene)?;
         if let Some(sweep) = &raw.sweep {
+            if scene.wear.is_some() {
+                return Err(self.error(
+                    "sweep",
+                    "a wear scene steps along the sliding distance: it takes no other sweep",
+                    Some("remove [sweep]; `stressfield record` records the wear steps against the sliding distance"),
+                ));
+            }
             let sweep = self.sweep(sweep, &scene)?;
             // Each load of a rough sweep is held to the limits of the scene's own load.
             if let (Some(rough), Some(surface)) = (&scene.contact.rough, &scene.surface) {

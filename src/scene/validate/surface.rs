@@ -21,14 +21,50 @@ impl Validator<'_> {
         raw: &RawScene,
         kind: ContactKind,
     ) -> Result<SurfaceSpec, SceneError> {
-        let Some(table) = &raw.surface else {
-            return Err(self.error(
+        let default_table = RawSurface::default();
+        let table = match (&raw.surface, raw.series.is_empty()) {
+            (Some(table), _) => table,
+            // A series' files may say their own spacing and units (Gwyddion's header, x3p).
+            (None, false) => &default_table,
+            (None, true) => return Err(self.error(
                 "surface",
                 "a rough or surface scene needs its [surface] table",
                 Some("add [surface] with file = \"surfaces/worn.asc\" (spacing, height_unit), or [surface.generate]"),
-            ));
+            )),
         };
-        let (body1, source, shape) = self.height_map("surface", table)?;
+        let (body1, source, shape) = match raw.series.first() {
+            None => self.height_map("surface", table)?,
+            Some(first) => {
+                if kind != ContactKind::Rough {
+                    return Err(self.error(
+                        "series",
+                        "a series of topographies is solved as a rough contact",
+                        Some("use contact.kind = \"rough\""),
+                    ));
+                }
+                for (name, given) in [
+                    ("surface.file", table.file.is_some()),
+                    ("surface.generate", table.generate.is_some()),
+                ] {
+                    if given {
+                        return Err(self.error(
+                            name,
+                            "a series names its topographies in [[series]]; [surface] gives only their spacing, units and fill",
+                            Some("remove it, and give each topography as a [[series]] table with file and distance"),
+                        ));
+                    }
+                }
+                let Some(file) = &first.file else {
+                    return Err(self.error(
+                        "series[0].file",
+                        "each [[series]] entry names its height file",
+                        Some("e.g. file = \"surfaces/scar_0m.asc\""),
+                    ));
+                };
+                let map = self.read_map("surface", "series[0].file", file, table)?;
+                (map, file.clone(), None)
+            }
+        };
         let generated = shape.is_some();
         let shape = shape.unwrap_or(Form::None);
         let counter = match (&raw.counter_surface, kind) {
@@ -135,57 +171,11 @@ impl Validator<'_> {
                 "give either file (a measured surface) or [generate] (a random one)",
                 Some("e.g. file = \"surfaces/worn.asc\", or a [surface.generate] table"),
             )),
-            (Some(file), None) => {
-                let spacing_m = table
-                    .spacing
-                    .as_ref()
-                    .map(|s| self.spacing(&format!("{key}.spacing"), s))
-                    .transpose()?;
-                let unit =
-                    |name: &str, value: &Option<String>| -> Result<Option<f64>, SceneError> {
-                        value
-                            .as_deref()
-                            .map(|text| {
-                                read::length_unit_m(text).ok_or_else(|| {
-                                    self.error(
-                                        &format!("{key}.{name}"),
-                                        format!("unknown unit `{text}`"),
-                                        Some("use m, mm, µm (or um), nm or pm"),
-                                    )
-                                })
-                            })
-                            .transpose()
-                    };
-                let fill = match table.fill.as_deref() {
-                    None | Some("refuse") => Fill::Refuse,
-                    Some("interpolate") => Fill::Interpolate,
-                    Some(other) => {
-                        return Err(self.error(
-                            &format!("{key}.fill"),
-                            format!("unknown fill `{other}`"),
-                            Some("use \"refuse\" (the default) or \"interpolate\""),
-                        ))
-                    }
-                };
-                let options = ReadOptions {
-                    spacing_m,
-                    height_unit_m: unit("height_unit", &table.height_unit)?,
-                    xyz_length_unit_m: unit("length_unit", &table.length_unit)?,
-                    fill,
-                };
-                let path = Path::new(self.file)
-                    .parent()
-                    .unwrap_or_else(|| Path::new(""))
-                    .join(file);
-                let map = read::read_surface(&path, &options).map_err(|e| {
-                    let hint = match e {
-                        read::ReadError::Io { .. } => "the path is relative to the scene file",
-                        _ => "check the file and its height_unit and spacing",
-                    };
-                    self.error(&format!("{key}.file"), e.to_string(), Some(hint))
-                })?;
-                Ok((map, file.clone(), None))
-            }
+            (Some(file), None) => Ok((
+                self.read_map(key, &format!("{key}.file"), file, table)?,
+                file.clone(),
+                None,
+            )),
             (None, Some(generate)) => {
                 for (name, given) in [
                     ("spacing", table.spacing.is_some()),
@@ -208,6 +198,65 @@ impl Validator<'_> {
                 Ok((map, description, Some(generator.form)))
             }
         }
+    }
+
+    /// The height file `file` (named at `file_key`, relative to the scene) read with the
+    /// options of the `[surface]`-like table `table` at `key` (spacing, units, fill).
+    pub(super) fn read_map(
+        &self,
+        key: &str,
+        file_key: &str,
+        file: &str,
+        table: &RawSurface,
+    ) -> Result<HeightMap, SceneError> {
+        let spacing_m = table
+            .spacing
+            .as_ref()
+            .map(|s| self.spacing(&format!("{key}.spacing"), s))
+            .transpose()?;
+        let unit = |name: &str, value: &Option<String>| -> Result<Option<f64>, SceneError> {
+            value
+                .as_deref()
+                .map(|text| {
+                    read::length_unit_m(text).ok_or_else(|| {
+                        self.error(
+                            &format!("{key}.{name}"),
+                            format!("unknown unit `{text}`"),
+                            Some("use m, mm, µm (or um), nm or pm"),
+                        )
+                    })
+                })
+                .transpose()
+        };
+        let fill = match table.fill.as_deref() {
+            None | Some("refuse") => Fill::Refuse,
+            Some("interpolate") => Fill::Interpolate,
+            Some(other) => {
+                return Err(self.error(
+                    &format!("{key}.fill"),
+                    format!("unknown fill `{other}`"),
+                    Some("use \"refuse\" (the default) or \"interpolate\""),
+                ))
+            }
+        };
+        let options = ReadOptions {
+            spacing_m,
+            height_unit_m: unit("height_unit", &table.height_unit)?,
+            xyz_length_unit_m: unit("length_unit", &table.length_unit)?,
+            fill,
+        };
+        let path = Path::new(self.file)
+            .parent()
+            .unwrap_or_else(|| Path::new(""))
+            .join(file);
+        let map = read::read_surface(&path, &options).map_err(|e| {
+            let hint = match e {
+                read::ReadError::Io { .. } => "the path is relative to the scene file",
+                _ => "check the file and its height_unit and spacing",
+            };
+            self.error(file_key, e.to_string(), Some(hint))
+        })?;
+        Ok(map)
     }
 
     fn spacing(&self, key: &str, value: &TextOrList) -> Result<[f64; 2], SceneError> {

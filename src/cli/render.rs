@@ -171,15 +171,23 @@ fn render_scene(
         None => None,
     };
     let on_row = || bar.inc(1);
+    // A wear scene's steps are solved once, for the sheet and the recording.
+    let wear = match &scene.wear {
+        Some(_) => Some(super::wear::study(scene)?),
+        None => None,
+    };
     // A rough scene's contact is solved once, for the sheet and the recording.
-    let rough = match scene.contact.kind {
-        ContactKind::Rough => Some(
+    let rough = match (scene.contact.kind, &wear) {
+        (ContactKind::Rough, None) => Some(
             study::rough::solve(scene, &mut |_, _| {})
                 .with_context(|| format!("scene {}", scene.name))?,
         ),
         _ => None,
     };
-    let drawing = figure::draw(scene, rough.as_ref(), &on_row)?;
+    let drawing = match &wear {
+        Some(study) => Drawing::Sheet(figure::wear::wear_sheet(scene, study)),
+        None => figure::draw(scene, rough.as_ref(), &on_row)?,
+    };
     let image = drawing.png()?;
     let png = render::encode_png(&image)?;
     let png_path = out_dir.join(format!("{}.png", scene.name));

@@ -8,6 +8,7 @@
 pub mod rough;
 pub mod surface;
 pub mod thermal;
+pub mod wear;
 
 use crate::field::{FieldError, Plane, Section};
 use crate::io::text;

@@ -118,7 +118,12 @@ pub(super) fn record_scene_as(
     rough: Option<&RoughSolution>,
 ) -> Result<String> {
     let destination = stressfield::record::Destination::File(file.to_path_buf());
-    let summary = stressfield::record::record_to_with(scene, &destination, &|| bar.inc(1), rough);
+    let summary = if scene.wear.is_some() {
+        let study = super::wear::study(scene)?;
+        record_wear(scene, &destination, &study)
+    } else {
+        stressfield::record::record_to_with(scene, &destination, &|| bar.inc(1), rough)
+    };
     let summary = if file == shown {
         summary?
     } else {
@@ -129,6 +134,51 @@ pub(super) fn record_scene_as(
         shown.display(),
         summary_text(scene, &summary)
     ))
+}
+
+/// Records a wear scene from its study into `file`, saying it was recorded to `shown`.
+#[cfg(feature = "rerun")]
+pub(super) fn record_wear_as(
+    scene: &Scene,
+    file: &Path,
+    shown: &Path,
+    study: &stressfield::study::wear::WearStudy,
+) -> Result<String> {
+    let destination = stressfield::record::Destination::File(file.to_path_buf());
+    let summary = anyhow::Context::with_context(record_wear(scene, &destination, study), || {
+        format!("cannot record {}", shown.display())
+    })?;
+    Ok(format!(
+        "recorded {}{}",
+        shown.display(),
+        summary_text(scene, &summary)
+    ))
+}
+
+#[cfg(not(feature = "rerun"))]
+pub(super) fn record_wear_as(
+    scene: &Scene,
+    _file: &Path,
+    _shown: &Path,
+    _study: &stressfield::study::wear::WearStudy,
+) -> Result<String> {
+    anyhow::bail!(
+        "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",
+        scene.name
+    )
+}
+
+/// Records a wear scene's study (its steps' sections computed here, once) to `destination`.
+#[cfg(feature = "rerun")]
+pub(super) fn record_wear(
+    scene: &Scene,
+    destination: &stressfield::record::Destination,
+    study: &stressfield::study::wear::WearStudy,
+) -> Result<stressfield::record::Summary, stressfield::record::RecordError> {
+    let bar = super::console::spinner("sections through each step's maximum");
+    let sections = stressfield::study::wear::sections(study, &mut |_| bar.tick());
+    bar.finish_and_clear();
+    stressfield::record::record_wear_to(scene, destination, study, &sections?)
 }
 
 /// Streams one scene to standard output or a viewer; returns the line to print.
@@ -142,7 +192,12 @@ fn stream_scene(scene: &Scene, target: &Target, bar: &ProgressBar) -> Result<Str
         Target::OutDir(dir) => Destination::File(dir.join(format!("{}.rrd", scene.name))),
         Target::File(path) => Destination::File(path.clone()),
     };
-    let summary = stressfield::record::record_to(scene, &destination, &|| bar.inc(1))?;
+    let summary = if scene.wear.is_some() {
+        let study = super::wear::study(scene)?;
+        record_wear(scene, &destination, &study)?
+    } else {
+        stressfield::record::record_to(scene, &destination, &|| bar.inc(1))?
+    };
     Ok(format!(
         "streamed {} to {destination}{}",
         scene.name,

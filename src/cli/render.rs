@@ -8,7 +8,7 @@ use indicatif::ProgressBar;
 
 use super::compare::{self, CompareOptions, Rendered};
 use super::console::{print_err, progress_bar, say};
-use super::record::{record_reporting, record_scene_as, recording_rows};
+use super::record::{record_reporting, record_scene_as, record_wear_as, recording_rows};
 use stressfield::figure::{self, Drawing};
 use stressfield::io::output::Staged;
 use stressfield::regression::field_file::{self, PanelField};
@@ -229,8 +229,18 @@ fn render_scene(
         }
     }
     lines.insert(0, format!("rendered {}", written.join(", ")));
-    if let Some((file, path)) = recording {
-        lines.push(record_scene_as(scene, &file, path, bar, rough.as_ref())?);
+    match (recording, &wear) {
+        (Some((file, path)), Some(study)) => lines.push(record_wear_as(scene, &file, path, study)?),
+        (Some((file, path)), None) => {
+            lines.push(record_scene_as(scene, &file, path, bar, rough.as_ref())?)
+        }
+        // The main job records a wear scene beside its figure, from the same study.
+        (None, Some(study)) if !options.named && cfg!(feature = "rerun") => {
+            let path = out_dir.join(format!("{}.rrd", scene.name));
+            let file = staged.reserve(&path)?;
+            lines.push(record_wear_as(scene, &file, &path, study)?);
+        }
+        _ => {}
     }
     staged.commit()?;
     Ok(SceneOutput {

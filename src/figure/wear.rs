@@ -43,8 +43,7 @@ fn window(study: &WearStudy, shown: &[usize]) -> [usize; 4] {
         let step = &study.steps[k];
         let threshold = 1e-3 * step.max_wear_depth_m;
         for ((j, i), &p) in step.solution.pressure_pa.indexed_iter() {
-            if p > 0.0 || (step.max_wear_depth_m > 0.0 && step.wear_depth_m[[j, i]] > threshold)
-            {
+            if p > 0.0 || (step.max_wear_depth_m > 0.0 && step.wear_depth_m[[j, i]] > threshold) {
                 (r0, r1, c0, c1) = (r0.min(j), r1.max(j + 1), c0.min(i), c1.max(i + 1));
             }
         }
@@ -65,17 +64,13 @@ fn window(study: &WearStudy, shown: &[usize]) -> [usize; 4] {
 /// The distance of a step as its maps' subtitles say it.
 fn distance_text(step: &WearStudyStep) -> String {
     let s = step.sliding_distance_m;
-    let mut text = if s == 0.0 {
+    if s == 0.0 {
         "s = 0 (unworn)".to_string()
     } else if s >= 1.0 {
         format!("s = {} m", crate::io::text::approx(s))
     } else {
         format!("s = {} mm", crate::io::text::approx(s * 1e3))
-    };
-    if let Some(file) = &step.source {
-        text.push_str(&format!(" ({file})"));
     }
-    text
 }
 
 /// A row of maps (one figure of several panels on one colour scale).
@@ -117,8 +112,12 @@ pub fn wear_sheet(scene: &Scene, study: &WearStudy) -> Sheet {
         (r1 as f64 - 0.5) * dy * 1e6,
         r1 - r0,
     );
-    let crop = |a: &Array2<f64>| Array2::from_shape_fn((r1 - r0, c1 - c0), |(j, i)| a[[r0 + j, c0 + i]]);
-    let top = first.heights_m.iter().fold(f64::NEG_INFINITY, |m, &h| m.max(h));
+    let crop =
+        |a: &Array2<f64>| Array2::from_shape_fn((r1 - r0, c1 - c0), |(j, i)| a[[r0 + j, c0 + i]]);
+    let top = first
+        .heights_m
+        .iter()
+        .fold(f64::NEG_INFINITY, |m, &h| m.max(h));
 
     // The worn topography: heights below the unworn top (µm) on one scale, the scar outlined.
     let heights: Vec<Array2<f64>> = shown
@@ -181,11 +180,26 @@ pub fn wear_sheet(scene: &Scene, study: &WearStudy) -> Sheet {
         Some(h) if largest >= h * 1e-6 * (1.0 - 1e-12) => h * 1e-6,
         _ => robust.max(1e-9),
     };
-    let pressure_scale = PanelScale {
-        value_label: "p (MPa)".into(),
-        colormap: ColorMap::Inferno,
-        levels: Levels::Count(0),
-        range: Some((0.0, pressure_top)),
+    // One scale while the peaks stay within a decade of each other; beyond, each map its own
+    // (a worn scar's pressure falls far below the unworn peak, and would be one dark colour).
+    let peaks: Vec<f64> = pressures
+        .iter()
+        .map(|a| a.iter().fold(0.0f64, |m, &v| m.max(v)))
+        .collect();
+    let lowest_peak = peaks.iter().copied().fold(f64::INFINITY, f64::min);
+    let own_scales = lowest_peak > 0.0 && largest / lowest_peak > 10.0;
+    let scale_for = |values: &Array2<f64>| {
+        let top = if own_scales {
+            values.iter().fold(0.0f64, |m, &v| m.max(v)).max(1e-9)
+        } else {
+            pressure_top
+        };
+        PanelScale {
+            value_label: "p (MPa)".into(),
+            colormap: ColorMap::Inferno,
+            levels: Levels::Count(0),
+            range: Some((0.0, top)),
+        }
     };
     let hardness = study.hardness_pa;
     let pressure_panels: Vec<Panel> = shown
@@ -194,9 +208,19 @@ pub fn wear_sheet(scene: &Scene, study: &WearStudy) -> Sheet {
         .map(|(&k, values)| {
             let step = &study.steps[k];
             let mut outlines = Vec::new();
-            let mut subtitle = format!("{}; max {} MPa", distance_text(step), crate::io::text::approx(step.solution.max_pressure_pa * 1e-6));
+            let mut subtitle = format!(
+                "{}; max {} MPa",
+                distance_text(step),
+                crate::io::text::approx(step.solution.max_pressure_pa * 1e-6)
+            );
             if let Some(h) = hardness {
-                let capped = values.mapv(|p| if p >= h * 1e-6 * (1.0 - 1e-12) { 1.0 } else { 0.0 });
+                let capped = values.mapv(|p| {
+                    if p >= h * 1e-6 * (1.0 - 1e-12) {
+                        1.0
+                    } else {
+                        0.0
+                    }
+                });
                 outlines = crate::render::contour_lines(capped.view(), &x, &y, 0.5);
                 subtitle.push_str(&format!("; {} cells at H", step.solution.plastic_cells));
             }
@@ -204,11 +228,11 @@ pub fn wear_sheet(scene: &Scene, study: &WearStudy) -> Sheet {
                 subtitle,
                 x,
                 z: y,
+                scale: Some(scale_for(&values)),
                 values,
                 traction: Vec::new(),
                 half_width: 0.0,
                 outlines,
-                scale: Some(pressure_scale.clone()),
                 peak: None,
                 axes: None,
             }
@@ -247,12 +271,19 @@ pub fn wear_sheet(scene: &Scene, study: &WearStudy) -> Sheet {
         rows.push(vec![Cell::Map(map)]);
     }
     let cap_note = match hardness {
-        Some(h) => format!("the cells at the hardness cap H = {} MPa outlined", crate::io::text::approx(h * 1e-6)),
+        Some(h) => format!(
+            "cells at H = {} MPa outlined",
+            crate::io::text::approx(h * 1e-6)
+        ),
         None => "no hardness cap".into(),
     };
     for (k, panels) in chunks(pressure_panels).into_iter().enumerate() {
         let title = if k == 0 {
-            format!("Contact pressure ({cap_note})")
+            if own_scales {
+                format!("Contact pressure, each map on its own scale ({cap_note})")
+            } else {
+                format!("Contact pressure ({cap_note})")
+            }
         } else {
             "Contact pressure, continued".to_string()
         };
@@ -373,7 +404,10 @@ fn volume_chart(study: &WearStudy) -> Chart {
             ),
             points: vec![
                 (0.0, 0.0),
-                (distance_m, coefficient_m2_per_n * study.load_n * distance_m * per_m3),
+                (
+                    distance_m,
+                    coefficient_m2_per_n * study.load_n * distance_m * per_m3,
+                ),
             ],
             style: Style::Dashed,
             colour: PALETTE[1],

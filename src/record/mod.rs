@@ -45,6 +45,7 @@ mod section;
 pub mod sink;
 mod thermal;
 mod volume;
+pub mod wear;
 
 use std::path::{Path, PathBuf};
 
@@ -75,6 +76,8 @@ pub enum RecordError {
     Thermal(#[from] crate::study::thermal::ThermalStudyError),
     #[error("sweep step {step}: {message}")]
     Step { step: usize, message: String },
+    #[error(transparent)]
+    Wear(#[from] crate::study::wear::WearStudyError),
     #[error("rerun: {0}")]
     Rerun(String),
     #[error("cannot write {path}: {message}\nhint: check that the directory exists, is writable and has free space, or choose another with --out-dir or -o")]
@@ -137,6 +140,23 @@ pub fn record_to_with(
     Ok(summary)
 }
 
+/// Records a wear scene to `destination` from its study and its steps' sections, computed
+/// once by the caller ([`crate::study::wear::study`], [`crate::study::wear::sections`]).
+pub fn record_wear_to(
+    scene: &Scene,
+    destination: &Destination,
+    study: &crate::study::wear::WearStudy,
+    sections: &[crate::study::wear::StepSection],
+) -> Result<Summary, RecordError> {
+    let output = sink::Output::open(destination, &scene.name)?;
+    let live = !matches!(destination, Destination::File(_));
+    let summary = wear::record(scene, study, sections, &output.stream, live, &|| {
+        output.flush()
+    })?;
+    output.finish()?;
+    Ok(summary)
+}
+
 /// Records `scene` into the file `path` (see [`record_to`]).
 pub fn record_to_file(
     scene: &Scene,
@@ -148,6 +168,9 @@ pub fn record_to_file(
 
 /// The name of the timeline of a scene's steps.
 pub fn timeline(scene: &Scene) -> &'static str {
+    if scene.wear.is_some() {
+        return wear::TIMELINE;
+    }
     scene.sweep.as_ref().map_or("step", |s| s.parameter.key())
 }
 
@@ -291,6 +314,12 @@ fn record_with(
     // Steps are on the sweep's own timeline; the wall clock of logging is no timeline to
     // browse (the viewer would offer `log_time` beside it).
     stream.set_log_time_enabled(false);
+    if scene.wear.is_some() {
+        // The wear steps, solved here once (a caller that has them uses record_wear_to).
+        let study = crate::study::wear::study(scene, &mut |_| {})?;
+        let sections = crate::study::wear::sections(&study, &mut |_| {})?;
+        return wear::record(scene, &study, &sections, stream, live, flush);
+    }
     if matches!(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface

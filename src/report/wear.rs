@@ -49,7 +49,8 @@ pub struct StepReport {
 }
 
 impl StepReport {
-    fn of(step: &WearStudyStep) -> Self {
+    /// The report of one step.
+    pub fn of(step: &WearStudyStep) -> Self {
         let maxima = &step.maxima;
         Self {
             sliding_distance_m: step.sliding_distance_m,

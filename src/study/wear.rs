@@ -42,6 +42,8 @@ pub enum WearStudyError {
     CellPeclet { body: usize, cell_peclet: f64 },
     #[error("step {step}: {error}")]
     Coupled { step: usize, error: CoupledError },
+    #[error("the section of step {step}: {message}")]
+    Section { step: usize, message: String },
     #[error(transparent)]
     Transform(#[from] crate::operator::transform::TransformError),
 }
@@ -480,4 +482,82 @@ fn coupled_step(
         )
         .map_err(coupled_error)?;
     Ok(Some(solved.heated))
+}
+
+/// The xz section of one step through its largest von Mises stress, for the recording.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepSection {
+    /// The plane in the reference length (µm): along x over the map's cell centres, in depth
+    /// from the surface.
+    pub plane: crate::field::Plane,
+    /// Von Mises stress on `plane`, Pa, `[z, x]`.
+    pub values_pa: Array2<f64>,
+}
+
+/// Rows of a step's section in depth.
+const SECTION_ROWS: usize = 32;
+
+/// The depth of the steps' sections, µm: three times the deepest von Mises maximum of any step
+/// (its depth at least four cells), at most a sixth of the map's width, the same for every
+/// step so that the recording's view keeps its frame.
+pub fn section_depth_um(study: &WearStudy) -> f64 {
+    let first = &study.steps[0].solution;
+    let (_, nx) = first.pressure_pa.dim();
+    let [dx, _] = first.spacing_m;
+    let cell_um = dx * 1e6;
+    let deepest = study
+        .steps
+        .iter()
+        .map(|s| s.maxima.von_mises.z_over_a * REFERENCE_UM)
+        .fold(0.0f64, f64::max);
+    (3.0 * deepest)
+        .max(4.0 * cell_um)
+        .min(nx as f64 * cell_um / 6.0)
+        .max(cell_um)
+}
+
+/// µm per unit of the rough scenes' reference length.
+const REFERENCE_UM: f64 = crate::study::rough::REFERENCE_LENGTH_M * 1e6;
+
+/// Each step's xz section through the row of its largest von Mises stress, to
+/// [`section_depth_um`] in [`SECTION_ROWS`] rows; `on_step(k)` after each.
+pub fn sections(
+    study: &WearStudy,
+    on_step: &mut dyn FnMut(usize),
+) -> Result<Vec<StepSection>, WearStudyError> {
+    let depth = section_depth_um(study);
+    let mut out = Vec::with_capacity(study.steps.len());
+    for (k, step) in study.steps.iter().enumerate() {
+        let solution = &step.solution;
+        let (ny, nx) = solution.pressure_pa.dim();
+        let [dx, dy] = solution.spacing_m;
+        let (ax, ay) = (dx * 1e6 / REFERENCE_UM, dy * 1e6 / REFERENCE_UM);
+        let row = crate::study::map_roll::cell_of(step.maxima.von_mises.y_over_a, ay, ny);
+        let plane = crate::field::Plane {
+            section: crate::field::Section::Xz {
+                y: (row as f64 + 0.5) * ay,
+            },
+            u: crate::field::Axis::new(0.5 * ax, (nx as f64 - 0.5) * ax, nx),
+            v: crate::field::Axis::new(0.0, depth / REFERENCE_UM, SECTION_ROWS),
+        };
+        let stresses =
+            crate::study::rough::stress_solution(solution, study.friction, study.poisson)
+                .map_err(|error| WearStudyError::Maxima { step: k, error })?;
+        let values_pa = crate::field::evaluate(
+            &stresses,
+            &plane,
+            &[crate::stress::Quantity::VonMises],
+            &|| {},
+        )
+        .map_err(|e| WearStudyError::Section {
+            step: k,
+            message: e.to_string(),
+        })?
+        .values
+        .index_axis(ndarray::Axis(1), 0)
+        .mapv(|v| v * crate::study::rough::REFERENCE_PRESSURE_PA);
+        out.push(StepSection { plane, values_pa });
+        on_step(k);
+    }
+    Ok(out)
 }

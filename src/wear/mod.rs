@@ -46,9 +46,8 @@
 //!
 //! ## A measured series
 //! The wear between two measured topographies of one surface is what the later one lacks: the
-//! difference of heights, levelled by its median (the unworn majority of the map keeps its
-//! heights, so the median difference is the two measurements' offset of datum), counted where
-//! positive ([`measured_wear`]).
+//! difference of heights, less the two measurements' offset of datum (the difference the
+//! unworn cells share: the most common one), counted where positive ([`measured_wear`]).
 //!
 //! ## References
 //! - J. F. Archard, Contact and rubbing of flat surfaces, *J. Appl. Phys.* 24 (1953) 981–988.
@@ -443,22 +442,47 @@ pub fn capacity_m3(heights_m: &Array2<f64>, spacing_m: [f64; 2]) -> f64 {
 }
 
 /// The wear a later measurement `now` of a surface shows against the first, `first` (both m,
-/// the same grid): the depth `max(first - now - offset, 0)` with `offset` the median of
-/// `first - now` (the unworn majority of the map keeps its heights, so the median is the two
-/// measurements' offset of datum). Returns the depth map and the offset.
+/// the same grid): the depth `max(first - now - offset, 0)` with `offset` the two
+/// measurements' offset of datum, read where the difference is most common: the unworn part
+/// of the map keeps its heights, so all its cells differ by the offset alone, while the worn
+/// cells spread over the wear depths ([`datum_offset`]). Returns the depth map and the offset.
 pub fn measured_wear(first: &Array2<f64>, now: &Array2<f64>) -> (Array2<f64>, f64) {
     let difference = first - now;
-    let mut sorted: Vec<f64> = difference.iter().copied().collect();
-    sorted.sort_by(f64::total_cmp);
-    let n = sorted.len();
-    let offset = if n == 0 {
-        0.0
-    } else if n % 2 == 1 {
-        sorted[n / 2]
-    } else {
-        0.5 * (sorted[n / 2 - 1] + sorted[n / 2])
-    };
+    let offset = datum_offset(difference.iter().copied().collect());
     (difference.mapv(|d| (d - offset).max(0.0)), offset)
+}
+
+/// The value the most differences share: the centre (median) of the densest window of the
+/// sorted differences, the window a thousandth of their range wide. The unworn cells may be
+/// fewer than half the map (a scar over most of it): the median of all would then lie in the
+/// scar, the densest window still on the unworn cells.
+pub fn datum_offset(mut differences: Vec<f64>) -> f64 {
+    differences.retain(|d| d.is_finite());
+    if differences.is_empty() {
+        return 0.0;
+    }
+    differences.sort_by(f64::total_cmp);
+    let n = differences.len();
+    let range = differences[n - 1] - differences[0];
+    let width = 1e-3 * range;
+    let (mut best, mut best_start) = (0usize, 0usize);
+    let mut start = 0;
+    for end in 0..n {
+        while differences[end] - differences[start] > width {
+            start += 1;
+        }
+        if end + 1 - start > best {
+            best = end + 1 - start;
+            best_start = start;
+        }
+    }
+    let window = &differences[best_start..best_start + best];
+    let m = window.len();
+    if m % 2 == 1 {
+        window[m / 2]
+    } else {
+        0.5 * (window[m / 2 - 1] + window[m / 2])
+    }
 }
 
 #[cfg(test)]

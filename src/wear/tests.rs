@@ -367,7 +367,7 @@ fn the_worn_surfaces_solved_again_give_the_same_pressures() {
 }
 
 #[test]
-fn measured_wear_is_the_difference_levelled_by_its_median() {
+fn measured_wear_is_the_difference_less_the_unworn_cells_offset() {
     let first = Array2::from_shape_fn((10, 10), |(j, i)| (i as f64 - j as f64) * 1e-7);
     let mut now = first.mapv(|h| h + 3e-8);
     now[[4, 4]] -= 2e-7;
@@ -378,6 +378,18 @@ fn measured_wear_is_the_difference_levelled_by_its_median() {
     assert!((depth[[4, 5]] - 1e-7).abs() < 1e-20);
     // Elsewhere only the rounding of the difference remains.
     assert_eq!(depth.iter().filter(|&&w| w > 1e-15).count(), 2);
+    // A scar over 70 % of the map: the offset is still the unworn cells' (the median of all
+    // differences would lie in the scar).
+    let mut scarred = first.mapv(|h| h - 5e-8);
+    for ((j, i), h) in scarred.indexed_iter_mut() {
+        if j < 7 {
+            *h -= 1e-7 * (1.0 + (i + j) as f64 / 20.0);
+        }
+    }
+    let (depth, offset) = measured_wear(&first, &scarred);
+    assert!((offset - 5e-8).abs() < 1e-15, "{offset}");
+    assert!((depth[[0, 0]] - 1e-7).abs() < 1e-15);
+    assert!(depth[[8, 3]] < 1e-15);
 }
 
 #[test]

@@ -35,6 +35,22 @@ fn every_shipped_scene_renders() {
     assert!(paths.len() >= 5, "{paths:?}");
     for path in paths {
         let scene = Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
+        if scene.wear.is_some() {
+            // A wear scene draws its sheet from its study (the shipped ball's is shared).
+            let owned;
+            let study = if scene.name == "wear_rough_ball" {
+                &crate::wear::shipped_ball().1
+            } else {
+                owned = stressfield::study::wear::study(&scene, &mut |_| {})
+                    .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+                &owned
+            };
+            let sheet = figure::wear::wear_sheet(&scene, study);
+            let image = render::chart::sheet_png(&sheet)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert!(image.width() > 800 && image.height() > 1000);
+            continue;
+        }
         let rough = (scene.contact.kind == stressfield::scene::ContactKind::Rough).then(|| {
             stressfield::study::rough::solve(&scene, &mut |_, _| {})
                 .unwrap_or_else(|e| panic!("{}: {e}", path.display()))

@@ -21,3 +21,4 @@ mod rough_sheet;
 mod scenes;
 mod surfaces;
 mod thermal;
+mod wear;

@@ -110,6 +110,13 @@ pub enum WearError {
     },
     #[error("the wear k W s = {wear_m3:.4e} m³ over the sliding distance is more than the map holds above its lowest point, {capacity_m3:.4e} m³: the worn body would be worn through the map")]
     TooMuchWear { wear_m3: f64, capacity_m3: f64 },
+    #[error("at a sliding distance of {distance_m:.4e} m (step {step}) the worn contact reaches the edge of the map (row {row}, column {column}): an isolated contact must lie inside its grid\nhint: shorten wear.distance (or lower wear.coefficient), or give a larger map")]
+    ScarAtEdge {
+        step: usize,
+        distance_m: f64,
+        row: usize,
+        column: usize,
+    },
     #[error("at a sliding distance of {distance_m:.4e} m (step {step}): {source}")]
     Contact {
         step: usize,
@@ -392,10 +399,18 @@ impl<'p> Evolution<'p> {
             return Ok(None);
         }
         let (step, distance_m, _) = self.next_step();
-        let contact_error = |source| WearError::Contact {
-            step,
-            distance_m,
-            source,
+        let contact_error = |source| match source {
+            RoughContactError::PressureAtEdge { row, column } => WearError::ScarAtEdge {
+                step,
+                distance_m,
+                row,
+                column,
+            },
+            source => WearError::Contact {
+                step,
+                distance_m,
+                source,
+            },
         };
         let solution = self
             .solve_next(None, None, progress)

@@ -1,0 +1,394 @@
+//! Contact evolution with sliding (`[wear]`, `[[series]]`, `stressfield wear`): the shipped
+//! ball's plastic area against its growing scar, the JSON contract, the first step against
+//! `contact`, a series read back from `--heights-out`, and bad input.
+
+use std::path::Path;
+use std::sync::OnceLock;
+
+use serde_json::Value;
+use stressfield::scene::Scene;
+use stressfield::study::wear::WearStudy;
+
+use crate::cli::{repo, run, stderr};
+use crate::contracts::json;
+
+/// The shipped worn ball and its study, computed once for every test that reads it.
+pub(crate) fn shipped_ball() -> &'static (Scene, WearStudy) {
+    static STUDY: OnceLock<(Scene, WearStudy)> = OnceLock::new();
+    STUDY.get_or_init(|| {
+        let scene = stressfield::study::load_scene(&repo("scenes/wear_rough_ball.toml"))
+            .unwrap_or_else(|e| panic!("{e}"));
+        let study =
+            stressfield::study::wear::study(&scene, &mut |_| {}).unwrap_or_else(|e| panic!("{e}"));
+        (scene, study)
+    })
+}
+
+/// A small rough ball worn on a flat: 48² cells of 4 µm, 0.5 N, six steps.
+fn small_scene(extra: &str) -> String {
+    format!(
+        "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\nfriction = 0.2\n{extra}\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 48\nspacing = \"4 um\"\nhurst = 0.8\nrolloff = \"48 um\"\ncutoff = \"16 um\"\nrms_height = \"0.1 um\"\nsphere_radius = \"3 mm\"\nseed = 2\n"
+    )
+}
+
+const SMALL_WEAR: &str =
+    "[wear]\ncoefficient = \"2e-6 mm^3/(N m)\"\ndistance = \"5 m\"\nsteps = 6\n";
+
+fn write(dir: &Path, name: &str, text: &str) -> std::path::PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).expect("write");
+    path
+}
+
+fn steps(report: &serde_json::Map<String, Value>) -> Vec<serde_json::Map<String, Value>> {
+    report["steps"]
+        .as_array()
+        .expect("steps")
+        .iter()
+        .map(|s| s.as_object().expect("step").clone())
+        .collect()
+}
+
+#[test]
+fn the_shipped_ball_keeps_its_plastic_area_while_the_scar_grows() {
+    // Siniawski et al. (2003): once wear begins, the plastically deformed area stays nearly
+    // constant while the contact (the scar) keeps growing. Checked on the shipped ball: after
+    // the first step the plastic area varies by at most 15 % (coefficient of variation) and
+    // stays within 0.75 to 1.35 times its mean, while the scar grows at least fourfold; the
+    // plastic area never exceeds W / H (the cap carries at most H per unit area).
+    let (_, study) = shipped_ball();
+    let hardness = study.hardness_pa.expect("a hardness");
+    let bound = study.load_n / hardness;
+    for step in &study.steps {
+        assert!(step.plastic_area_m2() <= bound * (1.0 + 1e-12));
+    }
+    let worn = &study.steps[1..];
+    let plastic: Vec<f64> = worn.iter().map(|s| s.plastic_area_m2()).collect();
+    let mean = plastic.iter().sum::<f64>() / plastic.len() as f64;
+    let spread = (plastic.iter().map(|p| (p - mean).powi(2)).sum::<f64>() / plastic.len() as f64)
+        .sqrt()
+        / mean;
+    let (low, high) = plastic
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), &p| (a.min(p), b.max(p)));
+    let scar_growth = worn.last().expect("steps").scar_area_m2() / worn[0].scar_area_m2();
+    eprintln!(
+        "measured: shipped ball: plastic area {:.0} µm² on average after wear begins (CV {:.1} %, {:.2} to {:.2} of the mean; unworn {:.0} µm², W/H {:.0} µm²) while the scar grows {:.2} times ({:.4} to {:.4} mm²)",
+        mean * 1e12,
+        100.0 * spread,
+        low / mean,
+        high / mean,
+        study.steps[0].plastic_area_m2() * 1e12,
+        bound * 1e12,
+        scar_growth,
+        worn[0].scar_area_m2() * 1e6,
+        worn.last().expect("steps").scar_area_m2() * 1e6
+    );
+    assert!(spread < 0.15, "{spread}");
+    assert!(low / mean > 0.75 && high / mean < 1.35);
+    assert!(scar_growth > 4.0, "{scar_growth}");
+    // Archard's volume at every step, to 1e-9.
+    for step in &study.steps[1..] {
+        let expected = 2e-15 * study.load_n * step.sliding_distance_m;
+        assert!((step.worn_volume_m3 / expected - 1.0).abs() < 1e-9);
+    }
+}
+
+#[test]
+fn wear_json_keeps_its_contract_and_its_first_step_is_the_contact() {
+    let dir = tempfile::tempdir().expect("temp");
+    let scene = write(dir.path(), "ball.toml", &(small_scene("") + SMALL_WEAR));
+    let path = scene.to_str().expect("utf8");
+    let output = run(&["wear", path, "--json"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let report = json(&output);
+    for key in ["load_n", "hardness_pa", "coefficient_m2_per_n", "steps"] {
+        assert!(report.contains_key(key), "{key}");
+    }
+    assert!(report["hardness_pa"].is_null());
+    assert_eq!(report["load_n"].as_f64(), Some(0.5));
+    let steps = steps(&report);
+    assert_eq!(steps.len(), 7);
+    for step in &steps {
+        for key in [
+            "sliding_distance_m",
+            "contact_area_m2",
+            "plastic_area_m2",
+            "spots",
+            "max_pressure_pa",
+            "mean_pressure_pa",
+            "worn_volume_m3",
+            "max_wear_depth_m",
+            "von_mises_max_pa",
+            "von_mises_max_depth_m",
+            "iterations",
+        ] {
+            assert!(step[key].is_number(), "{key}");
+        }
+        assert!(!step.contains_key("max_temperature_rise_k"));
+    }
+    assert_eq!(steps[0]["sliding_distance_m"].as_f64(), Some(0.0));
+    assert_eq!(steps[6]["sliding_distance_m"].as_f64(), Some(5.0));
+    // The first step is the scene's static contact, to the last digit of the JSON.
+    let contact = run(&["contact", path, "--json"]);
+    assert!(contact.status.success(), "{}", stderr(&contact));
+    let contact = json(&contact);
+    for key in [
+        "spots",
+        "max_pressure_pa",
+        "mean_pressure_pa",
+        "von_mises_max_pa",
+        "von_mises_max_depth_m",
+        "max_shear_max_pa",
+        "max_shear_max_depth_m",
+        "iterations",
+    ] {
+        assert_eq!(steps[0][key], contact[key], "{key}");
+    }
+    let [dx, dy] = [4e-6, 4e-6];
+    let area = contact["contact_fraction"].as_f64().expect("fraction") * 48.0 * 48.0 * dx * dy;
+    let ours = steps[0]["contact_area_m2"].as_f64().expect("area");
+    assert!((ours / area - 1.0).abs() < 1e-12);
+    // With [thermal], every step has its flash temperature.
+    let heated = write(
+        dir.path(),
+        "heated.toml",
+        &(small_scene("") + SMALL_WEAR + "[thermal]\nspeed = \"0.5 m/s\"\nbody1_speed = \"0 m/s\"\nbody2_speed = \"0.5 m/s\"\npartition = \"body1\"\n"),
+    );
+    let output = run(&["wear", heated.to_str().expect("utf8"), "--json"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for step in self::steps(&json(&output)) {
+        assert!(step["max_temperature_rise_k"].as_f64().expect("ΔT") > 0.0);
+    }
+}
+
+/// Steps of a `wear --json` run of `scene`.
+fn wear_steps(scene: &Path, extra: &[&str]) -> Vec<serde_json::Map<String, Value>> {
+    let mut args = vec!["wear", scene.to_str().expect("utf8"), "--json"];
+    args.extend_from_slice(extra);
+    let output = run(&args);
+    assert!(output.status.success(), "{}", stderr(&output));
+    steps(&json(&output))
+}
+
+#[test]
+fn a_series_read_back_from_heights_out_gives_the_simulated_steps() {
+    // The simulation's worn heights (`--heights-out`, with its [[series]] fragment) read back
+    // as a measured series, with the same contact and hardness: each step solved again from
+    // its map gives the same contact (area and spots exactly, the peak pressure and the von
+    // Mises maximum within 1e-6, relative: the solver's tolerance is 1e-8), and the volume the
+    // maps lack is the simulation's worn plus flattened volume within 1e-9 of the total.
+    // With a rough counter-surface too: it slides by each entry's distance in both.
+    for (case, extra) in [
+        ("capped", "hardness = \"300 HV\""),
+        ("counter", "hardness = \"300 HV\""),
+    ] {
+        let dir = tempfile::tempdir().expect("temp");
+        let counter = if case == "counter" {
+            "[counter_surface.generate]\nsamples = 48\nspacing = \"4 um\"\nhurst = 0.8\nrolloff = \"48 um\"\ncutoff = \"16 um\"\nrms_height = \"0.2 um\"\nseed = 9\n"
+        } else {
+            ""
+        };
+        let body = small_scene(extra) + counter;
+        let scene = write(dir.path(), "sim.toml", &(body.clone() + SMALL_WEAR));
+        let out = dir.path().join("heights");
+        std::fs::create_dir(&out).expect("mkdir");
+        let simulated = wear_steps(&scene, &["--heights-out", out.to_str().expect("utf8")]);
+        let fragment = std::fs::read_to_string(out.join("sim_series.toml")).expect("fragment");
+        // The series scene: the contact and counter of the simulation, the maps from the files.
+        let generated = body
+            .split("[surface.generate]")
+            .next()
+            .expect("head")
+            .to_string();
+        let series = write(
+            &out,
+            "series.toml",
+            &format!("{generated}{counter}[surface]\nspacing = \"4 um\"\n{fragment}"),
+        );
+        let measured = wear_steps(&series, &[]);
+        assert_eq!(measured.len(), simulated.len());
+        let mut worst = 0.0f64;
+        for (m, s) in measured.iter().zip(&simulated) {
+            for key in [
+                "sliding_distance_m",
+                "contact_area_m2",
+                "spots",
+                "plastic_area_m2",
+            ] {
+                assert_eq!(m[key], s[key], "{case}: {key}");
+            }
+            for key in ["max_pressure_pa", "von_mises_max_pa"] {
+                let (a, b) = (m[key].as_f64().expect("a"), s[key].as_f64().expect("b"));
+                worst = worst.max((a / b - 1.0).abs());
+            }
+            let lost = m["worn_volume_m3"].as_f64().expect("lost");
+            let total = s["worn_volume_m3"].as_f64().expect("worn")
+                + s["plastic_volume_m3"].as_f64().expect("flattened");
+            assert!(
+                (lost - total).abs() <= 1e-9 * total.max(1e-30),
+                "{case}: {lost} {total}"
+            );
+        }
+        eprintln!("measured: series read back ({case}): largest relative difference of the peak pressure and von Mises maximum {worst:.1e}");
+        assert!(worst < 1e-6, "{case}: {worst}");
+    }
+}
+
+/// Runs `check` on a scene and returns its error text (the check must fail).
+fn refused(text: &str, files: &[(&str, &[u8])]) -> String {
+    let dir = tempfile::tempdir().expect("temp");
+    for (name, bytes) in files {
+        std::fs::write(dir.path().join(name), bytes).expect("write");
+    }
+    let scene = write(dir.path(), "case.toml", text);
+    let output = run(&["check", scene.to_str().expect("utf8")]);
+    assert!(!output.status.success(), "accepted: {text}");
+    stderr(&output)
+}
+
+/// A `.npy` of float64 heights `[rows, columns]`.
+fn npy(rows: usize, columns: usize, f: impl Fn(usize, usize) -> f64) -> Vec<u8> {
+    let array = ndarray::Array2::from_shape_fn((rows, columns), |(j, i)| f(j, i));
+    let mut bytes = Vec::new();
+    ndarray_npy::WriteNpyExt::write_npy(&array, &mut bytes).expect("npy");
+    bytes
+}
+
+#[test]
+fn bad_wear_input_is_refused_naming_the_key() {
+    let with = |wear: &str| small_scene("") + wear;
+    for (wear, key) in [
+        ("[wear]\ncoefficient = \"-1e-6 mm^3/(N m)\"\ndistance = \"5 m\"\n", "wear.coefficient"),
+        ("[wear]\ncoefficient = \"0 m^2/N\"\ndistance = \"5 m\"\n", "wear.coefficient"),
+        ("[wear]\ncoefficient = \"1e-6 MPa\"\ndistance = \"5 m\"\n", "wear.coefficient"),
+        ("[wear]\ndistance = \"5 m\"\n", "wear.coefficient"),
+        ("[wear]\ncoefficient = \"1e-6 mm^3/(N m)\"\ndistance = \"0 m\"\n", "wear.distance"),
+        ("[wear]\ncoefficient = \"1e-6 mm^3/(N m)\"\n", "wear.distance"),
+        ("[wear]\ncoefficient = \"1e-6 mm^3/(N m)\"\ndistance = \"5 m\"\nsteps = 0\n", "wear.steps"),
+        ("[wear]\ncoefficient = \"1e-6 mm^3/(N m)\"\ndistance = \"5 m\"\nstep = 4\n", "wear.step"),
+        // More wear than the ball holds above its lowest point.
+        ("[wear]\ncoefficient = \"1e-3 mm^3/(N m)\"\ndistance = \"1000 km\"\n", "wear.distance"),
+        (
+            "[wear]\ncoefficient = \"1e-6 mm^3/(N m)\"\ndistance = \"5 m\"\n[sweep]\nparameter = \"load\"\nvalues = [\"0.1 N\", \"0.2 N\"]\n",
+            "sweep",
+        ),
+    ] {
+        let message = refused(&with(wear), &[]);
+        assert!(message.contains(&format!("`{key}`")), "{key}: {message}");
+    }
+    // An approach cannot drive wear.
+    let approach =
+        small_scene("").replace("load = \"0.5 N\"", "approach = \"0.1 um\"") + SMALL_WEAR;
+    assert!(refused(&approach, &[]).contains("`contact.approach`"));
+    // [wear] and [[series]] on scenes that cannot take them.
+    let line = "format = 1\n[contact]\nkind = \"line\"\n".to_string() + SMALL_WEAR;
+    assert!(refused(&line, &[]).contains("`wear`"));
+    let on_surface = small_scene("")
+        .replace("kind = \"rough\"", "kind = \"surface\"")
+        .replace("load = \"0.5 N\"\nfriction = 0.2\n", "")
+        + SMALL_WEAR;
+    assert!(refused(&on_surface, &[]).contains("`wear`"));
+
+    // Series: unequal grids, distances not increasing, one map only, both tables.
+    let a = npy(16, 16, |j, i| -((i * i + j * j) as f64) * 1e-9);
+    let b = npy(16, 18, |_, _| 0.0);
+    let head = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.01 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface]\nspacing = \"1 um\"\n";
+    let entry = |file: &str, distance: &str| {
+        format!("[[series]]\nfile = \"{file}\"\ndistance = \"{distance}\"\n")
+    };
+    let message = refused(
+        &format!("{head}{}{}", entry("a.npy", "0 m"), entry("b.npy", "1 m")),
+        &[("a.npy", &a), ("b.npy", &b)],
+    );
+    assert!(
+        message.contains("`series[1].file`") && message.contains("b.npy"),
+        "{message}"
+    );
+    let message = refused(
+        &format!("{head}{}{}", entry("a.npy", "2 m"), entry("a.npy", "1 m")),
+        &[("a.npy", &a)],
+    );
+    assert!(message.contains("`series[1].distance`"), "{message}");
+    let message = refused(
+        &format!("{head}{}", entry("a.npy", "0 m")),
+        &[("a.npy", &a)],
+    );
+    assert!(message.contains("`series`"), "{message}");
+    let message = refused(
+        &format!(
+            "{head}{SMALL_WEAR}{}{}",
+            entry("a.npy", "0 m"),
+            entry("a.npy", "1 m")
+        ),
+        &[("a.npy", &a)],
+    );
+    assert!(message.contains("`wear`"), "{message}");
+    let message = refused(
+        &format!(
+            "{}{}{}",
+            head.replace(
+                "[surface]\nspacing = \"1 um\"\n",
+                "[surface]\nspacing = \"1 um\"\nfile = \"a.npy\"\n"
+            ),
+            entry("a.npy", "0 m"),
+            entry("a.npy", "1 m")
+        ),
+        &[("a.npy", &a)],
+    );
+    assert!(message.contains("`surface.file`"), "{message}");
+    let message = refused(
+        &format!(
+            "{head}[[series]]\nfile = \"a.npy\"\n{}",
+            entry("a.npy", "1 m")
+        ),
+        &[("a.npy", &a)],
+    );
+    assert!(message.contains("`series[0].distance`"), "{message}");
+}
+
+#[test]
+fn wear_outputs_are_checked_before_computing_and_written_all_or_none() {
+    let dir = tempfile::tempdir().expect("temp");
+    let scene = write(dir.path(), "ball.toml", &(small_scene("") + SMALL_WEAR));
+    let path = scene.to_str().expect("utf8");
+    // A missing directory, and a file where the directory should be: refused at once.
+    let missing = dir.path().join("missing");
+    let output = run(&[
+        "wear",
+        path,
+        "--heights-out",
+        missing.to_str().expect("utf8"),
+    ]);
+    assert!(!output.status.success());
+    assert!(
+        stderr(&output).contains("--heights-out"),
+        "{}",
+        stderr(&output)
+    );
+    assert!(!missing.exists());
+    let output = run(&["wear", path, "--heights-out", path]);
+    assert!(!output.status.success());
+    assert!(
+        stderr(&output).contains("not a directory"),
+        "{}",
+        stderr(&output)
+    );
+    // A scene without [wear]: the command says what to add.
+    let plain = write(dir.path(), "plain.toml", &small_scene(""));
+    let output = run(&["wear", plain.to_str().expect("utf8")]);
+    assert!(!output.status.success());
+    assert!(stderr(&output).contains("[wear]"), "{}", stderr(&output));
+    // Written: one file per step and the fragment, nothing left over.
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).expect("mkdir");
+    let output = run(&["wear", path, "--heights-out", out.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let mut names: Vec<String> = std::fs::read_dir(&out)
+        .expect("read")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names.len(), 8, "{names:?}");
+    assert!(names.iter().all(|n| n.starts_with("ball_")), "{names:?}");
+}

@@ -162,6 +162,35 @@ fn wear_json_keeps_its_contract_and_its_first_step_is_the_contact() {
     }
 }
 
+#[test]
+fn a_coupled_worn_contact_is_the_heated_one_at_every_step() {
+    // With coupled heating each step's contact is the thermo-mechanical one: the bulge of the
+    // heated ball shrinks the contact (Liu & Wang 2001) at every step, and the wear keeps
+    // Archard's volume (the bulge wears nothing).
+    let dir = tempfile::tempdir().expect("temp");
+    let heating = "[thermal]\nspeed = \"2 m/s\"\nbody1_speed = \"0 m/s\"\nbody2_speed = \"2 m/s\"\npartition = \"body1\"\n";
+    let plain = write(
+        dir.path(),
+        "plain.toml",
+        &(small_scene("") + SMALL_WEAR + heating),
+    );
+    let coupled = write(
+        dir.path(),
+        "coupled.toml",
+        &(small_scene("") + SMALL_WEAR + heating + "coupled = true\n"),
+    );
+    let (plain, coupled) = (wear_steps(&plain, &[]), wear_steps(&coupled, &[]));
+    for (p, c) in plain.iter().zip(&coupled) {
+        let area =
+            |s: &serde_json::Map<String, Value>| s["contact_area_m2"].as_f64().expect("area");
+        assert!(area(c) <= area(p), "{} > {}", area(c), area(p));
+        let volume = |s: &serde_json::Map<String, Value>| s["worn_volume_m3"].as_f64().expect("V");
+        assert!((volume(c) - volume(p)).abs() <= 1e-9 * volume(p).max(1e-30));
+    }
+    let peak = |s: &serde_json::Map<String, Value>| s["max_pressure_pa"].as_f64().expect("p");
+    assert!(peak(&coupled[0]) > peak(&plain[0]));
+}
+
 /// Steps of a `wear --json` run of `scene`.
 fn wear_steps(scene: &Path, extra: &[&str]) -> Vec<serde_json::Map<String, Value>> {
     let mut args = vec!["wear", scene.to_str().expect("utf8"), "--json"];
@@ -277,6 +306,20 @@ fn bad_wear_input_is_refused_naming_the_key() {
         let message = refused(&with(wear), &[]);
         assert!(message.contains(&format!("`{key}`")), "{key}: {message}");
     }
+    // A coupled worn contact under a rough sliding counter-surface is refused.
+    let coupled = small_scene("")
+        + SMALL_WEAR
+        + "[counter_surface.generate]\nsamples = 48\nspacing = \"4 um\"\nhurst = 0.8\nrms_height = \"0.1 um\"\nseed = 3\n[thermal]\nspeed = \"0.5 m/s\"\nbody1_speed = \"0 m/s\"\nbody2_speed = \"0.5 m/s\"\npartition = \"body1\"\ncoupled = true\n";
+    assert!(refused(&coupled, &[]).contains("`thermal.coupled`"));
+    // A measured counter-surface cannot slide (its edges do not meet).
+    let measured = npy(48, 48, |j, i| ((i + 2 * j) as f64).sin() * 1e-7);
+    let message = refused(
+        &(small_scene("")
+            + SMALL_WEAR
+            + "[counter_surface]\nfile = \"c.npy\"\nspacing = \"4 um\"\n"),
+        &[("c.npy", &measured)],
+    );
+    assert!(message.contains("`counter_surface.file`"), "{message}");
     // An approach cannot drive wear.
     let approach =
         small_scene("").replace("load = \"0.5 N\"", "approach = \"0.1 um\"") + SMALL_WEAR;

@@ -84,6 +84,13 @@ impl Validator<'_> {
                 Some("generate it ([counter_surface.generate], periodic by construction), or leave body 2 smooth"),
             ));
         }
+        if surface.counter.is_some() && scene.thermal.is_some_and(|t| t.coupled) {
+            return Err(self.error(
+                "thermal.coupled",
+                "a coupled worn contact under a rough sliding counter-surface is not modelled: the body wears under the counter's mean plane while its contact is through the asperities, and their bulges would differ",
+                Some("set coupled = false (the flash temperature of every step is still reported), or leave body 2 smooth"),
+            ));
+        }
         match &raw.wear {
             Some(table) => self.archard(table, &surface.body1, load_n).map(Some),
             None => self.series(raw, surface).map(Some),

@@ -55,6 +55,40 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             "lower figure.resolution (600 to 1200 is plenty for a figure)",
         ));
     }
+    // A wear scene keeps every step's pressure, gap, worn heights and wear depth.
+    if let (Some(spec), Some(surface)) = (&scene.wear, &scene.surface) {
+        let steps = super::wear::step_count(spec);
+        let shape = surface.heights.shape();
+        let periodicity = match scene.contact.rough.is_some_and(|r| r.periodic) {
+            true => crate::operator::elastic::Periodicity::Periodic,
+            false => crate::operator::elastic::Periodicity::NonPeriodic,
+        };
+        let bytes = super::wear::bytes_per_step(shape)
+            .saturating_mul(steps)
+            .saturating_add(crate::contact::rough::RoughContactProblem::memory_bytes(
+                shape,
+                periodicity,
+            ));
+        let limit = memory_limit_bytes();
+        if bytes > limit {
+            let key = match spec {
+                crate::scene::WearSpec::Archard { .. } => "wear.steps",
+                crate::scene::WearSpec::Series(_) => "series",
+            };
+            return Err(error(
+                key,
+                format!(
+                    "{steps} steps of a {} x {} map need about {} MiB (each step's pressure, gap, worn heights and wear depth, {} bytes a cell, and the solver), more than the {} MiB this machine allows",
+                    shape[1],
+                    shape[0],
+                    bytes >> 20,
+                    super::wear::bytes_per_step([1, 1]),
+                    limit >> 20
+                ),
+                "use fewer steps, or a coarser map",
+            ));
+        }
+    }
     let Some(sweep) = &scene.sweep else {
         return Ok(());
     };

@@ -158,6 +158,10 @@ pub struct Evolution<'p> {
     range_m: f64,
     next: usize,
     last_pressure_pa: Option<Array2<f64>>,
+    /// The pressure of the step before the last, for the predictor.
+    earlier_pressure_pa: Option<Array2<f64>>,
+    /// The elastic operator, built once for every step.
+    cache: std::cell::RefCell<rough::OperatorCache>,
     /// The last contact against the sliding counter-surface, to start the next from.
     last_sliding_pressure_pa: Option<Array2<f64>>,
     worn_volume_m3: f64,
@@ -231,6 +235,8 @@ impl<'p> Evolution<'p> {
             range_m: high - low,
             next: 0,
             last_pressure_pa: None,
+            earlier_pressure_pa: None,
+            cache: std::cell::RefCell::new(rough::OperatorCache::default()),
             last_sliding_pressure_pa: None,
             worn_volume_m3: 0.0,
             plastic_volume_m3: 0.0,
@@ -297,23 +303,44 @@ impl<'p> Evolution<'p> {
     /// [`rough::solve`] solves it (bit for bit). A rough counter-surface is not in it: its
     /// asperities pass over the worn body many times within a step, so the worn body wears
     /// under their mean, the pressure against the counter's mean plane (module doc).
-    pub fn solve_next<'s>(
-        &'s self,
+    pub fn solve_next(
+        &self,
         offset: Option<ArrayView2<f64>>,
-        start: Option<ArrayView2<'s, f64>>,
+        start: Option<ArrayView2<f64>>,
         progress: &mut dyn FnMut(usize, f64),
     ) -> Result<RoughSolution, RoughContactError> {
-        let (_, _, compliance) = self.next_step();
+        let (index, _, compliance) = self.next_step();
         let shifted = offset.map(|w| &self.heights_m + &w);
         let problem = RoughContactProblem {
             heights_m: shifted.as_ref().unwrap_or(&self.heights_m).view(),
             ..self.problem.clone()
         };
+        // The predictor: the pressure extrapolated linearly from the last two steps (uniform
+        // steps: 2 p(n-1) - p(n-2)), clipped at zero; the solver clips it to the cap and scales
+        // it to the load.
+        let predicted = match (&self.last_pressure_pa, &self.earlier_pressure_pa) {
+            (Some(last), Some(earlier)) if start.is_none() && index >= 2 => {
+                let ratio = (self.schedule.distance_at(index)
+                    - self.schedule.distance_at(index - 1))
+                    / (self.schedule.distance_at(index - 1) - self.schedule.distance_at(index - 2));
+                let mut p = last.clone();
+                Zip::from(&mut p)
+                    .and(earlier)
+                    .for_each(|p, &e| *p = (*p + ratio * (*p - e)).max(0.0));
+                Some(p)
+            }
+            _ => None,
+        };
+        let pressure = match (&start, &predicted) {
+            (Some(given), _) => Some(given.view()),
+            (None, Some(p)) => Some(p.view()),
+            (None, None) => self.last_pressure_pa.as_ref().map(|p| p.view()),
+        };
         let warm = rough::Warm {
-            pressure_pa: start.or_else(|| self.last_pressure_pa.as_ref().map(|p| p.view())),
+            pressure_pa: pressure,
             local_compliance_m_per_pa: compliance,
         };
-        rough::solve_warm(&problem, &warm, progress)
+        rough::solve_cached(&problem, &warm, &mut self.cache.borrow_mut(), progress)
     }
 
     /// With a rough counter-surface ([`Evolution::sliding_against`]), the contact at the end of
@@ -337,7 +364,8 @@ impl<'p> Evolution<'p> {
             pressure_pa: self.last_sliding_pressure_pa.as_ref().map(|p| p.view()),
             local_compliance_m_per_pa: 0.0,
         };
-        let solution = rough::solve_warm(&problem, &warm, progress)?;
+        let solution =
+            rough::solve_cached(&problem, &warm, &mut self.cache.borrow_mut(), progress)?;
         self.last_sliding_pressure_pa = Some(solution.pressure_pa.clone());
         Ok(Some(solution))
     }
@@ -374,6 +402,7 @@ impl<'p> Evolution<'p> {
                 range_m: self.range_m,
             });
         }
+        self.earlier_pressure_pa = self.last_pressure_pa.take();
         self.last_pressure_pa = Some(solution.pressure_pa.clone());
         self.next += 1;
         Ok(WearStep {

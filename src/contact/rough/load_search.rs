@@ -12,7 +12,9 @@
 //!   (a cell at the cap may penetrate). Periodic, `u(H) = 0` (the mean mode carries no
 //!   displacement) and `δ_full = max s`.
 //!
-//! A load `W ≥ H A` has no solution (refused before the search). Inside the bracket the
+//! An elastic solution (under the same load) that stays below the cap everywhere is already
+//! the capped one and ends the search before it starts. A load `W ≥ H A` has no solution
+//! (refused before the search). Inside the bracket the
 //! search is Brent's method (inverse quadratic interpolation or secant, with a bisection
 //! whenever they would stall), first trying the approach of the elastic solution under the
 //! same load. Each approach-controlled run starts from the pressure of the previous one. The
@@ -35,7 +37,7 @@ use super::{
 /// `mean` × cells; returns the iterations made (all runs) and the residual (the larger of the
 /// last run's and the relative load error before the final scaling).
 pub(super) fn capped_under_load(
-    operator: &mut Compliance,
+    operator: &mut Compliance<'_>,
     separation: &Array2<f64>,
     pressure: &mut Array2<f64>,
     state: &mut State,
@@ -53,6 +55,31 @@ pub(super) fn capped_under_load(
     }
     let mut total_iterations = 0usize;
 
+    // A first guess: the approach of the elastic solution under the same load, and its
+    // pressure, capped, as the start.
+    let mut elastic = pressure.clone();
+    let uncapped = Settings {
+        hardness: f64::INFINITY,
+        ..*settings
+    };
+    let (iterations, elastic_residual) = iterate(
+        operator,
+        separation,
+        &mut elastic,
+        state,
+        Target::MeanPressure(mean),
+        &uncapped,
+        progress,
+    )?;
+    total_iterations += iterations;
+    // An elastic solution below the cap everywhere is the capped one (a warm-started step of a
+    // worn surface often is): nothing left to search.
+    if elastic_residual < settings.tolerance && elastic.iter().all(|&p| p < hardness) {
+        pressure.assign(&elastic);
+        return Ok((total_iterations, elastic_residual));
+    }
+    let guess = elastic_approach(operator, separation, &elastic, state)?;
+
     // The bracket: δ = 0 carries nothing, δ_full the whole grid at the cap.
     let mut low = (0.0, -mean);
     let full_approach = {
@@ -63,25 +90,6 @@ pub(super) fn capped_under_load(
             .fold(f64::NEG_INFINITY, |m, &u, &s| m.max(s + u))
     };
     let mut high = (full_approach, hardness - mean);
-
-    // A first guess: the approach of the elastic solution under the same load, and its
-    // pressure, capped, as the start.
-    let mut elastic = pressure.clone();
-    let uncapped = Settings {
-        hardness: f64::INFINITY,
-        ..*settings
-    };
-    let (iterations, _) = iterate(
-        operator,
-        separation,
-        &mut elastic,
-        state,
-        Target::MeanPressure(mean),
-        &uncapped,
-        progress,
-    )?;
-    total_iterations += iterations;
-    let guess = elastic_approach(operator, separation, &elastic, state)?;
     pressure.assign(&elastic.mapv(|p| p.min(hardness)));
     drop(elastic);
 
@@ -238,7 +246,7 @@ fn brent(
 
 /// The approach of a converged load-controlled pressure: the mean gap over the loaded cells.
 fn elastic_approach(
-    operator: &mut Compliance,
+    operator: &mut Compliance<'_>,
     separation: &Array2<f64>,
     pressure: &Array2<f64>,
     state: &mut State,

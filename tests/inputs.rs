@@ -474,3 +474,96 @@ fn a_panels_section_is_refused_naming_the_key_and_the_fix() {
     let output = run(&["check", path.to_str().expect("utf8")]);
     assert!(output.status.success(), "{}", stderr(&output));
 }
+
+// Issue 42: the heating surface ([thermal]) refuses what it cannot do.
+
+/// A steel ball (radius 6.35 mm) on a steel flat under 20 N, μ = 0.2, with `thermal` as the
+/// body of its `[thermal]` table.
+fn heated_point(thermal: &str) -> String {
+    format!(
+        "format = 1\n[contact]\nkind = \"point\"\nload = \"20 N\"\nfriction = 0.2\n[contact.body1]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n[thermal]\n{thermal}\n"
+    )
+}
+
+/// Issue 42, class 3: the sliding speed is |V1 - V2|. A `speed` that disagrees with the
+/// bodies' speeds is refused naming the keys (equal speeds: no sliding at all), the bodies'
+/// speeds alone give it, and when body 2's surface is the faster friction on body 1 acts in
+/// -x (the report says so; the contact stress of the study is mirrored).
+#[test]
+fn contradictory_speeds_are_refused_and_the_sliding_speed_is_their_difference() {
+    use stressfield::scene::TractionDirection;
+    let refused = [
+        (
+            "speed = \"3 m/s\"\nbody1_speed = \"1 m/s\"\nbody2_speed = \"1 m/s\"",
+            "thermal.speed",
+            "slide at |V1 - V2| = 0 m/s",
+        ),
+        (
+            "speed = \"1 m/s\"\nbody1_speed = \"0 m/s\"\nbody2_speed = \"1.5 m/s\"",
+            "thermal.speed",
+            "|V1 - V2| = 1.5 m/s",
+        ),
+        // body1_speed defaults to speed: 1 and 1 do not slide.
+        (
+            "speed = \"1 m/s\"\nbody2_speed = \"1 m/s\"",
+            "thermal.speed",
+            "thermal.speed, as body1_speed is not given",
+        ),
+        (
+            "body1_speed = \"0.7 m/s\"\nbody2_speed = \"0.7 m/s\"",
+            "thermal.body2_speed",
+            "the surfaces do not slide",
+        ),
+        (
+            "body2_speed = \"0.7 m/s\"",
+            "thermal.body1_speed",
+            "missing the speed of the contact over body 1",
+        ),
+    ];
+    for (thermal, key, fragment) in refused {
+        let error = stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml")
+            .expect_err(thermal);
+        assert_eq!(error.key.as_deref(), Some(key), "{thermal}: {error}");
+        assert!(error.to_string().contains(fragment), "{thermal}: {error}");
+    }
+    let spec = |thermal: &str| {
+        stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml")
+            .unwrap_or_else(|e| panic!("{thermal}: {e}"))
+            .thermal
+            .expect("[thermal]")
+    };
+    // Derived, and agreeing.
+    let slow_over_body1 = spec("body1_speed = \"0.25 m/s\"\nbody2_speed = \"1 m/s\"");
+    assert_eq!(slow_over_body1.sliding_speed_m_per_s, 0.75);
+    assert_eq!(slow_over_body1.traction, TractionDirection::MinusX);
+    let agreeing = spec("speed = \"0.75 m/s\"\nbody1_speed = \"1 m/s\"\nbody2_speed = \"0.25 m/s\"");
+    assert_eq!(agreeing.sliding_speed_m_per_s, 0.75);
+    assert_eq!(agreeing.traction, TractionDirection::PlusX);
+    assert_eq!(spec("speed = \"2 m/s\"").traction, TractionDirection::PlusX);
+
+    // Body 2 sliding over a stationary body 1 (q in -x), and body 1 over a stationary body 2
+    // at the same speed (q in +x): the contact stress alone is mirrored (the same materials,
+    // so the same grid).
+    let study = |thermal: &str| {
+        let scene = stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml")
+            .expect("valid");
+        stressfield::study::thermal::study(&scene, None, &mut |_| {}).expect("study")
+    };
+    let minus = study("body1_speed = \"0 m/s\"\nbody2_speed = \"0.5 m/s\"");
+    let plus = study("body1_speed = \"0.5 m/s\"\nbody2_speed = \"0 m/s\"");
+    assert_eq!(minus.shape, plus.shape);
+    let (xm, xp) = (minus.contact_von_mises.x_m, plus.contact_von_mises.x_m);
+    assert!(xp.abs() > 2.0 * plus.spacing_m[0], "off the axis: {xp}");
+    assert!(
+        (xm + xp).abs() <= 1.01 * plus.spacing_m[0],
+        "mirrored: {xm} against {xp}"
+    );
+    assert!(
+        (minus.contact_von_mises.value_pa / plus.contact_von_mises.value_pa - 1.0).abs() < 1e-2
+    );
+    let report = stressfield::report::thermal::ThermalReport::new(&minus);
+    assert_eq!(report.traction_on_body1, "-x");
+    assert!(report
+        .text(&minus)
+        .contains("friction on body 1 acts in -x"));
+}

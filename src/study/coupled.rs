@@ -283,6 +283,8 @@ mod tests {
         properties.expansion_per_k *= expansion_factor;
         let spec = ThermalSpec {
             sliding_speed_m_per_s: speed,
+            traction: crate::scene::TractionDirection::PlusX,
+            speed_keys: ["thermal.speed", "thermal.body2_speed"],
             partition: Partition::Body1,
             coupled: true,
             body1: ThermalBody {

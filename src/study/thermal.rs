@@ -379,7 +379,7 @@ pub(crate) fn thermal_stress_layer(
 }
 
 /// The DC-FFT layers of the contact tractions on the thermal grid: the pressure and `q = μ p`
-/// in +x, lengths in units of `a`.
+/// in +x (a negative `friction`: in -x), lengths in units of `a`.
 pub(crate) fn contact_operator(
     pressure_pa: &Array2<f64>,
     spacing_m: [f64; 2],
@@ -531,16 +531,18 @@ pub fn study(
     let share = body1.share;
     let a = gridded.half_width_m;
 
-    // Stresses: body 1's share of the flux, and the contact tractions (p, q = μ p in +x).
+    // Stresses: body 1's share of the flux, and the contact tractions (p, and q = μ p in +x,
+    // or in -x when body 2's surface is the faster).
     let grid = CellGrid {
         shape: gridded.shape,
         spacing_m: gridded.spacing_m,
     };
+    // Friction on body 1 acts the way body 2 slides over it ([`crate::scene::TractionDirection`]).
     let contact_operator = contact_operator(
         &gridded.pressure_pa,
         gridded.spacing_m,
         a,
-        friction,
+        friction * spec.traction.sign(),
         poisson,
     )?;
     let body1_flux = flux.mapv(|q| q * share);

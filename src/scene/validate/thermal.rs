@@ -3,7 +3,7 @@
 #[allow(clippy::wildcard_imports)]
 use super::*;
 use crate::scene::raw::RawThermal;
-use crate::scene::spec::{GearMesh, ThermalBody, ThermalSpec};
+use crate::scene::spec::{GearMesh, ThermalBody, ThermalSpec, TractionDirection};
 use crate::thermal::heating::Partition;
 use crate::thermal::material::{thermal_preset, ThermalProperties, THERMAL_PRESETS};
 
@@ -51,6 +51,15 @@ const EXPANSION_BOUNDS: Bounds = Bounds {
     hi: 1e-3,
     why: "from Invar (1e-6) to five times soft polymers",
 };
+
+/// The speeds of the contact over the bodies and the sliding speed, m/s, with the keys that
+/// set the bodies' speeds.
+struct Speeds {
+    body1: f64,
+    body2: f64,
+    sliding: f64,
+    keys: [&'static str; 2],
+}
 
 impl Validator<'_> {
     /// `[thermal]` with the bodies' properties, or `None` without the table.
@@ -134,49 +143,21 @@ impl Validator<'_> {
                 None
             }
         };
-        let sliding = match (&gear, &table.speed) {
+        let speeds = match (&gear, gears) {
             // At the pitch point the teeth roll: the path's sliding speeds are computed from
             // the pinion's speed.
-            (Some(_), _) => 0.0,
-            (None, None) => {
-                return Err(self.error(
-                    "thermal.speed",
-                    "missing the sliding speed",
-                    Some("add speed = \"2 m/s\" to [thermal] (the speed of the contact over body 1)"),
-                ))
-            }
-            (None, Some(text)) => self
-                .bounded("thermal.speed", text, Dimension::Speed, SPEED_BOUNDS)
-                .map_err(|mut e| {
-                    e.hint = Some(format!(
-                        "the sliding speed must be positive (a contact that does not slide makes no frictional heat); {}",
-                        e.hint.unwrap_or_default()
-                    ));
-                    e
-                })?,
-        };
-        let speed = |key: &str, text: &Option<String>, default: f64| match text {
-            None => Ok(default),
-            Some(text) => {
-                let value =
-                    units::parse(text, Dimension::Speed).map_err(|m| self.error(key, m, None))?;
-                if value == 0.0 {
-                    Ok(0.0)
-                } else {
-                    self.within(key, value, text, Dimension::Speed, SPEED_BOUNDS)
-                }
-            }
-        };
-        let (body1_speed, body2_speed) = match (&gear, gears) {
             (Some(mesh), Some(pair)) => {
                 let [v1, v2] = pair.flank_speeds_m_per_s(0.0, mesh.pinion_rad_per_s);
-                (v1, v2)
+                Speeds {
+                    body1: v1,
+                    body2: v2,
+                    sliding: 0.0,
+                    keys: ["thermal.pinion_speed"; 2],
+                }
             }
-            _ => (
-                speed("thermal.body1_speed", &table.body1_speed, sliding)?,
-                speed("thermal.body2_speed", &table.body2_speed, 0.0)?,
-            ),
+            _ => self.speeds(table)?,
         };
+        let (body1_speed, body2_speed, sliding) = (speeds.body1, speeds.body2, speeds.sliding);
         let partition = self.partition(table)?;
         let coupled = table.coupled.unwrap_or(false);
         if coupled && contact.kind == ContactKind::Line {
@@ -243,12 +224,118 @@ impl Validator<'_> {
         }
         Ok(Some(ThermalSpec {
             sliding_speed_m_per_s: sliding,
+            traction: TractionDirection::of_speeds(body1_speed, body2_speed),
+            speed_keys: speeds.keys,
             partition,
             coupled,
             body1,
             body2,
             gear,
         }))
+    }
+
+    /// The speeds of a sliding (not geared) contact: `V1` over body 1 (`body1_speed`, by
+    /// default `speed`), `V2` over body 2 (`body2_speed`, by default 0: body 2 carries the
+    /// contact), and the sliding speed `|V1 - V2|`: derived from them, or `speed` when it
+    /// agrees (a `speed` that disagrees is refused, naming the keys).
+    fn speeds(&self, table: &RawThermal) -> Result<Speeds, SceneError> {
+        let number = |v: f64| crate::io::text::significant(v, 6, 1e6, true);
+        let sliding_given = match &table.speed {
+            None => None,
+            Some(text) => Some(
+                self.bounded("thermal.speed", text, Dimension::Speed, SPEED_BOUNDS)
+                    .map_err(|mut e| {
+                        e.hint = Some(format!(
+                            "the sliding speed must be positive (a contact that does not slide makes no frictional heat); {}",
+                            e.hint.unwrap_or_default()
+                        ));
+                        e
+                    })?,
+            ),
+        };
+        let body_speed = |key: &str, text: &str| -> Result<f64, SceneError> {
+            let value =
+                units::parse(text, Dimension::Speed).map_err(|m| self.error(key, m, None))?;
+            if value == 0.0 {
+                Ok(0.0)
+            } else {
+                self.within(key, value, text, Dimension::Speed, SPEED_BOUNDS)
+            }
+        };
+        let (v1, key1) = match (&table.body1_speed, sliding_given) {
+            (Some(text), _) => (body_speed("thermal.body1_speed", text)?, "thermal.body1_speed"),
+            (None, Some(v)) => (v, "thermal.speed"),
+            (None, None) if table.body2_speed.is_some() => {
+                return Err(self.error(
+                    "thermal.body1_speed",
+                    "missing the speed of the contact over body 1 (the surfaces slide at |V1 - V2|)",
+                    Some("add body1_speed = \"2 m/s\" to [thermal] (or speed, the sliding speed, when body 1's surface is the one that moves)"),
+                ))
+            }
+            (None, None) => {
+                return Err(self.error(
+                    "thermal.speed",
+                    "missing the sliding speed",
+                    Some("add speed = \"2 m/s\" to [thermal] (the speed of the contact over body 1), or the bodies' speeds body1_speed and body2_speed"),
+                ))
+            }
+        };
+        let (v2, key2) = match &table.body2_speed {
+            Some(text) => (body_speed("thermal.body2_speed", text)?, "thermal.body2_speed"),
+            None => (0.0, "thermal.body2_speed"),
+        };
+        let sliding = (v1 - v2).abs();
+        // How each body's speed was set, for the messages below.
+        let origin = |key: &str, given: bool| {
+            if given {
+                key.to_string()
+            } else if key == "thermal.speed" {
+                "thermal.speed, as body1_speed is not given".to_string()
+            } else {
+                "the default, as body2_speed is not given".to_string()
+            }
+        };
+        let described = format!(
+            "the contact moves over body 1 at {} m/s ({}) and over body 2 at {} m/s ({})",
+            number(v1),
+            origin(key1, key1 == "thermal.body1_speed"),
+            number(v2),
+            origin(key2, table.body2_speed.is_some())
+        );
+        if let (Some(given), Some(text)) = (sliding_given, &table.speed) {
+            if (given - sliding).abs() > 1e-9 * given.max(v1).max(v2) {
+                return Err(self.error(
+                    "thermal.speed",
+                    format!(
+                        "speed = \"{}\" disagrees with the bodies' speeds: {described}, so the surfaces slide at |V1 - V2| = {} m/s",
+                        crate::io::text::cut(text, 40),
+                        number(sliding)
+                    ),
+                    Some("the sliding speed is |body1_speed - body2_speed|: remove thermal.speed (it then follows from the bodies' speeds), or correct body1_speed and body2_speed"),
+                ));
+            }
+        }
+        if sliding < SPEED_BOUNDS.lo {
+            let key = if table.body2_speed.is_some() {
+                "thermal.body2_speed"
+            } else {
+                key1
+            };
+            return Err(self.error(
+                key,
+                format!(
+                    "the surfaces do not slide: {described}, so |V1 - V2| = {} m/s (rolling without sliding makes no frictional heat)",
+                    number(sliding)
+                ),
+                Some("give the bodies different speeds (the sliding speed is |body1_speed - body2_speed|), or remove [thermal]"),
+            ));
+        }
+        Ok(Speeds {
+            body1: v1,
+            body2: v2,
+            sliding,
+            keys: [key1, key2],
+        })
     }
 
     /// The running gears: the pinion's speed, and a path of contact that the teeth can run.

@@ -567,3 +567,132 @@ fn contradictory_speeds_are_refused_and_the_sliding_speed_is_their_difference() 
         .text(&minus)
         .contains("friction on body 1 acts in -x"));
 }
+
+/// Spur gears `[contact.gears]` with these teeth and pressure angle, 40 kN/m, steel.
+fn gears(teeth: &str, angle: &str, thermal: &str) -> String {
+    format!(
+        "format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.gears]\nmodule = \"5 mm\"\nteeth = [{teeth}]\npressure_angle = \"{angle}\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n{thermal}"
+    )
+}
+
+/// Issue 42, class 7: pointed teeth (a pressure angle near 90 deg gave a contact ratio of 365)
+/// and interfering teeth are refused by `[contact.gears]` itself, with or without
+/// `[thermal]`, naming the key and the limit for these teeth.
+#[test]
+fn pointed_or_interfering_teeth_are_refused_with_the_limit() {
+    let running = "[thermal]\npinion_speed = \"1500 rpm\"\nfriction = 0.05\n";
+    let cases = [
+        ("20, 40", "60 deg", "", "contact.gears.pressure_angle", "must be below 36.0 deg"),
+        ("30, 90", "1.2 rad", running, "contact.gears.pressure_angle", "are pointed"),
+        ("12, 200", "20 deg", "", "contact.gears.teeth", "at least 17 teeth"),
+        ("10, 60", "20 deg", running, "contact.gears.teeth", "the teeth interfere"),
+    ];
+    for (teeth, angle, thermal, key, fragment) in cases {
+        let error = stressfield::study::parse_scene(&gears(teeth, angle, thermal), "g", "g.toml")
+            .expect_err(angle);
+        assert_eq!(error.key.as_deref(), Some(key), "{teeth} at {angle}: {error}");
+        assert!(error.to_string().contains(fragment), "{teeth} at {angle}: {error}");
+    }
+    for (teeth, angle) in [("20, 40", "20 deg"), ("17, 80", "20 deg"), ("20, 40", "30 deg")] {
+        stressfield::study::parse_scene(&gears(teeth, angle, running), "g", "g.toml")
+            .unwrap_or_else(|e| panic!("{teeth} at {angle}: {e}"));
+    }
+}
+
+/// Issue 42, class 8: equivalent spellings of the heat partition mean the same. A line
+/// contact whose body 2 stays under the contact takes `partition = 1.0` (and `1`, `"1"`,
+/// `"Body1"`) as it takes `"body1"`: all heat into body 1, body 2's speed not needed; a
+/// fraction below 1 still needs body 2's speed.
+#[test]
+fn equivalent_partitions_are_accepted_alike() {
+    let line = |partition: &str| {
+        format!(
+            "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\nfriction = 0.1\n[contact.body1]\nradius = \"20 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n[thermal]\nspeed = \"1 m/s\"\npartition = {partition}\n"
+        )
+    };
+    let mut specs = Vec::new();
+    for partition in ["\"body1\"", "1.0", "1", "\"1\"", "\" Body1 \""] {
+        let scene = stressfield::study::parse_scene(&line(partition), "l", "l.toml")
+            .unwrap_or_else(|e| panic!("partition = {partition}: {e}"));
+        specs.push(scene.thermal.expect("[thermal]"));
+    }
+    assert!(specs.iter().all(|s| *s == specs[0]), "{specs:?}");
+    assert_eq!(
+        specs[0].partition,
+        stressfield::thermal::heating::Partition::Body1
+    );
+    for partition in ["0.5", "\"BLOK\""] {
+        let error = stressfield::study::parse_scene(&line(partition), "l", "l.toml")
+            .expect_err(partition);
+        assert_eq!(error.key.as_deref(), Some("thermal.body2_speed"), "{error}");
+    }
+}
+
+/// Issue 42, class 10: a value of the wrong kind is refused in the user's words: what the key
+/// takes, never a Rust type (`untagged enum NumberOrText`, `struct RawThermal`, `f64`).
+#[test]
+fn wrong_kinds_of_values_are_refused_in_the_users_words() {
+    let point = heated_point("speed = \"1 m/s\"");
+    let cases = [
+        (
+            point.replace("speed = \"1 m/s\"", "speed = \"1 m/s\"\npartition = false"),
+            "a fraction from 0 to 1, \"body1\" or \"blok\"",
+        ),
+        (
+            point.replace("speed = \"1 m/s\"", "speed = \"1 m/s\"\npartition = [0.5]"),
+            "a fraction from 0 to 1, \"body1\" or \"blok\"",
+        ),
+        (
+            point.replace("[thermal]\nspeed = \"1 m/s\"\n", "") .replace("format = 1\n", "format = 1\nthermal = \"fast\"\n"),
+            "expected a table: [thermal] on a line of its own",
+        ),
+        (
+            point.replace("friction = 0.2", "friction = \"lots\""),
+            "expected a number",
+        ),
+        (
+            point.replace("[thermal]\nspeed = \"1 m/s\"\n", "[thermal]\nspeed = \"1 m/s\"\ncoupled = \"yes\"\n"),
+            "expected true or false",
+        ),
+        (
+            "format = 1\n[contact]\nkind = \"point\"\na = true\np0 = 1\n".to_string(),
+            "expected a number, or a text with its unit",
+        ),
+    ];
+    for (text, fragment) in cases {
+        let error = stressfield::study::parse_scene(&text, "t", "t.toml").expect_err(fragment);
+        let message = error.to_string();
+        assert!(message.contains(fragment), "{message}\n{text}");
+        for internal in ["untagged", "NumberOrText", "struct Raw", "f64", "variant"] {
+            assert!(!message.contains(internal), "{message}");
+        }
+    }
+}
+
+/// Issue 42, class 11: `[thermal]` on a contact without a load and bodies gets one hint that
+/// leads out (a load and two bodies with radius and material), the same for a normalised
+/// contact and one given by a and p0; following it gives a valid scene.
+#[test]
+fn the_heating_hint_leads_out_in_one_step() {
+    let thermal = "[thermal]\nspeed = \"1 m/s\"\n";
+    let scenes = [
+        format!("format = 1\n[contact]\nkind = \"point\"\nfriction = 0.2\n{thermal}"),
+        format!("format = 1\n[contact]\nkind = \"line\"\na = \"0.2 mm\"\np0 = \"1 GPa\"\nfriction = 0.2\n{thermal}"),
+        format!("format = 1\n[contact]\nkind = \"elliptical\"\naspect = 0.5\na = \"0.2 mm\"\np0 = \"1 GPa\"\nfriction = 0.2\n[contact.body1]\nmaterial = \"steel\"\n{thermal}"),
+    ];
+    for text in &scenes {
+        let error = stressfield::study::parse_scene(text, "t", "t.toml").expect_err(text);
+        assert_eq!(error.key.as_deref(), Some("thermal"), "{error}");
+        let hint = error.hint.clone().unwrap_or_default();
+        assert!(
+            error.message.contains("needs a load and two bodies")
+                && hint.contains("contact.load")
+                && hint.contains("[contact.body1] and [contact.body2]")
+                && hint.contains("radius and material"),
+            "{error}"
+        );
+    }
+    // The hint followed.
+    stressfield::study::parse_scene(&heated_point("speed = \"1 m/s\""), "t", "t.toml")
+        .expect("a load and two bodies");
+}

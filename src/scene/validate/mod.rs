@@ -151,6 +151,7 @@ impl Validator<'_> {
                 Some("set `format = 1`"),
             ));
         }
+        self.heated_contact_keys(&raw)?;
         let contact = self.contact(&raw.contact)?;
         if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
             return self.rough_scene(raw, name, contact);

@@ -52,6 +52,9 @@ const EXPANSION_BOUNDS: Bounds = Bounds {
     why: "from Invar (1e-6) to five times soft polymers",
 };
 
+/// How a Hertz contact with `[thermal]` gets what heating needs.
+const HEATED_CONTACT_HINT: &str = "give contact.load (instead of contact.a and contact.p0) and [contact.body1] and [contact.body2], each with its radius and material (e.g. material = \"steel\"): a and p0 then follow from the bodies, and the heating takes their thermal properties";
+
 /// The speeds of the contact over the bodies and the sliding speed, m/s, with the keys that
 /// set the bodies' speeds.
 struct Speeds {
@@ -62,6 +65,40 @@ struct Speeds {
 }
 
 impl Validator<'_> {
+    /// A Hertz contact (line, point, elliptical) with `[thermal]` needs a load and two
+    /// bodies: said once, before the contact's own keys are read (issue 42, class 11), so
+    /// that a contact given by `a` and `p0` is not first sent to add bodies, then told that
+    /// `a` and `p0` follow from them.
+    pub(super) fn heated_contact_keys(&self, raw: &RawScene) -> Result<(), SceneError> {
+        let contact = &raw.contact;
+        let hertz = matches!(contact.kind.trim(), "line" | "point" | "elliptical");
+        if raw.thermal.is_none() || !hertz {
+            return Ok(());
+        }
+        let sized = contact.a.is_some() || contact.p0.is_some() || contact.aspect.is_some();
+        if contact.load.is_some() && !sized {
+            return Ok(());
+        }
+        let given = if sized {
+            let keys: Vec<&str> = [
+                ("contact.a", contact.a.is_some()),
+                ("contact.p0", contact.p0.is_some()),
+                ("contact.aspect", contact.aspect.is_some()),
+            ]
+            .into_iter()
+            .filter_map(|(key, given)| given.then_some(key))
+            .collect();
+            format!("this contact is given by its size ({})", keys.join(", "))
+        } else {
+            "this contact has no load".to_string()
+        };
+        Err(self.error(
+            "thermal",
+            format!("frictional heating needs a load and two bodies; {given}"),
+            Some(HEATED_CONTACT_HINT),
+        ))
+    }
+
     /// `[thermal]` with the bodies' properties, or `None` without the table.
     pub(super) fn thermal(
         &self,
@@ -73,11 +110,19 @@ impl Validator<'_> {
         };
         match contact.kind {
             ContactKind::Line | ContactKind::Point | ContactKind::Elliptical => {
-                if contact.scale.is_none() {
+                // One requirement, said once (issue 42, class 11): the heat is made by the load
+                // and shared by the bodies, whose thermal and elastic properties it needs; a
+                // contact given by its a and p0 has neither.
+                if contact.dimensional.is_none() {
+                    let given = if contact.scale.is_some() {
+                        "this contact is given by its size (contact.a, contact.p0)"
+                    } else {
+                        "this contact is normalised (a = 1, p0 = 1)"
+                    };
                     return Err(self.error(
                         "thermal",
-                        "frictional heating needs a dimensional contact",
-                        Some("give contact.load and [contact.body1]/[contact.body2] (or contact.a and contact.p0 with their units)"),
+                        format!("frictional heating needs a load and two bodies; {given}"),
+                        Some(HEATED_CONTACT_HINT),
                     ));
                 }
                 if contact.tangential.is_some() {
@@ -371,13 +416,7 @@ impl Validator<'_> {
             Dimension::RotationalSpeed,
             PINION_SPEED_BOUNDS,
         )?;
-        if pair.interferes() {
-            return Err(self.error(
-                "contact.gears",
-                "the gear's tip reaches inside the pinion's base circle: the teeth interfere (the pinion is undercut), so the path of contact is not involute throughout",
-                Some("give the pinion more teeth (at least 17 at 20 deg with standard teeth) or a larger pressure_angle"),
-            ));
-        }
+        // Pointed or interfering teeth are refused with [contact.gears] itself.
         let ratio = pair.contact_ratio();
         if ratio < 1.0 {
             return Err(self.error(
@@ -395,29 +434,46 @@ impl Validator<'_> {
         })
     }
 
+    /// `thermal.partition`: `"body1"`, `"blok"` (any case) or body 1's fraction (a number, or
+    /// a number in quotes). Equivalent spellings mean the same: the fraction 1 is `"body1"`
+    /// (all heat into body 1; body 2's properties and speed are then not needed).
     fn partition(&self, table: &RawThermal) -> Result<Partition, SceneError> {
         let key = "thermal.partition";
         let hint = Some("use partition = \"body1\" (all heat into body 1), \"blok\" (equal mean flash temperatures) or body 1's fraction, e.g. 0.5");
+        let fraction = |f: f64| {
+            if !(0.0..=1.0).contains(&f) {
+                Err(self.error(
+                    key,
+                    format!(
+                        "body 1's fraction must lie in [0, 1], got {}",
+                        crate::io::text::number(f)
+                    ),
+                    hint,
+                ))
+            } else if f == 1.0 {
+                Ok(Partition::Body1)
+            } else {
+                Ok(Partition::Fraction(f))
+            }
+        };
         match &table.partition {
             None => Ok(Partition::Body1),
-            Some(NumberOrText::Text(text)) => match text.trim() {
-                "body1" => Ok(Partition::Body1),
-                "blok" => Ok(Partition::Blok),
-                other => Err(self.error(
-                    key,
-                    format!("unknown partition `{}`", crate::io::text::cut(other, 40)),
-                    hint,
-                )),
-            },
-            Some(NumberOrText::Number(f)) if (0.0..=1.0).contains(f) => Ok(Partition::Fraction(*f)),
-            Some(NumberOrText::Number(f)) => Err(self.error(
-                key,
-                format!(
-                    "body 1's fraction must lie in [0, 1], got {}",
-                    crate::io::text::number(*f)
-                ),
-                hint,
-            )),
+            Some(NumberOrText::Text(text)) => {
+                let word = text.trim().to_ascii_lowercase();
+                match word.as_str() {
+                    "body1" => Ok(Partition::Body1),
+                    "blok" => Ok(Partition::Blok),
+                    other => match other.parse::<f64>() {
+                        Ok(f) => fraction(f),
+                        Err(_) => Err(self.error(
+                            key,
+                            format!("unknown partition `{}`", crate::io::text::cut(text, 40)),
+                            hint,
+                        )),
+                    },
+                }
+            }
+            Some(NumberOrText::Number(f)) => fraction(*f),
         }
     }
 

@@ -696,3 +696,65 @@ fn the_heating_hint_leads_out_in_one_step() {
     stressfield::study::parse_scene(&heated_point("speed = \"1 m/s\""), "t", "t.toml")
         .expect("a load and two bodies");
 }
+
+/// Issue 42, class 9: keys that a command would ignore are refused, naming them: `[[panel]]`
+/// in a Péclet sweep, a repeated sweep value or `from = to` (several steps at one point of the
+/// recording), `[thermal]` with a friction, load or position sweep, and `record` of a heated
+/// scene without a Péclet sweep (one state, or a volume).
+#[test]
+fn keys_a_recording_would_ignore_are_refused() {
+    let speed_sweep = |sweep: &str| {
+        format!(
+            "{}[sweep]\nparameter = \"peclet\"\n{sweep}\n",
+            heated_point("speed = \"1 m/s\"\npartition = \"blok\"")
+        )
+    };
+    let cases = [
+        (
+            speed_sweep("from = 0.1\nto = 10.0\nsteps = 3\n[[panel]]\nfriction = 0.3"),
+            "panel[0]",
+            "would be ignored",
+        ),
+        (speed_sweep("values = [0.5, 2.0, 0.5]"), "sweep.values[2]", "repeats sweep.values[0]"),
+        (speed_sweep("from = 3.0\nto = 3.0\nsteps = 4"), "sweep.to", "from and to are both 3"),
+        (
+            format!(
+                "{}[sweep]\nparameter = \"load\"\nvalues = [\"10 N\", \"20 N\"]\n[figure]\nlength_unit = \"mm\"\nstress_unit = \"MPa\"\n",
+                heated_point("speed = \"1 m/s\"")
+            ),
+            "thermal",
+            "a load sweep records the contact's stress field without heating",
+        ),
+        (
+            "format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nvalues = [0.1, 0.2, 0.1]\n".to_string(),
+            "sweep.values[2]",
+            "repeats sweep.values[0]",
+        ),
+    ];
+    for (text, key, fragment) in &cases {
+        let error = stressfield::study::parse_scene(text, "t", "t.toml").expect_err(key);
+        assert_eq!(error.key.as_deref(), Some(*key), "{error}\n{text}");
+        assert!(error.to_string().contains(fragment), "{error}");
+    }
+    // A heated scene of one state, and one with a volume: record refuses, naming [thermal].
+    let dir = tempfile::tempdir().expect("dir");
+    let volume = format!(
+        "{}[volume]\npoints = 8\n",
+        heated_point("speed = \"1 m/s\"")
+    );
+    for (k, text) in [heated_point("speed = \"1 m/s\""), volume].iter().enumerate() {
+        let path = dir.path().join(format!("heated{k}.toml"));
+        std::fs::write(&path, text).expect("scene");
+        let rrd = dir.path().join(format!("heated{k}.rrd"));
+        crate::cli::assert_fails_with(
+            &run(&[
+                "record",
+                path.to_str().expect("utf8"),
+                "-o",
+                rrd.to_str().expect("utf8"),
+            ]),
+            &["key `thermal`", "would be left out", "parameter = \"peclet\""],
+        );
+        assert!(!rrd.exists());
+    }
+}

@@ -17,12 +17,21 @@ pub(super) fn record_reporting(
     bar: &ProgressBar,
     failures: &mut Vec<String>,
 ) {
-    match record_scene(scene, path, bar) {
+    match recordable(scene).and_then(|()| record_scene(scene, path, bar)) {
         Ok(line) => say(bar, line),
         Err(e) => {
             say(bar, format!("error: scene {}: {e:#}", scene.name));
             failures.push(scene.name.clone());
         }
+    }
+}
+
+/// Refuses a scene whose recording would leave out part of it
+/// ([`stressfield::study::admit::unrecorded_heating`]).
+pub(super) fn recordable(scene: &Scene) -> Result<()> {
+    match stressfield::study::admit::unrecorded_heating(scene) {
+        Some(message) => anyhow::bail!("{message}"),
+        None => Ok(()),
     }
 }
 
@@ -51,13 +60,13 @@ pub(super) fn record_all(paths: &[PathBuf], target: &Target) -> Result<()> {
     let bar = progress_bar(scenes.iter().map(recording_rows).sum::<usize>() as u64);
     for scene in &scenes {
         bar.set_message(scene.name.clone());
-        let result = match target {
+        let result = recordable(scene).and_then(|()| match target {
             Target::OutDir(dir) => {
                 record_scene(scene, &dir.join(format!("{}.rrd", scene.name)), &bar)
             }
             Target::File(path) => record_scene(scene, path, &bar),
             other => stream_scene(scene, other, &bar),
-        };
+        });
         match result {
             Ok(line) => say(&bar, line),
             Err(e) => {

@@ -165,9 +165,13 @@ fn render_scene(
     bar: &ProgressBar,
 ) -> Result<SceneOutput> {
     let mut staged = Staged::new();
-    // The recording's place first: a bad --rrd path fails before any work.
+    // The recording's place first: a bad --rrd path (or a recording that would leave out
+    // the scene's heating) fails before any work.
     let recording = match options.rrd {
-        Some(path) => Some((staged.reserve(path)?, path)),
+        Some(path) => {
+            super::record::recordable(scene)?;
+            Some((staged.reserve(path)?, path))
+        }
         None => None,
     };
     let on_row = || bar.inc(1);

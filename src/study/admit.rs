@@ -111,6 +111,25 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
     Ok(())
 }
 
+/// Why a recording of `scene` would leave out its `[thermal]`, or `None`: the heating is
+/// recorded as a speed (Péclet) sweep only, so a recording of one state (no `[sweep]`, or a
+/// `[volume]`) of a heated scene is refused rather than silently isothermal (issue 42, class
+/// 9; a friction, load or position sweep with `[thermal]` is refused by the scene reader). A
+/// wear scene records its own steps.
+pub fn unrecorded_heating(scene: &Scene) -> Option<String> {
+    let speed_sweep = scene
+        .sweep
+        .as_ref()
+        .is_some_and(|s| s.parameter == SweepParameter::Peclet);
+    if scene.thermal.is_none() || speed_sweep || scene.wear.is_some() {
+        return None;
+    }
+    Some(
+        "key `thermal`: a recording of one state records the contact's stress field without heating: [thermal] would be left out\nhint: `stressfield thermal SCENE` reports the heating (--figure draws it) and `render` draws the heating sheet beside the figure; to record the heating as the speed rises, add [sweep] with parameter = \"peclet\" (a line, point or elliptical contact)"
+            .to_string(),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -758,3 +758,71 @@ fn keys_a_recording_would_ignore_are_refused() {
         assert!(!rrd.exists());
     }
 }
+
+/// The shipped ball on a coated disc (coupled, all heat into the stationary ball) with body 1's
+/// `extra` thermal keys.
+fn ball_on_disc(extra: &str) -> String {
+    std::fs::read_to_string(crate::cli::repo("scenes/thermal_ball_on_disc.toml"))
+        .expect("shipped scene")
+        .replace(
+            "material = \"steel\"\n",
+            &format!("material = \"steel\"\n{extra}"),
+        )
+}
+
+/// Issue 42, class 1: a coupled contact that runs away is an error naming `thermal.coupled`
+/// and what happened, with the last resolved state, never a converged solution: a ball whose
+/// expansion is 20 to 90 times steel's (the contact shrank below a tenth of its area, and to
+/// one cell, while reported as converged); one so poorly conducting that the isothermal
+/// pressure already heats it beyond any solid; the shipped scene still converges.
+#[test]
+fn a_thermoelastic_runaway_is_an_error_not_a_converged_solution() {
+    use stressfield::study::coupled::{CoupledError, MAX_FLASH_TEMPERATURE_RISE_K, MIN_AREA_FRACTION};
+    use stressfield::study::thermal::ThermalStudyError;
+    let study = |text: &str| {
+        let scene = stressfield::study::parse_scene(text, "b", "b.toml").expect("valid scene");
+        stressfield::study::thermal::study(&scene, None, &mut |_| {})
+    };
+    for expansion in ["2.5e-4 /K", "1e-3 /K"] {
+        let text = ball_on_disc(&format!(
+            "conductivity = \"20 W/(m K)\"\nexpansion = \"{expansion}\"\n"
+        ));
+        match study(&text) {
+            Err(ThermalStudyError::Coupled(CoupledError::Runaway {
+                at, last, isothermal, ..
+            })) => {
+                assert!(at.iteration > 0 && at.area_fraction < MIN_AREA_FRACTION, "{at:?}");
+                assert!(last.iteration < at.iteration && last.area_fraction >= MIN_AREA_FRACTION);
+                assert_eq!(isothermal.iteration, 0);
+            }
+            other => panic!("{expansion}: {other:?}"),
+        }
+    }
+    match study(&ball_on_disc("conductivity = \"1 W/(m K)\"\n")) {
+        Err(ThermalStudyError::Coupled(CoupledError::BeyondAnySolid { isothermal })) => {
+            assert!(isothermal.max_temperature_rise_k > MAX_FLASH_TEMPERATURE_RISE_K);
+        }
+        other => panic!("{other:?}"),
+    }
+    let shipped = study(&ball_on_disc("")).expect("the shipped scene converges");
+    let coupled = shipped.coupled.expect("coupled");
+    assert!(coupled.iterations < 20);
+    // On the command line: exit 1, the key, what happened and the last resolved state.
+    let dir = tempfile::tempdir().expect("dir");
+    let path = dir.path().join("runaway.toml");
+    std::fs::write(
+        &path,
+        ball_on_disc("conductivity = \"20 W/(m K)\"\nexpansion = \"5e-4 /K\"\n"),
+    )
+    .expect("scene");
+    crate::cli::assert_fails_with(
+        &run(&["thermal", path.to_str().expect("utf8")]),
+        &[
+            "thermal.coupled",
+            "runs away",
+            "thermoelastic instability",
+            "The last resolved state was iteration",
+            "hint: lower the heat",
+        ],
+    );
+}

@@ -372,6 +372,16 @@ impl ThermalReport {
             um(self.max_temperature_y_m),
             self.mean_temperature_rise_k
         )?;
+        let hottest = self
+            .max_temperature_rise_k
+            .max(self.body2_max_temperature_rise_k.unwrap_or(0.0));
+        if hottest > crate::study::coupled::MAX_FLASH_TEMPERATURE_RISE_K {
+            writeln!(
+                out,
+                "  note: a flash temperature rise of {hottest:.0} K is beyond any solid (more than {:.0} K): the surfaces would melt, and the linear heating with constant properties does not hold there",
+                crate::study::coupled::MAX_FLASH_TEMPERATURE_RISE_K
+            )?;
+        }
         if let (Some(max), Some(mean), true) = (
             self.body2_max_temperature_rise_k,
             self.body2_mean_temperature_rise_k,

@@ -826,3 +826,70 @@ fn a_thermoelastic_runaway_is_an_error_not_a_converged_solution() {
         ],
     );
 }
+
+/// Issue 42, classes 5 and 6: `thermal`'s outputs are checked before anything is computed
+/// (a missing directory is said at once, even for a scene whose heating would fail), written
+/// all or none, through a device whatever its name, with extensions in any case; `render`
+/// leaves no figure when its heating sheet goes to a full device.
+#[cfg(unix)]
+#[test]
+fn heating_outputs_are_checked_first_and_written_all_or_none() {
+    let dir = tempfile::tempdir().expect("dir");
+    let path = |name: &str| dir.path().join(name).to_str().expect("utf8").to_string();
+    // A scene whose computation fails (a runaway): the bad path is reported instead.
+    std::fs::write(
+        path("runaway.toml"),
+        ball_on_disc("conductivity = \"20 W/(m K)\"\nexpansion = \"5e-4 /K\"\n"),
+    )
+    .expect("scene");
+    let output = run(&[
+        "thermal",
+        &path("runaway.toml"),
+        "--temperature",
+        &path("t.npy"),
+        "--figure",
+        &path("missing/f.svg"),
+    ]);
+    crate::cli::assert_fails_with(&output, &["missing/f.svg", "No such file or directory"]);
+    assert!(!stderr(&output).contains("runs away"), "{}", stderr(&output));
+    assert!(!dir.path().join("t.npy").exists());
+    // Upper-case extensions and a device.
+    let sliding = crate::cli::repo("scenes/thermal_sliding_sphere.toml");
+    let sliding = sliding.to_str().expect("utf8");
+    let output = run(&[
+        "thermal",
+        sliding,
+        "--temperature",
+        "/dev/null",
+        "--figure",
+        &path("SHEET.SVG"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let svg = std::fs::read_to_string(dir.path().join("SHEET.SVG")).expect("svg written");
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"));
+    if std::path::Path::new("/dev/full").exists() {
+        // The sheet onto a full device: neither output is left.
+        std::os::unix::fs::symlink("/dev/full", dir.path().join("full.png")).expect("link");
+        let output = run(&[
+            "thermal",
+            sliding,
+            "--temperature",
+            &path("T.NPY"),
+            "--figure",
+            &path("full.png"),
+        ]);
+        crate::cli::assert_fails_with(&output, &["No space left"]);
+        assert!(!dir.path().join("T.NPY").exists());
+        // render: the heating sheet through a link to /dev/full leaves no figure.
+        let out = dir.path().join("out");
+        std::fs::create_dir(&out).expect("out");
+        std::os::unix::fs::symlink(
+            "/dev/full",
+            out.join("thermal_sliding_sphere_heating.png"),
+        )
+        .expect("link");
+        let output = run(&["render", sliding, "--out-dir", out.to_str().expect("utf8")]);
+        crate::cli::assert_fails_with(&output, &["No space left"]);
+        assert!(!out.join("thermal_sliding_sphere.png").exists());
+    }
+}

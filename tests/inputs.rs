@@ -893,3 +893,86 @@ fn heating_outputs_are_checked_first_and_written_all_or_none() {
         assert!(!out.join("thermal_sliding_sphere.png").exists());
     }
 }
+
+/// Issue 42, class 2: the heating's memory and time are estimated before anything is
+/// computed, by `check` too: a rough ball of 1024² samples with `[thermal]` (2048² climbed
+/// past 4 GB and aborted after 189 s) is refused at once naming the map's size, a sphere
+/// slid at Pe 190 (the grid refined to 640 x 480 cells) naming the speed; an accepted scene's
+/// `check` line states the estimate.
+#[test]
+fn the_heatings_cost_is_estimated_and_refused_at_check() {
+    let dir = tempfile::tempdir().expect("dir");
+    let rough = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\nfriction = 0.1\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 1024\nspacing = \"0.125 um\"\nhurst = 0.8\nrolloff = \"32 um\"\ncutoff = \"4 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\nseed = 3\n[thermal]\nspeed = \"2 m/s\"\n";
+    let path = dir.path().join("rough.toml");
+    std::fs::write(&path, rough).expect("scene");
+    let started = std::time::Instant::now();
+    crate::cli::assert_fails_with(
+        &run(&["check", path.to_str().expect("utf8")]),
+        &[
+            "key `surface.generate.samples`",
+            "the heating of a 1024 x 1024 map",
+            "min of CPU",
+            "GiB",
+            "half the samples a side",
+        ],
+    );
+    assert!(started.elapsed().as_secs() < 20, "refused before computing");
+    // A sphere at Pe 190: its grid is refined to 640 x 480 cells.
+    let fast = std::fs::read_to_string(crate::cli::repo("scenes/thermal_sliding_sphere.toml"))
+        .expect("shipped")
+        .replace("speed = \"2 m/s\"", "speed = \"11.8 m/s\"");
+    let path = dir.path().join("fast.toml");
+    std::fs::write(&path, fast).expect("scene");
+    for command in ["check", "thermal"] {
+        crate::cli::assert_fails_with(
+            &run(&[command, path.to_str().expect("utf8")]),
+            &["key `thermal.speed`", "640 x 480 cells", "262144 cells allowed", "Péclet number of about 148"],
+        );
+    }
+    let output = run(&[
+        "check",
+        crate::cli::repo("scenes/thermal_sliding_sphere.toml")
+            .to_str()
+            .expect("utf8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let line = String::from_utf8_lossy(&output.stdout).to_string();
+    assert!(
+        line.contains("heating: 129 x 97 cells, about") && line.contains("of CPU"),
+        "{line}"
+    );
+}
+
+/// Issue 42, class 4: a speed the heating's grid cannot resolve is refused by `check`, under
+/// the key the scene wrote (gears have no thermal.speed): the pinion's speed, a body's speed;
+/// `hertz` and `render` refuse alike, with the file, and name the scene once.
+#[test]
+fn speeds_beyond_the_grid_are_refused_at_check_under_the_key_written() {
+    let dir = tempfile::tempdir().expect("dir");
+    let gears = std::fs::read_to_string(crate::cli::repo("scenes/gear_pitch_point.toml"))
+        .expect("shipped")
+        .replace("pinion_speed = \"1500 rpm\"", "pinion_speed = \"150000 rpm\"");
+    let path = dir.path().join("gears.toml");
+    std::fs::write(&path, gears).expect("scene");
+    let out = dir.path().join("out");
+    let path = path.to_str().expect("utf8");
+    for args in [
+        vec!["check", path],
+        vec!["thermal", path],
+        vec!["hertz", path],
+        vec!["render", path, "--out-dir", out.to_str().expect("utf8")],
+    ] {
+        let output = run(&args);
+        crate::cli::assert_fails_with(
+            &output,
+            &["gears.toml", "key `thermal.pinion_speed`", "on the path of contact", "Péclet number"],
+        );
+        let message = stderr(&output);
+        assert!(!message.contains("thermal.speed"), "{message}");
+        assert!(!message.contains("scene gears: scene gears"), "{message}");
+    }
+    // A line contact whose body 2 (a fast roller) sets the grid: named by body2_speed.
+    let line = "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\nfriction = 0.1\n[contact.body1]\nradius = \"20 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"30 mm\"\nmaterial = \"steel\"\n[thermal]\nbody1_speed = \"1 m/s\"\nbody2_speed = \"400 m/s\"\npartition = \"blok\"\n";
+    let error = stressfield::study::parse_scene(line, "l", "l.toml").expect_err("too fast");
+    assert_eq!(error.key.as_deref(), Some("thermal.body2_speed"), "{error}");
+}

@@ -1,8 +1,9 @@
 //! Whether a validated scene can be computed here: the second stage of reading a scene, after
 //! [`crate::scene`] has checked what the user wrote. The checks need what only the study knows
 //! (the grid planes of the panels, the speed sweep's grid), so they live here rather than in
-//! the file format: the figure's memory, the memory of a recording's sections, and which
-//! scenes a speed sweep can take and how fast it can go.
+//! the file format: the figure's memory, the memory of a recording's sections, which
+//! scenes a speed sweep can take and how fast it can go, and the heating's grid, memory and
+//! time ([`super::heating_plan`]).
 //!
 //! Every command reads its scenes through [`load_scene`] (or [`parse_scene`]), so a scene that
 //! passes `check` can be computed.
@@ -54,6 +55,11 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             ),
             "lower figure.resolution (600 to 1200 is plenty for a figure)",
         ));
+    }
+    // The heating: its grid resolves the speeds, and its memory and time are within the
+    // limits (issue 42, classes 2 and 4), refused under the key the scene wrote.
+    if let Err(refusal) = super::heating_plan::plan(scene) {
+        return Err(error(&refusal.key, refusal.message, &refusal.hint));
     }
     let Some(sweep) = &scene.sweep else {
         return Ok(());

@@ -16,6 +16,7 @@ pub mod assess;
 mod compass;
 pub mod coupled;
 pub mod gear_heating;
+pub mod heating_plan;
 mod grid;
 pub mod map_roll;
 pub mod memory;

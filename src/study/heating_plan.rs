@@ -17,6 +17,7 @@
 //! | rough ball, 128² | 16 384 | 35.3 MB | 9.1 s |
 //! | rough ball, 256² | 65 536 | 108 MB | 34 s |
 //! | rough ball, 384² | 147 456 | 232 MB | 74 s |
+//! | rough ball, 512² | 262 144 | 408 MB | 108 s |
 //! | sliding sphere at 2 m/s (Pe 32), 129 x 97 | 12 513 | 26.4 MB | 8.1 s |
 //! | the same at 6.25 m/s (Pe 100), 403 x 303 | 122 109 | 188 MB | 61 s |
 //! | the same at 9 m/s (Pe 144), 580 x 436 | 252 880 | 381 MB | 112 s |

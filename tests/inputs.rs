@@ -976,3 +976,65 @@ fn speeds_beyond_the_grid_are_refused_at_check_under_the_key_written() {
     let error = stressfield::study::parse_scene(line, "l", "l.toml").expect_err("too fast");
     assert_eq!(error.key.as_deref(), Some("thermal.body2_speed"), "{error}");
 }
+
+/// Issue 42, the leftovers of round two: generated spacings too unequal for the default band
+/// are refused naming `surface.generate.spacing` (they named `cutoff`, a key not written);
+/// `--compare` given a file says it is not a directory; a directory given as an `.x3p` says
+/// it is a directory.
+#[test]
+fn round_two_leftovers_name_their_cause() {
+    let generated = |spacing: &str, extra: &str| {
+        format!(
+            "format = 1\n[contact]\nkind = \"surface\"\n[surface.generate]\nsamples = [64, 32]\nspacing = {spacing}\nhurst = 0.8\nrms_height = \"0.1 um\"\n{extra}"
+        )
+    };
+    let error = stressfield::study::parse_scene(
+        &generated("[\"0.5 um\", \"40 um\"]", ""),
+        "s",
+        "s.toml",
+    )
+    .expect_err("unequal");
+    assert_eq!(
+        error.key.as_deref(),
+        Some("surface.generate.spacing"),
+        "{error}"
+    );
+    assert!(error.to_string().contains("the spacings differ too much"), "{error}");
+    // Given a band, the same spacings are taken; equal ones need none.
+    stressfield::study::parse_scene(
+        &generated("[\"0.5 um\", \"40 um\"]", "rolloff = \"100 um\"\ncutoff = \"80 um\"\n"),
+        "s",
+        "s.toml",
+    )
+    .expect("a band given");
+    stressfield::study::parse_scene(&generated("\"0.5 um\"", ""), "s", "s.toml")
+        .expect("equal spacings");
+
+    let dir = tempfile::tempdir().expect("dir");
+    let scene = dir.path().join("case.toml");
+    std::fs::write(&scene, SMALL_SCENE).expect("scene");
+    let file = dir.path().join("refs.txt");
+    std::fs::write(&file, "not a directory").expect("file");
+    let out = dir.path().join("out");
+    for update in [false, true] {
+        let mut args = vec![
+            "render",
+            scene.to_str().expect("utf8"),
+            "--out-dir",
+            out.to_str().expect("utf8"),
+            "--compare",
+            file.to_str().expect("utf8"),
+        ];
+        if update {
+            args.push("--update");
+        }
+        let output = run(&args);
+        crate::cli::assert_fails_with(&output, &["refs.txt", "is not a directory"]);
+        assert!(!stderr(&output).contains("does not exist"), "{}", stderr(&output));
+    }
+    let x3p = dir.path().join("heights.x3p");
+    std::fs::create_dir(&x3p).expect("a directory named .x3p");
+    let output = run(&["surface", x3p.to_str().expect("utf8")]);
+    crate::cli::assert_fails_with(&output, &["heights.x3p", "it is a directory"]);
+    assert!(!stderr(&output).contains("zip"), "{}", stderr(&output));
+}

@@ -495,7 +495,7 @@ fn heat(gridded: &Gridded, spec: &ThermalSpec, friction: f64) -> Result<Heated, 
 
 /// The flash temperatures of a Hertz scene (line, point or elliptical, with `[thermal]`) on
 /// the study's grid, without the stresses: `(half-width, body 1, body 2)`.
-pub(crate) fn hertz_flash(
+pub fn hertz_flash(
     scene: &Scene,
     spec: &ThermalSpec,
 ) -> Result<(f64, BodyHeating, Option<BodyHeating>), ThermalStudyError> {

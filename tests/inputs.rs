@@ -536,7 +536,8 @@ fn contradictory_speeds_are_refused_and_the_sliding_speed_is_their_difference() 
     let slow_over_body1 = spec("body1_speed = \"0.25 m/s\"\nbody2_speed = \"1 m/s\"");
     assert_eq!(slow_over_body1.sliding_speed_m_per_s, 0.75);
     assert_eq!(slow_over_body1.traction, TractionDirection::MinusX);
-    let agreeing = spec("speed = \"0.75 m/s\"\nbody1_speed = \"1 m/s\"\nbody2_speed = \"0.25 m/s\"");
+    let agreeing =
+        spec("speed = \"0.75 m/s\"\nbody1_speed = \"1 m/s\"\nbody2_speed = \"0.25 m/s\"");
     assert_eq!(agreeing.sliding_speed_m_per_s, 0.75);
     assert_eq!(agreeing.traction, TractionDirection::PlusX);
     assert_eq!(spec("speed = \"2 m/s\"").traction, TractionDirection::PlusX);
@@ -545,8 +546,8 @@ fn contradictory_speeds_are_refused_and_the_sliding_speed_is_their_difference() 
     // at the same speed (q in +x): the contact stress alone is mirrored (the same materials,
     // so the same grid).
     let study = |thermal: &str| {
-        let scene = stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml")
-            .expect("valid");
+        let scene =
+            stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml").expect("valid");
         stressfield::study::thermal::study(&scene, None, &mut |_| {}).expect("study")
     };
     let minus = study("body1_speed = \"0 m/s\"\nbody2_speed = \"0.5 m/s\"");
@@ -582,18 +583,53 @@ fn gears(teeth: &str, angle: &str, thermal: &str) -> String {
 fn pointed_or_interfering_teeth_are_refused_with_the_limit() {
     let running = "[thermal]\npinion_speed = \"1500 rpm\"\nfriction = 0.05\n";
     let cases = [
-        ("20, 40", "60 deg", "", "contact.gears.pressure_angle", "must be below 36.0 deg"),
-        ("30, 90", "1.2 rad", running, "contact.gears.pressure_angle", "are pointed"),
-        ("12, 200", "20 deg", "", "contact.gears.teeth", "at least 17 teeth"),
-        ("10, 60", "20 deg", running, "contact.gears.teeth", "the teeth interfere"),
+        (
+            "20, 40",
+            "60 deg",
+            "",
+            "contact.gears.pressure_angle",
+            "must be below 36.0 deg",
+        ),
+        (
+            "30, 90",
+            "1.2 rad",
+            running,
+            "contact.gears.pressure_angle",
+            "are pointed",
+        ),
+        (
+            "12, 200",
+            "20 deg",
+            "",
+            "contact.gears.teeth",
+            "at least 17 teeth",
+        ),
+        (
+            "10, 60",
+            "20 deg",
+            running,
+            "contact.gears.teeth",
+            "the teeth interfere",
+        ),
     ];
     for (teeth, angle, thermal, key, fragment) in cases {
         let error = stressfield::study::parse_scene(&gears(teeth, angle, thermal), "g", "g.toml")
             .expect_err(angle);
-        assert_eq!(error.key.as_deref(), Some(key), "{teeth} at {angle}: {error}");
-        assert!(error.to_string().contains(fragment), "{teeth} at {angle}: {error}");
+        assert_eq!(
+            error.key.as_deref(),
+            Some(key),
+            "{teeth} at {angle}: {error}"
+        );
+        assert!(
+            error.to_string().contains(fragment),
+            "{teeth} at {angle}: {error}"
+        );
     }
-    for (teeth, angle) in [("20, 40", "20 deg"), ("17, 80", "20 deg"), ("20, 40", "30 deg")] {
+    for (teeth, angle) in [
+        ("20, 40", "20 deg"),
+        ("17, 80", "20 deg"),
+        ("20, 40", "30 deg"),
+    ] {
         stressfield::study::parse_scene(&gears(teeth, angle, running), "g", "g.toml")
             .unwrap_or_else(|e| panic!("{teeth} at {angle}: {e}"));
     }
@@ -622,8 +658,8 @@ fn equivalent_partitions_are_accepted_alike() {
         stressfield::thermal::heating::Partition::Body1
     );
     for partition in ["0.5", "\"BLOK\""] {
-        let error = stressfield::study::parse_scene(&line(partition), "l", "l.toml")
-            .expect_err(partition);
+        let error =
+            stressfield::study::parse_scene(&line(partition), "l", "l.toml").expect_err(partition);
         assert_eq!(error.key.as_deref(), Some("thermal.body2_speed"), "{error}");
     }
 }
@@ -643,7 +679,9 @@ fn wrong_kinds_of_values_are_refused_in_the_users_words() {
             "a fraction from 0 to 1, \"body1\" or \"blok\"",
         ),
         (
-            point.replace("[thermal]\nspeed = \"1 m/s\"\n", "") .replace("format = 1\n", "format = 1\nthermal = \"fast\"\n"),
+            point
+                .replace("[thermal]\nspeed = \"1 m/s\"\n", "")
+                .replace("format = 1\n", "format = 1\nthermal = \"fast\"\n"),
             "expected a table: [thermal] on a line of its own",
         ),
         (
@@ -651,7 +689,10 @@ fn wrong_kinds_of_values_are_refused_in_the_users_words() {
             "expected a number",
         ),
         (
-            point.replace("[thermal]\nspeed = \"1 m/s\"\n", "[thermal]\nspeed = \"1 m/s\"\ncoupled = \"yes\"\n"),
+            point.replace(
+                "[thermal]\nspeed = \"1 m/s\"\n",
+                "[thermal]\nspeed = \"1 m/s\"\ncoupled = \"yes\"\n",
+            ),
             "expected true or false",
         ),
         (
@@ -742,7 +783,10 @@ fn keys_a_recording_would_ignore_are_refused() {
         "{}[volume]\npoints = 8\n",
         heated_point("speed = \"1 m/s\"")
     );
-    for (k, text) in [heated_point("speed = \"1 m/s\""), volume].iter().enumerate() {
+    for (k, text) in [heated_point("speed = \"1 m/s\""), volume]
+        .iter()
+        .enumerate()
+    {
         let path = dir.path().join(format!("heated{k}.toml"));
         std::fs::write(&path, text).expect("scene");
         let rrd = dir.path().join(format!("heated{k}.rrd"));
@@ -753,7 +797,11 @@ fn keys_a_recording_would_ignore_are_refused() {
                 "-o",
                 rrd.to_str().expect("utf8"),
             ]),
-            &["key `thermal`", "would be left out", "parameter = \"peclet\""],
+            &[
+                "key `thermal`",
+                "would be left out",
+                "parameter = \"peclet\"",
+            ],
         );
         assert!(!rrd.exists());
     }
@@ -777,7 +825,9 @@ fn ball_on_disc(extra: &str) -> String {
 /// pressure already heats it beyond any solid; the shipped scene still converges.
 #[test]
 fn a_thermoelastic_runaway_is_an_error_not_a_converged_solution() {
-    use stressfield::study::coupled::{CoupledError, MAX_FLASH_TEMPERATURE_RISE_K, MIN_AREA_FRACTION};
+    use stressfield::study::coupled::{
+        CoupledError, MAX_FLASH_TEMPERATURE_RISE_K, MIN_AREA_FRACTION,
+    };
     use stressfield::study::thermal::ThermalStudyError;
     let study = |text: &str| {
         let scene = stressfield::study::parse_scene(text, "b", "b.toml").expect("valid scene");
@@ -789,9 +839,15 @@ fn a_thermoelastic_runaway_is_an_error_not_a_converged_solution() {
         ));
         match study(&text) {
             Err(ThermalStudyError::Coupled(CoupledError::Runaway {
-                at, last, isothermal, ..
+                at,
+                last,
+                isothermal,
+                ..
             })) => {
-                assert!(at.iteration > 0 && at.area_fraction < MIN_AREA_FRACTION, "{at:?}");
+                assert!(
+                    at.iteration > 0 && at.area_fraction < MIN_AREA_FRACTION,
+                    "{at:?}"
+                );
                 assert!(last.iteration < at.iteration && last.area_fraction >= MIN_AREA_FRACTION);
                 assert_eq!(isothermal.iteration, 0);
             }
@@ -851,7 +907,11 @@ fn heating_outputs_are_checked_first_and_written_all_or_none() {
         &path("missing/f.svg"),
     ]);
     crate::cli::assert_fails_with(&output, &["missing/f.svg", "No such file or directory"]);
-    assert!(!stderr(&output).contains("runs away"), "{}", stderr(&output));
+    assert!(
+        !stderr(&output).contains("runs away"),
+        "{}",
+        stderr(&output)
+    );
     assert!(!dir.path().join("t.npy").exists());
     // Upper-case extensions and a device.
     let sliding = crate::cli::repo("scenes/thermal_sliding_sphere.toml");
@@ -883,11 +943,8 @@ fn heating_outputs_are_checked_first_and_written_all_or_none() {
         // render: the heating sheet through a link to /dev/full leaves no figure.
         let out = dir.path().join("out");
         std::fs::create_dir(&out).expect("out");
-        std::os::unix::fs::symlink(
-            "/dev/full",
-            out.join("thermal_sliding_sphere_heating.png"),
-        )
-        .expect("link");
+        std::os::unix::fs::symlink("/dev/full", out.join("thermal_sliding_sphere_heating.png"))
+            .expect("link");
         let output = run(&["render", sliding, "--out-dir", out.to_str().expect("utf8")]);
         crate::cli::assert_fails_with(&output, &["No space left"]);
         assert!(!out.join("thermal_sliding_sphere.png").exists());
@@ -926,7 +983,12 @@ fn the_heatings_cost_is_estimated_and_refused_at_check() {
     for command in ["check", "thermal"] {
         crate::cli::assert_fails_with(
             &run(&[command, path.to_str().expect("utf8")]),
-            &["key `thermal.speed`", "640 x 480 cells", "262144 cells allowed", "Péclet number of about 148"],
+            &[
+                "key `thermal.speed`",
+                "640 x 480 cells",
+                "262144 cells allowed",
+                "Péclet number of about 148",
+            ],
         );
     }
     let output = run(&[
@@ -951,7 +1013,10 @@ fn speeds_beyond_the_grid_are_refused_at_check_under_the_key_written() {
     let dir = tempfile::tempdir().expect("dir");
     let gears = std::fs::read_to_string(crate::cli::repo("scenes/gear_pitch_point.toml"))
         .expect("shipped")
-        .replace("pinion_speed = \"1500 rpm\"", "pinion_speed = \"150000 rpm\"");
+        .replace(
+            "pinion_speed = \"1500 rpm\"",
+            "pinion_speed = \"150000 rpm\"",
+        );
     let path = dir.path().join("gears.toml");
     std::fs::write(&path, gears).expect("scene");
     let out = dir.path().join("out");
@@ -965,7 +1030,12 @@ fn speeds_beyond_the_grid_are_refused_at_check_under_the_key_written() {
         let output = run(&args);
         crate::cli::assert_fails_with(
             &output,
-            &["gears.toml", "key `thermal.pinion_speed`", "on the path of contact", "Péclet number"],
+            &[
+                "gears.toml",
+                "key `thermal.pinion_speed`",
+                "on the path of contact",
+                "Péclet number",
+            ],
         );
         let message = stderr(&output);
         assert!(!message.contains("thermal.speed"), "{message}");
@@ -988,21 +1058,24 @@ fn round_two_leftovers_name_their_cause() {
             "format = 1\n[contact]\nkind = \"surface\"\n[surface.generate]\nsamples = [64, 32]\nspacing = {spacing}\nhurst = 0.8\nrms_height = \"0.1 um\"\n{extra}"
         )
     };
-    let error = stressfield::study::parse_scene(
-        &generated("[\"0.5 um\", \"40 um\"]", ""),
-        "s",
-        "s.toml",
-    )
-    .expect_err("unequal");
+    let error =
+        stressfield::study::parse_scene(&generated("[\"0.5 um\", \"40 um\"]", ""), "s", "s.toml")
+            .expect_err("unequal");
     assert_eq!(
         error.key.as_deref(),
         Some("surface.generate.spacing"),
         "{error}"
     );
-    assert!(error.to_string().contains("the spacings differ too much"), "{error}");
+    assert!(
+        error.to_string().contains("the spacings differ too much"),
+        "{error}"
+    );
     // Given a band, the same spacings are taken; equal ones need none.
     stressfield::study::parse_scene(
-        &generated("[\"0.5 um\", \"40 um\"]", "rolloff = \"100 um\"\ncutoff = \"80 um\"\n"),
+        &generated(
+            "[\"0.5 um\", \"40 um\"]",
+            "rolloff = \"100 um\"\ncutoff = \"80 um\"\n",
+        ),
         "s",
         "s.toml",
     )
@@ -1030,7 +1103,11 @@ fn round_two_leftovers_name_their_cause() {
         }
         let output = run(&args);
         crate::cli::assert_fails_with(&output, &["refs.txt", "is not a directory"]);
-        assert!(!stderr(&output).contains("does not exist"), "{}", stderr(&output));
+        assert!(
+            !stderr(&output).contains("does not exist"),
+            "{}",
+            stderr(&output)
+        );
     }
     let x3p = dir.path().join("heights.x3p");
     std::fs::create_dir(&x3p).expect("a directory named .x3p");

@@ -389,7 +389,11 @@ enum ThermalMutation {
     Generic(Mutation),
     /// Add key `key` with value `value` to `[thermal]` (`table` 0), `[contact.body1]` (1) or
     /// `[contact.body2]` (2).
-    Insert { table: usize, key: usize, value: usize },
+    Insert {
+        table: usize,
+        key: usize,
+        value: usize,
+    },
 }
 
 fn thermal_mutation() -> impl Strategy<Value = ThermalMutation> {
@@ -497,7 +501,10 @@ fn check_heated(scene: &Scene) -> Result<(), String> {
             return Err(format!("the plan: {plan:?}"));
         }
         let small = plan.shape[0] * plan.shape[1] <= 20_000;
-        let hertz = !matches!(scene.contact.kind, ContactKind::Rough | ContactKind::Surface);
+        let hertz = !matches!(
+            scene.contact.kind,
+            ContactKind::Rough | ContactKind::Surface
+        );
         if small && hertz && spec.gear.is_none() {
             match study::thermal::hertz_flash(scene, spec) {
                 Ok((_, body1, body2)) => {

@@ -161,20 +161,19 @@ fn stream_scene(scene: &Scene, target: &Target, bar: &ProgressBar) -> Result<Str
 
 #[cfg(not(feature = "rerun"))]
 pub(super) fn record_scene_as(
-    scene: &Scene,
+    _scene: &Scene,
     _file: &Path,
     _shown: &Path,
     _bar: &ProgressBar,
     _rough: Option<&RoughSolution>,
 ) -> Result<String> {
     anyhow::bail!(
-        "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",
-        scene.name
+        "this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release"
     )
 }
 
 #[cfg(not(feature = "rerun"))]
-fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<String> {
+fn stream_scene(_scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<String> {
     let place = match target {
         Target::Connect(url) => format!("the viewer at {url}"),
         Target::Spawn => "a new viewer".to_string(),
@@ -183,7 +182,6 @@ fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<St
         Target::File(path) => path.display().to_string(),
     };
     anyhow::bail!(
-        "scene {}: this build has no Rerun support (built with --no-default-features), so it cannot record to {place}\nhint: rebuild with the default features: cargo build --release",
-        scene.name
+        "this build has no Rerun support (built with --no-default-features), so it cannot record to {place}\nhint: rebuild with the default features: cargo build --release"
     )
 }

@@ -177,10 +177,8 @@ fn render_scene(
     let on_row = || bar.inc(1);
     // A rough scene's contact is solved once, for the sheet and the recording.
     let rough = match scene.contact.kind {
-        ContactKind::Rough => Some(
-            study::rough::solve(scene, &mut |_, _| {})
-                .with_context(|| format!("scene {}", scene.name))?,
-        ),
+        // The caller names the scene (once).
+        ContactKind::Rough => Some(study::rough::solve(scene, &mut |_, _| {})?),
         _ => None,
     };
     let drawing = figure::draw(scene, rough.as_ref(), &on_row)?;

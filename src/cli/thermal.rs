@@ -7,8 +7,8 @@ use anyhow::{bail, Context, Result};
 
 use super::console::{print_out, progress_bar};
 use super::npy::{has_extension, is_device, npy_bytes, npy_path, Reserved};
-use stressfield::io::output::Staged;
 use stressfield::contact::rough::RoughSolution;
+use stressfield::io::output::Staged;
 use stressfield::report::thermal::ThermalReport;
 use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;

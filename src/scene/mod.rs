@@ -162,12 +162,13 @@ fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Err
     } else if message.starts_with("invalid type: integer")
         || message.starts_with("invalid type: floating point")
     {
-        (message.ends_with("expected a string") || message.contains("a text with its unit such as")).then(|| {
-            format!(
-                "a dimensional value is text with its unit, in quotes, e.g. {leaf} = {}",
-                unit_example(leaf)
-            )
-        })
+        (message.ends_with("expected a string") || message.contains("a text with its unit such as"))
+            .then(|| {
+                format!(
+                    "a dimensional value is text with its unit, in quotes, e.g. {leaf} = {}",
+                    unit_example(leaf)
+                )
+            })
     } else if message.starts_with("invalid type: string") {
         let number = message
             .split('"')
@@ -216,7 +217,9 @@ fn in_user_words(message: &str, key: Option<&str>) -> String {
         "body 1's share of the heat: a fraction from 0 to 1, \"body1\" or \"blok\"".to_string()
     } else if expected.starts_with("struct Raw") {
         match key {
-            Some(key) => format!("a table: [{key}] on a line of its own, its keys on the lines below"),
+            Some(key) => {
+                format!("a table: [{key}] on a line of its own, its keys on the lines below")
+            }
             None => "a table".to_string(),
         }
     } else {

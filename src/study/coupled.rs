@@ -258,7 +258,11 @@ pub fn iterate(
 ) -> Result<CoupledContact, CoupledError> {
     let [ny, nx] = grid.shape;
     let blok = spec.partition == Partition::Blok;
-    let mut body1 = Body::new(grid, &spec.body1, spec.partition != Partition::Fraction(0.0))?;
+    let mut body1 = Body::new(
+        grid,
+        &spec.body1,
+        spec.partition != Partition::Fraction(0.0),
+    )?;
     let mut body2 = match &spec.body2 {
         Some(b) if spec.partition.needs_body2() => Some(Body::new(grid, b, true)?),
         _ => None,
@@ -267,10 +271,10 @@ pub fn iterate(
     let cells = |p: &Array2<f64>| p.iter().filter(|&&v| v > 0.0).count();
     let isothermal_cells = cells(&isothermal.pressure_pa);
     let state = |iteration: usize,
-                     pressure: &Array2<f64>,
-                     share: f64,
-                     body1: &mut Body,
-                     body2: Option<&mut Body>|
+                 pressure: &Array2<f64>,
+                 share: f64,
+                 body1: &mut Body,
+                 body2: Option<&mut Body>|
      -> Result<CoupledState, TransformError> {
         let flux = pressure.mapv(|p| frictional_flux(friction, p, spec.sliding_speed_m_per_s));
         let mut hottest = 0.0f64;

@@ -67,7 +67,12 @@ pub struct GearHeating {
 
 /// The line-contact scene of the teeth at `s`: flank radii, shared load, the mesh's friction,
 /// and `[thermal]` with the speeds there and the sliding speed `sliding`.
-pub(crate) fn scene_at(scene: &Scene, mesh: &GearMesh, s: f64, sliding: f64) -> Option<(Scene, PathPoint)> {
+pub(crate) fn scene_at(
+    scene: &Scene,
+    mesh: &GearMesh,
+    s: f64,
+    sliding: f64,
+) -> Option<(Scene, PathPoint)> {
     let dimensional = scene.contact.dimensional?;
     let pair = dimensional.gears?;
     let spec = scene.thermal?;

@@ -245,6 +245,9 @@ impl Validator<'_> {
                     ));
                 }
             }
+            if let Some(raw_gears) = &raw.gears {
+                self.gear_teeth(raw_gears, &pair)?;
+            }
         }
         let radius_error = |e: crate::contact::ContactError| {
             self.error("contact.body2.radius", e.to_string(), Some("a flat is radius = \"flat\"; a concave body has a negative radius larger in size than the convex one's"))
@@ -482,13 +485,11 @@ impl Validator<'_> {
                 ))
             }
         };
-        let pair = SpurGearPair {
+        Ok(SpurGearPair {
             module_m,
             teeth,
             pressure_angle_rad: angle,
-        };
-        self.gear_teeth(raw, &pair)?;
-        Ok(pair)
+        })
     }
 
     /// Teeth that can mesh (issue 42, class 7): standard teeth (addendum one module) neither

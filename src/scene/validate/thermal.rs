@@ -326,7 +326,10 @@ impl Validator<'_> {
             }
         };
         let (v2, key2) = match &table.body2_speed {
-            Some(text) => (body_speed("thermal.body2_speed", text)?, "thermal.body2_speed"),
+            Some(text) => (
+                body_speed("thermal.body2_speed", text)?,
+                "thermal.body2_speed",
+            ),
             None => (0.0, "thermal.body2_speed"),
         };
         let sliding = (v1 - v2).abs();

@@ -838,12 +838,8 @@ fn a_thermoelastic_runaway_is_an_error_not_a_converged_solution() {
             "conductivity = \"20 W/(m K)\"\nexpansion = \"{expansion}\"\n"
         ));
         match study(&text) {
-            Err(ThermalStudyError::Coupled(CoupledError::Runaway {
-                at,
-                last,
-                isothermal,
-                ..
-            })) => {
+            Err(ThermalStudyError::Coupled(CoupledError::Runaway(runaway))) => {
+                let (at, last, isothermal) = (runaway.at, runaway.last, runaway.isothermal);
                 assert!(
                     at.iteration > 0 && at.area_fraction < MIN_AREA_FRACTION,
                     "{at:?}"

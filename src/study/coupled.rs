@@ -90,6 +90,21 @@ impl std::fmt::Display for CoupledState {
     }
 }
 
+/// A coupled iteration that ran away (module doc): what happened, at which iterate, the last
+/// iterate that passed the checks, and the isothermal contact.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Runaway {
+    pub cause: String,
+    pub at: CoupledState,
+    pub last: CoupledState,
+    pub isothermal: CoupledState,
+}
+
+/// How the contact is solved again at each coupled iteration: `solve(distortion, pressure)`
+/// ([`iterate`]).
+pub type ContactSolve<'a> =
+    dyn FnMut(&Array2<f64>, &Array2<f64>) -> Result<RoughSolution, CoupledError> + 'a;
+
 /// The message of a runaway (module doc).
 fn runaway_message(
     cause: &str,
@@ -124,13 +139,8 @@ pub enum CoupledError {
     },
     #[error("thermal.coupled: the isothermal pressure already heats the surface by {:.0} K, more than the {MAX_FLASH_TEMPERATURE_RISE_K:.0} K no solid survives ({}): the coupled feedback, which concentrates the heat further, describes no state there\nhint: lower the heat (thermal.speed, contact.friction or the load), or take bodies that conduct more; coupled = false reports the linear heating as it stands", .isothermal.max_temperature_rise_k, .isothermal)]
     BeyondAnySolid { isothermal: CoupledState },
-    #[error("thermal.coupled: {}\nhint: lower the heat (thermal.speed, contact.friction or the load), or take bodies that conduct more or expand less; coupled = false gives the heating on the isothermal pressure (a bound that ignores the feedback)", runaway_message(.cause, .at, .last, .isothermal))]
-    Runaway {
-        cause: String,
-        at: CoupledState,
-        last: CoupledState,
-        isothermal: CoupledState,
-    },
+    #[error("thermal.coupled: {}\nhint: lower the heat (thermal.speed, contact.friction or the load), or take bodies that conduct more or expand less; coupled = false gives the heating on the isothermal pressure (a bound that ignores the feedback)", runaway_message(&.0.cause, &.0.at, &.0.last, &.0.isothermal))]
+    Runaway(Box<Runaway>),
     #[error(transparent)]
     Contact(#[from] RoughContactError),
     #[error(transparent)]
@@ -254,7 +264,7 @@ pub fn iterate(
     spec: &ThermalSpec,
     friction: f64,
     progress: &mut dyn FnMut(usize, f64),
-    solve: &mut dyn FnMut(&Array2<f64>, &Array2<f64>) -> Result<RoughSolution, CoupledError>,
+    solve: &mut ContactSolve,
 ) -> Result<CoupledContact, CoupledError> {
     let [ny, nx] = grid.shape;
     let blok = spec.partition == Partition::Blok;
@@ -381,12 +391,12 @@ pub fn iterate(
         pressure.assign(&heated.pressure_pa);
         let now = state(iteration, &pressure, share, &mut body1, body2.as_mut())?;
         if let Some(cause) = runaway(&now) {
-            return Err(CoupledError::Runaway {
+            return Err(CoupledError::Runaway(Box::new(Runaway {
                 cause,
                 at: now,
                 last,
                 isothermal: start,
-            });
+            })));
         }
         last = now;
         if change < TOLERANCE {

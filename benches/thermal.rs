@@ -14,7 +14,7 @@ use ndarray::Array2;
 use stressfield::contact::material::Material;
 use stressfield::contact::rough::{self, Control, RoughContactProblem, DEFAULT_TOLERANCE};
 use stressfield::operator::elastic::Periodicity;
-use stressfield::scene::{ThermalBody, ThermalSpec};
+use stressfield::scene::{ThermalBody, ThermalSpec, TractionDirection};
 use stressfield::study::coupled;
 use stressfield::surface::generate::{generate, Amplitude, Form, Generator, Spectrum};
 use stressfield::thermal::heating::Partition;
@@ -60,6 +60,8 @@ fn coupled_solve(c: &mut Criterion) {
     let steel = thermal_preset("steel").expect("steel");
     let spec = ThermalSpec {
         sliding_speed_m_per_s: 1.0,
+        traction: TractionDirection::PlusX,
+        speed_keys: ["thermal.speed", "thermal.body2_speed"],
         partition: Partition::Body1,
         coupled: true,
         body1: ThermalBody {

@@ -1391,6 +1391,7 @@ fn hertz_reports_maxima_of_a_contact_without_closed_form() {
     );
 }
 
+#[cfg(feature = "rerun")]
 #[test]
 fn record_writes_one_recording_per_scene_and_refuses_bad_outputs() {
     let (dir, scene) = scene_file(&format!(

@@ -474,3 +474,640 @@ fn a_panels_section_is_refused_naming_the_key_and_the_fix() {
     let output = run(&["check", path.to_str().expect("utf8")]);
     assert!(output.status.success(), "{}", stderr(&output));
 }
+
+// Issue 42: the heating surface ([thermal]) refuses what it cannot do.
+
+/// A steel ball (radius 6.35 mm) on a steel flat under 20 N, μ = 0.2, with `thermal` as the
+/// body of its `[thermal]` table.
+fn heated_point(thermal: &str) -> String {
+    format!(
+        "format = 1\n[contact]\nkind = \"point\"\nload = \"20 N\"\nfriction = 0.2\n[contact.body1]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n[thermal]\n{thermal}\n"
+    )
+}
+
+/// Issue 42, class 3: the sliding speed is |V1 - V2|. A `speed` that disagrees with the
+/// bodies' speeds is refused naming the keys (equal speeds: no sliding at all), the bodies'
+/// speeds alone give it, and when body 2's surface is the faster friction on body 1 acts in
+/// -x (the report says so; the contact stress of the study is mirrored).
+#[test]
+fn contradictory_speeds_are_refused_and_the_sliding_speed_is_their_difference() {
+    use stressfield::scene::TractionDirection;
+    let refused = [
+        (
+            "speed = \"3 m/s\"\nbody1_speed = \"1 m/s\"\nbody2_speed = \"1 m/s\"",
+            "thermal.speed",
+            "slide at |V1 - V2| = 0 m/s",
+        ),
+        (
+            "speed = \"1 m/s\"\nbody1_speed = \"0 m/s\"\nbody2_speed = \"1.5 m/s\"",
+            "thermal.speed",
+            "|V1 - V2| = 1.5 m/s",
+        ),
+        // body1_speed defaults to speed: 1 and 1 do not slide.
+        (
+            "speed = \"1 m/s\"\nbody2_speed = \"1 m/s\"",
+            "thermal.speed",
+            "thermal.speed, as body1_speed is not given",
+        ),
+        (
+            "body1_speed = \"0.7 m/s\"\nbody2_speed = \"0.7 m/s\"",
+            "thermal.body2_speed",
+            "the surfaces do not slide",
+        ),
+        (
+            "body2_speed = \"0.7 m/s\"",
+            "thermal.body1_speed",
+            "missing the speed of the contact over body 1",
+        ),
+    ];
+    for (thermal, key, fragment) in refused {
+        let error = stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml")
+            .expect_err(thermal);
+        assert_eq!(error.key.as_deref(), Some(key), "{thermal}: {error}");
+        assert!(error.to_string().contains(fragment), "{thermal}: {error}");
+    }
+    let spec = |thermal: &str| {
+        stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml")
+            .unwrap_or_else(|e| panic!("{thermal}: {e}"))
+            .thermal
+            .expect("[thermal]")
+    };
+    // Derived, and agreeing.
+    let slow_over_body1 = spec("body1_speed = \"0.25 m/s\"\nbody2_speed = \"1 m/s\"");
+    assert_eq!(slow_over_body1.sliding_speed_m_per_s, 0.75);
+    assert_eq!(slow_over_body1.traction, TractionDirection::MinusX);
+    let agreeing =
+        spec("speed = \"0.75 m/s\"\nbody1_speed = \"1 m/s\"\nbody2_speed = \"0.25 m/s\"");
+    assert_eq!(agreeing.sliding_speed_m_per_s, 0.75);
+    assert_eq!(agreeing.traction, TractionDirection::PlusX);
+    assert_eq!(spec("speed = \"2 m/s\"").traction, TractionDirection::PlusX);
+
+    // Body 2 sliding over a stationary body 1 (q in -x), and body 1 over a stationary body 2
+    // at the same speed (q in +x): the contact stress alone is mirrored (the same materials,
+    // so the same grid).
+    let study = |thermal: &str| {
+        let scene =
+            stressfield::study::parse_scene(&heated_point(thermal), "t", "t.toml").expect("valid");
+        stressfield::study::thermal::study(&scene, None, &mut |_| {}).expect("study")
+    };
+    let minus = study("body1_speed = \"0 m/s\"\nbody2_speed = \"0.5 m/s\"");
+    let plus = study("body1_speed = \"0.5 m/s\"\nbody2_speed = \"0 m/s\"");
+    assert_eq!(minus.shape, plus.shape);
+    let (xm, xp) = (minus.contact_von_mises.x_m, plus.contact_von_mises.x_m);
+    assert!(xp.abs() > 2.0 * plus.spacing_m[0], "off the axis: {xp}");
+    assert!(
+        (xm + xp).abs() <= 1.01 * plus.spacing_m[0],
+        "mirrored: {xm} against {xp}"
+    );
+    assert!(
+        (minus.contact_von_mises.value_pa / plus.contact_von_mises.value_pa - 1.0).abs() < 1e-2
+    );
+    let report = stressfield::report::thermal::ThermalReport::new(&minus);
+    assert_eq!(report.traction_on_body1, "-x");
+    assert!(report
+        .text(&minus)
+        .contains("friction on body 1 acts in -x"));
+}
+
+/// Spur gears `[contact.gears]` with these teeth and pressure angle, 40 kN/m, steel.
+fn gears(teeth: &str, angle: &str, thermal: &str) -> String {
+    format!(
+        "format = 1\n[contact]\nkind = \"line\"\nload = \"40 kN/m\"\n[contact.gears]\nmodule = \"5 mm\"\nteeth = [{teeth}]\npressure_angle = \"{angle}\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n{thermal}"
+    )
+}
+
+/// Issue 42, class 7: pointed teeth (a pressure angle near 90 deg gave a contact ratio of 365)
+/// and interfering teeth are refused by `[contact.gears]` itself, with or without
+/// `[thermal]`, naming the key and the limit for these teeth.
+#[test]
+fn pointed_or_interfering_teeth_are_refused_with_the_limit() {
+    let running = "[thermal]\npinion_speed = \"1500 rpm\"\nfriction = 0.05\n";
+    let cases = [
+        (
+            "20, 40",
+            "60 deg",
+            "",
+            "contact.gears.pressure_angle",
+            "must be below 36.0 deg",
+        ),
+        (
+            "30, 90",
+            "1.2 rad",
+            running,
+            "contact.gears.pressure_angle",
+            "are pointed",
+        ),
+        (
+            "12, 200",
+            "20 deg",
+            "",
+            "contact.gears.teeth",
+            "at least 17 teeth",
+        ),
+        (
+            "10, 60",
+            "20 deg",
+            running,
+            "contact.gears.teeth",
+            "the teeth interfere",
+        ),
+    ];
+    for (teeth, angle, thermal, key, fragment) in cases {
+        let error = stressfield::study::parse_scene(&gears(teeth, angle, thermal), "g", "g.toml")
+            .expect_err(angle);
+        assert_eq!(
+            error.key.as_deref(),
+            Some(key),
+            "{teeth} at {angle}: {error}"
+        );
+        assert!(
+            error.to_string().contains(fragment),
+            "{teeth} at {angle}: {error}"
+        );
+    }
+    for (teeth, angle) in [
+        ("20, 40", "20 deg"),
+        ("17, 80", "20 deg"),
+        ("20, 40", "30 deg"),
+    ] {
+        stressfield::study::parse_scene(&gears(teeth, angle, running), "g", "g.toml")
+            .unwrap_or_else(|e| panic!("{teeth} at {angle}: {e}"));
+    }
+}
+
+/// Issue 42, class 8: equivalent spellings of the heat partition mean the same. A line
+/// contact whose body 2 stays under the contact takes `partition = 1.0` (and `1`, `"1"`,
+/// `"Body1"`) as it takes `"body1"`: all heat into body 1, body 2's speed not needed; a
+/// fraction below 1 still needs body 2's speed.
+#[test]
+fn equivalent_partitions_are_accepted_alike() {
+    let line = |partition: &str| {
+        format!(
+            "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\nfriction = 0.1\n[contact.body1]\nradius = \"20 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"flat\"\nmaterial = \"steel\"\n[thermal]\nspeed = \"1 m/s\"\npartition = {partition}\n"
+        )
+    };
+    let mut specs = Vec::new();
+    for partition in ["\"body1\"", "1.0", "1", "\"1\"", "\" Body1 \""] {
+        let scene = stressfield::study::parse_scene(&line(partition), "l", "l.toml")
+            .unwrap_or_else(|e| panic!("partition = {partition}: {e}"));
+        specs.push(scene.thermal.expect("[thermal]"));
+    }
+    assert!(specs.iter().all(|s| *s == specs[0]), "{specs:?}");
+    assert_eq!(
+        specs[0].partition,
+        stressfield::thermal::heating::Partition::Body1
+    );
+    for partition in ["0.5", "\"BLOK\""] {
+        let error =
+            stressfield::study::parse_scene(&line(partition), "l", "l.toml").expect_err(partition);
+        assert_eq!(error.key.as_deref(), Some("thermal.body2_speed"), "{error}");
+    }
+}
+
+/// Issue 42, class 10: a value of the wrong kind is refused in the user's words: what the key
+/// takes, never a Rust type (`untagged enum NumberOrText`, `struct RawThermal`, `f64`).
+#[test]
+fn wrong_kinds_of_values_are_refused_in_the_users_words() {
+    let point = heated_point("speed = \"1 m/s\"");
+    let cases = [
+        (
+            point.replace("speed = \"1 m/s\"", "speed = \"1 m/s\"\npartition = false"),
+            "a fraction from 0 to 1, \"body1\" or \"blok\"",
+        ),
+        (
+            point.replace("speed = \"1 m/s\"", "speed = \"1 m/s\"\npartition = [0.5]"),
+            "a fraction from 0 to 1, \"body1\" or \"blok\"",
+        ),
+        (
+            point
+                .replace("[thermal]\nspeed = \"1 m/s\"\n", "")
+                .replace("format = 1\n", "format = 1\nthermal = \"fast\"\n"),
+            "expected a table: [thermal] on a line of its own",
+        ),
+        (
+            point.replace("friction = 0.2", "friction = \"lots\""),
+            "expected a number",
+        ),
+        (
+            point.replace(
+                "[thermal]\nspeed = \"1 m/s\"\n",
+                "[thermal]\nspeed = \"1 m/s\"\ncoupled = \"yes\"\n",
+            ),
+            "expected true or false",
+        ),
+        (
+            "format = 1\n[contact]\nkind = \"point\"\na = true\np0 = 1\n".to_string(),
+            "expected a number, or a text with its unit",
+        ),
+    ];
+    for (text, fragment) in cases {
+        let error = stressfield::study::parse_scene(&text, "t", "t.toml").expect_err(fragment);
+        let message = error.to_string();
+        assert!(message.contains(fragment), "{message}\n{text}");
+        for internal in ["untagged", "NumberOrText", "struct Raw", "f64", "variant"] {
+            assert!(!message.contains(internal), "{message}");
+        }
+    }
+}
+
+/// Issue 42, class 11: `[thermal]` on a contact without a load and bodies gets one hint that
+/// leads out (a load and two bodies with radius and material), the same for a normalised
+/// contact and one given by a and p0; following it gives a valid scene.
+#[test]
+fn the_heating_hint_leads_out_in_one_step() {
+    let thermal = "[thermal]\nspeed = \"1 m/s\"\n";
+    let scenes = [
+        format!("format = 1\n[contact]\nkind = \"point\"\nfriction = 0.2\n{thermal}"),
+        format!("format = 1\n[contact]\nkind = \"line\"\na = \"0.2 mm\"\np0 = \"1 GPa\"\nfriction = 0.2\n{thermal}"),
+        format!("format = 1\n[contact]\nkind = \"elliptical\"\naspect = 0.5\na = \"0.2 mm\"\np0 = \"1 GPa\"\nfriction = 0.2\n[contact.body1]\nmaterial = \"steel\"\n{thermal}"),
+    ];
+    for text in &scenes {
+        let error = stressfield::study::parse_scene(text, "t", "t.toml").expect_err(text);
+        assert_eq!(error.key.as_deref(), Some("thermal"), "{error}");
+        let hint = error.hint.clone().unwrap_or_default();
+        assert!(
+            error.message.contains("needs a load and two bodies")
+                && hint.contains("contact.load")
+                && hint.contains("[contact.body1] and [contact.body2]")
+                && hint.contains("radius and material"),
+            "{error}"
+        );
+    }
+    // The hint followed.
+    stressfield::study::parse_scene(&heated_point("speed = \"1 m/s\""), "t", "t.toml")
+        .expect("a load and two bodies");
+}
+
+/// Issue 42, class 9: keys that a command would ignore are refused, naming them: `[[panel]]`
+/// in a Péclet sweep, a repeated sweep value or `from = to` (several steps at one point of the
+/// recording), `[thermal]` with a friction, load or position sweep, and `record` of a heated
+/// scene without a Péclet sweep (one state, or a volume).
+#[test]
+fn keys_a_recording_would_ignore_are_refused() {
+    let speed_sweep = |sweep: &str| {
+        format!(
+            "{}[sweep]\nparameter = \"peclet\"\n{sweep}\n",
+            heated_point("speed = \"1 m/s\"\npartition = \"blok\"")
+        )
+    };
+    let cases = [
+        (
+            speed_sweep("from = 0.1\nto = 10.0\nsteps = 3\n[[panel]]\nfriction = 0.3"),
+            "panel[0]",
+            "would be ignored",
+        ),
+        (speed_sweep("values = [0.5, 2.0, 0.5]"), "sweep.values[2]", "repeats sweep.values[0]"),
+        (speed_sweep("from = 3.0\nto = 3.0\nsteps = 4"), "sweep.to", "from and to are both 3"),
+        (
+            format!(
+                "{}[sweep]\nparameter = \"load\"\nvalues = [\"10 N\", \"20 N\"]\n[figure]\nlength_unit = \"mm\"\nstress_unit = \"MPa\"\n",
+                heated_point("speed = \"1 m/s\"")
+            ),
+            "thermal",
+            "a load sweep records the contact's stress field without heating",
+        ),
+        (
+            "format = 1\n[contact]\nkind = \"line\"\n[sweep]\nparameter = \"friction\"\nvalues = [0.1, 0.2, 0.1]\n".to_string(),
+            "sweep.values[2]",
+            "repeats sweep.values[0]",
+        ),
+    ];
+    for (text, key, fragment) in &cases {
+        let error = stressfield::study::parse_scene(text, "t", "t.toml").expect_err(key);
+        assert_eq!(error.key.as_deref(), Some(*key), "{error}\n{text}");
+        assert!(error.to_string().contains(fragment), "{error}");
+    }
+    // A heated scene of one state, and one with a volume: record refuses, naming [thermal].
+    let dir = tempfile::tempdir().expect("dir");
+    let volume = format!(
+        "{}[volume]\npoints = 8\n",
+        heated_point("speed = \"1 m/s\"")
+    );
+    for (k, text) in [heated_point("speed = \"1 m/s\""), volume]
+        .iter()
+        .enumerate()
+    {
+        let path = dir.path().join(format!("heated{k}.toml"));
+        std::fs::write(&path, text).expect("scene");
+        let rrd = dir.path().join(format!("heated{k}.rrd"));
+        crate::cli::assert_fails_with(
+            &run(&[
+                "record",
+                path.to_str().expect("utf8"),
+                "-o",
+                rrd.to_str().expect("utf8"),
+            ]),
+            &[
+                "key `thermal`",
+                "would be left out",
+                "parameter = \"peclet\"",
+            ],
+        );
+        assert!(!rrd.exists());
+    }
+}
+
+/// The shipped ball on a coated disc (coupled, all heat into the stationary ball) with body 1's
+/// `extra` thermal keys.
+fn ball_on_disc(extra: &str) -> String {
+    std::fs::read_to_string(crate::cli::repo("scenes/thermal_ball_on_disc.toml"))
+        .expect("shipped scene")
+        .replace(
+            "material = \"steel\"\n",
+            &format!("material = \"steel\"\n{extra}"),
+        )
+}
+
+/// Issue 42, class 1: a coupled contact that runs away is an error naming `thermal.coupled`
+/// and what happened, with the last resolved state, never a converged solution: a ball whose
+/// expansion is 20 to 90 times steel's (the contact shrank below a tenth of its area, and to
+/// one cell, while reported as converged); one so poorly conducting that the isothermal
+/// pressure already heats it beyond any solid; the shipped scene still converges.
+#[test]
+fn a_thermoelastic_runaway_is_an_error_not_a_converged_solution() {
+    use stressfield::study::coupled::{
+        CoupledError, MAX_FLASH_TEMPERATURE_RISE_K, MIN_AREA_FRACTION,
+    };
+    use stressfield::study::thermal::ThermalStudyError;
+    let study = |text: &str| {
+        let scene = stressfield::study::parse_scene(text, "b", "b.toml").expect("valid scene");
+        stressfield::study::thermal::study(&scene, None, &mut |_| {})
+    };
+    for expansion in ["2.5e-4 /K", "1e-3 /K"] {
+        let text = ball_on_disc(&format!(
+            "conductivity = \"20 W/(m K)\"\nexpansion = \"{expansion}\"\n"
+        ));
+        match study(&text) {
+            Err(ThermalStudyError::Coupled(CoupledError::Runaway(runaway))) => {
+                let (at, last, isothermal) = (runaway.at, runaway.last, runaway.isothermal);
+                assert!(
+                    at.iteration > 0 && at.area_fraction < MIN_AREA_FRACTION,
+                    "{at:?}"
+                );
+                assert!(last.iteration < at.iteration && last.area_fraction >= MIN_AREA_FRACTION);
+                assert_eq!(isothermal.iteration, 0);
+            }
+            other => panic!("{expansion}: {other:?}"),
+        }
+    }
+    match study(&ball_on_disc("conductivity = \"1 W/(m K)\"\n")) {
+        Err(ThermalStudyError::Coupled(CoupledError::BeyondAnySolid { isothermal })) => {
+            assert!(isothermal.max_temperature_rise_k > MAX_FLASH_TEMPERATURE_RISE_K);
+        }
+        other => panic!("{other:?}"),
+    }
+    let shipped = study(&ball_on_disc("")).expect("the shipped scene converges");
+    let coupled = shipped.coupled.expect("coupled");
+    assert!(coupled.iterations < 20);
+    // On the command line: exit 1, the key, what happened and the last resolved state.
+    let dir = tempfile::tempdir().expect("dir");
+    let path = dir.path().join("runaway.toml");
+    std::fs::write(
+        &path,
+        ball_on_disc("conductivity = \"20 W/(m K)\"\nexpansion = \"5e-4 /K\"\n"),
+    )
+    .expect("scene");
+    crate::cli::assert_fails_with(
+        &run(&["thermal", path.to_str().expect("utf8")]),
+        &[
+            "thermal.coupled",
+            "runs away",
+            "thermoelastic instability",
+            "The last resolved state was iteration",
+            "hint: lower the heat",
+        ],
+    );
+}
+
+/// Issue 42, classes 5 and 6: `thermal`'s outputs are checked before anything is computed
+/// (a missing directory is said at once, even for a scene whose heating would fail), written
+/// all or none, through a device whatever its name, with extensions in any case; `render`
+/// leaves no figure when its heating sheet goes to a full device.
+#[cfg(unix)]
+#[test]
+fn heating_outputs_are_checked_first_and_written_all_or_none() {
+    let dir = tempfile::tempdir().expect("dir");
+    let path = |name: &str| dir.path().join(name).to_str().expect("utf8").to_string();
+    // A scene whose computation fails (a runaway): the bad path is reported instead.
+    std::fs::write(
+        path("runaway.toml"),
+        ball_on_disc("conductivity = \"20 W/(m K)\"\nexpansion = \"5e-4 /K\"\n"),
+    )
+    .expect("scene");
+    let output = run(&[
+        "thermal",
+        &path("runaway.toml"),
+        "--temperature",
+        &path("t.npy"),
+        "--figure",
+        &path("missing/f.svg"),
+    ]);
+    crate::cli::assert_fails_with(&output, &["missing/f.svg", "No such file or directory"]);
+    assert!(
+        !stderr(&output).contains("runs away"),
+        "{}",
+        stderr(&output)
+    );
+    assert!(!dir.path().join("t.npy").exists());
+    // Upper-case extensions and a device.
+    let sliding = crate::cli::repo("scenes/thermal_sliding_sphere.toml");
+    let sliding = sliding.to_str().expect("utf8");
+    let output = run(&[
+        "thermal",
+        sliding,
+        "--temperature",
+        "/dev/null",
+        "--figure",
+        &path("SHEET.SVG"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let svg = std::fs::read_to_string(dir.path().join("SHEET.SVG")).expect("svg written");
+    assert!(svg.starts_with("<svg") || svg.starts_with("<?xml"));
+    if std::path::Path::new("/dev/full").exists() {
+        // The sheet onto a full device: neither output is left.
+        std::os::unix::fs::symlink("/dev/full", dir.path().join("full.png")).expect("link");
+        let output = run(&[
+            "thermal",
+            sliding,
+            "--temperature",
+            &path("T.NPY"),
+            "--figure",
+            &path("full.png"),
+        ]);
+        crate::cli::assert_fails_with(&output, &["No space left"]);
+        assert!(!dir.path().join("T.NPY").exists());
+        // render: the heating sheet through a link to /dev/full leaves no figure.
+        let out = dir.path().join("out");
+        std::fs::create_dir(&out).expect("out");
+        std::os::unix::fs::symlink("/dev/full", out.join("thermal_sliding_sphere_heating.png"))
+            .expect("link");
+        let output = run(&["render", sliding, "--out-dir", out.to_str().expect("utf8")]);
+        crate::cli::assert_fails_with(&output, &["No space left"]);
+        assert!(!out.join("thermal_sliding_sphere.png").exists());
+    }
+}
+
+/// Issue 42, class 2: the heating's memory and time are estimated before anything is
+/// computed, by `check` too: a rough ball of 1024² samples with `[thermal]` (2048² climbed
+/// past 4 GB and aborted after 189 s) is refused at once naming the map's size, a sphere
+/// slid at Pe 190 (the grid refined to 640 x 480 cells) naming the speed; an accepted scene's
+/// `check` line states the estimate.
+#[test]
+fn the_heatings_cost_is_estimated_and_refused_at_check() {
+    let dir = tempfile::tempdir().expect("dir");
+    let rough = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\nfriction = 0.1\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 1024\nspacing = \"0.125 um\"\nhurst = 0.8\nrolloff = \"32 um\"\ncutoff = \"4 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\nseed = 3\n[thermal]\nspeed = \"2 m/s\"\n";
+    let path = dir.path().join("rough.toml");
+    std::fs::write(&path, rough).expect("scene");
+    let started = std::time::Instant::now();
+    crate::cli::assert_fails_with(
+        &run(&["check", path.to_str().expect("utf8")]),
+        &[
+            "key `surface.generate.samples`",
+            "the heating of a 1024 x 1024 map",
+            "min of CPU",
+            "GiB",
+            "half the samples a side",
+        ],
+    );
+    assert!(started.elapsed().as_secs() < 20, "refused before computing");
+    // A sphere at Pe 190: its grid is refined to 640 x 480 cells.
+    let fast = std::fs::read_to_string(crate::cli::repo("scenes/thermal_sliding_sphere.toml"))
+        .expect("shipped")
+        .replace("speed = \"2 m/s\"", "speed = \"11.8 m/s\"");
+    let path = dir.path().join("fast.toml");
+    std::fs::write(&path, fast).expect("scene");
+    for command in ["check", "thermal"] {
+        crate::cli::assert_fails_with(
+            &run(&[command, path.to_str().expect("utf8")]),
+            &[
+                "key `thermal.speed`",
+                "640 x 480 cells",
+                "262144 cells allowed",
+                "Péclet number of about 148",
+            ],
+        );
+    }
+    let output = run(&[
+        "check",
+        crate::cli::repo("scenes/thermal_sliding_sphere.toml")
+            .to_str()
+            .expect("utf8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let line = String::from_utf8_lossy(&output.stdout).to_string();
+    assert!(
+        line.contains("heating: 129 x 97 cells, about") && line.contains("of CPU"),
+        "{line}"
+    );
+}
+
+/// Issue 42, class 4: a speed the heating's grid cannot resolve is refused by `check`, under
+/// the key the scene wrote (gears have no thermal.speed): the pinion's speed, a body's speed;
+/// `hertz` and `render` refuse alike, with the file, and name the scene once.
+#[test]
+fn speeds_beyond_the_grid_are_refused_at_check_under_the_key_written() {
+    let dir = tempfile::tempdir().expect("dir");
+    let gears = std::fs::read_to_string(crate::cli::repo("scenes/gear_pitch_point.toml"))
+        .expect("shipped")
+        .replace(
+            "pinion_speed = \"1500 rpm\"",
+            "pinion_speed = \"150000 rpm\"",
+        );
+    let path = dir.path().join("gears.toml");
+    std::fs::write(&path, gears).expect("scene");
+    let out = dir.path().join("out");
+    let path = path.to_str().expect("utf8");
+    for args in [
+        vec!["check", path],
+        vec!["thermal", path],
+        vec!["hertz", path],
+        vec!["render", path, "--out-dir", out.to_str().expect("utf8")],
+    ] {
+        let output = run(&args);
+        crate::cli::assert_fails_with(
+            &output,
+            &[
+                "gears.toml",
+                "key `thermal.pinion_speed`",
+                "on the path of contact",
+                "Péclet number",
+            ],
+        );
+        let message = stderr(&output);
+        assert!(!message.contains("thermal.speed"), "{message}");
+        assert!(!message.contains("scene gears: scene gears"), "{message}");
+    }
+    // A line contact whose body 2 (a fast roller) sets the grid: named by body2_speed.
+    let line = "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\nfriction = 0.1\n[contact.body1]\nradius = \"20 mm\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"30 mm\"\nmaterial = \"steel\"\n[thermal]\nbody1_speed = \"1 m/s\"\nbody2_speed = \"400 m/s\"\npartition = \"blok\"\n";
+    let error = stressfield::study::parse_scene(line, "l", "l.toml").expect_err("too fast");
+    assert_eq!(error.key.as_deref(), Some("thermal.body2_speed"), "{error}");
+}
+
+/// Issue 42, the leftovers of round two: generated spacings too unequal for the default band
+/// are refused naming `surface.generate.spacing` (they named `cutoff`, a key not written);
+/// `--compare` given a file says it is not a directory; a directory given as an `.x3p` says
+/// it is a directory.
+#[test]
+fn round_two_leftovers_name_their_cause() {
+    let generated = |spacing: &str, extra: &str| {
+        format!(
+            "format = 1\n[contact]\nkind = \"surface\"\n[surface.generate]\nsamples = [64, 32]\nspacing = {spacing}\nhurst = 0.8\nrms_height = \"0.1 um\"\n{extra}"
+        )
+    };
+    let error =
+        stressfield::study::parse_scene(&generated("[\"0.5 um\", \"40 um\"]", ""), "s", "s.toml")
+            .expect_err("unequal");
+    assert_eq!(
+        error.key.as_deref(),
+        Some("surface.generate.spacing"),
+        "{error}"
+    );
+    assert!(
+        error.to_string().contains("the spacings differ too much"),
+        "{error}"
+    );
+    // Given a band, the same spacings are taken; equal ones need none.
+    stressfield::study::parse_scene(
+        &generated(
+            "[\"0.5 um\", \"40 um\"]",
+            "rolloff = \"100 um\"\ncutoff = \"80 um\"\n",
+        ),
+        "s",
+        "s.toml",
+    )
+    .expect("a band given");
+    stressfield::study::parse_scene(&generated("\"0.5 um\"", ""), "s", "s.toml")
+        .expect("equal spacings");
+
+    let dir = tempfile::tempdir().expect("dir");
+    let scene = dir.path().join("case.toml");
+    std::fs::write(&scene, SMALL_SCENE).expect("scene");
+    let file = dir.path().join("refs.txt");
+    std::fs::write(&file, "not a directory").expect("file");
+    let out = dir.path().join("out");
+    for update in [false, true] {
+        let mut args = vec![
+            "render",
+            scene.to_str().expect("utf8"),
+            "--out-dir",
+            out.to_str().expect("utf8"),
+            "--compare",
+            file.to_str().expect("utf8"),
+        ];
+        if update {
+            args.push("--update");
+        }
+        let output = run(&args);
+        crate::cli::assert_fails_with(&output, &["refs.txt", "is not a directory"]);
+        assert!(
+            !stderr(&output).contains("does not exist"),
+            "{}",
+            stderr(&output)
+        );
+    }
+    let x3p = dir.path().join("heights.x3p");
+    std::fs::create_dir(&x3p).expect("a directory named .x3p");
+    let output = run(&["surface", x3p.to_str().expect("utf8")]);
+    crate::cli::assert_fails_with(&output, &["heights.x3p", "it is a directory"]);
+    assert!(!stderr(&output).contains("zip"), "{}", stderr(&output));
+}

@@ -302,6 +302,280 @@ proptest! {
     }
 }
 
+/// The shipped scenes with a `[thermal]` table.
+fn heated_scenes() -> Vec<(PathBuf, String)> {
+    shipped_scenes()
+        .into_iter()
+        .filter(|(_, text)| {
+            toml::from_str::<toml::Table>(text)
+                .map(|t| t.contains_key("thermal"))
+                .unwrap_or(false)
+        })
+        .collect()
+}
+
+/// The heating's keys of a scene: every path under `[thermal]`, and the bodies' thermal keys
+/// (and their material, which supplies them).
+fn thermal_paths(root: &toml::Value) -> Vec<Vec<Step>> {
+    let mut all = Vec::new();
+    paths(root, &mut Vec::new(), &mut all);
+    let key = |step: &Step, name: &str| matches!(step, Step::Key(k) if k == name);
+    all.into_iter()
+        .filter(|path| match path.as_slice() {
+            [first, ..] if key(first, "thermal") => true,
+            [contact, body, leaf] => {
+                key(contact, "contact")
+                    && (key(body, "body1") || key(body, "body2"))
+                    && THERMAL_BODY_KEYS
+                        .iter()
+                        .chain(["material"].iter())
+                        .any(|name| key(leaf, name))
+            }
+            _ => false,
+        })
+        .collect()
+}
+
+/// The thermal keys of `[contact.bodyN]`.
+const THERMAL_BODY_KEYS: [&str; 5] = [
+    "conductivity",
+    "diffusivity",
+    "density",
+    "specific_heat",
+    "expansion",
+];
+
+/// Keys of `[thermal]` a mutant may add.
+const THERMAL_KEYS: [&str; 7] = [
+    "speed",
+    "body1_speed",
+    "body2_speed",
+    "partition",
+    "coupled",
+    "pinion_speed",
+    "friction",
+];
+
+/// Values a mutant may give an added key: speeds (zero, tiny, huge), fractions, words, a
+/// boolean, thermal properties at and beyond their bounds.
+fn insertable(k: usize) -> toml::Value {
+    use toml::Value::{Boolean, Float, Integer, String as Text};
+    let values = [
+        Text("2 m/s".into()),
+        Text("0 m/s".into()),
+        Text("1e-12 m/s".into()),
+        Text("9000 m/s".into()),
+        Text("100000 rpm".into()),
+        Float(0.5),
+        Float(1.0),
+        Integer(0),
+        Text("blok".into()),
+        Text("body1".into()),
+        Boolean(true),
+        Text("1 W/(m K)".into()),
+        Text("1e-3 W/(m K)".into()),
+        Text("1e-3 /K".into()),
+        Text("1e-9 m^2/s".into()),
+        Text("7850 kg/m^3".into()),
+        Float(f64::NAN),
+        Float(-0.5),
+    ];
+    values[k % values.len()].clone()
+}
+
+#[derive(Clone, Debug)]
+enum ThermalMutation {
+    /// One of the generic mutations, at a heating key.
+    Generic(Mutation),
+    /// Add key `key` with value `value` to `[thermal]` (`table` 0), `[contact.body1]` (1) or
+    /// `[contact.body2]` (2).
+    Insert {
+        table: usize,
+        key: usize,
+        value: usize,
+    },
+}
+
+fn thermal_mutation() -> impl Strategy<Value = ThermalMutation> {
+    prop_oneof![
+        mutation().prop_map(ThermalMutation::Generic),
+        (0..3usize, any::<usize>(), any::<usize>())
+            .prop_map(|(table, key, value)| ThermalMutation::Insert { table, key, value }),
+    ]
+}
+
+/// `text` with one heating key mutated (the generic mutations pick among
+/// [`thermal_paths`] only; a truncation keeps the text up to a point inside `[thermal]`).
+fn mutate_thermal(text: &str, mutation: &ThermalMutation) -> String {
+    let table: toml::Table = toml::from_str(text).expect("shipped scenes parse");
+    let mut root = toml::Value::Table(table);
+    match mutation {
+        ThermalMutation::Generic(Mutation::Truncate(fraction)) => {
+            // Cut inside the [thermal] table.
+            let start = text.find("[thermal]").unwrap_or(0);
+            let rest = &text[start..];
+            let mut end = start + (rest.len() as f64 * fraction) as usize;
+            while !text.is_char_boundary(end) {
+                end -= 1;
+            }
+            return text[..end].to_string();
+        }
+        ThermalMutation::Generic(generic) => {
+            let all = thermal_paths(&root);
+            let pick = |index: usize| all[index % all.len()].clone();
+            let remapped = |p: usize| {
+                // The index of the picked heating path among all paths.
+                let mut every = Vec::new();
+                paths(&root, &mut Vec::new(), &mut every);
+                let wanted = format!("{:?}", pick(p));
+                every
+                    .iter()
+                    .position(|q| format!("{q:?}") == wanted)
+                    .unwrap_or(0)
+            };
+            let generic = match *generic {
+                Mutation::Drop(p) => Mutation::Drop(remapped(p)),
+                Mutation::Retype(p, k) => Mutation::Retype(remapped(p), k),
+                Mutation::Extreme(p, k) => Mutation::Extreme(remapped(p), k),
+                Mutation::Truncate(f) => Mutation::Truncate(f),
+            };
+            return mutate(text, &generic);
+        }
+        ThermalMutation::Insert { table, key, value } => {
+            let value = insertable(*value);
+            let Some(root) = root.as_table_mut() else {
+                unreachable!("a document is a table")
+            };
+            let target = match table {
+                0 => root.get_mut("thermal"),
+                n => root
+                    .get_mut("contact")
+                    .and_then(|c| c.get_mut(if *n == 1 { "body1" } else { "body2" })),
+            };
+            if let Some(toml::Value::Table(target)) = target {
+                let name = if *table == 0 {
+                    THERMAL_KEYS[key % THERMAL_KEYS.len()]
+                } else {
+                    THERMAL_BODY_KEYS[key % THERMAL_BODY_KEYS.len()]
+                };
+                target.insert(name.to_string(), value);
+            }
+        }
+    }
+    toml::to_string(&root).expect("serialises")
+}
+
+/// An accepted heated mutant: the generic checks, then its heating: every speed and property
+/// finite (the sliding speed positive but for gears), the plan's cost finite, and for a small
+/// Hertz grid the flash temperatures themselves finite (or a refusal naming a key).
+fn check_heated(scene: &Scene) -> Result<(), String> {
+    check_accepted(scene)?;
+    let Some(spec) = &scene.thermal else {
+        return Ok(());
+    };
+    let finite_positive = |name: &str, v: f64| {
+        if v.is_finite() && v > 0.0 {
+            Ok(())
+        } else {
+            Err(format!("{name} = {v}"))
+        }
+    };
+    if spec.gear.is_none() {
+        finite_positive("the sliding speed", spec.sliding_speed_m_per_s)?;
+    }
+    for body in std::iter::once(&spec.body1).chain(spec.body2.iter()) {
+        if !(body.speed_m_per_s.is_finite() && body.speed_m_per_s >= 0.0) {
+            return Err(format!("a body's speed = {}", body.speed_m_per_s));
+        }
+        let p = &body.properties;
+        finite_positive("a conductivity", p.conductivity_w_per_m_k)?;
+        finite_positive("a diffusivity", p.diffusivity_m2_per_s)?;
+        if !(p.expansion_per_k.is_finite() && p.expansion_per_k >= 0.0) {
+            return Err(format!("an expansion = {}", p.expansion_per_k));
+        }
+    }
+    let plan = stressfield::study::heating_plan::plan(scene)
+        .map_err(|r| format!("admitted, then refused: {}", r.message))?;
+    if let Some(plan) = plan {
+        if !(plan.cpu_seconds.is_finite() && plan.bytes > 0) {
+            return Err(format!("the plan: {plan:?}"));
+        }
+        let small = plan.shape[0] * plan.shape[1] <= 20_000;
+        let hertz = !matches!(
+            scene.contact.kind,
+            ContactKind::Rough | ContactKind::Surface
+        );
+        if small && hertz && spec.gear.is_none() {
+            match study::thermal::hertz_flash(scene, spec) {
+                Ok((_, body1, body2)) => {
+                    for heating in std::iter::once(&body1).chain(body2.iter()) {
+                        let t = heating.max_temperature_rise_k;
+                        if !(t.is_finite() && t >= 0.0)
+                            || heating.temperature_k.iter().any(|v| !v.is_finite())
+                        {
+                            return Err(format!("a flash temperature: {t}"));
+                        }
+                    }
+                }
+                Err(e) if e.to_string().contains("thermal.") => {}
+                Err(e) => return Err(format!("the heating failed without a key: {e}")),
+            }
+        }
+    }
+    Ok(())
+}
+
+/// 48 mutants of the heating's keys by default (or `PROPTEST_CASES`), from the same fixed seed.
+fn thermal_config() -> ProptestConfig {
+    let mut config = config();
+    if std::env::var_os("PROPTEST_CASES").is_none() {
+        config.cases = 48;
+    }
+    config
+}
+
+proptest! {
+    #![proptest_config(thermal_config())]
+
+    /// The heated scenes with a `[thermal]` key or a body's thermal key dropped, retyped, set
+    /// to an extreme number, added with a hostile value, or the table cut short (issue 42):
+    /// refused naming a key or a line, or accepted with a finite, admitted heating.
+    #[test]
+    fn mutated_heating_keys_are_refused_clearly_or_heat_finitely(
+        index in any::<usize>(),
+        mutation in thermal_mutation(),
+    ) {
+        let scenes = heated_scenes();
+        prop_assert!(scenes.len() >= 4, "the shipped heated scenes");
+        let (path, text) = &scenes[index % scenes.len()];
+        let mutant = mutate_thermal(text, &mutation);
+        let file = path.display().to_string();
+        match stressfield::study::parse_scene(&mutant, "mutant", &file) {
+            Err(error) => {
+                let message = error.to_string();
+                prop_assert!(
+                    error.key.is_some() || error.line_column.is_some(),
+                    "{mutation:?} of {file}: the message names no key or line: {message}\n{mutant}"
+                );
+                for internal in ["untagged", "NumberOrText", "struct Raw"] {
+                    prop_assert!(
+                        !message.contains(internal),
+                        "{mutation:?} of {file}: {message}"
+                    );
+                }
+            }
+            Ok(scene) => {
+                let checked = check_heated(&scene);
+                prop_assert!(
+                    checked.is_ok(),
+                    "{mutation:?} of {file}: {}\n{mutant}",
+                    checked.err().unwrap_or_default()
+                );
+            }
+        }
+    }
+}
+
 /// A depth range that starts a hair below the surface (z = 5e-324 a, whose square underflows)
 /// gives finite stresses in every panel of every shipped scene that has one: CI's mutants
 /// found NaN there once, at a strip edge of the numerical line contact.

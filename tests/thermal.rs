@@ -171,7 +171,7 @@ fn bad_thermal_input_names_the_key_and_the_fix() {
         (
             "format = 1\n[contact]\nkind = \"point\"\nfriction = 0.2\n[thermal]\nspeed = \"2 m/s\"\n".to_string(),
             "thermal",
-            "dimensional",
+            "needs a load and two bodies",
         ),
     ];
     let dir = tempfile::tempdir().expect("temporary directory");

@@ -74,6 +74,14 @@ impl CompareOptions {
                 stressfield::io::text::number(field_tolerance)
             );
         }
+        // A file given for the directory (issue 42, a leftover of round two: it was said
+        // not to exist).
+        if reference_dir.exists() && !reference_dir.is_dir() {
+            bail!(
+                "--compare {}: is not a directory (it is a file)\nhint: give the directory of the reference images (made with --update), e.g. --compare refs/",
+                reference_dir.display()
+            );
+        }
         if args.update {
             std::fs::create_dir_all(&reference_dir).with_context(|| {
                 format!(

@@ -85,7 +85,8 @@ pub fn run(command: Command) -> Result<()> {
                         &stressfield::study::assess::scene_maxima(&scene),
                     );
                     if scene.thermal.is_some() {
-                        let (report, study) = thermal::hertz_heating(&scene)?;
+                        let (report, study) = thermal::hertz_heating(&scene)
+                            .with_context(|| format!("scene {}", scene.name))?;
                         text.push_str(&report.text(&study));
                     }
                     print_out(&text)

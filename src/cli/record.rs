@@ -17,12 +17,21 @@ pub(super) fn record_reporting(
     bar: &ProgressBar,
     failures: &mut Vec<String>,
 ) {
-    match record_scene(scene, path, bar) {
+    match recordable(scene).and_then(|()| record_scene(scene, path, bar)) {
         Ok(line) => say(bar, line),
         Err(e) => {
             say(bar, format!("error: scene {}: {e:#}", scene.name));
             failures.push(scene.name.clone());
         }
+    }
+}
+
+/// Refuses a scene whose recording would leave out part of it
+/// ([`stressfield::study::admit::unrecorded_heating`]).
+pub(super) fn recordable(scene: &Scene) -> Result<()> {
+    match stressfield::study::admit::unrecorded_heating(scene) {
+        Some(message) => anyhow::bail!("{message}"),
+        None => Ok(()),
     }
 }
 
@@ -51,13 +60,13 @@ pub(super) fn record_all(paths: &[PathBuf], target: &Target) -> Result<()> {
     let bar = progress_bar(scenes.iter().map(recording_rows).sum::<usize>() as u64);
     for scene in &scenes {
         bar.set_message(scene.name.clone());
-        let result = match target {
+        let result = recordable(scene).and_then(|()| match target {
             Target::OutDir(dir) => {
                 record_scene(scene, &dir.join(format!("{}.rrd", scene.name)), &bar)
             }
             Target::File(path) => record_scene(scene, path, &bar),
             other => stream_scene(scene, other, &bar),
-        };
+        });
         match result {
             Ok(line) => say(&bar, line),
             Err(e) => {
@@ -207,20 +216,19 @@ fn stream_scene(scene: &Scene, target: &Target, bar: &ProgressBar) -> Result<Str
 
 #[cfg(not(feature = "rerun"))]
 pub(super) fn record_scene_as(
-    scene: &Scene,
+    _scene: &Scene,
     _file: &Path,
     _shown: &Path,
     _bar: &ProgressBar,
     _rough: Option<&RoughSolution>,
 ) -> Result<String> {
     anyhow::bail!(
-        "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",
-        scene.name
+        "this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release"
     )
 }
 
 #[cfg(not(feature = "rerun"))]
-fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<String> {
+fn stream_scene(_scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<String> {
     let place = match target {
         Target::Connect(url) => format!("the viewer at {url}"),
         Target::Spawn => "a new viewer".to_string(),
@@ -229,7 +237,6 @@ fn stream_scene(scene: &Scene, target: &Target, _bar: &ProgressBar) -> Result<St
         Target::File(path) => path.display().to_string(),
     };
     anyhow::bail!(
-        "scene {}: this build has no Rerun support (built with --no-default-features), so it cannot record to {place}\nhint: rebuild with the default features: cargo build --release",
-        scene.name
+        "this build has no Rerun support (built with --no-default-features), so it cannot record to {place}\nhint: rebuild with the default features: cargo build --release"
     )
 }

@@ -165,9 +165,13 @@ fn render_scene(
     bar: &ProgressBar,
 ) -> Result<SceneOutput> {
     let mut staged = Staged::new();
-    // The recording's place first: a bad --rrd path fails before any work.
+    // The recording's place first: a bad --rrd path (or a recording that would leave out
+    // the scene's heating) fails before any work.
     let recording = match options.rrd {
-        Some(path) => Some((staged.reserve(path)?, path)),
+        Some(path) => {
+            super::record::recordable(scene)?;
+            Some((staged.reserve(path)?, path))
+        }
         None => None,
     };
     let on_row = || bar.inc(1);
@@ -178,10 +182,8 @@ fn render_scene(
     };
     // A rough scene's contact is solved once, for the sheet and the recording.
     let rough = match (scene.contact.kind, &wear) {
-        (ContactKind::Rough, None) => Some(
-            study::rough::solve(scene, &mut |_, _| {})
-                .with_context(|| format!("scene {}", scene.name))?,
-        ),
+        // The caller names the scene (once).
+        (ContactKind::Rough, None) => Some(study::rough::solve(scene, &mut |_, _| {})?),
         _ => None,
     };
     let drawing = match &wear {

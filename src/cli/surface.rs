@@ -6,7 +6,8 @@ use anyhow::{anyhow, bail, Context, Result};
 
 use super::args::SurfaceArgs;
 use super::console::{print_out, solver_bar, spinner};
-use super::npy::{npy_path, write_npy};
+use super::npy::{npy_bytes, npy_path, write_npy, Reserved};
+use stressfield::io::output::Staged;
 use stressfield::io::units::{self, Dimension};
 use stressfield::report::rough::ContactReport;
 use stressfield::report::surface::SurfaceReport;
@@ -29,6 +30,11 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     if let Some(path) = pressure {
         npy_path("--pressure", path)?;
     }
+    // Reserved before the solve: a missing directory is said at once (issue 42, class 6).
+    let mut staged = Staged::new();
+    let pressure_file = pressure
+        .map(|path| Reserved::new(&mut staged, path))
+        .transpose()?;
     let bar = solver_bar();
     let started = std::time::Instant::now();
     let solution = study::rough::solve(&scene, &mut |iteration, residual| {
@@ -57,12 +63,16 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     let report = ContactReport::new(&scene, &solution, &findings?);
     // Frictional heating on the solved pressure, when the scene asks for it.
     let thermal = match scene.thermal {
-        Some(_) => Some(super::thermal::study(&scene, Some(&solution))?),
+        Some(_) => Some(
+            super::thermal::study(&scene, Some(&solution))
+                .with_context(|| format!("scene {}", scene.name))?,
+        ),
         None => None,
     };
-    if let Some(path) = pressure {
-        write_npy(path, &solution.pressure_pa, "pressure")?;
+    if let Some(file) = &pressure_file {
+        file.fill(&npy_bytes(&solution.pressure_pa, "pressure")?)?;
     }
+    staged.commit()?;
     if json {
         let mut text = report.json();
         if let Some(study) = &thermal {

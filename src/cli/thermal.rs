@@ -6,8 +6,9 @@ use std::path::Path;
 use anyhow::{bail, Context, Result};
 
 use super::console::{print_out, progress_bar};
-use super::npy::{npy_path, write_npy};
+use super::npy::{has_extension, is_device, npy_bytes, npy_path, Reserved};
 use stressfield::contact::rough::RoughSolution;
+use stressfield::io::output::Staged;
 use stressfield::report::thermal::ThermalReport;
 use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;
@@ -29,7 +30,8 @@ pub(crate) fn study(scene: &Scene, rough: Option<&RoughSolution>) -> Result<Ther
         study::thermal::Progress::Path { .. } => {}
     });
     bar.finish_and_clear();
-    result.with_context(|| format!("scene {}: frictional heating", scene.name))
+    // The caller names the scene (`render` prefixes each scene's error with it).
+    result.context("frictional heating")
 }
 
 /// The heating of running spur gears along the path of contact, with a progress bar.
@@ -46,7 +48,7 @@ fn gear_heating(scene: &Scene) -> Result<GearHeating> {
         study::thermal::Progress::Coupled { .. } => {}
     });
     bar.finish_and_clear();
-    result.with_context(|| format!("scene {}: frictional heating of the gears", scene.name))
+    result.context("frictional heating of the gears")
 }
 
 /// The heating of a Hertz scene with `[thermal]` (gears along their path) as reported by
@@ -90,7 +92,7 @@ fn heating_sheet(
         bar.set_position(done as u64)
     });
     bar.finish_and_clear();
-    let sections = sections.with_context(|| format!("scene {}: heating sections", scene.name))?;
+    let sections = sections.context("heating sections")?;
     Ok(stressfield::figure::thermal::thermal_sheet(
         &scene.name,
         study,
@@ -109,7 +111,12 @@ pub(crate) fn heating_png(scene: &Scene) -> Result<Vec<u8>> {
     )?)
 }
 
-/// `thermal SCENE [--json] [--temperature FILE.npy]`.
+/// `thermal SCENE [--json] [--temperature FILE.npy] [--figure FILE.png|svg]`.
+///
+/// The outputs follow one policy (issue 42, classes 5 and 6): their paths are checked and
+/// reserved before anything is computed (an extension in any case; a device or FIFO written
+/// through whatever its name; a missing directory refused at once), and they are written all
+/// or none once everything is computed.
 pub fn thermal(
     scene_path: &Path,
     json: bool,
@@ -126,47 +133,33 @@ pub fn thermal(
     if let Some(path) = temperature {
         npy_path("--temperature", path)?;
     }
-    let svg = match figure.and_then(|p| p.extension()).and_then(|e| e.to_str()) {
-        None if figure.is_none() => false,
-        Some("png") => false,
-        Some("svg") => true,
-        _ => bail!(
+    // The sheet's format from the extension (any case); a device without one takes a PNG.
+    let svg = match figure {
+        None => false,
+        Some(path) if has_extension(path, "svg") => true,
+        Some(path) if has_extension(path, "png") || is_device(path) => false,
+        Some(path) => bail!(
             "--figure {}: the figure is written as .png or .svg\nhint: give a file name ending in .png or .svg",
-            figure.map(|p| p.display().to_string()).unwrap_or_default()
+            path.display()
         ),
     };
-    let rough = if scene.contact.kind == ContactKind::Rough {
-        Some(
-            study::rough::solve(&scene, &mut |_, _| {})
-                .with_context(|| format!("scene {}", scene.name))?,
-        )
-    } else {
-        None
-    };
-    let (report, study, gear) = match &rough {
-        Some(solution) => {
-            let study = study(&scene, Some(solution))?;
-            (ThermalReport::new(&study), study, None)
-        }
-        None => heating(&scene)?,
-    };
-    let drawing = match figure {
-        Some(_) => {
-            let sheet = heating_sheet(&scene, &study, gear.as_ref())?;
-            Some(if svg {
-                stressfield::render::chart::sheet_svg(&sheet)?.into_bytes()
-            } else {
-                stressfield::render::encode_png(&stressfield::render::chart::sheet_png(&sheet)?)?
-            })
-        }
-        None => None,
-    };
-    if let Some(path) = temperature {
-        write_npy(path, &study.body1.temperature_k, "temperature")?;
+    let mut staged = Staged::new();
+    let temperature_file = temperature
+        .map(|path| Reserved::new(&mut staged, path))
+        .transpose()?;
+    let figure_file = figure
+        .map(|path| Reserved::new(&mut staged, path))
+        .transpose()?;
+    let computed = heating_outputs(&scene, figure.is_some(), svg)
+        .with_context(|| format!("scene {}", scene.name))?;
+    let (report, study, drawing) = computed;
+    if let Some(file) = &temperature_file {
+        file.fill(&npy_bytes(&study.body1.temperature_k, "temperature")?)?;
     }
-    if let (Some(path), Some(bytes)) = (figure, &drawing) {
-        stressfield::io::output::write_atomic(path, bytes)?;
+    if let (Some(file), Some(bytes)) = (&figure_file, &drawing) {
+        file.fill(bytes)?;
     }
+    staged.commit()?;
     if json {
         print_out(&format!("{}\n", report.json()))
     } else {
@@ -183,4 +176,35 @@ pub fn thermal(
         }
         print_out(&text)
     }
+}
+
+/// What `thermal` computes: the report, the study, and the heating sheet when asked for.
+fn heating_outputs(
+    scene: &Scene,
+    sheet: bool,
+    svg: bool,
+) -> Result<(ThermalReport, ThermalStudy, Option<Vec<u8>>)> {
+    let rough = if scene.contact.kind == ContactKind::Rough {
+        Some(study::rough::solve(scene, &mut |_, _| {})?)
+    } else {
+        None
+    };
+    let (report, study, gear) = match &rough {
+        Some(solution) => {
+            let study = study(scene, Some(solution))?;
+            (ThermalReport::new(&study), study, None)
+        }
+        None => heating(scene)?,
+    };
+    let drawing = if sheet {
+        let sheet = heating_sheet(scene, &study, gear.as_ref())?;
+        Some(if svg {
+            stressfield::render::chart::sheet_svg(&sheet)?.into_bytes()
+        } else {
+            stressfield::render::encode_png(&stressfield::render::chart::sheet_png(&sheet)?)?
+        })
+    } else {
+        None
+    };
+    Ok((report, study, drawing))
 }

@@ -32,7 +32,7 @@ pub(crate) fn study(scene: &stressfield::scene::Scene) -> Result<WearStudy> {
         }
     });
     bar.finish_and_clear();
-    result.with_context(|| format!("scene {}", scene.name))
+    Ok(result?)
 }
 
 /// The `.npy` file of step `index` under `dir`, and the `[[series]]` fragment that reads them
@@ -64,7 +64,7 @@ pub fn wear(scene_path: &Path, json: bool, heights_out: Option<&Path>) -> Result
             ),
         }
     }
-    let study = study(&scene)?;
+    let study = study(&scene).with_context(|| format!("scene {}", scene.name))?;
     let report = WearReport::new(&study);
     if let Some(dir) = heights_out {
         let mut staged = Staged::new();

@@ -77,7 +77,44 @@ impl SpurGearPair {
     /// Whether the path of contact starts beyond the pinion's base-circle tangency point (its
     /// flank radius would be negative there: interference, the tooth undercut).
     pub fn interferes(&self) -> bool {
-        self.path_of_contact_m()[0] <= -self.curvature_radius_at_pitch_point_m(0)
+        self.undercut().is_some()
+    }
+
+    /// The member (0 the pinion, 1 the gear) whose flank the other's tip reaches below its
+    /// base circle, if any: the path of contact runs beyond that member's base-circle
+    /// tangency point on the line of action (its flank radius `ρ` would be negative there),
+    /// so the teeth interfere and a generated tooth is undercut. The pinion (the member with
+    /// fewer teeth) meets it first.
+    pub fn undercut(&self) -> Option<usize> {
+        let [start, end] = self.path_of_contact_m();
+        if start <= -self.curvature_radius_at_pitch_point_m(0) {
+            Some(0)
+        } else if end >= self.curvature_radius_at_pitch_point_m(1) {
+            Some(1)
+        } else {
+            None
+        }
+    }
+
+    /// The tooth thickness on the tip circle of member `i` (m), for standard teeth (tooth
+    /// thickness `π m / 2` on the pitch circle, addendum one module, no profile shift):
+    /// `s_a = 2 r_a (π / (2 N) + inv φ - inv φ_a)`, `inv x = tan x - x`, with
+    /// `cos φ_a = r_b / r_a`. Zero or negative: the flanks meet below the tip circle, the
+    /// tooth is pointed (no tip land).
+    ///
+    /// ## Reference
+    /// The thickness of an involute tooth at radius `r` is `2 r (s / (2 R) + inv φ - inv φ_r)`
+    /// for the thickness `s` at the pitch radius `R` (e.g. Shigley's *Mechanical Engineering
+    /// Design*, and ISO 21771, the tooth thickness of involute gears); the test checks it
+    /// against the flanks traced as involutes.
+    pub fn tip_thickness_m(&self, i: usize) -> f64 {
+        let involute = |x: f64| x.tan() - x;
+        let tip = self.tip_radius_m(i);
+        let tip_angle = (self.base_radius_m(i) / tip).acos();
+        let n = f64::from(self.teeth[i]);
+        2.0 * tip
+            * (std::f64::consts::PI / (2.0 * n) + involute(self.pressure_angle_rad)
+                - involute(tip_angle))
     }
 
     /// The flank radii of curvature `[ρ1, ρ2]` at `s`: `ρ1 = r1 sin φ + s`,
@@ -217,6 +254,46 @@ mod tests {
             pressure_angle_rad: 20f64.to_radians(),
         };
         assert!(small.interferes());
+    }
+
+    /// The tip thickness against the flanks traced as involutes: the polar angle of the
+    /// involute point at roll angle `t`, `(r_b (cos t + t sin t), r_b (sin t - t cos t))`, at
+    /// the pitch and the tip radius; and pointed teeth at a pressure angle near 90 deg.
+    #[test]
+    fn tip_thickness_follows_the_traced_involute() {
+        for pair in [
+            seed_pair(),
+            SpurGearPair {
+                module_m: 2e-3,
+                teeth: [9, 31],
+                pressure_angle_rad: 32f64.to_radians(),
+            },
+        ] {
+            for i in 0..2 {
+                let rb = pair.base_radius_m(i);
+                let polar = |r: f64| {
+                    let t = ((r / rb).powi(2) - 1.0).sqrt();
+                    let (x, y) = (rb * (t.cos() + t * t.sin()), rb * (t.sin() - t * t.cos()));
+                    y.atan2(x)
+                };
+                let n = f64::from(pair.teeth[i]);
+                let tip = pair.tip_radius_m(i);
+                let traced = 2.0
+                    * tip
+                    * (std::f64::consts::PI / (2.0 * n) + polar(pair.pitch_radius_m(i))
+                        - polar(tip));
+                assert_relative_eq!(pair.tip_thickness_m(i), traced, max_relative = 1e-9);
+            }
+        }
+        // Standard 20 deg teeth keep a land of about 0.6 to 0.7 module.
+        let seed = seed_pair();
+        assert!(seed.tip_thickness_m(0) > 0.6 * seed.module_m);
+        let steep = SpurGearPair {
+            pressure_angle_rad: 89.9f64.to_radians(),
+            ..seed
+        };
+        assert!(steep.tip_thickness_m(0) < 0.0);
+        assert!(steep.tip_thickness_m(1) < 0.0);
     }
 
     #[test]

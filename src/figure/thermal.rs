@@ -218,6 +218,13 @@ pub fn thermal_sheet(
             Vec::new(),
         )
     };
+    // Friction on body 1 acts the way body 2 slides over it.
+    let traction = match study.spec.traction {
+        crate::scene::TractionDirection::PlusX => format!("{at_row}; p and q = μ p in +x"),
+        crate::scene::TractionDirection::MinusX => {
+            format!("{at_row}; p and q = μ p in −x (body 2 the faster)")
+        }
+    };
     let e_alpha = format!(
         "{at_row}; E α = {:.3} MPa/K",
         study.spec.body1.material.modulus_pa * study.spec.body1.properties.expansion_per_k * 1e-6
@@ -240,13 +247,13 @@ pub fn thermal_sheet(
         [
             section(
                 "Contact stress alone: von Mises",
-                format!("{at_row}; p and q = μ p in +x"),
+                traction.clone(),
                 &sections.contact_von_mises_pa,
                 "σvM (MPa)",
             ),
             section(
                 "Contact stress alone: Tresca σ1 − σ3",
-                format!("{at_row}; p and q = μ p in +x"),
+                traction.clone(),
                 &sections.contact_tresca_pa,
                 "σ1 − σ3 (MPa)",
             ),

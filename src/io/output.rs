@@ -222,8 +222,8 @@ fn temp_beside(path: &Path, suffix: &str) -> std::io::Result<tempfile::NamedTemp
 /// removes its temporary files and leaves the targets as they were.
 ///
 /// Targets are decided by [`target`] when they are added: a link's target is replaced, and a
-/// device or FIFO is written through after every file has been moved into place (it cannot be
-/// put back).
+/// device or FIFO is written through before any file is moved into place (it cannot be put
+/// back, so its failure must come while the files can still be left as they were).
 #[derive(Default)]
 pub struct Staged {
     /// (the path given, how it is written, the prepared file).
@@ -278,9 +278,9 @@ impl Staged {
 
     /// Moves every prepared file to its target. Targets to replace must still be regular files
     /// or absent (a directory, link, device or pipe put there meanwhile is refused before
-    /// anything moves). Existing targets are first renamed aside, and put back if any move
-    /// fails, so a failure leaves every target as it was; on success the old versions are
-    /// deleted, and then devices are written.
+    /// anything moves). Devices and pipes are written first; then existing targets are renamed
+    /// aside, and put back if any move fails, so a failure leaves every file target as it
+    /// was; on success the old versions are deleted.
     pub fn commit(self) -> Result<(), OutputError> {
         for (path, target, _) in &self.files {
             let Target::Replace(real) = target else {
@@ -312,6 +312,14 @@ impl Staged {
                 Target::Replace(real) => replaced.push((path, real, temp)),
                 Target::Through(device) => through.push((path, device, temp)),
             }
+        }
+        // Devices and pipes first: they cannot be put back, and their errors (a full device)
+        // are the likely ones, so a failure there leaves every file target as it was (issue
+        // 42, class 5).
+        for (path, device, temp) in through {
+            std::fs::read(&temp)
+                .and_then(|bytes| write_through(&device, &bytes))
+                .map_err(|error| OutputError { path, error })?;
         }
         // Old versions renamed aside: (target, where it is now).
         let mut aside: Vec<(PathBuf, tempfile::TempPath)> = Vec::new();
@@ -360,11 +368,6 @@ impl Staged {
         }
         // Dropping the old versions deletes them.
         drop(aside);
-        for (path, device, temp) in through {
-            std::fs::read(&temp)
-                .and_then(|bytes| write_through(&device, &bytes))
-                .map_err(|error| OutputError { path, error })?;
-        }
         Ok(())
     }
 }

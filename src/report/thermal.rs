@@ -10,7 +10,9 @@
 //! `thermal_von_mises_max_depth_m`, `contact_von_mises_max_pa`,
 //! `contact_von_mises_max_depth_m`, `contact_von_mises_max_x_m`, `total_von_mises_max_x_m`,
 //! `contact_tresca_max_pa`, `total_tresca_max_pa`, `total_tresca_max_depth_m`, `half_width_m`,
-//! `rows`, `columns`, `spacing_m`; `coupled` (null unless `coupled = true`): an object with
+//! `rows`, `columns`, `spacing_m`, `traction_on_body1` (`"+x"`, or `"-x"` when body 2's
+//! surface is the faster: friction on body 1 acts the way body 2 slides over it, and the
+//! contact and total stresses are those of that traction); `coupled` (null unless `coupled = true`): an object with
 //! `iterations`, `tolerance`, `pressure_changes`, `isothermal_contact_area_m2`,
 //! `contact_area_m2`, `isothermal_spots`, `spots`, `isothermal_max_pressure_pa`,
 //! `max_pressure_pa`, `distortion_over_contact_m` (the range of the thermal bulge over the
@@ -63,6 +65,8 @@ pub struct ThermalReport {
     pub rows: usize,
     pub columns: usize,
     pub spacing_m: [f64; 2],
+    /// `"+x"` or `"-x"`: the direction of `q = μ p` on body 1 in the heating study.
+    pub traction_on_body1: &'static str,
     pub coupled: Option<CoupledReport>,
     pub gear_path: Option<GearPathReport>,
 }
@@ -276,6 +280,7 @@ impl ThermalReport {
             rows: study.shape[0],
             columns: study.shape[1],
             spacing_m: study.spacing_m,
+            traction_on_body1: study.spec.traction.label(),
             coupled: study.coupled.as_ref().map(CoupledReport::new),
             gear_path: None,
         }
@@ -353,6 +358,12 @@ impl ThermalReport {
             "  heat partition: {partition}: {:.4} of q = mu p V into body 1",
             self.heat_partition_body1
         )?;
+        if study.spec.traction == crate::scene::TractionDirection::MinusX {
+            writeln!(
+                out,
+                "  friction on body 1 acts in -x: body 2's surface is the faster and slides over body 1 towards -x (the contact and total stresses below are those of q = mu p in -x)"
+            )?;
+        }
         writeln!(
             out,
             "  body 1 flash temperature: max {:.2} K at x = {:.2} µm, y = {:.2} µm; mean over the contact {:.2} K",
@@ -361,6 +372,16 @@ impl ThermalReport {
             um(self.max_temperature_y_m),
             self.mean_temperature_rise_k
         )?;
+        let hottest = self
+            .max_temperature_rise_k
+            .max(self.body2_max_temperature_rise_k.unwrap_or(0.0));
+        if hottest > crate::study::coupled::MAX_FLASH_TEMPERATURE_RISE_K {
+            writeln!(
+                out,
+                "  note: a flash temperature rise of {hottest:.0} K is beyond any solid (more than {:.0} K): the surfaces would melt, and the linear heating with constant properties does not hold there",
+                crate::study::coupled::MAX_FLASH_TEMPERATURE_RISE_K
+            )?;
+        }
         if let (Some(max), Some(mean), true) = (
             self.body2_max_temperature_rise_k,
             self.body2_mean_temperature_rise_k,

@@ -26,7 +26,7 @@ use raw::RawScene;
 pub use spec::{
     Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit, Method, Numerical,
     PanelSpec, RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody,
-    ThermalSpec, WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH,
+    ThermalSpec, TractionDirection, WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH,
     ROUGH_SECTION_MIN_CELLS, ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
@@ -162,12 +162,13 @@ fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Err
     } else if message.starts_with("invalid type: integer")
         || message.starts_with("invalid type: floating point")
     {
-        (message.ends_with("expected a string") || message.contains("untagged enum")).then(|| {
-            format!(
-                "a dimensional value is text with its unit, in quotes, e.g. {leaf} = {}",
-                unit_example(leaf)
-            )
-        })
+        (message.ends_with("expected a string") || message.contains("a text with its unit such as"))
+            .then(|| {
+                format!(
+                    "a dimensional value is text with its unit, in quotes, e.g. {leaf} = {}",
+                    unit_example(leaf)
+                )
+            })
     } else if message.starts_with("invalid type: string") {
         let number = message
             .split('"')
@@ -198,11 +199,40 @@ fn toml_error(text: &str, file: &str, key: Option<String>, error: &toml::de::Err
     };
     SceneError {
         file: file.into(),
+        message: in_user_words(&message, key.as_deref()),
         key,
         line_column,
-        message,
         hint,
     }
+}
+
+/// A serde message in the user's words: no Rust type names (`struct RawThermal`, `f64`), and
+/// the value a key takes as the reference describes it (issue 42, class 10).
+fn in_user_words(message: &str, key: Option<&str>) -> String {
+    let Some((given, expected)) = message.split_once(", expected ") else {
+        return message.to_string();
+    };
+    let leaf = key.and_then(|k| k.rsplit('.').next()).unwrap_or("");
+    let expected = if leaf == "partition" {
+        "body 1's share of the heat: a fraction from 0 to 1, \"body1\" or \"blok\"".to_string()
+    } else if expected.starts_with("struct Raw") {
+        match key {
+            Some(key) => {
+                format!("a table: [{key}] on a line of its own, its keys on the lines below")
+            }
+            None => "a table".to_string(),
+        }
+    } else {
+        match expected {
+            "f64" | "f32" => "a number".to_string(),
+            "i64" | "i32" | "u64" | "u32" | "usize" => "a whole number".to_string(),
+            "a string" => "a text in quotes".to_string(),
+            "a sequence" => "a list in brackets, e.g. [1.0, 2.0]".to_string(),
+            "a boolean" => "true or false".to_string(),
+            other => other.to_string(),
+        }
+    };
+    format!("{given}, expected {expected}")
 }
 
 /// An example of a dimensional value for the key named `leaf`, for messages.

@@ -105,11 +105,61 @@ pub struct ThermalBody {
     pub speed_m_per_s: f64,
 }
 
+/// Which way friction acts on body 1 in a heated scene: in the direction in which body 2's
+/// surface slides over body 1's.
+///
+/// In the frame of the contact both surfaces move in -x (the contact moves over body `i` at
+/// `Vi` in +x), so body 2 slides over body 1 at `V1 - V2` in +x: friction on body 1 acts in
+/// +x when body 1's surface is the faster (`V1 > V2`, the usual case of a contact carried by
+/// body 2 over body 1) and in -x when body 2's is (a pin on a disc, the approach side of a
+/// gear mesh). The isothermal figures of a scene keep `q = μ p` in +x; the heating study
+/// (thermal plus contact stress) takes this direction, and its reports say which.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TractionDirection {
+    /// `q = μ p` on body 1 in +x (`V1 >= V2`).
+    PlusX,
+    /// `q = μ p` on body 1 in -x (`V2 > V1`: body 2's surface is the faster).
+    MinusX,
+}
+
+impl TractionDirection {
+    /// The direction for the speeds `V1`, `V2` of the contact over the bodies.
+    pub fn of_speeds(body1_m_per_s: f64, body2_m_per_s: f64) -> Self {
+        if body2_m_per_s > body1_m_per_s {
+            Self::MinusX
+        } else {
+            Self::PlusX
+        }
+    }
+
+    /// +1 or -1: the sign of the traction along x.
+    pub fn sign(self) -> f64 {
+        match self {
+            Self::PlusX => 1.0,
+            Self::MinusX => -1.0,
+        }
+    }
+
+    /// `+x` or `-x`, for reports.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::PlusX => "+x",
+            Self::MinusX => "-x",
+        }
+    }
+}
+
 /// `[thermal]`: frictional heating of a sliding contact.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ThermalSpec {
-    /// The sliding speed `V`: the frictional flux is `μ p V`.
+    /// The sliding speed `V = |V1 - V2|`: the frictional flux is `μ p V`.
     pub sliding_speed_m_per_s: f64,
+    /// The direction of the friction traction on body 1 (from the bodies' speeds).
+    pub traction: TractionDirection,
+    /// The scene keys that set the speed of the contact over body 1 and over body 2 (e.g.
+    /// `thermal.speed`, `thermal.body2_speed`, `thermal.pinion_speed`): a speed beyond what
+    /// the heating can resolve is refused under the key the scene wrote.
+    pub speed_keys: [&'static str; 2],
     pub partition: crate::thermal::heating::Partition,
     pub coupled: bool,
     pub body1: ThermalBody,

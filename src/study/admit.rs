@@ -1,8 +1,9 @@
 //! Whether a validated scene can be computed here: the second stage of reading a scene, after
 //! [`crate::scene`] has checked what the user wrote. The checks need what only the study knows
 //! (the grid planes of the panels, the speed sweep's grid), so they live here rather than in
-//! the file format: the figure's memory, the memory of a recording's sections, and which
-//! scenes a speed sweep can take and how fast it can go.
+//! the file format: the figure's memory, the memory of a recording's sections, which
+//! scenes a speed sweep can take and how fast it can go, and the heating's grid, memory and
+//! time ([`super::heating_plan`]).
 //!
 //! Every command reads its scenes through [`load_scene`] (or [`parse_scene`]), so a scene that
 //! passes `check` can be computed.
@@ -89,6 +90,11 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             ));
         }
     }
+    // The heating: its grid resolves the speeds, and its memory and time are within the
+    // limits (issue 42, classes 2 and 4), refused under the key the scene wrote.
+    if let Err(refusal) = super::heating_plan::plan(scene) {
+        return Err(error(&refusal.key, refusal.message, &refusal.hint));
+    }
     let Some(sweep) = &scene.sweep else {
         return Ok(());
     };
@@ -143,6 +149,25 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
         ));
     }
     Ok(())
+}
+
+/// Why a recording of `scene` would leave out its `[thermal]`, or `None`: the heating is
+/// recorded as a speed (Péclet) sweep only, so a recording of one state (no `[sweep]`, or a
+/// `[volume]`) of a heated scene is refused rather than silently isothermal (issue 42, class
+/// 9; a friction, load or position sweep with `[thermal]` is refused by the scene reader). A
+/// wear scene records its own steps.
+pub fn unrecorded_heating(scene: &Scene) -> Option<String> {
+    let speed_sweep = scene
+        .sweep
+        .as_ref()
+        .is_some_and(|s| s.parameter == SweepParameter::Peclet);
+    if scene.thermal.is_none() || speed_sweep || scene.wear.is_some() {
+        return None;
+    }
+    Some(
+        "key `thermal`: a recording of one state records the contact's stress field without heating: [thermal] would be left out\nhint: `stressfield thermal SCENE` reports the heating (--figure draws it) and `render` draws the heating sheet beside the figure; to record the heating as the speed rises, add [sweep] with parameter = \"peclet\" (a line, point or elliptical contact)"
+            .to_string(),
+    )
 }
 
 #[cfg(test)]

@@ -16,6 +16,19 @@
 //! heating (`α = 0` for both bodies) `w = 0` and the first solve is the isothermal one, bit for
 //! bit.
 //!
+//! ## Runaway
+//! Strong heating can make the feedback run away: the bulge lifts the surfaces outside the
+//! hottest region, the contact shrinks, the flux concentrates and the bulge grows, until the
+//! heat and not the elasticity decides the contact (a thermal asperity; thermoelastic
+//! instability, Barber 1969). A fixed point of the iteration may then exist on the grid, but it
+//! is not a state the model describes: every iterate (the isothermal contact included) is
+//! checked, and the iteration stops with [`CoupledError::Runaway`], naming the last state that
+//! passed, when the contact
+//! - keeps less than [`MIN_AREA_FRACTION`] of its isothermal area (it ran away),
+//! - falls below [`MIN_RESOLVED_CELLS`] cells (and to less than half its isothermal cells):
+//!   less than about four cells across, which the grid does not resolve,
+//! - or heats a body by more than [`MAX_FLASH_TEMPERATURE_RISE_K`], beyond any solid.
+//!
 //! Only a given load (or mean pressure) is coupled: the bulge of a stationary source is defined
 //! up to a constant (see [`crate::thermal::distortion`]), which a given load absorbs into the
 //! approach and a given approach would not.
@@ -23,6 +36,8 @@
 //! ## References
 //! - S. Liu, Q. Wang, A three-dimensional thermomechanical model of contact between
 //!   non-conforming rough surfaces, *ASME J. Tribol.* 123 (2001) 17–26.
+//! - J. R. Barber, Thermoelastic instabilities in the sliding of conforming solids, *Proc.
+//!   R. Soc. Lond. A* 312 (1969) 381–394.
 
 use ndarray::{Array2, Zip};
 
@@ -38,14 +53,94 @@ use crate::thermal::temperature::TemperatureOperator;
 pub const TOLERANCE: f64 = 1e-6;
 /// The most coupled iterations (each a contact solve).
 pub const MAX_ITERATIONS: usize = 60;
+/// A heated contact that keeps less than this fraction of its isothermal area has run away
+/// (module doc): the heat, not the elasticity, decides it.
+pub const MIN_AREA_FRACTION: f64 = 0.1;
+/// Fewer contact cells than this (less than about four cells across) are not resolved by the
+/// grid (unless the isothermal contact had hardly more).
+pub const MIN_RESOLVED_CELLS: usize = 16;
+/// A flash temperature rise beyond any solid: the highest melting points known, of hafnium
+/// and tantalum carbides, are about 4200 K (CRC Handbook of Chemistry and Physics), so no
+/// surface survives a rise of 4000 K above room temperature.
+pub const MAX_FLASH_TEMPERATURE_RISE_K: f64 = 4000.0;
+
+/// The coupled contact at one iterate, for the runaway checks and their messages.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CoupledState {
+    /// 0 for the isothermal contact.
+    pub iteration: usize,
+    pub contact_cells: usize,
+    /// The contact's area over the isothermal one.
+    pub area_fraction: f64,
+    pub max_pressure_pa: f64,
+    /// The largest flash temperature rise of either body under its share, K.
+    pub max_temperature_rise_k: f64,
+}
+
+impl std::fmt::Display for CoupledState {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} contact cells ({:.1} % of the isothermal area), peak pressure {:.0} MPa, flash temperature rise {:.0} K",
+            self.contact_cells,
+            100.0 * self.area_fraction,
+            self.max_pressure_pa * 1e-6,
+            self.max_temperature_rise_k
+        )
+    }
+}
+
+/// A coupled iteration that ran away (module doc): what happened, at which iterate, the last
+/// iterate that passed the checks, and the isothermal contact.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Runaway {
+    pub cause: String,
+    pub at: CoupledState,
+    pub last: CoupledState,
+    pub isothermal: CoupledState,
+}
+
+/// How the contact is solved again at each coupled iteration: `solve(distortion, pressure)`
+/// ([`iterate`]).
+pub type ContactSolve<'a> =
+    dyn FnMut(&Array2<f64>, &Array2<f64>) -> Result<RoughSolution, CoupledError> + 'a;
+
+/// The message of a runaway (module doc).
+fn runaway_message(
+    cause: &str,
+    at: &CoupledState,
+    last: &CoupledState,
+    isothermal: &CoupledState,
+) -> String {
+    let last = if last.iteration == 0 {
+        "the isothermal contact itself".to_string()
+    } else {
+        format!("iteration {}: {last}", last.iteration)
+    };
+    format!(
+        "the thermoelastic feedback runs away ({cause}) at iteration {}: {at}. This is thermoelastic instability: the heat, not the elasticity, decides the contact, and no steady coupled state exists for these conditions. The last resolved state was {last}; the isothermal contact: {} cells, peak pressure {:.0} MPa, flash temperature rise {:.0} K",
+        at.iteration,
+        isothermal.contact_cells,
+        isothermal.max_pressure_pa * 1e-6,
+        isothermal.max_temperature_rise_k
+    )
+}
 
 /// Why the coupled contact has no solution.
 #[derive(Debug, thiserror::Error)]
 pub enum CoupledError {
     #[error("thermal.coupled: the coupled solution needs a given load or mean pressure, not an approach (the bulge of a stationary source is defined only up to a constant)\nhint: give contact.load (or contact.mean_pressure) instead of contact.approach, or set coupled = false")]
     ApproachControl,
-    #[error("thermal.coupled: the thermoelastic feedback did not settle in {iterations} iterations (pressure change {change:.2e}, tolerance {TOLERANCE:.0e})\nhint: the heating may be beyond thermoelastic stability: lower thermal.speed or contact.friction, or set coupled = false")]
-    NotConverged { iterations: usize, change: f64 },
+    #[error("thermal.coupled: the thermoelastic feedback did not settle in {iterations} iterations (pressure change {change:.2e}, tolerance {TOLERANCE:.0e}); the last iterate: {last}\nhint: the heating may be beyond thermoelastic stability: lower thermal.speed or contact.friction, or set coupled = false")]
+    NotConverged {
+        iterations: usize,
+        change: f64,
+        last: CoupledState,
+    },
+    #[error("thermal.coupled: the isothermal pressure already heats the surface by {:.0} K, more than the {MAX_FLASH_TEMPERATURE_RISE_K:.0} K no solid survives ({}): the coupled feedback, which concentrates the heat further, describes no state there\nhint: lower the heat (thermal.speed, contact.friction or the load), or take bodies that conduct more; coupled = false reports the linear heating as it stands", .isothermal.max_temperature_rise_k, .isothermal)]
+    BeyondAnySolid { isothermal: CoupledState },
+    #[error("thermal.coupled: {}\nhint: lower the heat (thermal.speed, contact.friction or the load), or take bodies that conduct more or expand less; coupled = false gives the heating on the isothermal pressure (a bound that ignores the feedback)", runaway_message(&.0.cause, &.0.at, &.0.last, &.0.isothermal))]
+    Runaway(Box<Runaway>),
     #[error(transparent)]
     Contact(#[from] RoughContactError),
     #[error(transparent)]
@@ -68,15 +163,15 @@ pub struct CoupledContact {
     pub changes: Vec<f64>,
 }
 
-/// One heated body: its distortion operator (none when it does not expand) and, for Blok's
-/// partition, its temperature operator.
+/// One heated body: its distortion operator (none when it does not expand) and its
+/// temperature operator (Blok's partition, and the runaway checks).
 struct Body {
     distortion: Option<DisplacementOperator>,
     temperature: Option<TemperatureOperator>,
 }
 
 impl Body {
-    fn new(grid: &CellGrid, body: &ThermalBody, blok: bool) -> Result<Self, TransformError> {
+    fn new(grid: &CellGrid, body: &ThermalBody, heated: bool) -> Result<Self, TransformError> {
         let properties = &body.properties;
         let u = super::thermal::inverse_length(body);
         let k = properties.conductivity_w_per_m_k;
@@ -87,7 +182,7 @@ impl Body {
             } else {
                 None
             },
-            temperature: if blok {
+            temperature: if heated {
                 Some(TemperatureOperator::new(grid, 0.0, u, k)?)
             } else {
                 None
@@ -113,6 +208,15 @@ impl Body {
             }
         });
         Ok(sum / count.max(1) as f64)
+    }
+
+    /// The largest temperature rise under `flux` (its share).
+    fn max_temperature(&mut self, flux: &Array2<f64>) -> Result<f64, TransformError> {
+        let Some(operator) = self.temperature.as_mut() else {
+            return Ok(0.0);
+        };
+        let t = operator.apply(flux.view())?;
+        Ok(t.iter().fold(0.0f64, |m, &v| m.max(v)))
     }
 }
 
@@ -160,15 +264,92 @@ pub fn iterate(
     spec: &ThermalSpec,
     friction: f64,
     progress: &mut dyn FnMut(usize, f64),
-    solve: &mut dyn FnMut(&Array2<f64>, &Array2<f64>) -> Result<RoughSolution, CoupledError>,
+    solve: &mut ContactSolve,
 ) -> Result<CoupledContact, CoupledError> {
     let [ny, nx] = grid.shape;
     let blok = spec.partition == Partition::Blok;
-    let mut body1 = Body::new(grid, &spec.body1, blok)?;
+    let mut body1 = Body::new(
+        grid,
+        &spec.body1,
+        spec.partition != Partition::Fraction(0.0),
+    )?;
     let mut body2 = match &spec.body2 {
-        Some(b) if spec.partition.needs_body2() => Some(Body::new(grid, b, blok)?),
+        Some(b) if spec.partition.needs_body2() => Some(Body::new(grid, b, true)?),
         _ => None,
     };
+    // The runaway checks (module doc): each iterate's contact and flash temperature.
+    let cells = |p: &Array2<f64>| p.iter().filter(|&&v| v > 0.0).count();
+    let isothermal_cells = cells(&isothermal.pressure_pa);
+    let state = |iteration: usize,
+                 pressure: &Array2<f64>,
+                 share: f64,
+                 body1: &mut Body,
+                 body2: Option<&mut Body>|
+     -> Result<CoupledState, TransformError> {
+        let flux = pressure.mapv(|p| frictional_flux(friction, p, spec.sliding_speed_m_per_s));
+        let mut hottest = 0.0f64;
+        if share > 0.0 {
+            hottest = hottest.max(body1.max_temperature(&flux.mapv(|q| q * share))?);
+        }
+        if let (Some(b2), true) = (body2, share < 1.0) {
+            hottest = hottest.max(b2.max_temperature(&flux.mapv(|q| q * (1.0 - share)))?);
+        }
+        let contact_cells = cells(pressure);
+        Ok(CoupledState {
+            iteration,
+            contact_cells,
+            area_fraction: contact_cells as f64 / isothermal_cells.max(1) as f64,
+            max_pressure_pa: pressure.iter().fold(0.0f64, |m, &v| m.max(v)),
+            max_temperature_rise_k: hottest,
+        })
+    };
+    let runaway = |at: &CoupledState| -> Option<String> {
+        if at.max_temperature_rise_k > MAX_FLASH_TEMPERATURE_RISE_K {
+            Some(format!(
+                "a flash temperature rise of {:.0} K, more than the {MAX_FLASH_TEMPERATURE_RISE_K:.0} K no solid survives",
+                at.max_temperature_rise_k
+            ))
+        } else if at.iteration > 0
+            && at.contact_cells < MIN_RESOLVED_CELLS
+            && 2 * at.contact_cells < isothermal_cells
+        {
+            Some(format!(
+                "the contact shrinks to {} cells, fewer than the {MIN_RESOLVED_CELLS} the grid resolves",
+                at.contact_cells
+            ))
+        } else if at.area_fraction < MIN_AREA_FRACTION {
+            Some(format!(
+                "the contact shrinks to less than {:.0} % of its isothermal area",
+                100.0 * MIN_AREA_FRACTION
+            ))
+        } else {
+            None
+        }
+    };
+    let first_share = if blok {
+        let flux = isothermal
+            .pressure_pa
+            .mapv(|p| frictional_flux(friction, p, spec.sliding_speed_m_per_s));
+        let t1 = body1.mean_temperature(&flux, &isothermal.pressure_pa)?;
+        let t2 = match body2.as_mut() {
+            Some(b) => b.mean_temperature(&flux, &isothermal.pressure_pa)?,
+            None => 0.0,
+        };
+        spec.partition.body1_share(t1, t2)
+    } else {
+        spec.partition.body1_share(1.0, 0.0)
+    };
+    let start = state(
+        0,
+        &isothermal.pressure_pa,
+        first_share,
+        &mut body1,
+        body2.as_mut(),
+    )?;
+    if start.max_temperature_rise_k > MAX_FLASH_TEMPERATURE_RISE_K {
+        return Err(CoupledError::BeyondAnySolid { isothermal: start });
+    }
+    let mut last = start;
     let mut pressure = isothermal.pressure_pa.clone();
     let mut distortion = Array2::<f64>::zeros((ny, nx));
     let mut changes = Vec::new();
@@ -208,6 +389,16 @@ pub fn iterate(
         }
         changes.push(change);
         pressure.assign(&heated.pressure_pa);
+        let now = state(iteration, &pressure, share, &mut body1, body2.as_mut())?;
+        if let Some(cause) = runaway(&now) {
+            return Err(CoupledError::Runaway(Box::new(Runaway {
+                cause,
+                at: now,
+                last,
+                isothermal: start,
+            })));
+        }
+        last = now;
         if change < TOLERANCE {
             return Ok(CoupledContact {
                 isothermal,
@@ -222,6 +413,7 @@ pub fn iterate(
     Err(CoupledError::NotConverged {
         iterations: MAX_ITERATIONS,
         change: changes.last().copied().unwrap_or(f64::INFINITY),
+        last,
     })
 }
 
@@ -283,6 +475,8 @@ mod tests {
         properties.expansion_per_k *= expansion_factor;
         let spec = ThermalSpec {
             sliding_speed_m_per_s: speed,
+            traction: crate::scene::TractionDirection::PlusX,
+            speed_keys: ["thermal.speed", "thermal.body2_speed"],
             partition: Partition::Body1,
             coupled: true,
             body1: ThermalBody {

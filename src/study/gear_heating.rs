@@ -19,7 +19,7 @@
 
 use crate::contact::gear::SpurGearPair;
 use crate::contact::{Body, LineContact};
-use crate::scene::{Dimensional, GearMesh, Hertz, Scale, Scene, ThermalSpec};
+use crate::scene::{Dimensional, GearMesh, Hertz, Scale, Scene, ThermalSpec, TractionDirection};
 use crate::study::thermal::{self, Progress, ThermalStudy, ThermalStudyError};
 use crate::thermal::heating::Partition;
 
@@ -67,7 +67,12 @@ pub struct GearHeating {
 
 /// The line-contact scene of the teeth at `s`: flank radii, shared load, the mesh's friction,
 /// and `[thermal]` with the speeds there and the sliding speed `sliding`.
-fn scene_at(scene: &Scene, mesh: &GearMesh, s: f64, sliding: f64) -> Option<(Scene, PathPoint)> {
+pub(crate) fn scene_at(
+    scene: &Scene,
+    mesh: &GearMesh,
+    s: f64,
+    sliding: f64,
+) -> Option<(Scene, PathPoint)> {
     let dimensional = scene.contact.dimensional?;
     let pair = dimensional.gears?;
     let spec = scene.thermal?;
@@ -103,6 +108,9 @@ fn scene_at(scene: &Scene, mesh: &GearMesh, s: f64, sliding: f64) -> Option<(Sce
     thermal_spec.gear = None;
     thermal_spec.sliding_speed_m_per_s = sliding;
     thermal_spec.body1.speed_m_per_s = speeds[0];
+    // On the approach side (s < 0) the gear's flank is the faster: friction on the pinion
+    // acts in -x there.
+    thermal_spec.traction = TractionDirection::of_speeds(speeds[0], speeds[1]);
     if let Some(b2) = &mut thermal_spec.body2 {
         b2.speed_m_per_s = speeds[1];
     }

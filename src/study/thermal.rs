@@ -175,7 +175,7 @@ pub(super) struct Gridded {
 
 /// Where and how finely a Hertz contact is gridded.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Window {
+pub(crate) struct Window {
     /// The x range in units of `a` (the wake trails at -x).
     pub(super) x_over_a: [f64; 2],
     /// `|y| <=` this times `b` (point and elliptical contacts).
@@ -190,26 +190,33 @@ pub(super) struct Window {
 }
 
 /// The study's window: `-2.5a <= x <= 1.5a`, `|y| <= 1.5b`, at most [`MAX_CELLS`] cells.
-pub(super) const STUDY_WINDOW: Window = Window {
+pub(crate) const STUDY_WINDOW: Window = Window {
     x_over_a: [-2.5, 1.5],
     y_over_b: 1.5,
     max_cells: MAX_CELLS,
     centre_row: false,
     key: "thermal.speed",
-    hint: "the Péclet number is beyond what a grid of at most 640 cells across 4a resolves (Pe up to 320); lower thermal.speed (or the bodies' speeds)",
+    hint: "the Péclet number is beyond what a grid of at most 640 cells across 4a resolves (Pe up to 320); lower the speed (beyond, the flash temperature follows the fast limit of Jaeger and Blok, growing as √Pe)",
 };
 
-/// The Hertz pressure of `scene` on `window`, with cells of `a/20`, or finer so that every
-/// heated body of `spec` has a cell Péclet number of at most 1, or (at most
-/// `window.max_cells` cells along x) at most [`MAX_CELL_PECLET`].
-pub(super) fn hertz_grid(
+/// Where the cells of a Hertz contact's thermal grid lie: `[ny, nx]`, `[dx, dy]` (m), and the
+/// centre of cell `[0, 0]` (m from the contact's centre).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Layout {
+    pub(crate) shape: [usize; 2],
+    pub(crate) spacing_m: [f64; 2],
+    pub(crate) origin_m: [f64; 2],
+}
+
+/// The grid of `scene` on `window` (see [`hertz_grid`]), without computing anything: what the
+/// admission of a scene ([`plan`]) and the study share.
+pub(crate) fn hertz_layout(
     scene: &Scene,
     spec: &ThermalSpec,
     window: &Window,
-) -> Result<Gridded, ThermalStudyError> {
+) -> Result<Layout, ThermalStudyError> {
     let contact = &scene.contact;
     let a = contact.half_width_m();
-    let p0 = contact.p0_pa();
     let line = contact.kind == ContactKind::Line;
     let b = a * contact.aspect;
     let u = std::iter::once(&spec.body1)
@@ -226,13 +233,14 @@ pub(super) fn hertz_grid(
         nx = window.max_cells;
         let cell_peclet = u * width / nx as f64;
         if cell_peclet > MAX_CELL_PECLET {
+            let body = if inverse_length(&spec.body1) >= u {
+                1
+            } else {
+                2
+            };
             return Err(ThermalStudyError::CellPeclet {
-                key: window.key,
-                body: if inverse_length(&spec.body1) >= u {
-                    1
-                } else {
-                    2
-                },
+                key: speed_key(spec, body, window),
+                body,
                 cell_peclet,
                 hint: window.hint,
             });
@@ -259,6 +267,41 @@ pub(super) fn hertz_grid(
         let dy = height / ny as f64;
         (ny, dy, -window.y_over_b * b + 0.5 * dy)
     };
+    Ok(Layout {
+        shape: [ny, nx],
+        spacing_m: [dx, dy],
+        origin_m: [x0, y0],
+    })
+}
+
+/// The key a speed too high for `window` is refused under: the window's own (a speed sweep's
+/// `sweep.parameter`), or the scene key that set body `body`'s speed.
+fn speed_key(spec: &ThermalSpec, body: usize, window: &Window) -> &'static str {
+    if window.key == STUDY_WINDOW.key {
+        spec.speed_keys[body.clamp(1, 2) - 1]
+    } else {
+        window.key
+    }
+}
+
+/// The Hertz pressure of `scene` on `window`, with cells of `a/20`, or finer so that every
+/// heated body of `spec` has a cell Péclet number of at most 1, or (at most
+/// `window.max_cells` cells along x) at most [`MAX_CELL_PECLET`].
+pub(super) fn hertz_grid(
+    scene: &Scene,
+    spec: &ThermalSpec,
+    window: &Window,
+) -> Result<Gridded, ThermalStudyError> {
+    let contact = &scene.contact;
+    let a = contact.half_width_m();
+    let p0 = contact.p0_pa();
+    let line = contact.kind == ContactKind::Line;
+    let b = a * contact.aspect;
+    let Layout {
+        shape: [ny, nx],
+        spacing_m: [dx, dy],
+        origin_m: [x0, y0],
+    } = hertz_layout(scene, spec, window)?;
     let pressure = Array2::from_shape_fn((ny, nx), |(row, column)| {
         let x = x0 + column as f64 * dx;
         let y = y0 + row as f64 * dy;
@@ -379,7 +422,7 @@ pub(crate) fn thermal_stress_layer(
 }
 
 /// The DC-FFT layers of the contact tractions on the thermal grid: the pressure and `q = μ p`
-/// in +x, lengths in units of `a`.
+/// in +x (a negative `friction`: in -x), lengths in units of `a`.
 pub(crate) fn contact_operator(
     pressure_pa: &Array2<f64>,
     spacing_m: [f64; 2],
@@ -421,12 +464,12 @@ fn heat(gridded: &Gridded, spec: &ThermalSpec, friction: f64) -> Result<Heated, 
         .enumerate()
     {
         let cell_peclet = inverse_length(body) * gridded.spacing_m[0];
-        if cell_peclet > MAX_CELL_PECLET {
+        if cell_peclet > MAX_CELL_PECLET * (1.0 + 1e-9) {
             return Err(ThermalStudyError::CellPeclet {
-                key: "thermal.speed",
+                key: spec.speed_keys[index.min(1)],
                 body: index + 1,
                 cell_peclet,
-                hint: "a rough surface's grid is fixed by its samples: lower thermal.speed, or resample the surface more finely",
+                hint: "a rough surface's grid is fixed by its samples: lower the speed, or resample the surface more finely",
             });
         }
     }
@@ -452,7 +495,7 @@ fn heat(gridded: &Gridded, spec: &ThermalSpec, friction: f64) -> Result<Heated, 
 
 /// The flash temperatures of a Hertz scene (line, point or elliptical, with `[thermal]`) on
 /// the study's grid, without the stresses: `(half-width, body 1, body 2)`.
-pub(crate) fn hertz_flash(
+pub fn hertz_flash(
     scene: &Scene,
     spec: &ThermalSpec,
 ) -> Result<(f64, BodyHeating, Option<BodyHeating>), ThermalStudyError> {
@@ -531,16 +574,18 @@ pub fn study(
     let share = body1.share;
     let a = gridded.half_width_m;
 
-    // Stresses: body 1's share of the flux, and the contact tractions (p, q = μ p in +x).
+    // Stresses: body 1's share of the flux, and the contact tractions (p, and q = μ p in +x,
+    // or in -x when body 2's surface is the faster).
     let grid = CellGrid {
         shape: gridded.shape,
         spacing_m: gridded.spacing_m,
     };
+    // Friction on body 1 acts the way body 2 slides over it ([`crate::scene::TractionDirection`]).
     let contact_operator = contact_operator(
         &gridded.pressure_pa,
         gridded.spacing_m,
         a,
-        friction,
+        friction * spec.traction.sign(),
         poisson,
     )?;
     let body1_flux = flux.mapv(|q| q * share);

@@ -97,7 +97,8 @@ pub(super) fn fast_limit(flux: &Array2<f64>, dx: f64, conductivity_w_per_m_k: f6
     best / (k * (2.0 * std::f64::consts::PI).sqrt())
 }
 
-/// The sections and the speed sweep of `study` (`friction`, `poisson` of body 1).
+/// The sections and the speed sweep of `study` (`friction`, `poisson` of body 1; the
+/// traction acts in the study's direction, [`crate::scene::TractionDirection`]).
 /// `progress(done, total)` after each depth.
 pub fn sections(
     study: &ThermalStudy,
@@ -124,7 +125,7 @@ pub fn sections(
         &study.pressure_pa,
         study.spacing_m,
         a,
-        friction,
+        friction * study.spec.traction.sign(),
         poisson,
     )?;
     let grid = CellGrid {

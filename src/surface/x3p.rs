@@ -49,6 +49,14 @@ pub fn read(path: &Path, size_limit: u64, fill: Fill) -> Result<HeightMap, ReadE
         path: name.clone(),
         source,
     })?;
+    // A directory opens as a file here; the zip reader would then say "not a zip archive
+    // (i/o error)" (issue 42, a leftover of round two).
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err(ReadError::Io {
+            path: name,
+            source: std::io::Error::other("it is a directory, not an .x3p file"),
+        });
+    }
     let size = file.metadata().map(|m| m.len()).unwrap_or(0);
     if size > size_limit {
         return Err(ReadError::TooLarge {

@@ -219,8 +219,12 @@ pub fn solve_warm(
 /// warm-started solve).
 #[derive(Default)]
 pub struct OperatorCache {
-    kept: Option<(ElasticOperator, [usize; 2], [f64; 2], f64, Periodicity)>,
+    kept: Option<(ElasticOperator, OperatorKey)>,
 }
+
+/// What an elastic operator is built for: the grid's shape, its spacing (m), `E*` (Pa) and
+/// the periodicity.
+type OperatorKey = ([usize; 2], [f64; 2], f64, Periodicity);
 
 impl OperatorCache {
     /// The operator of `problem`'s grid: the kept one, or a new one, kept.
@@ -236,14 +240,8 @@ impl OperatorCache {
             problem.periodicity,
         );
         let kept = match self.kept.take() {
-            Some(kept) if (kept.1, kept.2, kept.3, kept.4) == key => kept,
-            _ => (
-                ElasticOperator::new(key.0, key.1, key.2, key.3)?,
-                key.0,
-                key.1,
-                key.2,
-                key.3,
-            ),
+            Some(kept) if kept.1 == key => kept,
+            _ => (ElasticOperator::new(key.0, key.1, key.2, key.3)?, key),
         };
         Ok(&mut self.kept.insert(kept).0)
     }

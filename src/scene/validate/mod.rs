@@ -151,6 +151,7 @@ impl Validator<'_> {
                 Some("set `format = 1`"),
             ));
         }
+        self.heated_contact_keys(&raw)?;
         let contact = self.contact(&raw.contact)?;
         if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
             return self.rough_scene(raw, name, contact);
@@ -328,6 +329,15 @@ impl Validator<'_> {
         for (i, panel) in raw.panels.iter().enumerate() {
             let key = format!("panel[{i}].section");
             let Some(text) = &panel.section else {
+                if speed_sweep {
+                    // Not drawn by a recording of the speed: refused, not ignored (issue 42,
+                    // class 9).
+                    return Err(self.error(
+                        &format!("panel[{i}]"),
+                        "a Péclet sweep records its own views (body 1's surface temperature, its xz section and the charts against Pe), not panels: this [[panel]] would be ignored",
+                        Some("remove the [[panel]] tables; draw the stress panels in a scene without [sweep] (`stressfield thermal SCENE --figure` draws the heating's stress sections)"),
+                    ));
+                }
                 sections.push(None);
                 continue;
             };

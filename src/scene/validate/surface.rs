@@ -479,10 +479,17 @@ impl Validator<'_> {
                     format!("the roll-off wavelength ({} um) is shorter than two sample spacings ({} um), the shortest wavelength the grid resolves, and so shorter than the default cutoff", um(rolloff_m), um(cutoff_m)),
                     "give a longer rolloff, or a finer spacing".to_string(),
                 ),
-                _ => (
+                (false, true) => (
                     "cutoff",
                     format!("the cutoff wavelength ({} um) exceeds the map's shorter side ({} um), so it exceeds the default roll-off", um(cutoff_m), um(size_m)),
                     "give a shorter cutoff, or more samples".to_string(),
+                ),
+                // Neither given: equal spacings always fit (at least 8 samples a side), so the
+                // spacings are the cause (issue 42: this named `cutoff`, a key not written).
+                (false, false) => (
+                    "spacing",
+                    format!("the spacings differ too much: the shortest wavelength the coarser one resolves (two spacings, {} um) is longer than a quarter of the map's shorter side ({} um of {} um), the default roll-off", um(cutoff_m), um(rolloff_m), um(size_m)),
+                    "give closer (or equal) spacings, or more samples along the shorter side; or give rolloff and cutoff".to_string(),
                 ),
             };
             return Err(self.error(&format!("{key}.{at}"), message, Some(&hint)));

@@ -109,6 +109,44 @@ impl Validator<'_> {
                 None,
             ));
         }
+        // Each step its own point of the recording (issue 42, class 9): a repeated value (or
+        // from = to) would put several steps at one point of the value's timeline and charts.
+        if raw.values.is_none() && values.len() > 1 && values.first() == values.last() {
+            return Err(self.error(
+                "sweep.to",
+                format!(
+                    "from and to are both {}: every step would record the same value",
+                    crate::io::text::number(values[0])
+                ),
+                Some("give a range (from < to, or from > to), or a single value as values = [...]"),
+            ));
+        }
+        if raw.values.is_some() {
+            for (j, value) in values.iter().enumerate() {
+                if let Some(i) = values[..j].iter().position(|v| v == value) {
+                    return Err(self.error(
+                        &format!("sweep.values[{j}]"),
+                        format!(
+                            "repeats sweep.values[{i}] ({}): two steps would record the same value at one point of the recording",
+                            crate::io::text::number(*value)
+                        ),
+                        Some("give each value once"),
+                    ));
+                }
+            }
+        }
+        // A recording of a friction, load or position sweep records the isothermal field:
+        // [thermal] would be ignored (issue 42, class 9).
+        if scene.thermal.is_some() && parameter != SweepParameter::Peclet {
+            return Err(self.error(
+                "thermal",
+                format!(
+                    "a {} sweep records the contact's stress field without heating: [thermal] would be ignored",
+                    raw.parameter.trim()
+                ),
+                Some("record the heating as the speed rises with sweep.parameter = \"peclet\", or remove [thermal] (`stressfield thermal SCENE` reports the heating of one state)"),
+            ));
+        }
         // Each value as the user wrote it, named by its key. Generated values lie between
         // `from` and `to` (every bound below is an interval, and a, p0 and the other Hertz
         // values change monotonically with the load), so those two are checked, by their keys.

@@ -3,7 +3,7 @@
 #[allow(clippy::wildcard_imports)]
 use super::*;
 use crate::scene::raw::RawThermal;
-use crate::scene::spec::{GearMesh, ThermalBody, ThermalSpec};
+use crate::scene::spec::{GearMesh, ThermalBody, ThermalSpec, TractionDirection};
 use crate::thermal::heating::Partition;
 use crate::thermal::material::{thermal_preset, ThermalProperties, THERMAL_PRESETS};
 
@@ -52,7 +52,53 @@ const EXPANSION_BOUNDS: Bounds = Bounds {
     why: "from Invar (1e-6) to five times soft polymers",
 };
 
+/// How a Hertz contact with `[thermal]` gets what heating needs.
+const HEATED_CONTACT_HINT: &str = "give contact.load (instead of contact.a and contact.p0) and [contact.body1] and [contact.body2], each with its radius and material (e.g. material = \"steel\"): a and p0 then follow from the bodies, and the heating takes their thermal properties";
+
+/// The speeds of the contact over the bodies and the sliding speed, m/s, with the keys that
+/// set the bodies' speeds.
+struct Speeds {
+    body1: f64,
+    body2: f64,
+    sliding: f64,
+    keys: [&'static str; 2],
+}
+
 impl Validator<'_> {
+    /// A Hertz contact (line, point, elliptical) with `[thermal]` needs a load and two
+    /// bodies: said once, before the contact's own keys are read (issue 42, class 11), so
+    /// that a contact given by `a` and `p0` is not first sent to add bodies, then told that
+    /// `a` and `p0` follow from them.
+    pub(super) fn heated_contact_keys(&self, raw: &RawScene) -> Result<(), SceneError> {
+        let contact = &raw.contact;
+        let hertz = matches!(contact.kind.trim(), "line" | "point" | "elliptical");
+        if raw.thermal.is_none() || !hertz {
+            return Ok(());
+        }
+        let sized = contact.a.is_some() || contact.p0.is_some() || contact.aspect.is_some();
+        if contact.load.is_some() && !sized {
+            return Ok(());
+        }
+        let given = if sized {
+            let keys: Vec<&str> = [
+                ("contact.a", contact.a.is_some()),
+                ("contact.p0", contact.p0.is_some()),
+                ("contact.aspect", contact.aspect.is_some()),
+            ]
+            .into_iter()
+            .filter_map(|(key, given)| given.then_some(key))
+            .collect();
+            format!("this contact is given by its size ({})", keys.join(", "))
+        } else {
+            "this contact has no load".to_string()
+        };
+        Err(self.error(
+            "thermal",
+            format!("frictional heating needs a load and two bodies; {given}"),
+            Some(HEATED_CONTACT_HINT),
+        ))
+    }
+
     /// `[thermal]` with the bodies' properties, or `None` without the table.
     pub(super) fn thermal(
         &self,
@@ -64,11 +110,19 @@ impl Validator<'_> {
         };
         match contact.kind {
             ContactKind::Line | ContactKind::Point | ContactKind::Elliptical => {
-                if contact.scale.is_none() {
+                // One requirement, said once (issue 42, class 11): the heat is made by the load
+                // and shared by the bodies, whose thermal and elastic properties it needs; a
+                // contact given by its a and p0 has neither.
+                if contact.dimensional.is_none() {
+                    let given = if contact.scale.is_some() {
+                        "this contact is given by its size (contact.a, contact.p0)"
+                    } else {
+                        "this contact is normalised (a = 1, p0 = 1)"
+                    };
                     return Err(self.error(
                         "thermal",
-                        "frictional heating needs a dimensional contact",
-                        Some("give contact.load and [contact.body1]/[contact.body2] (or contact.a and contact.p0 with their units)"),
+                        format!("frictional heating needs a load and two bodies; {given}"),
+                        Some(HEATED_CONTACT_HINT),
                     ));
                 }
                 if contact.tangential.is_some() {
@@ -134,49 +188,21 @@ impl Validator<'_> {
                 None
             }
         };
-        let sliding = match (&gear, &table.speed) {
+        let speeds = match (&gear, gears) {
             // At the pitch point the teeth roll: the path's sliding speeds are computed from
             // the pinion's speed.
-            (Some(_), _) => 0.0,
-            (None, None) => {
-                return Err(self.error(
-                    "thermal.speed",
-                    "missing the sliding speed",
-                    Some("add speed = \"2 m/s\" to [thermal] (the speed of the contact over body 1)"),
-                ))
-            }
-            (None, Some(text)) => self
-                .bounded("thermal.speed", text, Dimension::Speed, SPEED_BOUNDS)
-                .map_err(|mut e| {
-                    e.hint = Some(format!(
-                        "the sliding speed must be positive (a contact that does not slide makes no frictional heat); {}",
-                        e.hint.unwrap_or_default()
-                    ));
-                    e
-                })?,
-        };
-        let speed = |key: &str, text: &Option<String>, default: f64| match text {
-            None => Ok(default),
-            Some(text) => {
-                let value =
-                    units::parse(text, Dimension::Speed).map_err(|m| self.error(key, m, None))?;
-                if value == 0.0 {
-                    Ok(0.0)
-                } else {
-                    self.within(key, value, text, Dimension::Speed, SPEED_BOUNDS)
-                }
-            }
-        };
-        let (body1_speed, body2_speed) = match (&gear, gears) {
             (Some(mesh), Some(pair)) => {
                 let [v1, v2] = pair.flank_speeds_m_per_s(0.0, mesh.pinion_rad_per_s);
-                (v1, v2)
+                Speeds {
+                    body1: v1,
+                    body2: v2,
+                    sliding: 0.0,
+                    keys: ["thermal.pinion_speed"; 2],
+                }
             }
-            _ => (
-                speed("thermal.body1_speed", &table.body1_speed, sliding)?,
-                speed("thermal.body2_speed", &table.body2_speed, 0.0)?,
-            ),
+            _ => self.speeds(table)?,
         };
+        let (body1_speed, body2_speed, sliding) = (speeds.body1, speeds.body2, speeds.sliding);
         let partition = self.partition(table)?;
         let coupled = table.coupled.unwrap_or(false);
         if coupled && contact.kind == ContactKind::Line {
@@ -243,12 +269,121 @@ impl Validator<'_> {
         }
         Ok(Some(ThermalSpec {
             sliding_speed_m_per_s: sliding,
+            traction: TractionDirection::of_speeds(body1_speed, body2_speed),
+            speed_keys: speeds.keys,
             partition,
             coupled,
             body1,
             body2,
             gear,
         }))
+    }
+
+    /// The speeds of a sliding (not geared) contact: `V1` over body 1 (`body1_speed`, by
+    /// default `speed`), `V2` over body 2 (`body2_speed`, by default 0: body 2 carries the
+    /// contact), and the sliding speed `|V1 - V2|`: derived from them, or `speed` when it
+    /// agrees (a `speed` that disagrees is refused, naming the keys).
+    fn speeds(&self, table: &RawThermal) -> Result<Speeds, SceneError> {
+        let number = |v: f64| crate::io::text::significant(v, 6, 1e6, true);
+        let sliding_given = match &table.speed {
+            None => None,
+            Some(text) => Some(
+                self.bounded("thermal.speed", text, Dimension::Speed, SPEED_BOUNDS)
+                    .map_err(|mut e| {
+                        e.hint = Some(format!(
+                            "the sliding speed must be positive (a contact that does not slide makes no frictional heat); {}",
+                            e.hint.unwrap_or_default()
+                        ));
+                        e
+                    })?,
+            ),
+        };
+        let body_speed = |key: &str, text: &str| -> Result<f64, SceneError> {
+            let value =
+                units::parse(text, Dimension::Speed).map_err(|m| self.error(key, m, None))?;
+            if value == 0.0 {
+                Ok(0.0)
+            } else {
+                self.within(key, value, text, Dimension::Speed, SPEED_BOUNDS)
+            }
+        };
+        let (v1, key1) = match (&table.body1_speed, sliding_given) {
+            (Some(text), _) => (body_speed("thermal.body1_speed", text)?, "thermal.body1_speed"),
+            (None, Some(v)) => (v, "thermal.speed"),
+            (None, None) if table.body2_speed.is_some() => {
+                return Err(self.error(
+                    "thermal.body1_speed",
+                    "missing the speed of the contact over body 1 (the surfaces slide at |V1 - V2|)",
+                    Some("add body1_speed = \"2 m/s\" to [thermal] (or speed, the sliding speed, when body 1's surface is the one that moves)"),
+                ))
+            }
+            (None, None) => {
+                return Err(self.error(
+                    "thermal.speed",
+                    "missing the sliding speed",
+                    Some("add speed = \"2 m/s\" to [thermal] (the speed of the contact over body 1), or the bodies' speeds body1_speed and body2_speed"),
+                ))
+            }
+        };
+        let (v2, key2) = match &table.body2_speed {
+            Some(text) => (
+                body_speed("thermal.body2_speed", text)?,
+                "thermal.body2_speed",
+            ),
+            None => (0.0, "thermal.body2_speed"),
+        };
+        let sliding = (v1 - v2).abs();
+        // How each body's speed was set, for the messages below.
+        let origin = |key: &str, given: bool| {
+            if given {
+                key.to_string()
+            } else if key == "thermal.speed" {
+                "thermal.speed, as body1_speed is not given".to_string()
+            } else {
+                "the default, as body2_speed is not given".to_string()
+            }
+        };
+        let described = format!(
+            "the contact moves over body 1 at {} m/s ({}) and over body 2 at {} m/s ({})",
+            number(v1),
+            origin(key1, key1 == "thermal.body1_speed"),
+            number(v2),
+            origin(key2, table.body2_speed.is_some())
+        );
+        if let (Some(given), Some(text)) = (sliding_given, &table.speed) {
+            if (given - sliding).abs() > 1e-9 * given.max(v1).max(v2) {
+                return Err(self.error(
+                    "thermal.speed",
+                    format!(
+                        "speed = \"{}\" disagrees with the bodies' speeds: {described}, so the surfaces slide at |V1 - V2| = {} m/s",
+                        crate::io::text::cut(text, 40),
+                        number(sliding)
+                    ),
+                    Some("the sliding speed is |body1_speed - body2_speed|: remove thermal.speed (it then follows from the bodies' speeds), or correct body1_speed and body2_speed"),
+                ));
+            }
+        }
+        if sliding < SPEED_BOUNDS.lo {
+            let key = if table.body2_speed.is_some() {
+                "thermal.body2_speed"
+            } else {
+                key1
+            };
+            return Err(self.error(
+                key,
+                format!(
+                    "the surfaces do not slide: {described}, so |V1 - V2| = {} m/s (rolling without sliding makes no frictional heat)",
+                    number(sliding)
+                ),
+                Some("give the bodies different speeds (the sliding speed is |body1_speed - body2_speed|), or remove [thermal]"),
+            ));
+        }
+        Ok(Speeds {
+            body1: v1,
+            body2: v2,
+            sliding,
+            keys: [key1, key2],
+        })
     }
 
     /// The running gears: the pinion's speed, and a path of contact that the teeth can run.
@@ -284,13 +419,7 @@ impl Validator<'_> {
             Dimension::RotationalSpeed,
             PINION_SPEED_BOUNDS,
         )?;
-        if pair.interferes() {
-            return Err(self.error(
-                "contact.gears",
-                "the gear's tip reaches inside the pinion's base circle: the teeth interfere (the pinion is undercut), so the path of contact is not involute throughout",
-                Some("give the pinion more teeth (at least 17 at 20 deg with standard teeth) or a larger pressure_angle"),
-            ));
-        }
+        // Pointed or interfering teeth are refused with [contact.gears] itself.
         let ratio = pair.contact_ratio();
         if ratio < 1.0 {
             return Err(self.error(
@@ -308,29 +437,46 @@ impl Validator<'_> {
         })
     }
 
+    /// `thermal.partition`: `"body1"`, `"blok"` (any case) or body 1's fraction (a number, or
+    /// a number in quotes). Equivalent spellings mean the same: the fraction 1 is `"body1"`
+    /// (all heat into body 1; body 2's properties and speed are then not needed).
     fn partition(&self, table: &RawThermal) -> Result<Partition, SceneError> {
         let key = "thermal.partition";
         let hint = Some("use partition = \"body1\" (all heat into body 1), \"blok\" (equal mean flash temperatures) or body 1's fraction, e.g. 0.5");
+        let fraction = |f: f64| {
+            if !(0.0..=1.0).contains(&f) {
+                Err(self.error(
+                    key,
+                    format!(
+                        "body 1's fraction must lie in [0, 1], got {}",
+                        crate::io::text::number(f)
+                    ),
+                    hint,
+                ))
+            } else if f == 1.0 {
+                Ok(Partition::Body1)
+            } else {
+                Ok(Partition::Fraction(f))
+            }
+        };
         match &table.partition {
             None => Ok(Partition::Body1),
-            Some(NumberOrText::Text(text)) => match text.trim() {
-                "body1" => Ok(Partition::Body1),
-                "blok" => Ok(Partition::Blok),
-                other => Err(self.error(
-                    key,
-                    format!("unknown partition `{}`", crate::io::text::cut(other, 40)),
-                    hint,
-                )),
-            },
-            Some(NumberOrText::Number(f)) if (0.0..=1.0).contains(f) => Ok(Partition::Fraction(*f)),
-            Some(NumberOrText::Number(f)) => Err(self.error(
-                key,
-                format!(
-                    "body 1's fraction must lie in [0, 1], got {}",
-                    crate::io::text::number(*f)
-                ),
-                hint,
-            )),
+            Some(NumberOrText::Text(text)) => {
+                let word = text.trim().to_ascii_lowercase();
+                match word.as_str() {
+                    "body1" => Ok(Partition::Body1),
+                    "blok" => Ok(Partition::Blok),
+                    other => match other.parse::<f64>() {
+                        Ok(f) => fraction(f),
+                        Err(_) => Err(self.error(
+                            key,
+                            format!("unknown partition `{}`", crate::io::text::cut(text, 40)),
+                            hint,
+                        )),
+                    },
+                }
+            }
+            Some(NumberOrText::Number(f)) => fraction(*f),
         }
     }
 

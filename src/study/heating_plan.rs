@@ -1,0 +1,371 @@
+//! What the heating of a scene (`[thermal]`) will cost, planned before anything is computed:
+//! the grid its study takes, the memory and the CPU time, and whether that grid resolves the
+//! speeds. [`crate::study::admit`] refuses a scene beyond these limits (so `check` does), naming
+//! the key the scene wrote: the speed that sets a Hertz contact's grid, the size of a rough
+//! scene's map, the pinion's speed of running gears (issue 42, classes 2 and 4).
+//!
+//! ## The cost, measured
+//! A 3-D heating study keeps the thermal stress operator of one depth at a time: six
+//! influence-coefficient lattices of `2ny x 2nx`, their spectra and the oversampled lattice of
+//! their smooth part (four times longer in x), besides the contact's DC-FFT layers. Measured with
+//! `/usr/bin/time -v` on `stressfield thermal` (release build, 2026-11-27, two cores shared with
+//! another build: CPU time is the sum over threads):
+//!
+//! | grid | cells | peak memory | CPU time |
+//! |---|---|---|---|
+//! | rough ball, 64² | 4 096 | 14.9 MB | 2.9 s |
+//! | rough ball, 128² | 16 384 | 35.3 MB | 9.1 s |
+//! | rough ball, 256² | 65 536 | 108 MB | 34 s |
+//! | rough ball, 384² | 147 456 | 232 MB | 74 s |
+//! | rough ball, 512² | 262 144 | 408 MB | 108 s |
+//! | sliding sphere at 2 m/s (Pe 32), 129 x 97 | 12 513 | 26.4 MB | 8.1 s |
+//! | the same at 6.25 m/s (Pe 100), 403 x 303 | 122 109 | 188 MB | 61 s |
+//! | the same at 9 m/s (Pe 144), 580 x 436 | 252 880 | 381 MB | 112 s |
+//!
+//! so about 1.5 kB and 0.5 ms of CPU a cell ([`BYTES_PER_CELL`], [`CPU_SECONDS_PER_CELL`]);
+//! the heating sheet (`--figure`, `render`) evaluates 25 more depths (19 s in all for the
+//! sphere at 2 m/s). A line contact's plane problem is a row of at most 640 strips: its grid
+//! is small (the gears' 41 points of the path and the study at the hottest: 0.1 s).
+//!
+//! ## The limits
+//! - A 3-D heating grid of at most [`MAX_CELLS`] cells (512 x 512: about two minutes of CPU,
+//!   one on two idle cores, and 400 MB): a Hertz contact's grid is refined with the speed
+//!   (cells of `1/u` below `a/20`), so this bounds the Péclet number (about 148 for a sphere);
+//!   a rough scene's grid is its map.
+//! - Memory within [`crate::field::memory_limit_bytes`].
+//! - The cell Péclet number `u dx` within [`MAX_CELL_PECLET`] (a Hertz grid of at most 640
+//!   cells across `4a`; a rough map as sampled; gears at every point of the path).
+
+use crate::field::memory_limit_bytes;
+use crate::scene::{ContactKind, Scene, ThermalSpec};
+use crate::study::gear_heating::{path_positions, scene_at};
+use crate::study::thermal::{hertz_layout, inverse_length, ThermalStudyError, STUDY_WINDOW};
+use crate::thermal::temperature::MAX_CELL_PECLET;
+
+/// Peak memory of a 3-D heating study a cell of its grid (measured: 1.47 to 1.54 kB).
+pub const BYTES_PER_CELL: usize = 1600;
+/// Memory besides the grid (the process, the scene).
+pub const BASE_BYTES: usize = 16 << 20;
+/// CPU time of a 3-D heating study a cell of its grid (measured: 0.44 to 0.55 ms), s.
+pub const CPU_SECONDS_PER_CELL: f64 = 5e-4;
+/// The heating sheet's sections (25 depths) against the study's 16: its CPU time a cell.
+pub const SHEET_CPU_SECONDS_PER_CELL: f64 = 8e-4;
+/// The most cells of a 3-D heating grid: 512 x 512.
+pub const MAX_CELLS: usize = 1 << 18;
+
+/// The heating of a scene as planned.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HeatingPlan {
+    /// The grid of the study, `[ny, nx]` (a line contact: rows of strips; gears: the largest
+    /// grid along the path).
+    pub shape: [usize; 2],
+    /// A plane problem (line contact, gears).
+    pub line: bool,
+    /// Peak memory, bytes.
+    pub bytes: usize,
+    /// CPU time of the study, and of the heating sheet besides it, s.
+    pub cpu_seconds: f64,
+    pub sheet_cpu_seconds: f64,
+}
+
+impl HeatingPlan {
+    fn of_grid(shape: [usize; 2], line: bool, rough_bytes: usize) -> Self {
+        let cells = shape[0] * shape[1];
+        // A plane problem's heavy part is the contact's DC-FFT layer over the rows: a
+        // twentieth of the 3-D cost a cell, generously.
+        let time = if line { 0.05 } else { 1.0 };
+        Self {
+            shape,
+            line,
+            bytes: (BASE_BYTES + BYTES_PER_CELL.saturating_mul(cells)).max(rough_bytes),
+            cpu_seconds: time * CPU_SECONDS_PER_CELL * cells as f64,
+            sheet_cpu_seconds: time * SHEET_CPU_SECONDS_PER_CELL * cells as f64,
+        }
+    }
+
+    /// `"129 x 97 cells, about 8 s of CPU (the heating sheet 10 s more) and 36 MiB"`.
+    pub fn summary(&self) -> String {
+        format!(
+            "{} x {} cells, about {} of CPU (the heating sheet {} more) and {}",
+            self.shape[1],
+            self.shape[0],
+            duration(self.cpu_seconds),
+            duration(self.sheet_cpu_seconds),
+            crate::io::text::bytes(self.bytes as u64)
+        )
+    }
+}
+
+/// `"0.4 s"`, `"12 s"`, `"3.5 min"`, `"2.1 h"`.
+pub fn duration(seconds: f64) -> String {
+    if seconds < 1.0 {
+        format!("{seconds:.1} s")
+    } else if seconds < 120.0 {
+        format!("{seconds:.0} s")
+    } else if seconds < 7200.0 {
+        format!("{:.1} min", seconds / 60.0)
+    } else {
+        format!("{:.1} h", seconds / 3600.0)
+    }
+}
+
+/// Why the heating of a scene cannot be computed here: the key the scene wrote, the message
+/// and the fix.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Refusal {
+    pub key: String,
+    pub message: String,
+    pub hint: String,
+}
+
+/// Plans the heating of `scene`: `None` without `[thermal]`, else its grid and cost, or why
+/// it is refused (module doc).
+pub fn plan(scene: &Scene) -> Result<Option<HeatingPlan>, Refusal> {
+    let Some(spec) = &scene.thermal else {
+        return Ok(None);
+    };
+    if let Some(mesh) = &spec.gear {
+        return gears(scene, mesh).map(Some);
+    }
+    match scene.contact.kind {
+        ContactKind::Line | ContactKind::Point | ContactKind::Elliptical => {
+            hertz(scene, spec).map(Some)
+        }
+        ContactKind::Rough => rough(scene, spec).map(Some),
+        ContactKind::Tractions | ContactKind::Surface => Ok(None),
+    }
+}
+
+/// The study's grid of a Hertz contact: refined with the speed, so a grid beyond the limits
+/// is refused under the key of the speed that asks for it.
+fn hertz(scene: &Scene, spec: &ThermalSpec) -> Result<HeatingPlan, Refusal> {
+    let layout = hertz_layout(scene, spec, &STUDY_WINDOW).map_err(|e| speed_refusal(scene, &e))?;
+    let line = scene.contact.kind == ContactKind::Line;
+    let plan = HeatingPlan::of_grid(layout.shape, line, 0);
+    let cells = layout.shape[0] * layout.shape[1];
+    if !line && (cells > MAX_CELLS || plan.bytes > memory_limit_bytes()) {
+        let a = scene.contact.half_width_m();
+        let (body, fastest) = fastest(spec);
+        let peclet = inverse_length(fastest) * a;
+        // The grid takes about 12 (u a)² cells (4a by 3b in cells of 1/u and b/(a u)).
+        let limit = ((MAX_CELLS as f64) / 12.0).sqrt();
+        return Err(Refusal {
+            key: spec.speed_keys[body - 1].to_string(),
+            message: format!(
+                "at {} m/s over body {body} (Péclet number V a/(2κ) = {}) the heating grid needs cells of at most 1/u = {} µm: {}, more than the {} cells allowed ({})",
+                crate::io::text::significant(fastest.speed_m_per_s, 4, 1e6, true),
+                crate::io::text::significant(peclet, 4, 1e6, true),
+                crate::io::text::significant(1e6 / inverse_length(fastest), 4, 1e9, true),
+                plan.summary(),
+                MAX_CELLS,
+                limit_text()
+            ),
+            hint: format!(
+                "lower the speed: these bodies are heated up to a Péclet number of about {limit:.0}; beyond, the flash temperature follows the fast limit of Jaeger and Blok, growing as √Pe"
+            ),
+        });
+    }
+    Ok(plan)
+}
+
+/// Body (1 or 2) with the largest `u = V/(2κ)`, and its properties.
+fn fastest(spec: &ThermalSpec) -> (usize, &crate::scene::ThermalBody) {
+    match &spec.body2 {
+        Some(b2) if inverse_length(b2) > inverse_length(&spec.body1) => (2, b2),
+        _ => (1, &spec.body1),
+    }
+}
+
+/// What the limit of [`MAX_CELLS`] costs.
+fn limit_text() -> String {
+    let most = HeatingPlan::of_grid([512, 512], false, 0);
+    format!(
+        "512 x 512, about {} of CPU and {}",
+        duration(most.cpu_seconds),
+        crate::io::text::bytes(most.bytes as u64)
+    )
+}
+
+/// A Hertz grid that cannot resolve the speed (the cell Péclet number beyond
+/// [`MAX_CELL_PECLET`] at 640 cells): refused under the speed's key.
+fn speed_refusal(scene: &Scene, error: &ThermalStudyError) -> Refusal {
+    match error {
+        ThermalStudyError::CellPeclet {
+            key,
+            body,
+            cell_peclet,
+            hint,
+        } => {
+            let a = scene.contact.half_width_m();
+            let peclet = scene
+                .thermal
+                .as_ref()
+                .map(|spec| {
+                    let b = if *body == 2 {
+                        spec.body2.as_ref().unwrap_or(&spec.body1)
+                    } else {
+                        &spec.body1
+                    };
+                    inverse_length(b) * a
+                })
+                .unwrap_or(f64::NAN);
+            Refusal {
+                key: (*key).to_string(),
+                message: format!(
+                    "body {body}'s Péclet number V a/(2κ) is {}: the heat penetrates less than a cell while the contact crosses one (cell Péclet number {:.3} on the finest grid, 640 cells across 4a; at most {MAX_CELL_PECLET})",
+                    crate::io::text::significant(peclet, 4, 1e9, true),
+                    cell_peclet
+                ),
+                hint: (*hint).to_string(),
+            }
+        }
+        other => Refusal {
+            key: "thermal".into(),
+            message: other.to_string(),
+            hint: "check the [thermal] table".into(),
+        },
+    }
+}
+
+/// A rough scene: the grid is the map's, so its size is refused under the map's key, a speed
+/// its samples cannot resolve under the speed's.
+fn rough(scene: &Scene, spec: &ThermalSpec) -> Result<HeatingPlan, Refusal> {
+    let Some(surface) = &scene.surface else {
+        return Ok(HeatingPlan::of_grid([0, 0], false, 0));
+    };
+    let [ny, nx] = surface.heights.shape();
+    let [dx, _] = surface.heights.spacing_m();
+    for (index, body) in std::iter::once(&spec.body1)
+        .chain(spec.body2.iter())
+        .enumerate()
+    {
+        let cell_peclet = inverse_length(body) * dx;
+        if cell_peclet > MAX_CELL_PECLET * (1.0 + 1e-9) {
+            return Err(Refusal {
+                key: spec.speed_keys[index.min(1)].to_string(),
+                message: format!(
+                    "at {} m/s over body {} the cell Péclet number V dx/(2κ) of the map's {} µm samples is {cell_peclet:.3}, more than {MAX_CELL_PECLET}: the heat penetrates less than a sample while the contact crosses one",
+                    crate::io::text::significant(body.speed_m_per_s, 4, 1e6, true),
+                    index + 1,
+                    crate::io::text::significant(dx * 1e6, 4, 1e9, true)
+                ),
+                hint: format!(
+                    "lower the speed (at most {} m/s with these samples), or sample the surface more finely",
+                    crate::io::text::significant(
+                        MAX_CELL_PECLET * 2.0 * body.properties.diffusivity_m2_per_s / dx,
+                        3,
+                        1e9,
+                        true
+                    )
+                ),
+            });
+        }
+    }
+    let periodicity = match scene.contact.rough.map(|r| r.periodic) {
+        Some(true) => crate::operator::elastic::Periodicity::Periodic,
+        _ => crate::operator::elastic::Periodicity::NonPeriodic,
+    };
+    let solve = crate::contact::rough::RoughContactProblem::memory_bytes([ny, nx], periodicity);
+    let plan = HeatingPlan::of_grid([ny, nx], false, solve);
+    if ny * nx > MAX_CELLS || plan.bytes > memory_limit_bytes() {
+        let key = if surface.generated {
+            "surface.generate.samples"
+        } else {
+            "surface.file"
+        };
+        return Err(Refusal {
+            key: key.into(),
+            message: format!(
+                "the heating of a {nx} x {ny} map needs {}: more than the heating allows ({} cells, {}; memory within {})",
+                plan.summary(),
+                MAX_CELLS,
+                limit_text(),
+                crate::io::text::bytes(memory_limit_bytes() as u64)
+            ),
+            hint: "use a coarser map for the heating (half the samples a side takes a quarter of the time and memory), or remove [thermal] to solve the contact alone".into(),
+        });
+    }
+    Ok(plan)
+}
+
+/// Running gears: every point of the path is a line contact whose grid must resolve the
+/// flanks' speeds there; refused under `thermal.pinion_speed`, naming the point.
+fn gears(scene: &Scene, mesh: &crate::scene::GearMesh) -> Result<HeatingPlan, Refusal> {
+    let Some(pair) = scene.contact.dimensional.and_then(|d| d.gears) else {
+        return Ok(HeatingPlan::of_grid([0, 0], true, 0));
+    };
+    let mut largest = [0, 0];
+    for s in path_positions(&pair) {
+        // The grid does not depend on the sliding speed (only the flux does).
+        let Some((at, point)) = scene_at(scene, mesh, s, 1.0) else {
+            continue;
+        };
+        let Some(spec) = &at.thermal else { continue };
+        match hertz_layout(&at, spec, &STUDY_WINDOW) {
+            Ok(layout) => {
+                if layout.shape[0] * layout.shape[1] > largest[0] * largest[1] {
+                    largest = layout.shape;
+                }
+            }
+            Err(error) => {
+                let mut refusal = speed_refusal(&at, &error);
+                refusal.message = format!(
+                    "at {} rpm, at s = {} mm on the path of contact the flanks move at {} and {} m/s (the contact half-width {} µm): {}",
+                    crate::io::text::significant(
+                        mesh.pinion_rad_per_s * 30.0 / std::f64::consts::PI,
+                        6,
+                        1e9,
+                        true
+                    ),
+                    crate::io::text::significant(s * 1e3, 4, 1e6, true),
+                    crate::io::text::significant(point.flank_speeds_m_per_s[0], 4, 1e9, true),
+                    crate::io::text::significant(point.flank_speeds_m_per_s[1], 4, 1e9, true),
+                    crate::io::text::significant(point.half_width_m * 1e6, 4, 1e9, true),
+                    refusal.message
+                );
+                refusal.hint = "lower thermal.pinion_speed (or use smaller teeth, contact.gears.module: the Péclet number grows with the flank speed and the contact's width)".into();
+                return Err(refusal);
+            }
+        }
+    }
+    Ok(HeatingPlan::of_grid(largest, true, 0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sphere(speed: &str) -> Scene {
+        let text = format!(
+            "format = 1\n[contact]\nkind = \"point\"\nload = \"500 N\"\nfriction = 0.1\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"20 mm\"\nmaterial = \"steel\"\n[thermal]\nspeed = \"{speed}\"\npartition = \"blok\"\n"
+        );
+        Scene::parse(&text, "s", "s.toml").expect("valid scene")
+    }
+
+    /// The plan is of the grid the study takes, and its cost follows the measured constants;
+    /// the Péclet number the limit allows is the one the refusal states.
+    #[test]
+    fn the_plan_is_the_studys_grid_and_the_limit_is_stated() {
+        for speed in ["0.1 m/s", "2 m/s", "6 m/s"] {
+            let scene = sphere(speed);
+            let spec = scene.thermal.expect("[thermal]");
+            let plan = plan(&scene).expect("within the limits").expect("heated");
+            let grid = crate::study::thermal::hertz_grid(&scene, &spec, &STUDY_WINDOW)
+                .expect("the study's grid");
+            assert_eq!(plan.shape, grid.shape, "{speed}");
+            let cells = (plan.shape[0] * plan.shape[1]) as f64;
+            assert_eq!(plan.cpu_seconds, CPU_SECONDS_PER_CELL * cells);
+            assert_eq!(plan.bytes, BASE_BYTES + BYTES_PER_CELL * cells as usize);
+        }
+        // About 12 (u a)² cells: Pe 140 passes, Pe 160 is refused under the speed's key.
+        let a = sphere("1 m/s").contact.half_width_m();
+        let kappa = crate::thermal::material::thermal_preset("steel")
+            .expect("steel")
+            .diffusivity_m2_per_s;
+        let at = |peclet: f64| format!("{} m/s", peclet * 2.0 * kappa / a);
+        plan(&sphere(&at(140.0))).expect("Pe 140");
+        let refusal = plan(&sphere(&at(160.0))).expect_err("Pe 160");
+        assert_eq!(refusal.key, "thermal.speed");
+        assert!(refusal.hint.contains("about 148"), "{}", refusal.hint);
+    }
+}

@@ -8,12 +8,13 @@
 //!   distance itself (`s (mm)`, or `s (µm)` for short distances, see
 //!   [`super::ValueTimeline`]), which the time panel opens on:
 //!   - `wear/pressure`: the contact pressure (MPa) on one colour range for all steps (to the
-//!     hardness cap when reached: the capped cells in the top colour), the cells at the cap
-//!     outlined;
+//!     hardness cap when reached: the capped cells in the top colour), or each step on its own
+//!     when the steps' peaks span more than a decade (the colour bar at every step, the title
+//!     says so); the cells at the cap outlined;
 //!   - `wear/topography`: the worn heights below the unworn top (µm), one range for all, the
 //!     scar outlined;
 //!   - `wear/section`: the von Mises stress (MPa) in the xz section through the step's largest
-//!     (one range for all steps), its maximum labelled;
+//!     (one range for all steps, or each its own as the pressure's), its maximum labelled;
 //!   - `series/...`: the real contact area and the scar (mm²), the plastic area (µm²), the worn
 //!     volume with Archard's `k W s` (10³ µm³ or µm³), the largest pressure and von Mises
 //!     stress (MPa) and, with `[thermal]`, the largest flash temperature (K), plotted natively
@@ -150,6 +151,20 @@ pub fn record(
         .flat_map(|s| s.values_pa.iter())
         .fold(0.0f64, |m, &v| m.max(v * 1e-6));
     let s_range = (0.0, super::round_up(1.03 * s_top).max(1e-9));
+    // A view whose steps' peaks span more than a decade takes each step's range from its own
+    // field (its colour bar at every step, the title says so): one range would leave the
+    // worn steps one dark colour.
+    let spans_a_decade = |peaks: &mut dyn Iterator<Item = f64>| {
+        let (lo, hi) = peaks.fold((f64::INFINITY, 0.0f64), |(a, b), p| (a.min(p), b.max(p)));
+        lo > 0.0 && hi / lo > 10.0
+    };
+    let own_p = spans_a_decade(&mut study.steps.iter().map(|s| s.solution.max_pressure_pa));
+    let own_s = spans_a_decade(
+        &mut sections
+            .iter()
+            .map(|s| s.values_pa.iter().fold(0.0f64, |m, &v| m.max(v))),
+    );
+    let own_range = |top: f64| (0.0, super::round_up(1.03 * top).max(1e-9));
 
     let view_px = main_view_px(true);
     let zeros = ndarray::Array2::zeros((ny, nx));
@@ -210,7 +225,7 @@ pub fn record(
         &pressure_frame,
         &pressure_map,
         &pressure_shown,
-        Some(p_range),
+        (!own_p).then_some(p_range),
     )?;
     log_map_static(
         stream,
@@ -227,7 +242,7 @@ pub fn record(
             &section_frame,
             &blank_section,
             &section_shown,
-            Some(s_range),
+            (!own_s).then_some(s_range),
         )?;
     }
 
@@ -339,7 +354,26 @@ pub fn record(
                 section::short(h)
             ));
         }
-        let title = super::step_text(k, steps, &text);
+        let mut title = super::step_text(k, steps, &text);
+        let range = if own_p {
+            title.push_str(" (own colour range)");
+            let range = match hardness_mpa {
+                Some(h) if solution.max_pressure_pa * 1e-6 >= h * (1.0 - 1e-12) => (0.0, h),
+                _ => own_range(solution.max_pressure_pa * 1e-6),
+            };
+            section::log_colour_bar(
+                stream,
+                When::Step,
+                "wear/pressure",
+                &pressure_frame,
+                ColorMap::Inferno,
+                "p (MPa)",
+                range,
+            )?;
+            range
+        } else {
+            p_range
+        };
         log_map_step(
             stream,
             When::Step,
@@ -347,7 +381,7 @@ pub fn record(
             &pressure_frame,
             &pressure,
             &shown,
-            p_range,
+            range,
             &title,
         )?;
         // Topography, the scar outlined.
@@ -400,7 +434,26 @@ pub fn record(
                 section::short(maximum.x_over_a * um),
                 section::short(maximum.z_over_a * um),
             );
-            let map = section_map(cut.values_pa.mapv(|v| v * 1e-6), subtitle.clone());
+            let values = cut.values_pa.mapv(|v| v * 1e-6);
+            let peak = values.iter().fold(0.0f64, |m, &v| m.max(v));
+            let mut title = super::step_text(k, steps, &subtitle);
+            let range = if own_s {
+                title.push_str(" (own colour range)");
+                let range = own_range(peak);
+                section::log_colour_bar(
+                    stream,
+                    When::Step,
+                    "wear/section",
+                    &section_frame,
+                    scene.figure.colormap,
+                    "σvM (MPa)",
+                    range,
+                )?;
+                range
+            } else {
+                s_range
+            };
+            let map = section_map(values, subtitle.clone());
             let shown = section::displayed(&map, &map.panels[0]);
             log_map_step(
                 stream,
@@ -409,8 +462,8 @@ pub fn record(
                 &section_frame,
                 &map,
                 &shown,
-                s_range,
-                &super::step_text(k, steps, &subtitle),
+                range,
+                &title,
             )?;
         }
         let report = crate::report::wear::StepReport::of(step);

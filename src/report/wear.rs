@@ -114,7 +114,7 @@ impl WearReport {
             WearKind::Series => (
                 "series",
                 None,
-                "measured topographies, each solved as a static contact; wear = the first map less each map, levelled by the median difference",
+                "measured topographies, each solved as a static contact; wear = the first map less each map, less the offset the unworn cells share",
             ),
         };
         let first = study.steps.first();
@@ -192,7 +192,7 @@ impl WearReport {
             )?,
             None => writeln!(
                 out,
-                "wear: a measured series of {} topographies, each solved as a static contact; the wear is the first map less each, levelled by their median difference",
+                "wear: a measured series of {} topographies, each solved as a static contact; the wear is the first map less each, less the offset of datum the unworn cells share",
                 self.steps.len()
             )?,
         }

@@ -495,11 +495,12 @@ pub struct StepSection {
 }
 
 /// Rows of a step's section in depth.
-const SECTION_ROWS: usize = 32;
+const SECTION_ROWS: usize = 40;
 
-/// The depth of the steps' sections, µm: three times the deepest von Mises maximum of any step
-/// (its depth at least four cells), at most a sixth of the map's width, the same for every
-/// step so that the recording's view keeps its frame.
+/// The depth of the steps' sections, µm: three times the deepest von Mises maximum of any step,
+/// at least four cells and an eighth of the map's width (a section across the whole map no
+/// thinner than that), at most a sixth of it, the same for every step so that the recording's
+/// view keeps its frame.
 pub fn section_depth_um(study: &WearStudy) -> f64 {
     let first = &study.steps[0].solution;
     let (_, nx) = first.pressure_pa.dim();
@@ -510,9 +511,11 @@ pub fn section_depth_um(study: &WearStudy) -> f64 {
         .iter()
         .map(|s| s.maxima.von_mises.z_over_a * REFERENCE_UM)
         .fold(0.0f64, f64::max);
+    let width = nx as f64 * cell_um;
     (3.0 * deepest)
         .max(4.0 * cell_um)
-        .min(nx as f64 * cell_um / 6.0)
+        .max(width / 8.0)
+        .min(width / 6.0)
         .max(cell_um)
 }
 

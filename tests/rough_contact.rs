@@ -482,3 +482,118 @@ fn each_command_solves_a_rough_scene_once() {
         );
     }
 }
+
+/// `contact --json` of a rough scene around the height file `map` (a 64² matrix in µm, 2 µm
+/// spacing), with `extra` keys in `[surface]` and `periodic`.
+fn contact_of_map(
+    dir: &std::path::Path,
+    name: &str,
+    map: &Array2<f64>,
+    extra: &str,
+    periodic: bool,
+) -> serde_json::Value {
+    let rows: Vec<String> = map
+        .rows()
+        .into_iter()
+        .map(|row| {
+            row.iter()
+                .map(|v| format!("{v:.12e}"))
+                .collect::<Vec<_>>()
+                .join(" ")
+        })
+        .collect();
+    std::fs::write(dir.join(format!("{name}.asc")), rows.join("\n") + "\n").expect("map");
+    let scene = dir.join(format!("{name}.toml"));
+    std::fs::write(
+        &scene,
+        format!(
+            "format = 1\ntitle = \"{name}\"\n[contact]\nkind = \"rough\"\nload = \"0.05 N\"\nperiodic = {periodic}\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface]\nfile = \"{name}.asc\"\nspacing = \"2 um\"\nheight_unit = \"um\"\n{extra}\n"
+        ),
+    )
+    .expect("scene");
+    let output = std::process::Command::new(env!("CARGO_BIN_EXE_stressfield"))
+        .args(["contact", scene.to_str().expect("utf-8"), "--json"])
+        .output()
+        .expect("the binary runs");
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    serde_json::from_slice(&output.stdout).expect("json")
+}
+
+/// Measured maps are solved as measured (issue 38): a map tilted as an instrument leaves it
+/// is levelled before its contact is solved, so that it gives the untilted map's contact (the
+/// least-squares plane is linear in the heights: the same to round-off, 1e-9 relative here),
+/// and the JSON says what was removed and the plane's slopes (to 1e-9 of the tilt given);
+/// `level = "none"` keeps the tilt deliberately and its contact moves to the high side.
+/// A periodic solve of a map whose opposite edges do not meet is warned about; one that tiles
+/// (whole periods) is not.
+#[test]
+fn a_tilted_measured_map_is_levelled_before_solving_and_a_seam_is_warned_about() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let n = 64;
+    // Whole periods of two waves on a central bump (a map that tiles, its contact inside it),
+    // heights in µm; and the same tilted by
+    // slopes 4e-3 along x and -2e-3 along y (0.5 µm and 0.25 µm across the map, the order of
+    // its roughness), as a mounted specimen leaves it.
+    let (sx, sy) = (4e-3, -2e-3);
+    // Isolated: on the bump; periodic: the waves alone, so that the raw tilt's high corner
+    // carries the contact onto the seam.
+    for periodic in [false, true] {
+        let bump = if periodic { 0.0 } else { 1.5 };
+        let wavy = Array2::from_shape_fn((n, n), |(j, i)| {
+            let (x, y) = (i as f64 / n as f64, j as f64 / n as f64);
+            let r2 = (x - 0.5).powi(2) + (y - 0.5).powi(2);
+            0.1 * (2.0 * PI * (2.0 * x)).cos() * (2.0 * PI * (3.0 * y)).cos()
+                + 0.05 * (2.0 * PI * (5.0 * x + 1.0 * y) + 0.4).sin()
+                + bump * (-r2 / (2.0 * 0.12f64.powi(2))).exp()
+        });
+        let tilted = Array2::from_shape_fn((n, n), |(j, i)| {
+            wavy[[j, i]] + (sx * (i as f64 * 2.0) + sy * (j as f64 * 2.0)) + 7.0
+        });
+        let flat = contact_of_map(dir.path(), "wavy", &wavy, "", periodic);
+        let levelled = contact_of_map(dir.path(), "tilted", &tilted, "", periodic);
+        let raw = contact_of_map(dir.path(), "raw", &tilted, "level = \"none\"", periodic);
+        let f = |v: &serde_json::Value, key: &str| v[key].as_f64().expect(key);
+        assert_eq!(levelled["levelling"]["removed"], "plane");
+        // The plane removed is the tilt plus the untilted map's own (least squares is linear).
+        let plane = &levelled["levelling"]["plane_m"];
+        let own = &flat["levelling"]["plane_m"];
+        let slope = |k: usize| plane[k].as_f64().expect("slope") - own[k].as_f64().expect("own");
+        assert!(
+            (slope(1) - sx).abs() < 1e-9 * sx.abs(),
+            "{plane} less {own}"
+        );
+        assert!(
+            (slope(2) - sy).abs() < 1e-9 * sy.abs(),
+            "{plane} less {own}"
+        );
+        assert_eq!(raw["levelling"]["removed"], "none");
+        assert!(raw["levelling"]["plane_m"].is_null());
+        assert_eq!(levelled["spots"], flat["spots"], "periodic {periodic}");
+        for key in ["contact_fraction", "max_pressure_pa", "von_mises_max_pa"] {
+            let (a, b) = (f(&levelled, key), f(&flat, key));
+            assert!((a - b).abs() <= 1e-9 * b.abs(), "{key}: {a} against {b}");
+        }
+        // The raw tilt moves the contact: it is no longer the wavy map's.
+        assert!(
+            (f(&raw, "max_pressure_pa") - f(&flat, "max_pressure_pa")).abs()
+                > 1e-3 * f(&flat, "max_pressure_pa")
+                || raw["spots"] != flat["spots"],
+            "the tilt changed nothing"
+        );
+        let seam = |v: &serde_json::Value| {
+            v["warnings"].as_array().expect("warnings").iter().any(|w| {
+                w.as_str()
+                    .expect("text")
+                    .contains("opposite edges do not meet")
+            })
+        };
+        // Whole periods tile, levelled or not (the plane is removed, the waves kept); the raw
+        // tilt steps at both seams.
+        assert!(!seam(&flat) && !seam(&levelled), "periodic {periodic}");
+        assert_eq!(seam(&raw), periodic, "periodic {periodic}: {raw}");
+    }
+}

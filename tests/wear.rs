@@ -233,7 +233,9 @@ fn a_series_read_back_from_heights_out_gives_the_simulated_steps() {
         let series = write(
             &out,
             "series.toml",
-            &format!("{generated}{counter}[surface]\nspacing = \"4 um\"\n{fragment}"),
+            &format!(
+                "{generated}{counter}[surface]\nspacing = \"4 um\"\nlevel = \"none\"\n{fragment}"
+            ),
         );
         let measured = wear_steps(&series, &[]);
         assert_eq!(measured.len(), simulated.len());

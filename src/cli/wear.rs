@@ -69,7 +69,7 @@ pub fn wear(scene_path: &Path, json: bool, heights_out: Option<&Path>) -> Result
     if let Some(dir) = heights_out {
         let mut staged = Staged::new();
         let mut fragment = format!(
-            "# The worn heights of {} at each step (m, float64, [rows, columns], row = y), as a\n# measured series: paste into a rough scene with [surface] spacing = \"{} m\".\n",
+            "# The worn heights of {} at each step (m, float64, [rows, columns], row = y), as a\n# measured series: paste into a rough scene with [surface] spacing = \"{} m\" and\n# level = \"none\" (the simulation's own heights have no tilt to remove).\n",
             scene.name,
             stressfield::io::text::number(report.spacing_m[0])
         );

@@ -283,6 +283,20 @@ pub(crate) fn yield_level(scene: &Scene, stress_per_pa: f64) -> Option<YieldLeve
 }
 
 impl YieldLevel {
+    /// The top of a robust colour range (`top`, the quantile) of a field whose largest value is
+    /// `largest`, that does not hide this level: where the field reaches it, the top rises to
+    /// a quarter beyond the level (or to the largest value, if lower), so that the level's
+    /// line lies inside the colours and the region beyond it shows. Returns the top and
+    /// whether values lie above it.
+    pub(crate) fn colour_top(&self, top: f64, largest: f64) -> (f64, bool) {
+        let top = if largest >= self.value {
+            top.max(largest.min(1.25 * self.value))
+        } else {
+            top
+        };
+        (top, top < largest)
+    }
+
     /// The lines where `values` (over `x`, `z`, display units) reach the level, and the
     /// caption's note: `dashed: σvM = Y = 1500 MPa, yielding inside`, or, when the map stays
     /// below, `σvM < Y = 1800 MPa here (max 0.925 of it)`.

@@ -296,7 +296,8 @@ fn section_figure(scene: &Scene, solution: &RoughSolution, fields: &RoughSheetFi
     subtitle.push_str(&section_agreement(scene, fields));
     let values = fields.xz_pa.mapv(|v| v * stress_per_pa);
     let mut outlines = Vec::new();
-    if let Some(level) = crate::figure::yield_level(scene, stress_per_pa) {
+    let level = crate::figure::yield_level(scene, stress_per_pa);
+    if let Some(level) = &level {
         let (lines, note) = level.mark(quantity, &values, &xz.u, &xz.v);
         outlines = lines;
         subtitle.push_str(&format!("; {note}"));
@@ -304,7 +305,13 @@ fn section_figure(scene: &Scene, solution: &RoughSolution, fields: &RoughSheetFi
     let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
     // A non-negative quantity's colours to the 99.5 % quantile of the section (a single
     // cell's spike would darken the rest); beyond in the top colour, the maximum labelled.
+    // The range never hides the yield line the subtitle promises: where the field reaches
+    // the yield level, the top rises to show it and the region beyond.
     let (top, clipped) = crate::render::robust_top(values.as_slice().unwrap_or(&[]));
+    let (top, clipped) = match &level {
+        Some(level) => level.colour_top(top, values.iter().fold(0.0f64, |m, &v| m.max(v))),
+        None => (top, clipped),
+    };
     let scale =
         (quantity.kind() == crate::stress::QuantityKind::NonNegative && clipped).then(|| {
             PanelScale {

@@ -7,7 +7,11 @@
 //! `max_shear_max_pa`, `max_shear_max_depth_m`, `plastic_cells`, `plasticity_index` (null
 //! without a hardness), `e_star_pa`, `hardness_pa`, `friction`, `poisson`, `periodic`,
 //! `rows`, `columns`, `spacing_m`, `tolerance`, `search_depth_m`, `warnings` (an array of
-//! sentences, empty when the solution gives no cause: [`crate::study::rough::warnings`]).
+//! sentences, empty when the solution gives no cause: [`crate::study::rough::warnings`]),
+//! `levelling` (null for a generated map, else `{"removed": "plane" | "quadratic" | "none",
+//! "plane_m": [c0, c1, c2]}`: what was removed from the measured map before solving, and its
+//! least-squares plane c0 + c1 x + c2 y in m and m/m, x and y from its first sample; null
+//! `plane_m` when nothing was removed).
 
 use std::fmt::Write as _;
 
@@ -49,6 +53,42 @@ pub struct ContactReport {
     pub spacing_m: [f64; 2],
     /// What the reader should be told about the solution (few cells, an impossible peak).
     pub warnings: Vec<String>,
+    /// What was removed from a measured map before solving (`None` for a generated map).
+    pub levelling: Option<LevellingReport>,
+}
+
+/// What was removed from a measured map before its contact was solved.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LevellingReport {
+    /// "plane", "quadratic" or "none".
+    pub removed: &'static str,
+    /// The map's least-squares plane `[c0, c1, c2]` (m, m/m, m/m), when something was removed.
+    pub plane_m: Option<[f64; 3]>,
+}
+
+impl LevellingReport {
+    pub fn of(levelling: crate::scene::Levelling) -> Self {
+        Self {
+            removed: levelling.removed(),
+            plane_m: match levelling {
+                crate::scene::Levelling::Raw => None,
+                crate::scene::Levelling::Removed { plane, .. } => Some(plane),
+            },
+        }
+    }
+
+    /// One line for the readable report.
+    pub fn sentence(&self) -> String {
+        match (self.removed, self.plane_m) {
+            (_, None) => "heights solved as measured (level = \"none\": no plane removed)".into(),
+            (form, Some([_, sx, sy])) => format!(
+                "levelled before solving: the least-squares {} removed (the measured map's slopes {:.3e} along x, {:.3e} along y; level = \"none\" keeps them)",
+                if form == "quadratic" { "second-order form" } else { "mean plane" },
+                sx,
+                sy
+            ),
+        }
+    }
 }
 
 impl ContactReport {
@@ -97,6 +137,11 @@ impl ContactReport {
             columns,
             spacing_m: solution.spacing_m,
             warnings: findings.warnings.clone(),
+            levelling: scene
+                .surface
+                .as_ref()
+                .and_then(|s| s.levelling)
+                .map(LevellingReport::of),
         }
     }
 
@@ -131,6 +176,9 @@ impl ContactReport {
                     ""
                 }
             )?;
+            if let Some(levelling) = &self.levelling {
+                writeln!(out, "{}", levelling.sentence())?;
+            }
         }
         writeln!(
             out,

@@ -80,6 +80,9 @@ pub struct RawSurface {
     pub fill: Option<String>,
     /// Form removed before the statistics: "plane" (default) or "quadratic".
     pub form: Option<String>,
+    /// What is removed from a measured map before a rough contact is solved: "plane",
+    /// "quadratic" or "none" (default: as `form`).
+    pub level: Option<String>,
     /// Wavelength band of the Hurst fit: ["4 um", "100 um"].
     pub band: Option<Vec<String>>,
     pub generate: Option<RawGenerate>,

@@ -262,6 +262,42 @@ pub struct SurfaceSpec {
     pub form: FormRemoval,
     /// The Hurst fit's band of wavelengths (m).
     pub band_m: Option<(f64, f64)>,
+    /// How a measured map of a rough scene was levelled before its contact is solved; `None`
+    /// for a generated map (nothing to level) and for a surface scene (its statistics level
+    /// their own copy).
+    pub levelling: Option<Levelling>,
+}
+
+/// How a measured height map is levelled before its contact is solved (`[surface] level`).
+/// A measured map's tilt is the instrument's mounting, not the contact's geometry: instrument
+/// software (Gwyddion's plane levelling, ISO 25178-2's F-operator) removes it before anything
+/// else, and so does a contact solve unless told otherwise.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Levelling {
+    /// `level = "none"`: the heights as measured, deliberately.
+    Raw,
+    /// The least-squares form removed from body 1's map (and likewise from a measured
+    /// counter-surface's and from every map of a series, each its own); `plane` is body 1's
+    /// least-squares plane `c0 + c1 x + c2 y` (m, and m/m for the slopes, x and y from the map's
+    /// first sample).
+    Removed { form: FormRemoval, plane: [f64; 3] },
+}
+
+impl Levelling {
+    /// The JSON name of what was removed: "plane", "quadratic" or "none".
+    pub fn removed(&self) -> &'static str {
+        match self {
+            Levelling::Raw => "none",
+            Levelling::Removed {
+                form: FormRemoval::Plane,
+                ..
+            } => "plane",
+            Levelling::Removed {
+                form: FormRemoval::Quadratic,
+                ..
+            } => "quadratic",
+        }
+    }
 }
 
 impl Contact {

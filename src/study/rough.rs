@@ -243,6 +243,11 @@ pub fn warnings(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
         ));
     }
     let rough = scene.contact.rough;
+    if let (Some(surface), Some(true)) = (&scene.surface, rough.map(|r| r.periodic)) {
+        if !surface.generated {
+            warnings.extend(seam_warning(&surface.heights, &solution.pressure_pa));
+        }
+    }
     let e_star_pa = rough.and_then(|r| r.e_star_pa);
     let hardness_pa = rough.and_then(|r| r.hardness_pa);
     if let (Some(e_star_pa), None) = (e_star_pa, hardness_pa) {
@@ -256,6 +261,53 @@ pub fn warnings(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
         }
     }
     warnings
+}
+
+/// How many times the steps between neighbouring samples a seam's step may be before a
+/// periodic solve of a measured map is warned about: a map that tiles (a generated one, a
+/// measured one cut to a period) has seam steps like its neighbours'.
+pub const SEAM_STEP_RATIO: f64 = 3.0;
+
+/// The warning for a measured map solved periodically whose opposite edges do not meet
+/// (a seam step more than [`SEAM_STEP_RATIO`] times the neighbours', rms) and whose contact
+/// touches that seam (pressure on its first or last column, or row): the periodic solve
+/// repeats the map, and the step at the seam is a ridge the counter-surface may touch
+/// first. A seam the contact stays away from changes nothing and is not warned about.
+pub fn seam_warning(
+    heights: &crate::surface::HeightMap,
+    pressure_pa: &ndarray::Array2<f64>,
+) -> Option<String> {
+    let steps = heights.seam_steps_m();
+    let (ny, nx) = pressure_pa.dim();
+    let on_seam = |axis: usize| -> usize {
+        if axis == 0 {
+            (0..ny)
+                .filter(|&j| pressure_pa[[j, 0]] > 0.0 || pressure_pa[[j, nx - 1]] > 0.0)
+                .count()
+        } else {
+            (0..nx)
+                .filter(|&i| pressure_pa[[0, i]] > 0.0 || pressure_pa[[ny - 1, i]] > 0.0)
+                .count()
+        }
+    };
+    let worst = steps
+        .iter()
+        .enumerate()
+        .filter(|(_, (seam, inner))| *seam > SEAM_STEP_RATIO * *inner)
+        .map(|(axis, &steps)| (axis, steps, on_seam(axis)))
+        .filter(|&(_, _, cells)| cells > 0)
+        .max_by(|a, b| (a.1 .0 / a.1 .1).total_cmp(&(b.1 .0 / b.1 .1)))?;
+    let (axis, (seam, inner), cells) = worst;
+    let (axis, lines) = if axis == 0 {
+        ("x", "columns")
+    } else {
+        ("y", "rows")
+    };
+    Some(format!(
+        "the map's opposite edges do not meet: repeated periodically it steps by {:.3} µm rms at the seam along {axis} (against {:.3} µm between neighbouring samples), and the contact touches the seam ({cells} contact lines on its first or last {lines}); the ridge may carry contact the measured surface does not have: solve with contact.periodic = false if the contact lies inside the map, or crop the map to a period",
+        seam * 1e6,
+        inner * 1e6
+    ))
 }
 
 /// The findings under the scene's solved contact ([`subsurface_maxima`]; the plasticity index

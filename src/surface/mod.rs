@@ -102,6 +102,37 @@ impl HeightMap {
         [ny, nx]
     }
 
+    /// The steps at the seams of the map repeated periodically, against the steps between
+    /// neighbouring samples: `[(seam, neighbours) along x, (seam, neighbours) along y]`, each the
+    /// rms of the height differences (m) between the last and the first column (row), and
+    /// between neighbouring columns (rows) inside the map. A map that tiles has seam steps like
+    /// its neighbours'; a measured map's opposite edges are unrelated samples, a seam step about
+    /// √2 Sq.
+    pub fn seam_steps_m(&self) -> [(f64, f64); 2] {
+        let h = &self.heights_m;
+        let (ny, nx) = h.dim();
+        let rms = |sum: f64, n: usize| (sum / n.max(1) as f64).sqrt();
+        let (mut seam_x, mut inner_x, mut seam_y, mut inner_y) = (0.0, 0.0, 0.0, 0.0);
+        for j in 0..ny {
+            seam_x += (h[[j, 0]] - h[[j, nx - 1]]).powi(2);
+            for i in 1..nx {
+                inner_x += (h[[j, i]] - h[[j, i - 1]]).powi(2);
+            }
+        }
+        for i in 0..nx {
+            seam_y += (h[[0, i]] - h[[ny - 1, i]]).powi(2);
+        }
+        for j in 1..ny {
+            for i in 0..nx {
+                inner_y += (h[[j, i]] - h[[j - 1, i]]).powi(2);
+            }
+        }
+        [
+            (rms(seam_x, ny), rms(inner_x, ny * (nx - 1))),
+            (rms(seam_y, nx), rms(inner_y, (ny - 1) * nx)),
+        ]
+    }
+
     /// The sampled extent `[nx dx, ny dy]` in m (the period of a periodic surface).
     pub fn size_m(&self) -> [f64; 2] {
         let [ny, nx] = self.shape();

@@ -577,6 +577,30 @@ fn note_baseline(index: usize) -> f64 {
         + font::ascent(SHEET_NOTE)
 }
 
+/// The notes wrapped at word boundaries into lines no wider than `width` pixels (less the
+/// sheet's margins): a long warning stays on the sheet instead of running off both sides.
+fn wrapped_notes(notes: &[String], width: u32) -> Result<Vec<String>, RenderError> {
+    let room = f64::from(width.saturating_sub(2 * GAP)).max(100.0);
+    let mut lines = Vec::new();
+    for note in notes {
+        let mut line = String::new();
+        for word in note.split(' ') {
+            let candidate = if line.is_empty() {
+                word.to_string()
+            } else {
+                format!("{line} {word}")
+            };
+            if !line.is_empty() && font::text_width(&candidate, SHEET_NOTE)? > room {
+                lines.push(std::mem::replace(&mut line, word.to_string()));
+            } else {
+                line = candidate;
+            }
+        }
+        lines.push(line);
+    }
+    Ok(lines)
+}
+
 /// Cell images and their placement: `(x, y)` of each cell, row by row, and the sheet's size,
 /// below the title and `notes` lines.
 fn place(sizes: &[Vec<(u32, u32)>], notes: usize) -> (Vec<Vec<(u32, u32)>>, u32, u32) {
@@ -620,7 +644,8 @@ pub fn sheet_png(sheet: &Sheet) -> Result<image::RgbImage, RenderError> {
         .iter()
         .map(|r| r.iter().map(|i| i.dimensions()).collect())
         .collect();
-    let (places, width, height) = place(&sizes, sheet.notes.len());
+    let notes = wrapped_notes(&sheet.notes, place(&sizes, 0).1)?;
+    let (places, width, height) = place(&sizes, notes.len());
     let mut pixels = vec![255u8; width as usize * height as usize * 3];
     {
         let mut backend = BitMapBackend::with_buffer(&mut pixels, (width, height));
@@ -633,7 +658,7 @@ pub fn sheet_png(sheet: &Sheet) -> Result<image::RgbImage, RenderError> {
             false,
             BLACK,
         )?;
-        for (index, note) in sheet.notes.iter().enumerate() {
+        for (index, note) in notes.iter().enumerate() {
             painter.text(
                 note,
                 (f64::from(width) / 2.0, note_baseline(index)),
@@ -688,7 +713,8 @@ pub fn sheet_svg(sheet: &Sheet) -> Result<String, RenderError> {
         .iter()
         .map(|r| r.iter().map(|d| d.1).collect())
         .collect();
-    let (places, width, height) = place(&sizes, sheet.notes.len());
+    let notes = wrapped_notes(&sheet.notes, place(&sizes, 0).1)?;
+    let (places, width, height) = place(&sizes, notes.len());
     let mut out = format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" width=\"{width}\" height=\"{height}\" viewBox=\"0 0 {width} {height}\">\n<rect x=\"0\" y=\"0\" width=\"{width}\" height=\"{height}\" fill=\"#FFFFFF\"/>\n<text x=\"{}\" y=\"{:.1}\" text-anchor=\"middle\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"{:.1}\">{}</text>\n",
         width / 2,
@@ -696,7 +722,7 @@ pub fn sheet_svg(sheet: &Sheet) -> Result<String, RenderError> {
         font::em(SHEET_TITLE),
         sheet.title.replace('&', "&amp;").replace('<', "&lt;")
     );
-    for (index, note) in sheet.notes.iter().enumerate() {
+    for (index, note) in notes.iter().enumerate() {
         out.push_str(&format!(
             "<text x=\"{}\" y=\"{:.1}\" text-anchor=\"middle\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"{:.1}\" fill=\"#B2182B\">{}</text>\n",
             width / 2,

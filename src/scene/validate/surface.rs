@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
+use crate::scene::Levelling;
 use crate::surface::generate::{self, Amplitude, Form, Generator, Spectrum};
 use crate::surface::read::{self, Fill, ReadOptions};
 use crate::surface::stats::FormRemoval;
@@ -32,6 +33,8 @@ impl Validator<'_> {
                 Some("add [surface] with file = \"surfaces/worn.asc\" (spacing, height_unit), or [surface.generate]"),
             )),
         };
+        let form = self.form_removal(table)?;
+        let level = self.level(table, form, kind)?;
         let (body1, source, shape) = match raw.series.first() {
             None => self.height_map("surface", table)?,
             Some(first) => {
@@ -67,6 +70,18 @@ impl Validator<'_> {
         };
         let generated = shape.is_some();
         let shape = shape.unwrap_or(Form::None);
+        // A measured map of a rough scene is levelled before its contact is solved.
+        let (body1, levelling) = match level {
+            Some(mode) if !generated => {
+                let (map, plane) = self.levelled("surface.level", body1, mode)?;
+                let levelling = match mode {
+                    None => Levelling::Raw,
+                    Some(form) => Levelling::Removed { form, plane },
+                };
+                (map, Some(levelling))
+            }
+            _ => (body1, None),
+        };
         let counter = match (&raw.counter_surface, kind) {
             (None, _) => None,
             (Some(_), ContactKind::Surface) => {
@@ -77,7 +92,27 @@ impl Validator<'_> {
                 ))
             }
             (Some(table), _) => {
-                let (map, _, _) = self.height_map("counter_surface", table)?;
+                let (map, _, counter_shape) = self.height_map("counter_surface", table)?;
+                let map = match counter_shape {
+                    // A measured counter-surface is levelled as body 1's map would be.
+                    None => {
+                        let form = self.form_removal(table)?;
+                        match self.level(table, form, kind)? {
+                            Some(mode) => self.levelled("counter_surface.level", map, mode)?.0,
+                            None => map,
+                        }
+                    }
+                    Some(_) => {
+                        if table.level.is_some() {
+                            return Err(self.error(
+                                "counter_surface.level",
+                                "a generated surface has no tilt to level",
+                                Some("remove level (it applies to measured maps)"),
+                            ));
+                        }
+                        map
+                    }
+                };
                 if map.shape() != body1.shape()
                     || map
                         .spacing_m()
@@ -107,18 +142,17 @@ impl Validator<'_> {
             ),
             None => Arc::new(body1.clone()),
         };
-        let form = match table.form.as_deref() {
-            // A generated ball or cylinder: its form is not roughness.
+        if generated && table.level.is_some() {
+            return Err(self.error(
+                "surface.level",
+                "a generated surface has no tilt to level",
+                Some("remove level (it applies to measured maps)"),
+            ));
+        }
+        // A generated ball or cylinder: its form is not roughness.
+        let form = match table.form {
             None if shape != Form::None => FormRemoval::Quadratic,
-            None | Some("plane") => FormRemoval::Plane,
-            Some("quadratic") => FormRemoval::Quadratic,
-            Some(other) => {
-                return Err(self.error(
-                    "surface.form",
-                    format!("unknown form `{other}`"),
-                    Some("use \"plane\" (the mean plane, always removed) or \"quadratic\" (also a second-order form, e.g. a ball's)"),
-                ))
-            }
+            _ => form,
         };
         let band_m = match &table.band {
             None => None,
@@ -155,7 +189,70 @@ impl Validator<'_> {
             shape,
             form,
             band_m,
+            levelling,
         })
+    }
+
+    /// `form` of a `[surface]`-like table: what the statistics remove besides the mean plane.
+    pub(super) fn form_removal(&self, table: &RawSurface) -> Result<FormRemoval, SceneError> {
+        match table.form.as_deref() {
+            None | Some("plane") => Ok(FormRemoval::Plane),
+            Some("quadratic") => Ok(FormRemoval::Quadratic),
+            Some(other) => Err(self.error(
+                "surface.form",
+                format!("unknown form `{other}`"),
+                Some("use \"plane\" (the mean plane, always removed) or \"quadratic\" (also a second-order form, e.g. a ball's)"),
+            )),
+        }
+    }
+
+    /// `level` of a `[surface]`-like table: `None` where no contact is solved (a surface
+    /// scene, whose statistics level their own copy), else what is removed from a measured map
+    /// before the solve (`Some(None)`: nothing, the heights as measured).
+    pub(super) fn level(
+        &self,
+        table: &RawSurface,
+        form: FormRemoval,
+        kind: ContactKind,
+    ) -> Result<Option<Option<FormRemoval>>, SceneError> {
+        if kind != ContactKind::Rough {
+            if table.level.is_some() {
+                return Err(self.error(
+                    "surface.level",
+                    "a surface scene's statistics always remove the mean plane; level is for the contact of a rough scene",
+                    Some("remove level; form = \"quadratic\" also removes a second-order form"),
+                ));
+            }
+            return Ok(None);
+        }
+        match table.level.as_deref() {
+            None => Ok(Some(Some(form))),
+            Some("plane") => Ok(Some(Some(FormRemoval::Plane))),
+            Some("quadratic") => Ok(Some(Some(FormRemoval::Quadratic))),
+            Some("none") => Ok(Some(None)),
+            Some(other) => Err(self.error(
+                "surface.level",
+                format!("unknown level `{other}`"),
+                Some("use \"plane\" (the least-squares mean plane, the default), \"quadratic\" (also a second-order form) or \"none\" (the heights as measured)"),
+            )),
+        }
+    }
+
+    /// A measured map levelled as `mode` says (`None`: as it is), with its least-squares plane
+    /// `[c0, c1, c2]` ([`crate::surface::stats::level`]).
+    pub(super) fn levelled(
+        &self,
+        key: &str,
+        map: HeightMap,
+        mode: Option<FormRemoval>,
+    ) -> Result<(HeightMap, [f64; 3]), SceneError> {
+        let Some(form) = mode else {
+            return Ok((map, [0.0; 3]));
+        };
+        let (heights, plane) = crate::surface::stats::level(&map, form);
+        let map = HeightMap::new(heights, map.spacing_m())
+            .map_err(|e| self.error(key, e.to_string(), None))?;
+        Ok((map, plane))
     }
 
     /// One `[surface]`-like table: the map, a description of its source, and for a generated

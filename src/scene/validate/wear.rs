@@ -180,6 +180,10 @@ impl Validator<'_> {
         let default_table = RawSurface::default();
         let table = raw.surface.as_ref().unwrap_or(&default_table);
         let first = &surface.body1;
+        // Every map levelled as the first (each its own plane: each was mounted anew).
+        let level = self
+            .level(table, self.form_removal(table)?, ContactKind::Rough)?
+            .flatten();
         let mut result = Vec::with_capacity(entries.len());
         let mut previous: Option<(f64, String)> = None;
         for (i, entry) in entries.iter().enumerate() {
@@ -252,7 +256,7 @@ impl Validator<'_> {
                         Some("a series is one surface measured again: give every topography on the same grid, with one spacing and height unit (crop or resample them alike)"),
                     ));
                 }
-                Arc::new(map)
+                Arc::new(self.levelled(&format!("{key}.file"), map, level)?.0)
             };
             result.push(SeriesEntry {
                 distance_m,

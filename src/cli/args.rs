@@ -24,7 +24,7 @@ pub enum Command {
     Render(RenderArgs),
     /// Record scenes to Rerun .rrd files (out/<scene>.rrd), or stream them to a Rerun viewer
     /// step by step as they are computed: every scene in scenes/ when none is named. Open them
-    /// with the Rerun viewer (see the README for versions).
+    /// with the Rerun viewer 0.36 (pip install "rerun-sdk==0.36.*"; docs/recordings.md).
     Record {
         /// Scene files (TOML). Default: every *.toml in --scenes-dir.
         scenes: Vec<PathBuf>,
@@ -236,7 +236,7 @@ pub struct SurfaceArgs {
     /// Wavelength band of the Hurst fit, e.g. 4um,100um.
     #[arg(long)]
     pub band: Option<String>,
-    /// Combined modulus E* for the Greenwood-Williamson load and the homework's Hertz
+    /// Combined modulus E* for the Greenwood-Williamson load and the highest asperity's Hertz
     /// pressure, e.g. 115GPa (a scene takes it from its bodies).
     #[arg(long)]
     pub e_star: Option<String>,

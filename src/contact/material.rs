@@ -82,7 +82,7 @@ pub const PRESETS: [Preset; 8] = [
             modulus_pa: 450e9,
             poisson: 0.17,
         },
-        description: "B4C (the coating of the lecture notes' thermal example)",
+        description: "B4C (boron carbide, a hard coating)",
     },
 ];
 

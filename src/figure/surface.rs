@@ -20,7 +20,7 @@ use crate::surface::stats::{self, Characterisation};
 pub fn surface_sheet(scene: &Scene, c: &Characterisation) -> Result<Sheet, SheetError> {
     let surface = scene.surface.as_ref().ok_or(SheetError::NoSurface)?;
     let (levelled, _) = stats::level(&surface.body1, c.options.form);
-    // The highest asperity circled (the homework's; border samples are left out).
+    // The highest asperity circled (a summit off the edges: its ring lies inside the map).
     let [row, column] = c.asperity.at;
     let (cx, cy) = (
         (column as f64 + 0.5) * c.spacing_m[0] * 1e6,

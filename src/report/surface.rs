@@ -334,7 +334,9 @@ impl SurfaceReport {
                 ),
             ));
         }
-        rows.push(Row::Heading("Highest asperity, pressed on the counter-body (Hertz)".into()));
+        rows.push(Row::Heading(
+            "Highest asperity, pressed on the counter-body (Hertz)".into(),
+        ));
         rows.push(value(
             "h",
             format!("{:.4} µm", um(self.asperity_height_m)),

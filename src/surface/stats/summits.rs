@@ -65,36 +65,56 @@ pub fn mccool(moments: &Moments, area_m2: f64) -> SummitParameters {
     }
 }
 
-/// The highest sample, its profiles and tip radii (the lecture notes' homework).
+/// Samples an asperity keeps from every edge of the map: its eight neighbours and the ring
+/// the topography draws around it (three samples) lie inside the map, so that it is known to
+/// be a summit and its circle is whole.
+pub const ASPERITY_MARGIN: usize = 3;
+
+/// The highest asperity: the highest summit (a sample no lower than its eight neighbours, as
+/// the summits are counted) at least [`ASPERITY_MARGIN`] samples from every edge (less on a
+/// map too small for it), or the highest sample there when no summit is (a map flat along a
+/// direction); its profiles and tip radii by central differences.
 pub(super) fn highest_asperity(z: &Array2<f64>, spacing: [f64; 2]) -> Asperity {
     let (ny, nx) = z.dim();
     let [dx, dy] = spacing;
-    // Off the border, so that both finite differences exist.
-    // Each row's first highest interior sample, then the first highest row: the first in
-    // row-major order, as a sequential scan finds it.
-    let rows = per_row(ny, |j| {
-        let interior = j > 0 && j + 1 < ny;
-        z.row(j)
-            .iter()
-            .enumerate()
-            .filter(|&(i, _)| interior && i > 0 && i + 1 < nx)
-            .fold(((j, 0), f64::NEG_INFINITY), |best, (i, &v)| {
-                if v > best.1 {
-                    ((j, i), v)
+    let margin = |n: usize| ASPERITY_MARGIN.min(n.saturating_sub(1) / 2).max(1);
+    let (my, mx) = (margin(ny), margin(nx));
+    let inside = |j: usize, i: usize| j >= my && j + my < ny && i >= mx && i + mx < nx;
+    let summit = |j: usize, i: usize| {
+        let v = z[[j, i]];
+        (j - 1..=j + 1).all(|b| (i - 1..=i + 1).all(|a| z[[b, a]] <= v))
+    };
+    // Each row's first highest candidate, then the first highest row: the first in row-major
+    // order, as a sequential scan finds it; summits first, any sample if there is none.
+    let best = |only_summits: bool| {
+        let rows = per_row(ny, |j| {
+            z.row(j)
+                .iter()
+                .enumerate()
+                .filter(|&(i, _)| inside(j, i) && (!only_summits || summit(j, i)))
+                .fold(((j, 0), f64::NEG_INFINITY), |best, (i, &v)| {
+                    if v > best.1 {
+                        ((j, i), v)
+                    } else {
+                        best
+                    }
+                })
+        });
+        rows.into_iter()
+            .fold(((0, 0), f64::NEG_INFINITY), |best, row| {
+                if row.1 > best.1 {
+                    row
                 } else {
                     best
                 }
             })
-    });
-    let (at, height) = rows
-        .into_iter()
-        .fold(((0, 0), f64::NEG_INFINITY), |best, row| {
-            if row.1 > best.1 {
-                row
-            } else {
-                best
-            }
-        });
+    };
+    let found = best(true);
+    let (at, height) = if found.1.is_finite() {
+        found
+    } else {
+        best(false)
+    };
     let (j, i) = at;
     let radius = |left: Option<f64>, right: Option<f64>, step: f64| {
         let (l, r) = (left?, right?);

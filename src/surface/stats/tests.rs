@@ -184,3 +184,21 @@ fn a_map_too_large_for_the_memory_is_refused_before_characterising() {
     // Far beyond any machine, without overflow.
     assert!(check_memory([usize::MAX, usize::MAX], limit).is_err());
 }
+
+#[test]
+fn the_highest_asperity_is_a_summit_off_the_edges() {
+    // A bump at the map's centre and a higher one centred on the second row (the worn map's
+    // highest sample lay on row 1, its circle cut by the edge): the asperity is the centre's,
+    // a summit whose neighbours and drawn ring lie inside the map.
+    let bump = |x: f64, y: f64, cx: f64, cy: f64, h: f64| {
+        h * (-((x - cx).powi(2) + (y - cy).powi(2)) / 8.0).exp()
+    };
+    // Samples 1 µm apart, heights of 1 and 2 µm.
+    let m = map(32, 32, 1e-6, |x, y| {
+        let (x, y) = (x * 1e6, y * 1e6);
+        1e-6 * (bump(x, y, 16.0, 16.0, 1.0) + bump(x, y, 10.0, 1.0, 2.0))
+    });
+    let asperity = highest_asperity(m.heights_m(), m.spacing_m());
+    assert_eq!(asperity.at, [16, 16]);
+    assert!((asperity.height_m - 1e-6).abs() < 1e-9, "{}", asperity.height_m);
+}

@@ -53,6 +53,18 @@ pub(super) fn log_depth_steps(
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
             (a.min(v), b.max(v))
         });
+    // A non-negative quantity's colours to the 99.5 % quantile of all layers' values (one
+    // cell's spike at the surface would leave the deeper layers one dark colour); values
+    // beyond take the top colour, each layer's labelled maximum keeps its value.
+    let hi = if lo >= 0.0 {
+        let all: Vec<f64> = layers
+            .iter()
+            .flat_map(|layer| layer.values_pa.iter().copied())
+            .collect();
+        crate::render::robust_top(&all).0.max(f64::MIN_POSITIVE)
+    } else {
+        hi
+    };
     let (lo, hi) = (lo * per_pa, hi * per_pa);
     let count = layers.len();
     // The layer of the report's maximum (its depth is one of the layers').

@@ -200,5 +200,9 @@ fn the_highest_asperity_is_a_summit_off_the_edges() {
     });
     let asperity = highest_asperity(m.heights_m(), m.spacing_m());
     assert_eq!(asperity.at, [16, 16]);
-    assert!((asperity.height_m - 1e-6).abs() < 1e-9, "{}", asperity.height_m);
+    assert!(
+        (asperity.height_m - 1e-6).abs() < 1e-9,
+        "{}",
+        asperity.height_m
+    );
 }

@@ -21,4 +21,5 @@ mod rough_sheet;
 mod scenes;
 mod surfaces;
 mod thermal;
+mod heating_agree;
 mod wear;

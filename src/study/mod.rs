@@ -25,6 +25,7 @@ pub mod rough;
 pub mod rough_sheet;
 pub mod surface;
 pub mod thermal;
+pub(crate) mod heated_stress;
 pub mod thermal_sections;
 pub mod thermal_sweep;
 pub mod volume;

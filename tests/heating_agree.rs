@@ -57,7 +57,11 @@ fn peclet_chart(sheet: &Sheet) -> &Chart {
         .iter()
         .flatten()
         .find_map(|cell| match cell {
-            Cell::Chart(chart) if chart.title.starts_with("Maximum flash temperature") => {
+            Cell::Chart(chart)
+                if chart
+                    .title
+                    .starts_with("Maximum flash temperature of body 1") =>
+            {
                 Some(chart)
             }
             _ => None,
@@ -77,7 +81,9 @@ fn sheet_agrees_with_report(study: &ThermalStudy, sections: &ThermalSections, sh
     let text = ThermalReport::new(study).text(study);
     let total = &study.total_von_mises;
     let figure = panel(sheet, "Contact + thermal stress: von Mises");
-    let peak = figure.panels[0].peak.expect("the total's maximum is marked");
+    let peak = figure.panels[0]
+        .peak
+        .expect("the total's maximum is marked");
     let printed = format!(
         "total {:.1} MPa at depth {:.2} µm, x = {:.2} µm",
         total.value_pa * 1e-6,
@@ -85,10 +91,19 @@ fn sheet_agrees_with_report(study: &ThermalStudy, sections: &ThermalSections, sh
         total.x_m * 1e6
     );
     assert!(text.contains(&printed), "`{printed}` not in\n{text}");
-    assert_eq!(format!("{:.1}", peak.value), format!("{:.1}", total.value_pa * 1e-6));
-    assert_eq!(format!("{:.2}", peak.z), format!("{:.2}", total.depth_m * 1e6));
+    assert_eq!(
+        format!("{:.1}", peak.value),
+        format!("{:.1}", total.value_pa * 1e-6)
+    );
+    assert_eq!(
+        format!("{:.2}", peak.z),
+        format!("{:.2}", total.depth_m * 1e6)
+    );
     assert_eq!(format!("{:.2}", peak.x), format!("{:.2}", total.x_m * 1e6));
-    assert!((sections.y_m - total.y_m).abs() < 1e-12, "the section's row");
+    assert!(
+        (sections.y_m - total.y_m).abs() < 1e-12,
+        "the section's row"
+    );
     assert!(
         sections
             .depths_m
@@ -129,6 +144,18 @@ fn the_heating_sheet_passes_through_the_reports_maxima() {
     let studied = study(&scene, None, &mut |_| {}).expect("heating");
     let (sections, sheet) = sheet_of("sliding", &studied);
     sheet_agrees_with_report(&studied, &sections, &sheet);
+    // The contact alone's marker is the report's (the closed form's, on y = 0).
+    let contact = panel(&sheet, "Contact stress alone: von Mises").panels[0]
+        .peak
+        .expect("the contact alone's maximum is marked");
+    let c = &studied.contact_von_mises;
+    assert_eq!(
+        [format!("{:.2}", contact.x), format!("{:.2}", contact.z)],
+        [
+            format!("{:.2}", c.x_m * 1e6),
+            format!("{:.2}", c.depth_m * 1e6)
+        ]
+    );
     // The depth is refined, not one of the 16 searched.
     let a = studied.half_width_m;
     let coarse = stressfield::study::thermal::DEPTHS_OVER_A;
@@ -163,9 +190,7 @@ fn the_gears_sheet_and_report_put_the_contact_maximum_at_one_depth() {
         .iter()
         .flatten()
         .find_map(|cell| match cell {
-            Cell::Chart(chart) if chart.title.starts_with("Flash temperature along") => {
-                Some(chart)
-            }
+            Cell::Chart(chart) if chart.title.starts_with("Flash temperature along") => Some(chart),
             _ => None,
         })
         .expect("the path chart");
@@ -207,23 +232,37 @@ fn the_heating_blocks_contact_alone_is_the_closed_form() {
         let vm = hertz.von_mises.value_over_p0 * p0;
         let shear = hertz.max_shear.value_over_p0 * p0;
         let c = &studied.contact_von_mises;
-        assert!((c.value_pa / vm - 1.0).abs() < 1e-9, "{} vs {vm}", c.value_pa);
+        assert!(
+            (c.value_pa / vm - 1.0).abs() < 1e-9,
+            "{} vs {vm}",
+            c.value_pa
+        );
         assert!(
             (studied.contact_max_shear.value_pa / shear - 1.0).abs() < 1e-9,
             "{} vs {shear}",
             studied.contact_max_shear.value_pa
         );
         // Friction on the roller acts in −x (the cam the faster): the mirror image.
-        assert!((c.x_m / a + hertz.von_mises.x_over_a).abs() < 1e-6, "{}", c.x_m / a);
+        assert!(
+            (c.x_m / a + hertz.von_mises.x_over_a).abs() < 1e-6,
+            "{}",
+            c.x_m / a
+        );
         assert!((c.depth_m / a - hertz.von_mises.z_over_a).abs() < 1e-6);
         if friction == 0.4 {
             // On the surface (hertz: x = 0.371a; here mirrored, the traction in −x), where
             // the a/20 DC-FFT grid's smoothing put it at depth; the total's maximum found
             // there too, between the cell centres (not half a cell away).
-            assert!(c.depth_m == 0.0 && (c.x_m / a + 0.371).abs() < 1e-3, "{c:?}");
+            assert!(
+                c.depth_m == 0.0 && (c.x_m / a + 0.371).abs() < 1e-3,
+                "{c:?}"
+            );
             let t = &studied.total_von_mises;
             let cells = (t.x_m - studied.origin_m[0]) / studied.spacing_m[0];
-            assert!(t.depth_m == 0.0 && (cells - cells.round()).abs() > 1e-3, "{t:?}");
+            assert!(
+                t.depth_m == 0.0 && (cells - cells.round()).abs() > 1e-3,
+                "{t:?}"
+            );
         }
         // The sections' contact stress is the closed form at their samples.
         let sections = sections(&studied, &mut |_, _| {}).expect("sections");
@@ -309,11 +348,16 @@ fn tresca_is_half_the_principal_difference_in_the_heating_outputs() {
         text.contains(&format!("= {shear:.1} MPa")),
         "{shear:.1} not in\n{text}"
     );
-    assert!(text.contains("maximum shear (s1 - s3)/2 (Tresca) maxima"), "{text}");
+    assert!(
+        text.contains("maximum shear (s1 - s3)/2 (Tresca) maxima"),
+        "{text}"
+    );
     let scene = cam_on_roller(0.1, "blok");
     let studied = study(&scene, None, &mut |_| {}).expect("heating");
     let (_, sheet) = sheet_of("cam", &studied);
-    assert!(panels(&sheet).iter().all(|f| !f.title.contains("Tresca σ1 − σ3")));
+    assert!(panels(&sheet)
+        .iter()
+        .all(|f| !f.title.contains("Tresca σ1 − σ3")));
     assert!(panels(&sheet)
         .iter()
         .any(|f| f.value_label == "(σ1 − σ3)/2 (MPa)"));
@@ -337,7 +381,11 @@ fn the_peclet_charts_scene_point_is_the_scenes_temperature_with_all_heat_into_bo
     let expected = all.body1.max_temperature_rise_k;
     assert!((t / expected - 1.0).abs() < 1e-9, "{t} vs {expected}");
     // A line contact's curve is computed over strips.
-    assert!(chart.series[0].label.contains("strips"), "{}", chart.series[0].label);
+    assert!(
+        chart.series[0].label.contains("strips"),
+        "{}",
+        chart.series[0].label
+    );
     // And the curve passes through the point: the swept value at the scene's Pe, between
     // its neighbours on log axes, within 2 %.
     let sweep = &chart.series[0].points;
@@ -366,7 +414,8 @@ fn a_stationary_source_is_said_on_the_peclet_chart() {
         .expect("the stationary limit");
     let scene_k = studied.body1.max_temperature_rise_k;
     assert!(
-        stationary.label.contains(&format!("this scene")) && stationary.label.contains(&format!("{scene_k:.1} K")),
+        stationary.label.contains(&format!("this scene"))
+            && stationary.label.contains(&format!("{scene_k:.1} K")),
         "{}",
         stationary.label
     );
@@ -379,7 +428,10 @@ fn a_line_contacts_hottest_point_is_marked_at_y_0() {
     let scene = cam_on_roller(0.1, "blok");
     let studied = study(&scene, None, &mut |_| {}).expect("heating");
     let (_, sheet) = sheet_of("cam", &studied);
-    let surface = panel(&sheet, "Body 1's surface temperature rise (contact outlined)");
+    let surface = panel(
+        &sheet,
+        "Body 1's surface temperature rise (contact outlined)",
+    );
     let peak = surface.panels[0].peak.expect("marked");
     assert_eq!(peak.z, 0.0);
     assert_eq!(peak.x, studied.body1.max_at_m[0] * 1e6);
@@ -388,7 +440,10 @@ fn a_line_contacts_hottest_point_is_marked_at_y_0() {
     let gears = std::fs::read_to_string(repo("scenes/gear_pitch_point.toml"))
         .expect("scene")
         .replace("partition = \"blok\"", "partition = \"body1\"");
-    assert!(gears.contains("partition = \"body1\""), "the gear scene's partition");
+    assert!(
+        gears.contains("partition = \"body1\""),
+        "the gear scene's partition"
+    );
     let scene = Scene::parse(&gears, "gears", "gears.toml").expect("scene");
     let heating = gear_heating(&scene, &mut |_| {}).expect("gears");
     assert_eq!(
@@ -458,8 +513,7 @@ fn a_rough_heating_sheet_states_contacts_maximum_where_its_stresses_live() {
         studied.contact_von_mises.value_pa
     );
     assert!(
-        (studied.contact_max_shear.value_pa / (maxima.max_shear.value_over_p0 * 1e6) - 1.0)
-            .abs()
+        (studied.contact_max_shear.value_pa / (maxima.max_shear.value_over_p0 * 1e6) - 1.0).abs()
             < 1e-9
     );
     let (sections, sheet) = sheet_of("rough", &studied);

@@ -265,7 +265,8 @@ pub fn thermal_sheet(
     // otherwise the section's largest sample.
     let deepest = *sections.depths_m.last().unwrap_or(&0.0);
     let peak_of = |m: &Maximum| {
-        let in_row = (m.y_m - sections.y_m).abs() <= 1e-9 * study.half_width_m;
+        // A closed form's maximum is located to about 1e-8 a (off y = 0 by as much).
+        let in_row = (m.y_m - sections.y_m).abs() <= 1e-6 * study.half_width_m;
         let [x0, x1] = sections.x_m;
         let in_window = m.x_m >= x0 - 1e-12 * x0.abs() && m.x_m <= x1 + 1e-12 * x1.abs();
         (in_row && in_window && m.depth_m <= deepest * (1.0 + 1e-12)).then(|| Peak {
@@ -274,21 +275,22 @@ pub fn thermal_sheet(
             z: um(m.depth_m),
         })
     };
-    let section = |title: &str, subtitle: String, values: &Array2<f64>, label: &str, m: Option<&Maximum>| {
-        let mut figure = map(
-            title,
-            subtitle,
-            section_x,
-            depth,
-            mpa(values),
-            label,
-            ColorMap::Magma,
-            true,
-            Vec::new(),
-        );
-        figure.panels[0].peak = m.and_then(peak_of);
-        figure
-    };
+    let section =
+        |title: &str, subtitle: String, values: &Array2<f64>, label: &str, m: Option<&Maximum>| {
+            let mut figure = map(
+                title,
+                subtitle,
+                section_x,
+                depth,
+                mpa(values),
+                label,
+                ColorMap::Magma,
+                true,
+                Vec::new(),
+            );
+            figure.panels[0].peak = m.and_then(peak_of);
+            figure
+        };
     // Friction on body 1 acts the way body 2 slides over it.
     let source = match study.contact_model {
         ContactModel::ClosedForm { .. } => "closed form",
@@ -364,7 +366,7 @@ pub fn thermal_sheet(
         ],
     ];
     let mut chart = Chart::new(
-        "Maximum flash temperature of body 1 against its speed, under the scene's flux",
+        "Maximum flash temperature of body 1 against Pe",
         "Péclet number of body 1, V1 a / (2κ1)",
         "ΔT max (K), all heat into body 1",
     );

@@ -283,9 +283,7 @@ impl HeatedStress {
                 solution,
                 p0_pa,
                 half_width_m: a,
-            } => solution
-                .stress_over_p0(x / a, y / a, z / a)
-                .scaled(*p0_pa),
+            } => solution.stress_over_p0(x / a, y / a, z / a).scaled(*p0_pa),
             ContactPart::Layers { .. } => Stress::default(),
         }
     }
@@ -322,10 +320,7 @@ impl HeatedStress {
         let w2 = 0.5 * (t + 4.0 * t * t - 3.0 * t * t * t);
         let w3 = 0.5 * (-t * t + t * t * t);
         let thermal = p0.scaled(w0) + p1.scaled(w1) + p2.scaled(w2) + p3.scaled(w3);
-        (
-            thermal,
-            self.contact_at(x, self.y_m(row), layer.depth_m),
-        )
+        (thermal, self.contact_at(x, self.y_m(row), layer.depth_m))
     }
 
     /// Each quantity's largest value over the layer's cells: `(value, row, column)`.
@@ -434,10 +429,7 @@ impl HeatedStress {
         let layer = self.layer(at.depth_m)?;
         let row = self.row_of(at.y_m);
         let dx = self.grid.spacing_m[0];
-        let (lo, hi) = (
-            self.x_m(0),
-            self.x_m(self.grid.shape[1].saturating_sub(1)),
-        );
+        let (lo, hi) = (self.x_m(0), self.x_m(self.grid.shape[1].saturating_sub(1)));
         let bounds = ((at.x_m - dx).max(lo), (at.x_m + dx).min(hi));
         // In units of a cell, so that the search's 1e-9 is of a cell.
         let value = |[s]: [f64; 1]| {

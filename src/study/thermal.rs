@@ -15,7 +15,6 @@
 
 use ndarray::{Array2, Array3};
 
-
 use crate::contact::rough::{self, Control, RoughContactProblem, RoughSolution};
 use crate::operator::elastic::Periodicity;
 use crate::operator::transform::TransformError;
@@ -23,12 +22,12 @@ use crate::scene::Hertz;
 use crate::scene::{ContactKind, Scene, ThermalBody, ThermalSpec};
 use crate::solution::dcfft::{DcFft, DcFftError, TractionGrid, TractionGridError};
 use crate::solution::Solution;
+use crate::study::coupled::{self, CoupledContact, CoupledError};
 use crate::study::heated_stress::{
     HeatedStress, Parts, CONTACT_MAX_SHEAR, CONTACT_VON_MISES, DEPTH_TOLERANCE_OVER_A,
     THERMAL_VON_MISES, TOTAL_MAX_SHEAR, TOTAL_VON_MISES,
 };
 use crate::study::thermal_sections::SECTION_DEPTH_OVER_A;
-use crate::study::coupled::{self, CoupledContact, CoupledError};
 use crate::thermal::heating::frictional_flux;
 use crate::thermal::kernel::CellGrid;
 use crate::thermal::line::LineTemperature;
@@ -618,15 +617,15 @@ pub fn study(
         Some(solution) => ContactModel::Rough {
             periodic: solution.periodicity == Periodicity::Periodic,
         },
-        None if coupled.is_none() => crate::study::closed_form_solution(
-            &scene.contact,
-            signed_friction,
-            poisson,
-        )
-        .map_or(ContactModel::Gridded, |solution| ContactModel::ClosedForm {
-            solution,
-            p0_pa: scene.contact.p0_pa(),
-        }),
+        None if coupled.is_none() => {
+            crate::study::closed_form_solution(&scene.contact, signed_friction, poisson).map_or(
+                ContactModel::Gridded,
+                |solution| ContactModel::ClosedForm {
+                    solution,
+                    p0_pa: scene.contact.p0_pa(),
+                },
+            )
+        }
         None => ContactModel::Gridded,
     };
     let stress = HeatedStress::new(
@@ -681,14 +680,11 @@ pub fn study(
             maxima[CONTACT_MAX_SHEAR] = to_max(found.max_shear);
         }
         (ContactModel::Rough { .. }, Some(solution)) => {
-            let tractions =
-                crate::study::rough::tractions(solution, signed_friction, poisson)
-                    .map_err(|e| ThermalStudyError::Contact(e.to_string()))?;
+            let tractions = crate::study::rough::tractions(solution, signed_friction, poisson)
+                .map_err(|e| ThermalStudyError::Contact(e.to_string()))?;
             let reference = crate::study::rough::REFERENCE_LENGTH_M;
-            let found = crate::study::assess::grid_maxima_to_depth(
-                &tractions,
-                search_depth_m / reference,
-            )?;
+            let found =
+                crate::study::assess::grid_maxima_to_depth(&tractions, search_depth_m / reference)?;
             let [dx, dy] = gridded.spacing_m;
             let to_max = |e: crate::study::assess::Extreme| Maximum {
                 value_pa: e.value_over_p0 * crate::study::rough::REFERENCE_PRESSURE_PA,

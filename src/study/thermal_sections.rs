@@ -161,8 +161,7 @@ pub fn sections(
     // contact's), a window four times as wide as deep centred on the total's maximum.
     let count = ((4.0 * study.section_depth_m / dx).round() as usize).clamp(1, nx);
     let centre = ((study.total_von_mises.x_m - study.origin_m[0]) / dx).round() as isize;
-    let first_column =
-        (centre - (count / 2) as isize).clamp(0, (nx - count) as isize) as usize;
+    let first_column = (centre - (count / 2) as isize).clamp(0, (nx - count) as isize) as usize;
     let mut out: [Array2<f64>; 7] = std::array::from_fn(|_| Array2::zeros((rows, count)));
     for (k, &z) in depths_m.iter().enumerate() {
         let t = temperature(study, &flux1, z, u1)?;
@@ -205,8 +204,8 @@ pub fn sections(
     let fast_times_root_peclet =
         fast_limit(whole, dx, body1.properties.conductivity_w_per_m_k) * a.sqrt();
     // The scene's body 1 under the whole flux (its share undone).
-    let scene_k = (study.body1.share > 0.0)
-        .then(|| study.body1.max_temperature_rise_k / study.body1.share);
+    let scene_k =
+        (study.body1.share > 0.0).then(|| study.body1.max_temperature_rise_k / study.body1.share);
     Ok(ThermalSections {
         row,
         y_m,

@@ -522,6 +522,18 @@ fn a_rough_heating_sheet_states_contacts_maximum_where_its_stresses_live() {
         deepest <= 2.0 * search_depth * (1.0 + 1e-9) + 1e-12,
         "{deepest} against the search depth {search_depth}"
     );
+    let maxima_depth = [
+        studied.total_von_mises.depth_m,
+        studied.contact_von_mises.depth_m,
+        studied.total_max_shear.depth_m,
+        studied.contact_max_shear.depth_m,
+    ]
+    .iter()
+    .fold(0.0f64, |d, &z| d.max(z));
+    assert!(
+        deepest <= (4.0 * maxima_depth).max(16.0 * 1e-6) * (1.0 + 1e-9),
+        "{deepest} for maxima at most {maxima_depth} deep"
+    );
     assert!(deepest >= studied.total_von_mises.depth_m);
     sheet_agrees_with_report(&studied, &sections, &sheet);
 }

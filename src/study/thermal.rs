@@ -149,8 +149,9 @@ pub struct ThermalStudy {
     pub signed_friction: f64,
     /// How the maxima were searched.
     pub search: Search,
-    /// How deep the heating sheet's sections reach (m): 1.2a for a Hertz contact, twice the
-    /// search depth of a rough one (where its stresses live).
+    /// How deep the heating sheet's sections reach (m): 1.2a for a Hertz contact; for a rough
+    /// one where its stresses live: four times the deepest maximum, at least 16 cells, at most
+    /// twice `contact`'s search depth.
     pub section_depth_m: f64,
 }
 
@@ -699,12 +700,23 @@ pub fn study(
         _ => {}
     }
     let section_depth_m = match heated_rough {
-        // Where a rough contact's stresses live: twice `contact`'s search depth (as its
-        // sheet), within half the map.
-        Some(_) => (2.0 * search_depth_m).min(
-            0.5 * (gridded.shape[1] as f64 * gridded.spacing_m[0])
-                .min(gridded.shape[0] as f64 * gridded.spacing_m[1]),
-        ),
+        // Where a rough contact's stresses live: four times the deepest of the maxima, at
+        // least 16 cells, at most twice `contact`'s search depth (as its sheet).
+        Some(_) => {
+            let deepest = [
+                maxima[TOTAL_VON_MISES],
+                maxima[CONTACT_VON_MISES],
+                maxima[TOTAL_MAX_SHEAR],
+                maxima[CONTACT_MAX_SHEAR],
+            ]
+            .iter()
+            .fold(0.0f64, |d, m| d.max(m.depth_m));
+            let cell = gridded.spacing_m[0].min(gridded.spacing_m[1]);
+            (4.0 * deepest)
+                .max(16.0 * cell)
+                .min(2.0 * search_depth_m)
+                .max(deepest)
+        }
         None => SECTION_DEPTH_OVER_A * a,
     };
     Ok(ThermalStudy {

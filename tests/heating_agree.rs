@@ -531,7 +531,8 @@ fn a_rough_heating_sheet_states_contacts_maximum_where_its_stresses_live() {
     .iter()
     .fold(0.0f64, |d, &z| d.max(z));
     assert!(
-        deepest <= (4.0 * maxima_depth).max(16.0 * 1e-6) * (1.0 + 1e-9),
+        // (the last step may overshoot to keep the maximum's depth on a sample)
+        deepest <= (4.0 * maxima_depth).max(16.0 * 1e-6) * (1.0 + 1.0 / 20.0),
         "{deepest} for maxima at most {maxima_depth} deep"
     );
     assert!(deepest >= studied.total_von_mises.depth_m);

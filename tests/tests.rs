@@ -5,6 +5,7 @@ mod cli;
 mod contracts;
 mod dcfft;
 mod golden;
+mod heating_agree;
 mod inputs;
 mod line_contact;
 mod mutations;

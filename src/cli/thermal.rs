@@ -23,8 +23,9 @@ pub(crate) fn study(scene: &Scene, rough: Option<&RoughSolution>) -> Result<Ther
         study::thermal::Progress::Coupled { iteration, change } => bar.set_message(format!(
             "coupled iteration {iteration}: pressure change {change:.1e}"
         )),
-        study::thermal::Progress::Depth { done, .. } => {
+        study::thermal::Progress::Depth { done, total } => {
             bar.set_message("thermal stress by depth");
+            bar.set_length(total as u64);
             bar.set_position(done as u64)
         }
         study::thermal::Progress::Path { .. } => {}
@@ -81,14 +82,10 @@ fn heating_sheet(
     study: &ThermalStudy,
     gear: Option<&GearHeating>,
 ) -> Result<stressfield::render::chart::Sheet> {
-    // The friction that made the heat (a gear mesh's own coefficient).
-    let friction = scene
-        .thermal
-        .and_then(|t| t.gear)
-        .map_or(scene.contact.friction, |g| g.friction);
     let bar = progress_bar(study::thermal_sections::SECTION_STEPS as u64 + 1);
     bar.set_message("thermal sections by depth");
-    let sections = study::thermal_sections::sections(study, friction, &mut |done, _| {
+    let sections = study::thermal_sections::sections(study, &mut |done, total| {
+        bar.set_length(total as u64);
         bar.set_position(done as u64)
     });
     bar.finish_and_clear();

@@ -6,11 +6,13 @@
 
 use ndarray::Array2;
 
+use crate::thermal::heating::Partition;
+
 use crate::field::Axis;
 use crate::render::chart::{Cell, Chart, Scale, Series, Sheet, Style};
-use crate::render::{ColorMap, Figure, Levels, Mark, Panel};
+use crate::render::{ColorMap, Figure, Levels, Mark, Panel, Peak};
 use crate::study::gear_heating::{GearHeating, PathPoint};
-use crate::study::thermal::ThermalStudy;
+use crate::study::thermal::{ContactModel, Maximum, ThermalStudy};
 use crate::study::thermal_sections::ThermalSections;
 
 const MAP_WIDTH: u32 = 520;
@@ -140,6 +142,49 @@ pub(crate) fn asymptotes(slow: Option<f64>, fast: f64, lo: f64, hi: f64) -> Vec<
     series
 }
 
+/// The asymptotes of body 1's maximum flash temperature under a fixed flux against its
+/// Péclet number from `lo` to `hi`, dashed: the stationary temperature (a constant; none for
+/// a line contact) and the fast limit `θ = fast / √Pe` (Jaeger 1942; Blok 1937; see
+/// [`crate::study::thermal_sections`]). `stationary_scene`: the scene is a stationary source
+/// with this temperature (K), which the stationary limit's label states.
+fn flux_asymptotes(
+    stationary: Option<f64>,
+    fast: f64,
+    lo: f64,
+    hi: f64,
+    stationary_scene: Option<f64>,
+) -> Vec<Series> {
+    let line = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
+        (0..=40)
+            .map(|k| {
+                let pe = lo * (hi / lo).powf(k as f64 / 40.0);
+                (pe, f(pe))
+            })
+            .collect()
+    };
+    let mut series = Vec::new();
+    if let Some(stationary) = stationary {
+        series.push(Series {
+            label: match stationary_scene {
+                Some(t) => format!(
+                    "stationary limit: this scene (body 1 carries the contact, Pe = 0): {t:.1} K"
+                ),
+                None => "stationary limit (Pe → 0)".into(),
+            },
+            points: line(&|_| stationary),
+            style: Style::Dashed,
+            colour: [44, 160, 44],
+        });
+    }
+    series.push(Series {
+        label: "fast limit ∝ 1/√Pe (Jaeger, Blok)".into(),
+        points: line(&|pe| fast / pe.sqrt()),
+        style: Style::Dashed,
+        colour: [214, 39, 40],
+    });
+    series
+}
+
 /// The sheet of a scene's heating; running gears (`gear`) add the flash temperatures along the path of contact,
 /// and the maps and sections are then those of its hottest point.
 pub fn thermal_sheet(
@@ -171,7 +216,7 @@ pub fn thermal_sheet(
             g.points[g.hottest].s_m * 1e3
         ))
     );
-    let surface = map(
+    let mut surface = map(
         "Body 1's surface temperature rise (contact outlined)",
         if pe > 0.0 {
             format!("{peclet_text}; the contact moves in +x, the wake trails at −x")
@@ -186,16 +231,27 @@ pub fn thermal_sheet(
         false,
         outline,
     );
+    // The report's hottest point (a line contact's: y = 0, every row being the same).
+    surface.panels[0].peak = Some(Peak {
+        value: study.body1.max_temperature_rise_k,
+        x: um(study.body1.max_at_m[0]),
+        z: um(study.body1.max_at_m[1]),
+    });
     let depth = Axis::new(
         0.0,
         um(*sections.depths_m.last().unwrap_or(&0.0)),
         sections.depths_m.len(),
     );
-    let at_row = format!("y = {:.1} µm", um(sections.y_m));
+    let section_x = Axis::new(
+        um(sections.x_m[0]),
+        um(sections.x_m[1]),
+        sections.temperature_k.ncols(),
+    );
+    let at_hot_row = format!("y = {:.1} µm", um(sections.temperature_y_m));
     let temperature = map(
         "Temperature rise under the hottest point",
-        format!("xz section at {at_row}; {peclet_text}"),
-        x_axis,
+        format!("xz section at {at_hot_row}; {peclet_text}"),
+        section_x,
         depth,
         sections.temperature_k.clone(),
         "ΔT (K)",
@@ -203,32 +259,56 @@ pub fn thermal_sheet(
         true,
         Vec::new(),
     );
+    let at_row = format!("y = {:.1} µm", um(sections.y_m));
     let mpa = |a: &Array2<f64>| a.mapv(|v| v * 1e-6);
-    let peak = |a: &Array2<f64>| a.iter().fold(0.0f64, |m, &v| m.max(v)) * 1e-6;
-    let section = |title: &str, subtitle: String, values: &Array2<f64>, label: &str| {
-        map(
-            title,
-            subtitle,
-            x_axis,
-            depth,
-            mpa(values),
-            label,
-            ColorMap::Magma,
-            true,
-            Vec::new(),
-        )
+    // A report's maximum marked where it lies in the section (its row and depth range);
+    // otherwise the section's largest sample.
+    let deepest = *sections.depths_m.last().unwrap_or(&0.0);
+    let peak_of = |m: &Maximum| {
+        // A closed form's maximum is located to about 1e-8 a (off y = 0 by as much).
+        let in_row = (m.y_m - sections.y_m).abs() <= 1e-6 * study.half_width_m;
+        let [x0, x1] = sections.x_m;
+        let in_window = m.x_m >= x0 - 1e-12 * x0.abs() && m.x_m <= x1 + 1e-12 * x1.abs();
+        (in_row && in_window && m.depth_m <= deepest * (1.0 + 1e-12)).then(|| Peak {
+            value: m.value_pa * 1e-6,
+            x: um(m.x_m),
+            z: um(m.depth_m),
+        })
     };
+    let section =
+        |title: &str, subtitle: String, values: &Array2<f64>, label: &str, m: Option<&Maximum>| {
+            let mut figure = map(
+                title,
+                subtitle,
+                section_x,
+                depth,
+                mpa(values),
+                label,
+                ColorMap::Magma,
+                true,
+                Vec::new(),
+            );
+            figure.panels[0].peak = m.and_then(peak_of);
+            figure
+        };
     // Friction on body 1 acts the way body 2 slides over it.
+    let source = match study.contact_model {
+        ContactModel::ClosedForm { .. } => "closed form",
+        ContactModel::Gridded | ContactModel::Rough { .. } => "DC-FFT",
+    };
     let traction = match study.spec.traction {
-        crate::scene::TractionDirection::PlusX => format!("{at_row}; p and q = μ p in +x"),
+        crate::scene::TractionDirection::PlusX => {
+            format!("{at_row}; p and q = μ p in +x ({source})")
+        }
         crate::scene::TractionDirection::MinusX => {
-            format!("{at_row}; p and q = μ p in −x (body 2 the faster)")
+            format!("{at_row}; p and q = μ p in −x, body 2 the faster ({source})")
         }
     };
     let e_alpha = format!(
         "{at_row}; E α = {:.3} MPa/K",
         study.spec.body1.material.modulus_pa * study.spec.body1.properties.expansion_per_k * 1e-6
     );
+    let shear_label = "(σ1 − σ3)/2 (MPa)";
     let stresses = [
         [
             section(
@@ -236,12 +316,14 @@ pub fn thermal_sheet(
                 e_alpha.clone(),
                 &sections.thermal_von_mises_pa,
                 "σvM (MPa)",
+                Some(&study.thermal_von_mises),
             ),
             section(
-                "Thermal stress alone: Tresca σ1 − σ3",
+                "Thermal stress alone: maximum shear (σ1 − σ3)/2",
                 e_alpha,
-                &sections.thermal_tresca_pa,
-                "σ1 − σ3 (MPa)",
+                &sections.thermal_max_shear_pa,
+                shear_label,
+                None,
             ),
         ],
         [
@@ -250,38 +332,42 @@ pub fn thermal_sheet(
                 traction.clone(),
                 &sections.contact_von_mises_pa,
                 "σvM (MPa)",
+                Some(&study.contact_von_mises),
             ),
             section(
-                "Contact stress alone: Tresca σ1 − σ3",
+                "Contact stress alone: maximum shear (σ1 − σ3)/2",
                 traction.clone(),
-                &sections.contact_tresca_pa,
-                "σ1 − σ3 (MPa)",
+                &sections.contact_max_shear_pa,
+                shear_label,
+                Some(&study.contact_max_shear),
             ),
         ],
         [
             section(
                 "Contact + thermal stress: von Mises",
                 format!(
-                    "{at_row}; contact alone peaks at {:.0} MPa",
-                    peak(&sections.contact_von_mises_pa)
+                    "{at_row}; contact alone peaks at {:.1} MPa",
+                    study.contact_von_mises.value_pa * 1e-6
                 ),
                 &sections.total_von_mises_pa,
                 "σvM (MPa)",
+                Some(&study.total_von_mises),
             ),
             section(
-                "Contact + thermal stress: Tresca σ1 − σ3",
+                "Contact + thermal stress: maximum shear (σ1 − σ3)/2",
                 format!(
-                    "{at_row}; contact alone peaks at {:.0} MPa",
-                    peak(&sections.contact_tresca_pa)
+                    "{at_row}; contact alone peaks at {:.1} MPa",
+                    study.contact_max_shear.value_pa * 1e-6
                 ),
-                &sections.total_tresca_pa,
-                "σ1 − σ3 (MPa)",
+                &sections.total_max_shear_pa,
+                shear_label,
+                Some(&study.total_max_shear),
             ),
         ],
     ];
     let mut chart = Chart::new(
-        "Maximum flash temperature of body 1 against speed",
-        "Péclet number V a / (2κ)",
+        "Maximum flash temperature of body 1 against Pe",
+        "Péclet number of body 1, V1 a / (2κ1)",
         "ΔT max (K), all heat into body 1",
     );
     chart.x_scale = Scale::Log;
@@ -291,26 +377,26 @@ pub fn thermal_sheet(
         sections.sweep.last().map_or(100.0, |p| p.0),
     );
     chart.series.push(Series {
-        label: "computed (DC-FFT)".into(),
+        label: if study.line {
+            "computed (strips, q = μ p Vs fixed)".into()
+        } else {
+            "computed (cells by DC-FFT, q = μ p Vs fixed)".into()
+        },
         points: sections.sweep.clone(),
         style: Style::Markers,
         colour: [31, 119, 180],
     });
-    chart.series.extend(asymptotes(
-        sections.slow_per_peclet,
-        sections.fast_per_root_peclet,
+    chart.series.extend(flux_asymptotes(
+        sections.stationary_k,
+        sections.fast_times_root_peclet,
         lo,
         hi,
+        (pe == 0.0).then_some(()).and(sections.scene_k),
     ));
-    if pe >= lo && pe <= hi && study.body1.share > 0.0 {
-        // The sweep slides at body 1's speed; the scene's flux scaled to it.
-        let to_sweep = study.spec.body1.speed_m_per_s / study.spec.sliding_speed_m_per_s;
+    if let (Some(scene_k), true) = (sections.scene_k, pe >= lo && pe <= hi) {
         chart.series.push(Series {
-            label: "this scene".into(),
-            points: vec![(
-                pe,
-                study.body1.max_temperature_rise_k / study.body1.share * to_sweep,
-            )],
+            label: format!("this scene (Pe = {pe:.2}: {scene_k:.1} K)"),
+            points: vec![(pe, scene_k)],
             style: Style::Markers,
             colour: [0, 0, 0],
         });
@@ -327,6 +413,16 @@ pub fn thermal_sheet(
         title: format!("{name}: frictional heating"),
         notes: Vec::new(),
         rows,
+    }
+}
+
+/// Blok's flash temperature as the gears' partition computes it (the two-body formula only
+/// for Blok's partition; see [`crate::study::gear_heating`]).
+pub fn blok_formula(partition: Partition) -> &'static str {
+    match partition {
+        Partition::Blok => "Blok 1.11 μ w Vs / (√(2a) (β1 √V1 + β2 √V2))",
+        Partition::Fraction(_) => "Blok f 1.11 μ w Vs / (√(2a) β1 √V1)",
+        Partition::Body1 => "Blok 1.11 μ w Vs / (√(2a) β1 √V1)",
     }
 }
 
@@ -363,7 +459,7 @@ fn gear_charts(gear: &GearHeating) -> Vec<Cell> {
             [255, 127, 14],
         ),
         series(
-            "Blok 1.11 μ w Vs / (√(2a) Σ β √V)",
+            blok_formula(gear.study.spec.partition),
             &|p| p.blok_k,
             Style::Dashed,
             [120, 120, 120],

@@ -61,6 +61,9 @@ pub(crate) fn draw<DB: DrawingBackend>(
             painter.stroke(line, pens.contour, CONTOUR)?;
         }
         for outline in &pp.outlines {
+            // A white line under the black dashes: the outline stays visible on the dark end
+            // of a colour map (inferno, magma) as on its light end.
+            painter.stroke(outline, 2.5 * pens.contour, WHITE)?;
             painter.dashed(
                 outline,
                 pens.contour,

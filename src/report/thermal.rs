@@ -9,7 +9,17 @@
 //! `body2_max_temperature_rise_k`, `body2_mean_temperature_rise_k` (null without body 2),
 //! `thermal_von_mises_max_depth_m`, `contact_von_mises_max_pa`,
 //! `contact_von_mises_max_depth_m`, `contact_von_mises_max_x_m`, `total_von_mises_max_x_m`,
-//! `contact_tresca_max_pa`, `total_tresca_max_pa`, `total_tresca_max_depth_m`, `half_width_m`,
+//! `total_von_mises_max_y_m`, `thermal_von_mises_max_x_m`, `thermal_von_mises_max_y_m`, the
+//! maximum (Tresca) shear `(σ1 − σ3)/2` as everywhere in stressfield:
+//! `contact_max_shear_max_pa`, `contact_max_shear_max_depth_m`, `total_max_shear_max_pa`,
+//! `total_max_shear_max_depth_m`, `total_max_shear_max_x_m` (these replaced the
+//! `*_tresca_max_*` keys, which held σ1 − σ3, twice the shear: renamed rather than kept, so
+//! that no reader takes the one for the other); `contact_stress` (`"closed_form"` for line
+//! and point contacts: the contact alone is `hertz`'s; `"dcfft"` otherwise),
+//! `search_depths`, `search_depth_m`, `depth_tolerance_m` (the search), the properties used:
+//! `body1_conductivity_w_per_m_k`, `body1_diffusivity_m2_per_s`, `body1_expansion_per_k`,
+//! `body1_modulus_pa`, `body1_poisson`, `body2_conductivity_w_per_m_k`,
+//! `body2_diffusivity_m2_per_s`, `body2_expansion_per_k` (null without body 2); `half_width_m`,
 //! `rows`, `columns`, `spacing_m`, `traction_on_body1` (`"+x"`, or `"-x"` when body 2's
 //! surface is the faster: friction on body 1 acts the way body 2 slides over it, and the
 //! contact and total stresses are those of that traction); `coupled` (null unless `coupled = true`): an object with
@@ -24,15 +34,15 @@
 //! `max_pressure_pa`, `pinion_flank_speed_m_per_s`, `gear_flank_speed_m_per_s`,
 //! `sliding_speed_m_per_s`, `peclet`, `heat_partition_body1`, `max_temperature_rise_k`,
 //! `body2_max_temperature_rise_k`, `blok_temperature_rise_k`. Positions are measured from the contact's centre (a rough
-//! scene: the window's centre); the maxima are searched over the grid at the depths
-//! [`crate::study::thermal::DEPTHS_OVER_A`] times `half_width_m`.
+//! scene: the window's centre); the maxima are searched as [`crate::study::heated_stress`]
+//! says.
 
 use std::fmt::Write as _;
 
 use serde::Serialize;
 
 use crate::study::gear_heating::{GearHeating, PathPoint};
-use crate::study::thermal::ThermalStudy;
+use crate::study::thermal::{ContactModel, ThermalStudy};
 use crate::thermal::heating::Partition;
 
 /// What the report says.
@@ -58,9 +68,27 @@ pub struct ThermalReport {
     pub contact_von_mises_max_depth_m: f64,
     pub contact_von_mises_max_x_m: f64,
     pub total_von_mises_max_x_m: f64,
-    pub contact_tresca_max_pa: f64,
-    pub total_tresca_max_pa: f64,
-    pub total_tresca_max_depth_m: f64,
+    pub thermal_von_mises_max_x_m: f64,
+    pub thermal_von_mises_max_y_m: f64,
+    pub total_von_mises_max_y_m: f64,
+    pub contact_max_shear_max_pa: f64,
+    pub contact_max_shear_max_depth_m: f64,
+    pub total_max_shear_max_pa: f64,
+    pub total_max_shear_max_depth_m: f64,
+    pub total_max_shear_max_x_m: f64,
+    /// `"closed_form"` (McEwen, Hamilton) or `"dcfft"`: where the contact stress comes from.
+    pub contact_stress: &'static str,
+    pub search_depths: usize,
+    pub search_depth_m: f64,
+    pub depth_tolerance_m: f64,
+    pub body1_conductivity_w_per_m_k: f64,
+    pub body1_diffusivity_m2_per_s: f64,
+    pub body1_expansion_per_k: f64,
+    pub body1_modulus_pa: f64,
+    pub body1_poisson: f64,
+    pub body2_conductivity_w_per_m_k: Option<f64>,
+    pub body2_diffusivity_m2_per_s: Option<f64>,
+    pub body2_expansion_per_k: Option<f64>,
     pub half_width_m: f64,
     pub rows: usize,
     pub columns: usize,
@@ -127,7 +155,7 @@ impl GearPathReport {
         }
     }
 
-    fn write_text(&self, out: &mut String) -> std::fmt::Result {
+    fn write_text(&self, out: &mut String, partition: Partition) -> std::fmt::Result {
         writeln!(
             out,
             "spur gears running: pinion at {:.1} rpm, mesh friction {}; path of contact from {:.3} to {:.3} mm about the pitch point, contact ratio {:.4}",
@@ -139,7 +167,12 @@ impl GearPathReport {
         )?;
         writeln!(
             out,
-            "  (load shared equally by the pairs in contact; s from the pitch point, + towards the pinion's tip; Blok: 1.11 mu w Vs / (sqrt(2a) (b1 sqrt V1 + b2 sqrt V2)))"
+            "  (load shared equally by the pairs in contact; s from the pitch point, + towards the pinion's tip; Blok: {})",
+            match partition {
+                Partition::Blok => "1.11 mu w Vs / (sqrt(2a) (b1 sqrt V1 + b2 sqrt V2))",
+                Partition::Fraction(_) => "f 1.11 mu w Vs / (sqrt(2a) b1 sqrt V1), f the given fraction",
+                Partition::Body1 => "1.11 mu w Vs / (sqrt(2a) b1 sqrt V1), all heat into the pinion",
+            }
         )?;
         writeln!(
             out,
@@ -273,9 +306,32 @@ impl ThermalReport {
             contact_von_mises_max_depth_m: study.contact_von_mises.depth_m,
             contact_von_mises_max_x_m: study.contact_von_mises.x_m,
             total_von_mises_max_x_m: study.total_von_mises.x_m,
-            contact_tresca_max_pa: study.contact_tresca.value_pa,
-            total_tresca_max_pa: study.total_tresca.value_pa,
-            total_tresca_max_depth_m: study.total_tresca.depth_m,
+            thermal_von_mises_max_x_m: study.thermal_von_mises.x_m,
+            thermal_von_mises_max_y_m: study.thermal_von_mises.y_m,
+            total_von_mises_max_y_m: study.total_von_mises.y_m,
+            contact_max_shear_max_pa: study.contact_max_shear.value_pa,
+            contact_max_shear_max_depth_m: study.contact_max_shear.depth_m,
+            total_max_shear_max_pa: study.total_max_shear.value_pa,
+            total_max_shear_max_depth_m: study.total_max_shear.depth_m,
+            total_max_shear_max_x_m: study.total_max_shear.x_m,
+            contact_stress: match study.contact_model {
+                ContactModel::ClosedForm { .. } => "closed_form",
+                ContactModel::Gridded | ContactModel::Rough { .. } => "dcfft",
+            },
+            search_depths: study.search.coarse_depths,
+            search_depth_m: study.search.depth_m,
+            depth_tolerance_m: study.search.tolerance_m,
+            body1_conductivity_w_per_m_k: study.spec.body1.properties.conductivity_w_per_m_k,
+            body1_diffusivity_m2_per_s: study.spec.body1.properties.diffusivity_m2_per_s,
+            body1_expansion_per_k: study.spec.body1.properties.expansion_per_k,
+            body1_modulus_pa: study.spec.body1.material.modulus_pa,
+            body1_poisson: study.spec.body1.material.poisson,
+            body2_conductivity_w_per_m_k: study
+                .spec
+                .body2
+                .map(|b| b.properties.conductivity_w_per_m_k),
+            body2_diffusivity_m2_per_s: study.spec.body2.map(|b| b.properties.diffusivity_m2_per_s),
+            body2_expansion_per_k: study.spec.body2.map(|b| b.properties.expansion_per_k),
             half_width_m: study.half_width_m,
             rows: study.shape[0],
             columns: study.shape[1],
@@ -317,7 +373,7 @@ impl ThermalReport {
         };
         writeln!(out, "frictional heating")?;
         if let Some(gear) = &self.gear_path {
-            gear.write_text(out)?;
+            gear.write_text(out, study.spec.partition)?;
         }
         if let Some(c) = &self.coupled {
             let percent = |new: f64, old: f64| 100.0 * (new - old) / old;
@@ -392,36 +448,80 @@ impl ThermalReport {
                 "  body 2 flash temperature: max {max:.2} K; mean over the contact {mean:.2} K"
             )?;
         }
+        let properties = |k: f64, kappa: f64, alpha: f64| {
+            format!(
+                "K = {} W/(m K), kappa = {} m^2/s, alpha = {} 1/K",
+                crate::io::text::significant(k, 4, 1e6, true),
+                crate::io::text::significant(kappa, 4, 1e6, true),
+                crate::io::text::significant(alpha, 4, 1e6, true)
+            )
+        };
         writeln!(
             out,
-            "  von Mises maxima (body 1): thermal {:.1} MPa at depth {:.2} µm; contact alone {:.1} MPa at depth {:.2} µm, x = {:.2} µm; total {:.1} MPa at depth {:.2} µm, x = {:.2} µm",
+            "  thermal properties used: body 1 {}, E = {:.1} GPa, nu = {}{}",
+            properties(
+                self.body1_conductivity_w_per_m_k,
+                self.body1_diffusivity_m2_per_s,
+                self.body1_expansion_per_k
+            ),
+            self.body1_modulus_pa * 1e-9,
+            self.body1_poisson,
+            match (
+                self.body2_conductivity_w_per_m_k,
+                self.body2_diffusivity_m2_per_s,
+                self.body2_expansion_per_k
+            ) {
+                (Some(k), Some(kappa), Some(alpha)) =>
+                    format!("; body 2 {}", properties(k, kappa, alpha)),
+                _ => String::new(),
+            }
+        )?;
+        let a = self.half_width_m;
+        writeln!(
+            out,
+            "  von Mises maxima (body 1): thermal {:.1} MPa at depth {:.2} µm, x = {:.2} µm ({:.3} a), y = {:.2} µm; contact alone {:.1} MPa at depth {:.2} µm, x = {:.2} µm; total {:.1} MPa at depth {:.2} µm, x = {:.2} µm, y = {:.2} µm",
             mpa(self.thermal_von_mises_max_pa),
             um(self.thermal_von_mises_max_depth_m),
+            um(self.thermal_von_mises_max_x_m),
+            self.thermal_von_mises_max_x_m / a,
+            um(self.thermal_von_mises_max_y_m),
             mpa(self.contact_von_mises_max_pa),
             um(self.contact_von_mises_max_depth_m),
             um(self.contact_von_mises_max_x_m),
             mpa(self.total_von_mises_max_pa),
             um(self.total_von_mises_max_depth_m),
-            um(self.total_von_mises_max_x_m)
+            um(self.total_von_mises_max_x_m),
+            um(self.total_von_mises_max_y_m)
         )?;
         writeln!(
             out,
-            "  Tresca (s1 - s3) maxima: contact alone {:.1} MPa; total {:.1} MPa at depth {:.2} µm",
-            mpa(self.contact_tresca_max_pa),
-            mpa(self.total_tresca_max_pa),
-            um(self.total_tresca_max_depth_m)
+            "  maximum shear (s1 - s3)/2 (Tresca) maxima: contact alone {:.1} MPa at depth {:.2} µm; total {:.1} MPa at depth {:.2} µm, x = {:.2} µm",
+            mpa(self.contact_max_shear_max_pa),
+            um(self.contact_max_shear_max_depth_m),
+            mpa(self.total_max_shear_max_pa),
+            um(self.total_max_shear_max_depth_m),
+            um(self.total_max_shear_max_x_m)
         )?;
         writeln!(
             out,
-            "  grid: {} x {} cells of {:.3} x {:.3} µm; maxima searched at {} depths to {:.2} µm",
+            "  grid: {} x {} cells of {:.3} x {:.3} µm; contact stress {}; maxima searched at the cell centres of {} depths to {:.2} µm, refined in depth to {:.3} µm{}",
             self.columns,
             self.rows,
             um(self.spacing_m[0]),
             um(self.spacing_m[1]),
-            crate::study::thermal::DEPTHS_OVER_A.len(),
-            um(crate::study::thermal::DEPTHS_OVER_A
-                [crate::study::thermal::DEPTHS_OVER_A.len() - 1]
-                * self.half_width_m)
+            if self.contact_stress == "closed_form" {
+                "from the closed form (contact alone as hertz)"
+            } else {
+                "by DC-FFT on the grid"
+            },
+            self.search_depths,
+            um(self.search_depth_m),
+            um(self.depth_tolerance_m),
+            if self.contact_stress == "closed_form" {
+                " and the totals in x between the centres"
+            } else {
+                ""
+            }
         )
     }
 }

@@ -161,7 +161,7 @@ const RIVAL_PEAK_MARGIN: f64 = 0.05;
 /// The search depths from 0 to `depth`: quarters of `dz` in the first cell, then
 /// [`UNIFORM_LAYERS`] steps of `dz` from the surface, then steps of [`DEEP_LAYER_GAP`] times
 /// the depth reached, the last at `depth`.
-fn search_depths(dz: f64, depth: f64) -> Vec<f64> {
+pub(crate) fn search_depths(dz: f64, depth: f64) -> Vec<f64> {
     let mut depths = vec![0.0];
     depths.extend(
         FIRST_CELL_LAYERS

@@ -22,14 +22,15 @@
 //! | the same at 6.25 m/s (Pe 100), 403 x 303 | 122 109 | 188 MB | 61 s |
 //! | the same at 9 m/s (Pe 144), 580 x 436 | 252 880 | 381 MB | 112 s |
 //!
-//! so about 1.5 kB and 0.5 ms of CPU a cell ([`BYTES_PER_CELL`], [`CPU_SECONDS_PER_CELL`]);
+//! so about 1.5 kB and 0.5 ms of CPU a cell; since the maxima are refined (issue 38, about 40
+//! layers instead of 16) 1.2 ms a cell ([`BYTES_PER_CELL`], [`CPU_SECONDS_PER_CELL`]);
 //! the heating sheet (`--figure`, `render`) evaluates 25 more depths (19 s in all for the
 //! sphere at 2 m/s). A line contact's plane problem is a row of at most 640 strips: its grid
 //! is small (the gears' 41 points of the path and the study at the hottest: 0.1 s).
 //!
 //! ## The limits
-//! - A 3-D heating grid of at most [`MAX_CELLS`] cells (512 x 512: about two minutes of CPU,
-//!   one on two idle cores, and 400 MB): a Hertz contact's grid is refined with the speed
+//! - A 3-D heating grid of at most [`MAX_CELLS`] cells (512 x 512: about five minutes of CPU,
+//!   about three on two idle cores, and 400 MB): a Hertz contact's grid is refined with the speed
 //!   (cells of `1/u` below `a/20`), so this bounds the Péclet number (about 148 for a sphere);
 //!   a rough scene's grid is its map.
 //! - Memory within [`crate::field::memory_limit_bytes`].
@@ -46,8 +47,10 @@ use crate::thermal::temperature::MAX_CELL_PECLET;
 pub const BYTES_PER_CELL: usize = 1600;
 /// Memory besides the grid (the process, the scene).
 pub const BASE_BYTES: usize = 16 << 20;
-/// CPU time of a 3-D heating study a cell of its grid (measured: 0.44 to 0.55 ms), s.
-pub const CPU_SECONDS_PER_CELL: f64 = 5e-4;
+/// CPU time of a 3-D heating study a cell of its grid, s (measured: 0.44 to 0.55 ms with 16
+/// depths; 1.2 ms since the maxima are refined in depth and x, about 40 layers: the sliding
+/// sphere at 2 m/s, 12 513 cells, 15.4 s, 2026-11-28).
+pub const CPU_SECONDS_PER_CELL: f64 = 1.2e-3;
 /// The heating sheet's sections (25 depths) against the study's 16: its CPU time a cell.
 pub const SHEET_CPU_SECONDS_PER_CELL: f64 = 8e-4;
 /// The most cells of a 3-D heating grid: 512 x 512.

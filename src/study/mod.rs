@@ -17,6 +17,7 @@ mod compass;
 pub mod coupled;
 pub mod gear_heating;
 mod grid;
+pub(crate) mod heated_stress;
 pub mod heating_plan;
 pub mod map_roll;
 pub mod memory;

@@ -123,7 +123,7 @@ pub fn traction_grid(
 ) -> Result<TractionGrid, NumericalError> {
     let [dx, dy] = solution.spacing_m;
     let pressure = solution.pressure_pa.mapv(|p| p / REFERENCE_PRESSURE_PA);
-    let shear = (friction > 0.0).then(|| pressure.mapv(|p| friction * p));
+    let shear = (friction != 0.0).then(|| pressure.mapv(|p| friction * p));
     Ok(TractionGrid::new(
         [0.0, 0.0],
         [dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M],

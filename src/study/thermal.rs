@@ -9,8 +9,9 @@
 //! window); a line contact (plane problem) takes the same x range as a row of strips for the
 //! temperature and the thermal stress (plane strain), and for the contact stress a band of
 //! rows long enough in y (`|y| <= max(6a, 6 √(a/u))`, `u = V/(2κ)`) that the middle row sees
-//! the band as endless. A rough contact uses the surface's own grid, the window
-//! taken as the nominal contact.
+//! the band as endless (its contact stress is McEwen's closed form, so the band serves the
+//! maps). A rough contact uses the surface's own grid, the window taken as the nominal
+//! contact. The stresses and their maxima: [`crate::study::heated_stress`].
 
 use ndarray::{Array2, Array3};
 
@@ -19,8 +20,14 @@ use crate::operator::elastic::Periodicity;
 use crate::operator::transform::TransformError;
 use crate::scene::Hertz;
 use crate::scene::{ContactKind, Scene, ThermalBody, ThermalSpec};
-use crate::solution::dcfft::{layer_stress, DcFft, DcFftError, TractionGrid, TractionGridError};
+use crate::solution::dcfft::{DcFft, DcFftError, TractionGrid, TractionGridError};
+use crate::solution::Solution;
 use crate::study::coupled::{self, CoupledContact, CoupledError};
+use crate::study::heated_stress::{
+    HeatedStress, Parts, CONTACT_MAX_SHEAR, CONTACT_VON_MISES, DEPTH_TOLERANCE_OVER_A,
+    THERMAL_VON_MISES, TOTAL_MAX_SHEAR, TOTAL_VON_MISES,
+};
+use crate::study::thermal_sections::SECTION_DEPTH_OVER_A;
 use crate::thermal::heating::frictional_flux;
 use crate::thermal::kernel::CellGrid;
 use crate::thermal::line::LineTemperature;
@@ -61,6 +68,8 @@ pub enum ThermalStudyError {
     CoupledNeedsBodies(&'static str),
     #[error(transparent)]
     Coupled(#[from] CoupledError),
+    #[error("the contact stress of the heated contact: {0}")]
+    Contact(String),
     #[error(transparent)]
     Transform(#[from] TransformError),
     #[error(transparent)]
@@ -95,23 +104,12 @@ pub struct Maximum {
 }
 
 impl Maximum {
-    const NONE: Maximum = Maximum {
+    pub(crate) const NONE: Maximum = Maximum {
         value_pa: f64::NEG_INFINITY,
         x_m: 0.0,
         y_m: 0.0,
         depth_m: 0.0,
     };
-
-    fn offer(&mut self, value: f64, x: f64, y: f64, depth: f64) {
-        if value > self.value_pa {
-            *self = Maximum {
-                value_pa: value,
-                x_m: x,
-                y_m: y,
-                depth_m: depth,
-            };
-        }
-    }
 }
 
 /// Everything a thermal scene computes.
@@ -137,14 +135,46 @@ pub struct ThermalStudy {
     pub thermal_von_mises: Maximum,
     pub contact_von_mises: Maximum,
     pub total_von_mises: Maximum,
-    /// Largest Tresca stress (`σ1 - σ3`) of the contact and of the total.
-    pub contact_tresca: Maximum,
-    pub total_tresca: Maximum,
+    /// Largest maximum (Tresca) shear stress `(σ1 − σ3)/2` of the contact and of the total.
+    pub contact_max_shear: Maximum,
+    pub total_max_shear: Maximum,
     /// The coupled thermo-mechanical contact (`coupled = true`): the heating and stresses
     /// above are those of its heated pressure.
     pub coupled: Option<CoupledContact>,
     /// A line contact (plane problem): every row is the same.
     pub line: bool,
+    /// Where the contact stress comes from.
+    pub contact_model: ContactModel,
+    /// The friction coefficient on body 1, negative when it acts in −x.
+    pub signed_friction: f64,
+    /// How the maxima were searched.
+    pub search: Search,
+    /// How deep the heating sheet's sections reach (m): 1.2a for a Hertz contact; for a rough
+    /// one where its stresses live: four times the deepest maximum, at least 16 cells, at most
+    /// twice `contact`'s search depth.
+    pub section_depth_m: f64,
+}
+
+/// Where a heating study's contact stress comes from ([`crate::study::heated_stress`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ContactModel {
+    /// The exact closed form (line, sphere) in units of `p0` and `a`, with the heating's
+    /// traction.
+    ClosedForm { solution: Solution, p0_pa: f64 },
+    /// DC-FFT layers of the gridded pressure (elliptical contacts, a coupled contact's heated
+    /// pressure).
+    Gridded,
+    /// A rough contact's tractions, periodic when the contact is (as `contact`'s).
+    Rough { periodic: bool },
+}
+
+/// How a heating study searched its maxima: cell centres of layers at `coarse_depths`
+/// depths down to `depth_m`, refined in depth to `tolerance_m`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Search {
+    pub coarse_depths: usize,
+    pub depth_m: f64,
+    pub tolerance_m: f64,
 }
 
 /// What the study reports while it works.
@@ -189,12 +219,14 @@ pub(crate) struct Window {
     pub(super) hint: &'static str,
 }
 
-/// The study's window: `-2.5a <= x <= 1.5a`, `|y| <= 1.5b`, at most [`MAX_CELLS`] cells.
+/// The study's window: `-2.5a <= x <= 1.5a`, `|y| <= 1.5b`, at most [`MAX_CELLS`] cells, a
+/// row on `y = 0` (where the closed form's maxima lie, so that the sheet's sections through
+/// them pass through the contact's plane of symmetry).
 pub(crate) const STUDY_WINDOW: Window = Window {
     x_over_a: [-2.5, 1.5],
     y_over_b: 1.5,
     max_cells: MAX_CELLS,
-    centre_row: false,
+    centre_row: true,
     key: "thermal.speed",
     hint: "the Péclet number is beyond what a grid of at most 640 cells across 4a resolves (Pe up to 320); lower the speed (beyond, the flash temperature follows the fast limit of Jaeger and Blok, growing as √Pe)",
 };
@@ -265,7 +297,13 @@ pub(crate) fn hertz_layout(
             ny += 1;
         }
         let dy = height / ny as f64;
-        (ny, dy, -window.y_over_b * b + 0.5 * dy)
+        // With a centre row, its y is exactly 0.
+        let y0 = if window.centre_row {
+            -((ny / 2) as f64) * dy
+        } else {
+            -window.y_over_b * b + 0.5 * dy
+        };
+        (ny, dy, y0)
     };
     Ok(Layout {
         shape: [ny, nx],
@@ -573,62 +611,114 @@ pub fn study(
     let Heated { flux, body1, body2 } = heat(&gridded, &spec, friction)?;
     let share = body1.share;
     let a = gridded.half_width_m;
-
-    // Stresses: body 1's share of the flux, and the contact tractions (p, and q = μ p in +x,
-    // or in -x when body 2's surface is the faster).
-    let grid = CellGrid {
-        shape: gridded.shape,
-        spacing_m: gridded.spacing_m,
-    };
     // Friction on body 1 acts the way body 2 slides over it ([`crate::scene::TractionDirection`]).
-    let contact_operator = contact_operator(
-        &gridded.pressure_pa,
-        gridded.spacing_m,
-        a,
-        friction * spec.traction.sign(),
-        poisson,
-    )?;
-    let body1_flux = flux.mapv(|q| q * share);
-    let e_alpha_over_k = e_alpha_over_k(&spec.body1);
-    let u1 = inverse_length(&spec.body1);
-    let rows: Vec<usize> = if gridded.line {
-        vec![gridded.shape[0] / 2]
-    } else {
-        (0..gridded.shape[0]).collect()
-    };
-    let mut maxima = [Maximum::NONE; 5];
-    for (done, depth_over_a) in DEPTHS_OVER_A.iter().enumerate() {
-        let z = depth_over_a * a;
-        let thermal = thermal_stress_layer(
-            &grid,
-            gridded.line,
-            z,
-            u1,
-            poisson,
-            e_alpha_over_k,
-            &body1_flux,
-        )?;
-        let contact: Array3<f64> = contact_operator.layer(depth_over_a * 1.0)?;
-        let total = &thermal + &contact;
-        for &row in &rows {
-            for column in 0..gridded.shape[1] {
-                let x = gridded.origin_m[0] + column as f64 * gridded.spacing_m[0];
-                let y = gridded.origin_m[1] + row as f64 * gridded.spacing_m[1];
-                let th = layer_stress(&thermal.view(), row, column);
-                let co = layer_stress(&contact.view(), row, column);
-                let to = layer_stress(&total.view(), row, column);
-                maxima[0].offer(th.von_mises(), x, y, z);
-                maxima[1].offer(co.von_mises(), x, y, z);
-                maxima[2].offer(to.von_mises(), x, y, z);
-                maxima[3].offer(2.0 * co.max_shear(), x, y, z);
-                maxima[4].offer(2.0 * to.max_shear(), x, y, z);
-            }
+    let signed_friction = friction * spec.traction.sign();
+    let heated_rough = rough.map(|r| coupled.as_ref().map_or(r, |c| &c.heated));
+    let model = match heated_rough {
+        Some(solution) => ContactModel::Rough {
+            periodic: solution.periodicity == Periodicity::Periodic,
+        },
+        None if coupled.is_none() => {
+            crate::study::closed_form_solution(&scene.contact, signed_friction, poisson).map_or(
+                ContactModel::Gridded,
+                |solution| ContactModel::ClosedForm {
+                    solution,
+                    p0_pa: scene.contact.p0_pa(),
+                },
+            )
         }
-        progress(Progress::Depth {
-            done: done + 1,
-            total: DEPTHS_OVER_A.len(),
-        });
+        None => ContactModel::Gridded,
+    };
+    let stress = HeatedStress::new(
+        &Parts {
+            shape: gridded.shape,
+            spacing_m: gridded.spacing_m,
+            origin_m: gridded.origin_m,
+            half_width_m: a,
+            line: gridded.line,
+            pressure_pa: &gridded.pressure_pa,
+            flux_w_per_m2: &flux,
+            share,
+        },
+        &spec,
+        &model,
+        signed_friction,
+    )?;
+    // The depths: a Hertz contact's [`DEPTHS_OVER_A`], a rough contact's those of
+    // `contact`'s search ([`crate::study::rough::search_depth_m`]).
+    let (coarse, tolerance_m, search_depth_m) = match heated_rough {
+        Some(solution) => {
+            let depth = crate::study::rough::search_depth_m(solution);
+            let dz = gridded.spacing_m[0].min(gridded.spacing_m[1]);
+            (
+                crate::study::assess::search_depths(dz, depth),
+                dz / 16.0,
+                depth,
+            )
+        }
+        None => (
+            DEPTHS_OVER_A.iter().map(|d| d * a).collect::<Vec<f64>>(),
+            DEPTH_TOLERANCE_OVER_A * a,
+            DEPTHS_OVER_A[DEPTHS_OVER_A.len() - 1] * a,
+        ),
+    };
+    let total = coarse.len();
+    let mut maxima = stress.maxima(&coarse, tolerance_m, &mut |done| {
+        progress(Progress::Depth { done, total })
+    })?;
+    // The contact alone: `hertz`'s closed-form maxima, or `contact`'s search of a rough
+    // contact, with the heating's traction.
+    match (&model, heated_rough) {
+        (ContactModel::ClosedForm { solution, p0_pa }, _) => {
+            let to_max = |e: crate::study::assess::Extreme| Maximum {
+                value_pa: e.value_over_p0 * p0_pa,
+                x_m: e.x_over_a * a,
+                y_m: e.y_over_a * a,
+                depth_m: e.z_over_a * a,
+            };
+            let found = crate::study::assess::StressMaxima::of(solution);
+            maxima[CONTACT_VON_MISES] = to_max(found.von_mises);
+            maxima[CONTACT_MAX_SHEAR] = to_max(found.max_shear);
+        }
+        (ContactModel::Rough { .. }, Some(solution)) => {
+            let tractions = crate::study::rough::tractions(solution, signed_friction, poisson)
+                .map_err(|e| ThermalStudyError::Contact(e.to_string()))?;
+            let reference = crate::study::rough::REFERENCE_LENGTH_M;
+            let found =
+                crate::study::assess::grid_maxima_to_depth(&tractions, search_depth_m / reference)?;
+            let [dx, dy] = gridded.spacing_m;
+            let to_max = |e: crate::study::assess::Extreme| Maximum {
+                value_pa: e.value_over_p0 * crate::study::rough::REFERENCE_PRESSURE_PA,
+                // Cell centres from the map's corner, to the study's frame (from its centre).
+                x_m: e.x_over_a * reference + gridded.origin_m[0] - 0.5 * dx,
+                y_m: e.y_over_a * reference + gridded.origin_m[1] - 0.5 * dy,
+                depth_m: e.z_over_a * reference,
+            };
+            maxima[CONTACT_VON_MISES] = to_max(found.von_mises);
+            maxima[CONTACT_MAX_SHEAR] = to_max(found.max_shear);
+        }
+        _ => {}
     }
+    let section_depth_m = match heated_rough {
+        // Where a rough contact's stresses live: four times the deepest of the maxima, at
+        // least 16 cells, at most twice `contact`'s search depth (as its sheet).
+        Some(_) => {
+            let deepest = [
+                maxima[TOTAL_VON_MISES],
+                maxima[CONTACT_VON_MISES],
+                maxima[TOTAL_MAX_SHEAR],
+                maxima[CONTACT_MAX_SHEAR],
+            ]
+            .iter()
+            .fold(0.0f64, |d, m| d.max(m.depth_m));
+            let cell = gridded.spacing_m[0].min(gridded.spacing_m[1]);
+            (4.0 * deepest)
+                .max(16.0 * cell)
+                .min(2.0 * search_depth_m)
+                .max(deepest)
+        }
+        None => SECTION_DEPTH_OVER_A * a,
+    };
     Ok(ThermalStudy {
         spec,
         half_width_m: a,
@@ -639,12 +729,20 @@ pub fn study(
         flux_w_per_m2: flux,
         body1,
         body2,
-        thermal_von_mises: maxima[0],
-        contact_von_mises: maxima[1],
-        total_von_mises: maxima[2],
-        contact_tresca: maxima[3],
-        total_tresca: maxima[4],
+        thermal_von_mises: maxima[THERMAL_VON_MISES],
+        contact_von_mises: maxima[CONTACT_VON_MISES],
+        total_von_mises: maxima[TOTAL_VON_MISES],
+        contact_max_shear: maxima[CONTACT_MAX_SHEAR],
+        total_max_shear: maxima[TOTAL_MAX_SHEAR],
         coupled,
         line: gridded.line,
+        contact_model: model,
+        signed_friction,
+        search: Search {
+            coarse_depths: total,
+            depth_m: search_depth_m,
+            tolerance_m,
+        },
+        section_depth_m,
     })
 }

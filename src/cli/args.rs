@@ -48,7 +48,13 @@ pub enum Command {
         scenes_dir: PathBuf,
     },
     /// Print the Hertz contact parameters and the yield assessment of a scene.
-    Hertz { scene: PathBuf },
+    Hertz {
+        scene: PathBuf,
+        /// Print one JSON object (SI units) instead of the table (a rough scene: that of
+        /// `contact --json`; a surface scene: that of `surface --json`).
+        #[arg(long)]
+        json: bool,
+    },
     /// Validate scenes without computing anything.
     Check {
         #[arg(required = true)]

@@ -91,6 +91,12 @@ impl HeightMap {
         &self.heights_m
     }
 
+    /// The heights in m, `[ny, nx]`, moved out of the map (the Python package hands them to
+    /// NumPy without a copy).
+    pub fn into_heights_m(self) -> Array2<f64> {
+        self.heights_m
+    }
+
     /// `[dx, dy]` in m.
     pub fn spacing_m(&self) -> [f64; 2] {
         self.spacing_m

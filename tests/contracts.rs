@@ -220,3 +220,42 @@ fn hertz_json_has_the_contract_keys_and_the_study_s_values() {
     let rough = json(&run(&["hertz", "scenes/rough_ball_on_flat.toml", "--json"]));
     assert!(rough.contains_key("contact_fraction"));
 }
+
+/// `sweep --json` and `--csv` (issue 39): one row per step with the swept value and the
+/// extremes its recording charts, equal to the library's table; a scene without a sweep is
+/// refused with a hint.
+#[test]
+fn sweep_tables_have_one_row_per_step() {
+    let path = "scenes/record_line_friction_sweep.toml";
+    let scene = stressfield::study::load_scene(Path::new(path)).expect("scene");
+    let table = stressfield::report::sweep::sweep_table(&scene, &mut |_, _| {}).expect("table");
+    let report = json(&run(&["sweep", path, "--json"]));
+    let steps = report["steps"].as_array().expect("steps");
+    assert_eq!(steps.len(), 11);
+    assert_eq!(report["parameter"], "friction");
+    for (row, step) in table.rows.iter().zip(steps) {
+        for ((name, _), value) in table.columns.iter().zip(row) {
+            let got = step[name].as_f64();
+            match (got, value) {
+                (Some(got), Some(value)) => {
+                    assert!((got - value).abs() <= 1e-15 * value.abs(), "{name}")
+                }
+                (None, None) => {}
+                other => panic!("{name}: {other:?}"),
+            }
+        }
+    }
+    // Frictionless first step: the line contact's σvM maximum, 0.5575 p0 at z = 0.704a.
+    assert!((number(steps[0].as_object().expect("row"), "panel0_maximum") - 0.5575).abs() < 1e-4);
+    let csv = run(&["sweep", path, "--csv"]);
+    let text = String::from_utf8_lossy(&csv.stdout);
+    assert_eq!(text.lines().count(), 12);
+    assert!(text.starts_with("friction,panel0_maximum,"));
+    let refused = run(&["sweep", "scenes/line_tau1.toml"]);
+    assert!(!refused.status.success());
+    assert!(
+        stderr(&refused).contains("has no [sweep] table"),
+        "{}",
+        stderr(&refused)
+    );
+}

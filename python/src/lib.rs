@@ -271,6 +271,16 @@ impl Scene {
             .map_err(raise)
     }
 
+    /// `sweep SCENE --json` as text.
+    fn sweep_json(&self, py: Python<'_>) -> PyResult<String> {
+        py.detach(|| -> Result<String> {
+            let table = stressfield::report::sweep::sweep_table(&self.scene, &mut |_, _| {})
+                .with_context(|| format!("scene {}", self.scene.name))?;
+            Ok(table.json())
+        })
+        .map_err(raise)
+    }
+
     /// `contact SCENE --json` as text, and the pressure (Pa, `[rows, columns]`).
     fn contact<'py>(&self, py: Python<'py>) -> PyResult<(String, Bound<'py, PyArray2<f64>>)> {
         let (json, pressure) = py

@@ -144,6 +144,12 @@ class Scene:
         a surface scene: ``surface --json``)."""
         return _json.loads(self._scene.hertz_json())
 
+    def sweep(self) -> dict:
+        """The table of a ``[sweep]`` scene, the dict of ``stressfield sweep SCENE --json``:
+        ``units`` (column -> unit) and ``steps`` (one dict per step: the swept value and the
+        values the recording charts)."""
+        return _json.loads(self._scene.sweep_json())
+
     def contact(self) -> ContactResult:
         """The rough contact of a rough scene, as ``stressfield contact SCENE --json``, with
         the pressure (Pa)."""

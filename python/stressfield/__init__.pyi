@@ -65,6 +65,8 @@ class Scene:
     def file(self) -> str: ...
     def hertz(self) -> dict[str, Any]:
         """The keys of `hertz SCENE --json`."""
+    def sweep(self) -> dict[str, Any]:
+        """The keys of `sweep SCENE --json`."""
     def contact(self) -> ContactResult: ...
     def thermal(self) -> dict[str, Any]:
         """The keys of `thermal SCENE --json` and "temperature" (K, float64 2-D)."""

@@ -125,3 +125,14 @@ def test_closed_forms_are_probe_s():
     np.testing.assert_array_equal(line, _probe("line", 0.3, np.column_stack([x, 0 * x, z])))
     sphere = sf.sphere_stress(x, y, z, friction=0.2)
     np.testing.assert_array_equal(sphere, _probe("point", 0.2, points))
+
+
+@pytest.mark.parametrize(
+    "name", ["record_sphere_friction_sweep", "record_rough_load_sweep", "record_thermal_speed_sweep"]
+)
+def test_scene_sweep_is_sweep_json(name):
+    path = SCENES / f"{name}.toml"
+    expected = cli_json("sweep", path, "--json")
+    assert sf.load_scene(path).sweep() == expected
+    assert len(expected["steps"]) >= 2
+    assert list(expected["steps"][0]) == list(expected["units"])

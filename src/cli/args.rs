@@ -55,6 +55,18 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Tabulate a scene's [sweep]: one row per step with the swept value and the values its
+    /// recording charts (the extremes of each panel and the depth of the maximum; a rough
+    /// load sweep's area, spots and peak pressure; a speed sweep's temperatures).
+    Sweep {
+        scene: PathBuf,
+        /// Print one JSON object (units per column, one object per step).
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        /// Print CSV: a header, then one line per step.
+        #[arg(long)]
+        csv: bool,
+    },
     /// Validate scenes without computing anything.
     Check {
         #[arg(required = true)]

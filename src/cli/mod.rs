@@ -105,6 +105,23 @@ pub fn run(command: Command) -> Result<()> {
             }
         }
         Command::Check { scenes } => check::check(&scenes),
+        Command::Sweep { scene, json, csv } => {
+            let scene = stressfield::study::load_scene(&scene)?;
+            let bar =
+                console::progress_bar(scene.sweep.as_ref().map_or(0, |s| s.values.len()) as u64);
+            let table = stressfield::report::sweep::sweep_table(&scene, &mut |done, _| {
+                bar.set_position(done as u64)
+            });
+            bar.finish_and_clear();
+            let table = table.with_context(|| format!("scene {}", scene.name))?;
+            print_out(&if json {
+                format!("{}\n", table.json())
+            } else if csv {
+                table.csv()
+            } else {
+                table.text()
+            })
+        }
         Command::Probe(args) => probe::probe_command(&args),
         Command::Contact {
             scene,

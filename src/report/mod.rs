@@ -7,6 +7,7 @@ pub mod hertz;
 pub mod probe;
 pub mod rough;
 pub mod surface;
+pub mod sweep;
 pub mod thermal;
 pub mod wear;
 

@@ -161,3 +161,101 @@ fn npy_outputs_must_be_npy_and_nothing_is_written_otherwise() {
         );
     }
 }
+
+/// `hertz --json` (issue 39): the contract keys in SI, equal to the library's contact and
+/// maxima, the size key of each geometry, and Johnson's maxima of a frictionless sphere.
+#[test]
+fn hertz_json_has_the_contract_keys_and_the_study_s_values() {
+    // A steel ball on a flat, μ = 0.1, with a yield strength.
+    let report = json(&run(&[
+        "hertz",
+        "scenes/sphere_ball_on_flat.toml",
+        "--json",
+    ]));
+    let scene = stressfield::study::load_scene(Path::new("scenes/sphere_ball_on_flat.toml"))
+        .expect("scene");
+    let (a_m, p0_pa) = (scene.contact.half_width_m(), scene.contact.p0_pa());
+    // serde_json parses decimals to within an ulp or so (without its float_roundtrip
+    // feature; Python's json reads them exactly, python/tests compares to the last digit).
+    let close = |key: &str, value: f64| {
+        let got = number(&report, key);
+        assert!(
+            (got - value).abs() <= 1e-15 * value.abs(),
+            "{key}: {got} against {value}"
+        );
+    };
+    close("contact_radius_m", a_m);
+    close("max_pressure_pa", p0_pa);
+    assert!(!report.contains_key("half_width_m"));
+    let maxima = stressfield::study::assess::scene_maxima(&scene)
+        .maxima
+        .expect("maxima");
+    close("von_mises_max_pa", maxima.von_mises.value_over_p0 * p0_pa);
+    close("von_mises_max_depth_m", maxima.von_mises.z_over_a * a_m);
+    close("max_shear_max_pa", maxima.max_shear.value_over_p0 * p0_pa);
+    close("max_shear_max_depth_m", maxima.max_shear.z_over_a * a_m);
+    for key in [
+        "mean_pressure_pa",
+        "approach_m",
+        "load_n",
+        "yield_strength_pa",
+    ] {
+        number(&report, key);
+    }
+    assert_eq!(report["verdict"], "elastic");
+    // A frictionless line contact (normalised): Johnson's τ1 = 0.300 p0 at z = 0.78a, and a
+    // half-width key that is null (no SI size).
+    let line = json(&run(&["hertz", "scenes/line_tau1.toml", "--json"]));
+    assert!(line["half_width_m"].is_null());
+    assert!((number(&line, "max_shear_max_over_p0") - 0.300).abs() < 5e-4);
+    assert!((number(&line, "max_shear_max_z_over_a") - 0.786).abs() < 1e-3);
+    // An elliptical contact has both semi-axes.
+    let ellipse = json(&run(&[
+        "hertz",
+        "scenes/ellipse_bearing_groove.toml",
+        "--json",
+    ]));
+    assert!(number(&ellipse, "semi_axis_y_m") > number(&ellipse, "semi_axis_x_m"));
+    // A rough scene's is that of `contact --json`.
+    let rough = json(&run(&["hertz", "scenes/rough_ball_on_flat.toml", "--json"]));
+    assert!(rough.contains_key("contact_fraction"));
+}
+
+/// `sweep --json` and `--csv` (issue 39): one row per step with the swept value and the
+/// extremes its recording charts, equal to the library's table; a scene without a sweep is
+/// refused with a hint.
+#[test]
+fn sweep_tables_have_one_row_per_step() {
+    let path = "scenes/record_line_friction_sweep.toml";
+    let scene = stressfield::study::load_scene(Path::new(path)).expect("scene");
+    let table = stressfield::report::sweep::sweep_table(&scene, &mut |_, _| {}).expect("table");
+    let report = json(&run(&["sweep", path, "--json"]));
+    let steps = report["steps"].as_array().expect("steps");
+    assert_eq!(steps.len(), 11);
+    assert_eq!(report["parameter"], "friction");
+    for (row, step) in table.rows.iter().zip(steps) {
+        for ((name, _), value) in table.columns.iter().zip(row) {
+            let got = step[name].as_f64();
+            match (got, value) {
+                (Some(got), Some(value)) => {
+                    assert!((got - value).abs() <= 1e-15 * value.abs(), "{name}")
+                }
+                (None, None) => {}
+                other => panic!("{name}: {other:?}"),
+            }
+        }
+    }
+    // Frictionless first step: the line contact's σvM maximum, 0.5575 p0 at z = 0.704a.
+    assert!((number(steps[0].as_object().expect("row"), "panel0_maximum") - 0.5575).abs() < 1e-4);
+    let csv = run(&["sweep", path, "--csv"]);
+    let text = String::from_utf8_lossy(&csv.stdout);
+    assert_eq!(text.lines().count(), 12);
+    assert!(text.starts_with("friction,panel0_maximum,"));
+    let refused = run(&["sweep", "scenes/line_tau1.toml"]);
+    assert!(!refused.status.success());
+    assert!(
+        stderr(&refused).contains("has no [sweep] table"),
+        "{}",
+        stderr(&refused)
+    );
+}

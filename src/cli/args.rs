@@ -48,7 +48,25 @@ pub enum Command {
         scenes_dir: PathBuf,
     },
     /// Print the Hertz contact parameters and the yield assessment of a scene.
-    Hertz { scene: PathBuf },
+    Hertz {
+        scene: PathBuf,
+        /// Print one JSON object (SI units) instead of the table (a rough scene: that of
+        /// `contact --json`; a surface scene: that of `surface --json`).
+        #[arg(long)]
+        json: bool,
+    },
+    /// Tabulate a scene's [sweep]: one row per step with the swept value and the values its
+    /// recording charts (the extremes of each panel and the depth of the maximum; a rough
+    /// load sweep's area, spots and peak pressure; a speed sweep's temperatures).
+    Sweep {
+        scene: PathBuf,
+        /// Print one JSON object (units per column, one object per step).
+        #[arg(long, conflicts_with = "csv")]
+        json: bool,
+        /// Print CSV: a header, then one line per step.
+        #[arg(long)]
+        csv: bool,
+    },
     /// Validate scenes without computing anything.
     Check {
         #[arg(required = true)]

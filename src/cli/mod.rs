@@ -74,26 +74,54 @@ pub fn run(command: Command) -> Result<()> {
             };
             record_all(&scenes, &target)
         }
-        Command::Hertz { scene: scene_path } => {
+        Command::Hertz {
+            scene: scene_path,
+            json,
+        } => {
             let scene = stressfield::study::load_scene(&scene_path)?;
             match scene.contact.kind {
-                ContactKind::Rough => surface::contact(&scene_path, false, None),
-                ContactKind::Surface => surface::surface_of_scene(&scene_path),
+                ContactKind::Rough => surface::contact(&scene_path, json, None),
+                ContactKind::Surface => surface::surface_of_scene(&scene_path, json),
                 _ => {
-                    let mut text = stressfield::report::hertz(
-                        &scene,
-                        &stressfield::study::assess::scene_maxima(&scene),
-                    );
-                    if scene.thermal.is_some() {
-                        let (report, study) = thermal::hertz_heating(&scene)
-                            .with_context(|| format!("scene {}", scene.name))?;
-                        text.push_str(&report.text(&study));
+                    let maxima = stressfield::study::assess::scene_maxima(&scene);
+                    let heating = match scene.thermal {
+                        Some(_) => Some(
+                            thermal::hertz_heating(&scene)
+                                .with_context(|| format!("scene {}", scene.name))?,
+                        ),
+                        None => None,
+                    };
+                    if json {
+                        let report = stressfield::report::hertz::HertzReport::new(&scene, &maxima);
+                        let thermal = heating.as_ref().map(|(report, _)| report);
+                        return print_out(&format!("{}\n", report.json(thermal)));
+                    }
+                    let mut text = stressfield::report::hertz(&scene, &maxima);
+                    if let Some((report, study)) = &heating {
+                        text.push_str(&report.text(study));
                     }
                     print_out(&text)
                 }
             }
         }
         Command::Check { scenes } => check::check(&scenes),
+        Command::Sweep { scene, json, csv } => {
+            let scene = stressfield::study::load_scene(&scene)?;
+            let bar =
+                console::progress_bar(scene.sweep.as_ref().map_or(0, |s| s.values.len()) as u64);
+            let table = stressfield::report::sweep::sweep_table(&scene, &mut |done, _| {
+                bar.set_position(done as u64)
+            });
+            bar.finish_and_clear();
+            let table = table.with_context(|| format!("scene {}", scene.name))?;
+            print_out(&if json {
+                format!("{}\n", table.json())
+            } else if csv {
+                table.csv()
+            } else {
+                table.text()
+            })
+        }
         Command::Probe(args) => probe::probe_command(&args),
         Command::Contact {
             scene,

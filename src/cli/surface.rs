@@ -74,15 +74,10 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     }
     staged.commit()?;
     if json {
-        let mut text = report.json();
-        if let Some(study) = &thermal {
-            // The heating as one more key, "thermal", after the contact's (their order kept).
-            let block = stressfield::report::thermal::ThermalReport::new(study)
-                .json()
-                .replace('\n', "\n  ");
-            let body = text.trim_end().trim_end_matches('}').trim_end().to_string();
-            text = format!("{body},\n  \"thermal\": {block}\n}}");
-        }
+        let thermal = thermal
+            .as_ref()
+            .map(stressfield::report::thermal::ThermalReport::new);
+        let text = report.json_with(thermal.as_ref());
         print_out(&format!("{text}\n"))
     } else {
         let mut text = report.text(&scene);
@@ -134,8 +129,8 @@ fn pressure_pa(flag: &str, text: &str, hardness: bool) -> Result<f64> {
     Ok(pa)
 }
 
-/// `hertz` of a surface scene: its characterisation as a table.
-pub fn surface_of_scene(path: &Path) -> Result<()> {
+/// `hertz` of a surface scene: its characterisation as a table (or JSON).
+pub fn surface_of_scene(path: &Path, json: bool) -> Result<()> {
     surface(&SurfaceArgs {
         input: path.to_path_buf(),
         spacing: None,
@@ -146,7 +141,7 @@ pub fn surface_of_scene(path: &Path) -> Result<()> {
         band: None,
         e_star: None,
         hardness: None,
-        json: false,
+        json,
         heights: None,
     })
 }

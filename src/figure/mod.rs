@@ -496,6 +496,41 @@ fn subtitle(scene: &Scene, panel: &PanelSpec, plane: &Plane) -> String {
     parts.join(",  ")
 }
 
+/// One extreme of a map: its value and position (figure units).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Extreme {
+    pub value: f64,
+    pub u: f64,
+    pub v: f64,
+}
+
+/// The extremes the figure marks (its [`Mark`]), as the PNG marks them and the recordings and sweep tables chart them: the largest (its [`Panel::peak`] where the
+/// study located it between the samples) and/or the smallest finite value.
+pub fn extremes(panel: &Panel, mark: Mark) -> (Option<Extreme>, Option<Extreme>) {
+    let finite = || panel.values.indexed_iter().filter(|(_, v)| v.is_finite());
+    let at = |((row, column), &value): ((usize, usize), &f64)| Extreme {
+        value,
+        u: panel.x.value(column),
+        v: panel.z.value(row),
+    };
+    // The maximum the study located between the samples, as the PNG figure marks it.
+    let largest = match panel.peak {
+        Some(peak) => Some(Extreme {
+            value: peak.value,
+            u: peak.x,
+            v: peak.z,
+        }),
+        None => finite().max_by(|a, b| a.1.total_cmp(b.1)).map(at),
+    };
+    let smallest = finite().min_by(|a, b| a.1.total_cmp(b.1)).map(at);
+    match mark {
+        Mark::Max => (largest, None),
+        Mark::Min => (None, smallest),
+        Mark::Both => (largest, smallest),
+        Mark::None => (None, None),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -138,6 +138,24 @@ pub fn bytes(size: u64) -> String {
     }
 }
 
+/// An error and its causes for the user, each said once: `outer: cause: root cause`, leaving
+/// out a cause whose text ends the message before it (an error that shows its source and also
+/// chains it, such as `cannot read x: No such file or directory (os error 2)`). The command
+/// line prints it after `error: `; the Python package raises it.
+pub fn error_text(error: &anyhow::Error) -> String {
+    let mut text = String::new();
+    for cause in error.chain() {
+        let line = cause.to_string();
+        if text.is_empty() {
+            text = line;
+        } else if !text.ends_with(&line) {
+            text.push_str(": ");
+            text.push_str(&line);
+        }
+    }
+    text
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

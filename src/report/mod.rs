@@ -3,9 +3,11 @@
 //! Uses: the study's results and the layers below it (assess, contact, solution, stress,
 //! surface, thermal), [`crate::render`]'s tables, [`crate::io`] for numbers.
 
+pub mod hertz;
 pub mod probe;
 pub mod rough;
 pub mod surface;
+pub mod sweep;
 pub mod thermal;
 pub mod wear;
 
@@ -14,6 +16,19 @@ use std::fmt::Write;
 use crate::io::text;
 use crate::scene::{ContactKind, Hertz, Scene};
 use crate::study::assess::{Extreme, SceneMaxima};
+
+/// A command's JSON object `text` with the heating's (`thermal --json`) added as the last key,
+/// `thermal`, when there is one (`hertz --json`, `contact --json`).
+pub(crate) fn with_thermal(text: String, thermal: Option<&thermal::ThermalReport>) -> String {
+    match thermal {
+        None => text,
+        Some(thermal) => {
+            let block = thermal.json().replace('\n', "\n  ");
+            let body = text.trim_end().trim_end_matches('}').trim_end().to_string();
+            format!("{body},\n  \"thermal\": {block}\n}}")
+        }
+    }
+}
 
 /// The report of a traction scene: the figure's units and the resultants of the file's
 /// tractions.
@@ -96,7 +111,7 @@ pub fn hertz(scene: &Scene, maxima: &SceneMaxima) -> String {
 const POSITION_RESOLUTION_OVER_A: f64 = 1e-6;
 
 /// `value_over_a`, or 0 within [`POSITION_RESOLUTION_OVER_A`] of it.
-fn snap_position(value_over_a: f64) -> f64 {
+pub(crate) fn snap_position(value_over_a: f64) -> f64 {
     if value_over_a.abs() < POSITION_RESOLUTION_OVER_A {
         0.0
     } else {

@@ -103,7 +103,31 @@ impl ContactReport {
             tolerance: crate::contact::rough::DEFAULT_TOLERANCE,
             max_iterations: crate::contact::rough::DEFAULT_MAX_ITERATIONS,
         });
-        let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
+        Self {
+            levelling: scene
+                .surface
+                .as_ref()
+                .and_then(|s| s.levelling)
+                .map(LevellingReport::of),
+            ..Self::of(
+                &spec,
+                scene.contact.friction,
+                scene.contact.poisson,
+                solution,
+                findings,
+            )
+        }
+    }
+
+    /// The report of `solution`, solved as `spec` says, under body 1's `friction` and
+    /// `poisson` (without a scene: the Python package's `contact` on a height array).
+    pub fn of(
+        spec: &crate::scene::RoughSpec,
+        friction: f64,
+        poisson: f64,
+        solution: &RoughSolution,
+        findings: &ContactFindings,
+    ) -> Self {
         let maxima = &findings.maxima;
         let search_depth_m = findings.search_depth_m;
         let plasticity_index = findings.plasticity_index;
@@ -137,17 +161,23 @@ impl ContactReport {
             columns,
             spacing_m: solution.spacing_m,
             warnings: findings.warnings.clone(),
-            levelling: scene
-                .surface
-                .as_ref()
-                .and_then(|s| s.levelling)
-                .map(LevellingReport::of),
+            // Heights given as an array (no scene): solved as given.
+            levelling: Some(LevellingReport {
+                removed: "none",
+                plane_m: None,
+            }),
         }
     }
 
     /// One JSON object.
     pub fn json(&self) -> String {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// One JSON object with the heating's (`thermal --json`) as the key `thermal`, after the
+    /// contact's, when there is one.
+    pub fn json_with(&self, thermal: Option<&super::thermal::ThermalReport>) -> String {
+        super::with_thermal(self.json(), thermal)
     }
 
     /// The readable table.

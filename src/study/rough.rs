@@ -231,9 +231,34 @@ pub const IDEAL_STRENGTH_OVER_E_STAR: f64 = 0.1;
 
 /// What a reader of the solved contact should be told, in words: a contact resolved by fewer
 /// than [`FEW_CONTACT_CELLS`] cells, and a peak pressure beyond any material's strength
-/// ([`IDEAL_STRENGTH_OVER_E_STAR`] times E*, without a hardness to cap it). Warnings, not
-/// errors: the solution is the elastic one of the map as given.
+/// ([`IDEAL_STRENGTH_OVER_E_STAR`] times E*, without a hardness to cap it), and a measured
+/// map's seam under a periodic contact ([`seam_warning`]). Warnings, not errors: the solution
+/// is the elastic one of the map as given.
 pub fn warnings(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
+    let rough = scene.contact.rough;
+    let mut warnings = warnings_of(
+        solution,
+        rough.and_then(|r| r.e_star_pa),
+        rough.and_then(|r| r.hardness_pa),
+    );
+    // A measured map solved periodically, its contact on a seam where its edges do not meet.
+    if let (Some(surface), Some(true)) = (&scene.surface, rough.map(|r| r.periodic)) {
+        if !surface.generated {
+            warnings.extend(seam_warning(
+                surface.heights.heights_m().view(),
+                &solution.pressure_pa,
+            ));
+        }
+    }
+    warnings
+}
+
+/// [`warnings`] of a contact solved with `e_star_pa` and `hardness_pa` (Pa).
+pub fn warnings_of(
+    solution: &RoughSolution,
+    e_star_pa: Option<f64>,
+    hardness_pa: Option<f64>,
+) -> Vec<String> {
     let mut warnings = Vec::new();
     let cells = solution.pressure_pa.iter().filter(|&&p| p > 0.0).count();
     if cells < FEW_CONTACT_CELLS {
@@ -242,14 +267,6 @@ pub fn warnings(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
             if cells == 1 { "" } else { "s" }
         ));
     }
-    let rough = scene.contact.rough;
-    if let (Some(surface), Some(true)) = (&scene.surface, rough.map(|r| r.periodic)) {
-        if !surface.generated {
-            warnings.extend(seam_warning(&surface.heights, &solution.pressure_pa));
-        }
-    }
-    let e_star_pa = rough.and_then(|r| r.e_star_pa);
-    let hardness_pa = rough.and_then(|r| r.hardness_pa);
     if let (Some(e_star_pa), None) = (e_star_pa, hardness_pa) {
         let limit_pa = IDEAL_STRENGTH_OVER_E_STAR * e_star_pa;
         if solution.max_pressure_pa > limit_pa {
@@ -274,10 +291,10 @@ pub const SEAM_STEP_RATIO: f64 = 3.0;
 /// repeats the map, and the step at the seam is a ridge the counter-surface may touch
 /// first. A seam the contact stays away from changes nothing and is not warned about.
 pub fn seam_warning(
-    heights: &crate::surface::HeightMap,
+    heights: ndarray::ArrayView2<f64>,
     pressure_pa: &ndarray::Array2<f64>,
 ) -> Option<String> {
-    let steps = heights.seam_steps_m();
+    let steps = crate::surface::seam_steps_m(heights);
     let (ny, nx) = pressure_pa.dim();
     let on_seam = |axis: usize| -> usize {
         if axis == 0 {
@@ -316,28 +333,60 @@ pub fn findings(
     scene: &Scene,
     solution: &RoughSolution,
 ) -> Result<ContactFindings, NumericalError> {
-    let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
-    let (maxima, search_depth_m) = subsurface_maxima(solution, friction, poisson)?;
     let rough = scene.contact.rough;
-    let e_star_pa = rough.and_then(|r| r.e_star_pa).unwrap_or(f64::NAN);
-    let plasticity_index = match (rough.and_then(|r| r.hardness_pa), scene.surface.as_ref()) {
-        (Some(hardness), Some(surface)) => {
+    findings_of(
+        solution,
+        &RoughMaterials {
+            friction: scene.contact.friction,
+            poisson: scene.contact.poisson,
+            e_star_pa: rough.and_then(|r| r.e_star_pa),
+            hardness_pa: rough.and_then(|r| r.hardness_pa),
+        },
+        scene
+            .surface
+            .as_ref()
+            .map(|surface| (surface.heights.as_ref(), surface.generated)),
+    )
+}
+
+/// What [`findings_of`] needs of a rough contact besides its solution: body 1's friction
+/// (`q = μ p` in +x) and Poisson ratio, `E*` and the hardness (Pa).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoughMaterials {
+    pub friction: f64,
+    pub poisson: f64,
+    pub e_star_pa: Option<f64>,
+    pub hardness_pa: Option<f64>,
+}
+
+/// [`findings`] of a contact solved on `surface` (its heights, and whether they were
+/// generated, i.e. periodic and not windowed for the summits), without a scene: the Python
+/// package's `contact` on a height array. The plasticity index needs the surface and a
+/// hardness.
+pub fn findings_of(
+    solution: &RoughSolution,
+    materials: &RoughMaterials,
+    surface: Option<(&crate::surface::HeightMap, bool)>,
+) -> Result<ContactFindings, NumericalError> {
+    let (maxima, search_depth_m) =
+        subsurface_maxima(solution, materials.friction, materials.poisson)?;
+    let e_star_pa = materials.e_star_pa.unwrap_or(f64::NAN);
+    let plasticity_index = match (materials.hardness_pa, surface) {
+        (Some(hardness), Some((heights, generated))) => {
             let options = Options {
                 form: FormRemoval::Plane,
                 band_m: None,
-                window: !surface.generated,
+                window: !generated,
             };
-            stats::characterise(&surface.heights, &options)
-                .ok()
-                .map(|c| {
-                    crate::surface::gw::plasticity_index(
-                        e_star_pa,
-                        hardness,
-                        c.summits.height_std_m,
-                        c.summits.radius_m,
-                    )
-                    .0
-                })
+            stats::characterise(heights, &options).ok().map(|c| {
+                crate::surface::gw::plasticity_index(
+                    e_star_pa,
+                    hardness,
+                    c.summits.height_std_m,
+                    c.summits.radius_m,
+                )
+                .0
+            })
         }
         _ => None,
     };
@@ -345,6 +394,6 @@ pub fn findings(
         maxima,
         search_depth_m,
         plasticity_index,
-        warnings: warnings(scene, solution),
+        warnings: warnings_of(solution, materials.e_star_pa, materials.hardness_pa),
     })
 }

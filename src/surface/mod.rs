@@ -91,6 +91,12 @@ impl HeightMap {
         &self.heights_m
     }
 
+    /// The heights in m, `[ny, nx]`, moved out of the map (the Python package hands them to
+    /// NumPy without a copy).
+    pub fn into_heights_m(self) -> Array2<f64> {
+        self.heights_m
+    }
+
     /// `[dx, dy]` in m.
     pub fn spacing_m(&self) -> [f64; 2] {
         self.spacing_m
@@ -109,28 +115,7 @@ impl HeightMap {
     /// its neighbours'; a measured map's opposite edges are unrelated samples, a seam step about
     /// √2 Sq.
     pub fn seam_steps_m(&self) -> [(f64, f64); 2] {
-        let h = &self.heights_m;
-        let (ny, nx) = h.dim();
-        let rms = |sum: f64, n: usize| (sum / n.max(1) as f64).sqrt();
-        let (mut seam_x, mut inner_x, mut seam_y, mut inner_y) = (0.0, 0.0, 0.0, 0.0);
-        for j in 0..ny {
-            seam_x += (h[[j, 0]] - h[[j, nx - 1]]).powi(2);
-            for i in 1..nx {
-                inner_x += (h[[j, i]] - h[[j, i - 1]]).powi(2);
-            }
-        }
-        for i in 0..nx {
-            seam_y += (h[[0, i]] - h[[ny - 1, i]]).powi(2);
-        }
-        for j in 1..ny {
-            for i in 0..nx {
-                inner_y += (h[[j, i]] - h[[j - 1, i]]).powi(2);
-            }
-        }
-        [
-            (rms(seam_x, ny), rms(inner_x, ny * (nx - 1))),
-            (rms(seam_y, nx), rms(inner_y, (ny - 1) * nx)),
-        ]
+        seam_steps_m(self.heights_m.view())
     }
 
     /// The sampled extent `[nx dx, ny dy]` in m (the period of a periodic surface).
@@ -138,6 +123,32 @@ impl HeightMap {
         let [ny, nx] = self.shape();
         [nx as f64 * self.spacing_m[0], ny as f64 * self.spacing_m[1]]
     }
+}
+
+/// [`HeightMap::seam_steps_m`] of heights given as an array (`[rows = y, columns = x]`, at
+/// least 2 x 2).
+pub fn seam_steps_m(h: ndarray::ArrayView2<f64>) -> [(f64, f64); 2] {
+    let (ny, nx) = h.dim();
+    let rms = |sum: f64, n: usize| (sum / n.max(1) as f64).sqrt();
+    let (mut seam_x, mut inner_x, mut seam_y, mut inner_y) = (0.0, 0.0, 0.0, 0.0);
+    for j in 0..ny {
+        seam_x += (h[[j, 0]] - h[[j, nx - 1]]).powi(2);
+        for i in 1..nx {
+            inner_x += (h[[j, i]] - h[[j, i - 1]]).powi(2);
+        }
+    }
+    for i in 0..nx {
+        seam_y += (h[[0, i]] - h[[ny - 1, i]]).powi(2);
+    }
+    for j in 1..ny {
+        for i in 0..nx {
+            inner_y += (h[[j, i]] - h[[j - 1, i]]).powi(2);
+        }
+    }
+    [
+        (rms(seam_x, ny), rms(inner_x, ny * (nx - 1))),
+        (rms(seam_y, nx), rms(inner_y, (ny - 1) * nx)),
+    ]
 }
 
 #[cfg(test)]

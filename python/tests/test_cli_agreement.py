@@ -1,0 +1,146 @@
+"""Each function against the command line's output for the same input, to the last digit of
+the JSON (dict equality of floats parsed from the same shortest-repr text)."""
+
+import subprocess
+
+import numpy as np
+import pytest
+
+import stressfield as sf
+from conftest import BIN, ROOT, SCENES, cli_json
+
+HERTZ_SCENES = [
+    "sphere_ball_on_flat",  # point, dimensional, yield strength
+    "line_tau1",  # line, normalised
+    "gear_pitch_point",  # line, gears
+    "ellipse_bearing_groove",  # elliptical, DC-FFT maxima
+    "sphere_partial_slip",  # point, numerical
+    "thermal_sliding_sphere",  # point with [thermal]
+    "rough_worn_on_flat",  # rough: contact --json
+    "surface_worn_homework",  # surface: surface --json
+]
+
+
+@pytest.mark.parametrize("name", HERTZ_SCENES)
+def test_scene_hertz_is_hertz_json(name):
+    path = SCENES / f"{name}.toml"
+    assert sf.load_scene(path).hertz() == cli_json("hertz", path, "--json")
+
+
+def test_scene_from_toml_is_the_file():
+    path = SCENES / "sphere_ball_on_flat.toml"
+    scene = sf.Scene.from_toml(path.read_text(), base_dir=SCENES, name="sphere_ball_on_flat")
+    assert scene.hertz() == cli_json("hertz", path, "--json")
+    # Files named by the scene are read relative to base_dir.
+    rough = SCENES / "rough_worn_on_flat.toml"
+    scene = sf.Scene.from_toml(rough.read_text(), base_dir=SCENES, name="rough_worn_on_flat")
+    assert scene.contact().to_dict() == cli_json("contact", rough, "--json")
+
+
+def test_scene_contact_is_contact_json_and_the_pressure_file(tmp_path):
+    path = SCENES / "rough_worn_on_flat.toml"
+    npy = tmp_path / "p.npy"
+    expected = cli_json("contact", path, "--json", "--pressure", npy)
+    result = sf.load_scene(path).contact()
+    assert result.to_dict() == expected
+    assert result.keys() == list(expected)
+    assert result.contact_fraction == expected["contact_fraction"]
+    assert result.von_mises_max_pa == expected["von_mises_max_pa"]
+    pressure = np.load(npy)
+    assert result.pressure.dtype == np.float64
+    assert result.pressure.shape == (expected["rows"], expected["columns"])
+    np.testing.assert_array_equal(result.pressure, pressure)
+
+
+def test_contact_of_heights_is_the_scene_s_contact(tmp_path):
+    """The free function on the heights the scene reads, with the scene's settings: the
+    heights as given, so the scene keeps them as measured (level = "none")."""
+    text = (SCENES / "rough_worn_on_flat.toml").read_text()
+    worn = (SCENES / "surfaces" / "worn.asc").resolve().as_posix()
+    text = text.replace(
+        'file = "surfaces/worn.asc"', f'file = "{worn}"\nlevel = "none"'
+    )
+    path = tmp_path / "raw.toml"
+    path.write_text(text)
+    expected = cli_json("contact", path, "--json")
+    assert expected["levelling"] == {"removed": "none", "plane_m": None}
+    heights, spacing = sf.read_surface(SCENES / "surfaces" / "worn.asc")
+    assert list(spacing) == expected["spacing_m"]
+    result = sf.contact(
+        heights,
+        spacing,
+        expected["e_star_pa"],
+        mean_pressure=50e6,
+        periodic=True,
+        hardness=expected["hardness_pa"],
+        friction=0.2,
+        poisson=expected["poisson"],
+    )
+    assert result.to_dict() == expected
+    # Fortran order gives the same result, bit for bit.
+    fortran = sf.contact(
+        np.asfortranarray(heights),
+        spacing,
+        expected["e_star_pa"],
+        mean_pressure=50e6,
+        periodic=True,
+        hardness=expected["hardness_pa"],
+        friction=0.2,
+        poisson=expected["poisson"],
+    )
+    assert fortran.to_dict() == expected
+    np.testing.assert_array_equal(fortran.pressure, result.pressure)
+
+
+def test_read_surface_and_stats_are_surface_json(tmp_path):
+    path = SCENES / "surfaces" / "worn.asc"
+    npy = tmp_path / "h.npy"
+    expected = cli_json("surface", path, "--json", "--heights", npy)
+    heights, spacing = sf.read_surface(path)
+    assert heights.dtype == np.float64 and heights.ndim == 2
+    np.testing.assert_array_equal(heights, np.load(npy))
+    assert sf.surface_stats(heights, spacing) == expected
+    # Options as the command line's.
+    expected = cli_json(
+        "surface", path, "--json", "--form", "quadratic", "--e-star", "115GPa", "--hardness", "3GPa"
+    )
+    got = sf.surface_stats(heights, spacing, form="quadratic", e_star=115e9, hardness=3e9)
+    assert got == expected
+
+
+def _probe(contact, friction, points):
+    """`stressfield probe` at `points` (rows x, y, z in units of a): its six components."""
+    text = "x,y,z\n" + "".join(",".join(repr(float(v)) for v in p) + "\n" for p in points)
+    done = subprocess.run(
+        [str(BIN), "probe", "--contact", contact, "--friction", str(friction), "--points", "-"],
+        input=text,
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        check=True,
+    )
+    rows = [line.split(",") for line in done.stdout.strip().splitlines()[1:]]
+    return np.array([[float(v) for v in row[3:9]] for row in rows])
+
+
+def test_closed_forms_are_probe_s():
+    rng = np.random.default_rng(39)
+    points = np.column_stack(
+        [rng.uniform(-2, 2, 40), rng.uniform(-1.5, 1.5, 40), rng.uniform(0, 2, 40)]
+    )
+    x, y, z = points.T
+    line = sf.line_stress(x, z, friction=0.3)
+    np.testing.assert_array_equal(line, _probe("line", 0.3, np.column_stack([x, 0 * x, z])))
+    sphere = sf.sphere_stress(x, y, z, friction=0.2)
+    np.testing.assert_array_equal(sphere, _probe("point", 0.2, points))
+
+
+@pytest.mark.parametrize(
+    "name", ["record_sphere_friction_sweep", "record_rough_load_sweep", "record_thermal_speed_sweep"]
+)
+def test_scene_sweep_is_sweep_json(name):
+    path = SCENES / f"{name}.toml"
+    expected = cli_json("sweep", path, "--json")
+    assert sf.load_scene(path).sweep() == expected
+    assert len(expected["steps"]) >= 2
+    assert list(expected["steps"][0]) == list(expected["units"])

@@ -2,6 +2,7 @@
 //! (errors with the key, numbers with units, ranges, friction and Poisson's ratio) are here.
 
 mod bodies;
+mod coating;
 mod contact;
 mod figure;
 mod numerical;

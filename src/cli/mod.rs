@@ -76,6 +76,12 @@ pub fn run(command: Command) -> Result<()> {
         }
         Command::Hertz { scene: scene_path } => {
             let scene = stressfield::study::load_scene(&scene_path)?;
+            if scene.contact.coating.is_some() {
+                let study = stressfield::study::coated::solve(&scene)
+                    .with_context(|| format!("scene {}", scene.name))?;
+                let report = stressfield::report::coated::CoatedReport::new(&study);
+                return print_out(&report.text(&scene, &study));
+            }
             match scene.contact.kind {
                 ContactKind::Rough => surface::contact(&scene_path, false, None),
                 ContactKind::Surface => surface::surface_of_scene(&scene_path),

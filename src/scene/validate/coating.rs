@@ -4,7 +4,7 @@
 #[allow(clippy::wildcard_imports)]
 use super::*;
 use crate::scene::raw::RawCoating;
-use crate::scene::spec::CoatingSpec;
+use crate::scene::CoatingSpec;
 
 /// Coating thicknesses, m.
 const THICKNESS_BOUNDS: Bounds = Bounds {

@@ -275,7 +275,9 @@ mod tests {
                 worst = worst.max((grid[[j, i]] - love).abs() / love);
             }
         }
-        eprintln!("measured: equal moduli, layered influence coefficients against Love's: {worst:.1e}");
+        eprintln!(
+            "measured: equal moduli, layered influence coefficients against Love's: {worst:.1e}"
+        );
         assert!(worst < 1e-12, "{worst}");
     }
 }

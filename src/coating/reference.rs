@@ -57,7 +57,7 @@ pub fn bessel_j0(x: f64) -> f64 {
         let mut last = f64::INFINITY;
         for k in 1..60 {
             a *= ((2 * k - 1) * (2 * k - 1)) as f64 / (8.0 * k as f64);
-            let term = a / x.powi(k as i32);
+            let term = a / x.powi(k);
             if term > last || term < 1e-18 {
                 break;
             }
@@ -298,10 +298,11 @@ fn solve_dense(mut matrix: Vec<Vec<f64>>, mut rhs: Vec<f64>) -> Vec<f64> {
             .unwrap_or(column);
         matrix.swap(column, pivot);
         rhs.swap(column, pivot);
+        let pivot_row = matrix[column].clone();
         for row in column + 1..n {
-            let factor = matrix[row][column] / matrix[column][column];
-            for k in column..n {
-                matrix[row][k] -= factor * matrix[column][k];
+            let factor = matrix[row][column] / pivot_row[column];
+            for (target, source) in matrix[row][column..].iter_mut().zip(&pivot_row[column..]) {
+                *target -= factor * source;
             }
             rhs[row] -= factor * rhs[column];
         }
@@ -337,7 +338,10 @@ mod tests {
             let j1 = s / (x * x) - c / x;
             let j2 = (3.0 / (x * x) - 1.0) * s / x - 3.0 * c / (x * x);
             let got = spherical_over_power(x, 2);
-            assert!((got[0] - j1 / x).abs() < 1e-12 * (1.0 + (j1 / x).abs()), "{x}");
+            assert!(
+                (got[0] - j1 / x).abs() < 1e-12 * (1.0 + (j1 / x).abs()),
+                "{x}"
+            );
             assert!(
                 (got[1] - j2 / (x * x)).abs() < 1e-12 * (1.0 + (j2 / x / x).abs()),
                 "{x}"
@@ -375,7 +379,10 @@ mod tests {
         for i in 0..=100 {
             let r = a * i as f64 / 100.0;
             let hertz = p0 * (1.0 - (r / a).powi(2)).max(0.0).sqrt();
-            assert!((contact.pressure_pa(r) - hertz).abs() < 2e-5 * p0, "r = {r}");
+            assert!(
+                (contact.pressure_pa(r) - hertz).abs() < 2e-5 * p0,
+                "r = {r}"
+            );
         }
     }
 }

@@ -118,15 +118,15 @@ fn solve_linear<const N: usize, const M: usize>(
             .unwrap_or(column);
         matrix.swap(column, pivot);
         rhs.swap(column, pivot);
-        let diagonal = matrix[column][column];
+        let (pivot_row, pivot_rhs) = (matrix[column], rhs[column]);
         for row in column + 1..N {
-            let factor = matrix[row][column] / diagonal;
+            let factor = matrix[row][column] / pivot_row[column];
             if factor != 0.0 {
-                for k in column..N {
-                    matrix[row][k] -= factor * matrix[column][k];
+                for (target, source) in matrix[row][column..].iter_mut().zip(&pivot_row[column..]) {
+                    *target -= factor * source;
                 }
-                for k in 0..M {
-                    rhs[row][k] -= factor * rhs[column][k];
+                for (target, source) in rhs[row].iter_mut().zip(&pivot_rhs) {
+                    *target -= factor * source;
                 }
             }
         }

@@ -61,11 +61,7 @@ impl LayeredStress {
         periodic: bool,
     ) -> Result<Self, TransformError> {
         let (ny, nx) = pressure.dim();
-        let plan_shape = if periodic {
-            [ny, nx]
-        } else {
-            [2 * ny, 2 * nx]
-        };
+        let plan_shape = if periodic { [ny, nx] } else { [2 * ny, 2 * nx] };
         let plan = RealFft2::new(plan_shape);
         let mut work = plan.work();
         let mut loads = Vec::new();
@@ -81,8 +77,8 @@ impl LayeredStress {
         let h = layered.thickness_m;
         let waves = Array2::from_shape_fn((width, height), |(ix, iy)| {
             let (sx, sy) = (signed_index(ix, px), signed_index(iy, py));
-            let nyquist = (px % 2 == 0 && sx == (px / 2) as i64)
-                || (py % 2 == 0 && sy == (py / 2) as i64);
+            let nyquist =
+                (px % 2 == 0 && sx == (px / 2) as i64) || (py % 2 == 0 && sy == (py / 2) as i64);
             if (sx == 0 && sy == 0) || nyquist {
                 return None;
             }

@@ -40,8 +40,18 @@ fn equal_materials_give_the_homogeneous_waves() {
             };
             let at = wave.at(zeta, side, &body);
             let e = (-zeta).exp();
-            let fp = [(1.0 + zeta) * e, -zeta * e, (zeta - 1.0) * e, (2.0 - zeta) * e];
-            let fq = [zeta * e, (1.0 - zeta) * e, (zeta - 2.0) * e, (3.0 - zeta) * e];
+            let fp = [
+                (1.0 + zeta) * e,
+                -zeta * e,
+                (zeta - 1.0) * e,
+                (2.0 - zeta) * e,
+            ];
+            let fq = [
+                zeta * e,
+                (1.0 - zeta) * e,
+                (zeta - 2.0) * e,
+                (3.0 - zeta) * e,
+            ];
             for i in 0..4 {
                 worst = worst.max((at.pressure[i] - fp[i]).abs());
                 worst = worst.max((at.shear[i] - fq[i]).abs());
@@ -146,8 +156,8 @@ fn the_waves_are_in_equilibrium_at_every_depth() {
                         // i n·(σ) : (re, im) -> (-im, re)
                         let other = 1 - part;
                         let sign = if part == 0 { -1.0 } else { 1.0 };
-                        let in_plane = sign
-                            * (n[0] * here[cx][load][other] + n[1] * here[cy][load][other]);
+                        let in_plane =
+                            sign * (n[0] * here[cx][load][other] + n[1] * here[cy][load][other]);
                         let depth = (up[cz][load][part] - down[cz][load][part]) / (2.0 * step);
                         worst = worst.max((in_plane + depth).abs());
                     }
@@ -261,7 +271,12 @@ fn a_row_alone_equals_the_layer_s_row() {
     };
     let layers = LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
     let mut worst: f64 = 0.0;
-    for (z, side) in [(0.0, Side::Coating), (0.4, Side::Coating), (0.4, Side::Substrate), (0.9, Side::Substrate)] {
+    for (z, side) in [
+        (0.0, Side::Coating),
+        (0.4, Side::Coating),
+        (0.4, Side::Substrate),
+        (0.9, Side::Substrate),
+    ] {
         let layer = layers.layer(z, side).expect("layer");
         for j in [0, n / 2, n - 1] {
             let row = layers.row(j, z, side);

@@ -81,7 +81,13 @@ mod tests {
 
     /// A rigid sphere (R = 10 mm) on the coated half-space at the load the reference carries
     /// with radius `a`, on cells of `a / cells_per_a` over ±`extent` a.
-    fn gridded(layered: &Layered, load: f64, a: f64, cells_per_a: f64, extent: f64) -> RoughSolution {
+    fn gridded(
+        layered: &Layered,
+        load: f64,
+        a: f64,
+        cells_per_a: f64,
+        extent: f64,
+    ) -> RoughSolution {
         let radius = 10e-3;
         let d = a / cells_per_a;
         let n = (2.0 * extent * cells_per_a).round() as usize;
@@ -137,7 +143,9 @@ mod tests {
             .iter()
             .fold(0.0f64, |m, v| m.max(v.abs()))
             / p0;
-        eprintln!("measured: equal moduli, coated contact against the homogeneous solve: {worst:.1e} p0");
+        eprintln!(
+            "measured: equal moduli, coated contact against the homogeneous solve: {worst:.1e} p0"
+        );
         assert!(worst < 1e-8, "{worst}");
     }
 
@@ -198,6 +206,38 @@ mod tests {
     }
 
     #[test]
+    fn a_thin_coating_gives_the_substrates_contact() {
+        // The reference at h/a = 0.002 (Ec/Es = 2 and 0.5) against the substrate's Hertz
+        // contact under the same load.
+        let steel = Material {
+            modulus_pa: 210e9,
+            poisson: 0.3,
+        };
+        let (radius, a) = (10e-3, 100e-6);
+        for ratio in [2.0, 0.5] {
+            let layered = Layered {
+                coating: Material {
+                    modulus_pa: ratio * 210e9,
+                    poisson: 0.3,
+                },
+                substrate: steel,
+                thickness_m: 0.002 * a,
+            };
+            let reference = rigid_sphere(&layered, radius, a, 6);
+            let e2 = plane_strain_modulus(&steel);
+            let a_sub = (3.0 * reference.load_n * radius / (4.0 * e2)).cbrt();
+            let p_sub = 3.0 * reference.load_n / (2.0 * std::f64::consts::PI * a_sub * a_sub);
+            let (ea, ep) = (a / a_sub - 1.0, reference.max_pressure_pa / p_sub - 1.0);
+            eprintln!(
+                "measured: h/a = 0.002, Ec/Es = {ratio}: against the substrate's Hertz contact, radius {:+.3} %, peak pressure {:+.3} %",
+                100.0 * ea,
+                100.0 * ep
+            );
+            assert!(ea.abs() < 0.005 && ep.abs() < 0.01, "{ea} {ep}");
+        }
+    }
+
+    #[test]
     fn a_coating_thinner_than_two_cells_is_refused() {
         let steel = Material {
             modulus_pa: 210e9,
@@ -221,6 +261,9 @@ mod tests {
             memory_limit_bytes: 1 << 30,
         };
         let error = solve(&problem, &layered, 0.0, &mut |_, _| {}).expect_err("too thin");
-        assert!(matches!(error, CoatedContactError::TooThin { .. }), "{error}");
+        assert!(
+            matches!(error, CoatedContactError::TooThin { .. }),
+            "{error}"
+        );
     }
 }

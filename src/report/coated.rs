@@ -173,10 +173,7 @@ impl CoatedReport {
             study.solution.approach_m * 1e6
         );
         let m = &study.maxima;
-        let _ = writeln!(
-            out,
-            "stress maxima in the plane of sliding (y = 0):"
-        );
+        let _ = writeln!(out, "stress maxima in the plane of sliding (y = 0):");
         let rows = [
             ("von Mises, anywhere", &m.von_mises),
             ("von Mises in the coating", &m.coating_von_mises),
@@ -198,9 +195,7 @@ impl CoatedReport {
                 place(located)
             );
         }
-        let layer = if m.von_mises.z_m < spec.thickness_m
-            || (m.von_mises == m.coating_von_mises)
-        {
+        let layer = if m.von_mises.z_m < spec.thickness_m || (m.von_mises == m.coating_von_mises) {
             "in the coating"
         } else {
             "in the substrate"

@@ -4,8 +4,8 @@
 use std::sync::Arc;
 
 use crate::contact::elliptic::EllipticalContact;
-use crate::contact::material::Material;
 use crate::contact::gear::SpurGearPair;
+use crate::contact::material::Material;
 use crate::contact::rough::Control;
 use crate::contact::{Body, LineContact, PointContact};
 use crate::render::{ColorMap, Levels, Mark};

@@ -154,12 +154,7 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
     let (semi_axes, curvature, p0, load) = match dimensional.hertz {
         Hertz::Point(point) => {
             let c = 0.5 / point.effective_radius_m;
-            (
-                [point.radius_m; 2],
-                [c, c],
-                point.p0_pa,
-                point.load_n,
-            )
+            ([point.radius_m; 2], [c, c], point.p0_pa, point.load_n)
         }
         Hertz::Elliptical(e) => (
             [e.semi_axis_x_m, e.semi_axis_y_m],
@@ -277,9 +272,7 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
                 }
             }
             if *z == h && *side == Side::Coating {
-                maxima
-                    .interface_shear
-                    .keep_larger(s.xz.hypot(s.yz), x, *z);
+                maxima.interface_shear.keep_larger(s.xz.hypot(s.yz), x, *z);
                 maxima.interface_normal_max.keep_larger(s.zz, x, *z);
                 // The most compressive: the largest of -σzz, stored with its sign.
                 if -s.zz > -maxima.interface_normal_min.value_pa
@@ -355,4 +348,155 @@ fn depths(layered: &Layered, cell_m: f64, semi_axis_m: f64) -> Vec<(f64, Side)> 
         out.push((h + (end - h) * i as f64 / below as f64, Side::Substrate));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::coated::CoatedReport;
+
+    /// A 12.7 mm steel ball on a coated steel flat (5 N), with `coating` lines in the coating
+    /// table and `extra` appended.
+    fn scene_text(coating: &str, extra: &str) -> String {
+        format!(
+            "format = 1\n[contact]\nkind = \"point\"\nload = \"5 N\"\nfriction = 0.1\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body1.coating]\n{coating}\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n{extra}"
+        )
+    }
+
+    fn error_of(text: &str) -> String {
+        match Scene::parse(text, "test", "test.toml") {
+            Ok(_) => panic!("accepted: {text}"),
+            Err(e) => e.to_string(),
+        }
+    }
+
+    #[test]
+    fn bad_coatings_are_refused_by_key() {
+        for (text, key) in [
+            (
+                scene_text("thickness = \"-2 um\"\nmaterial = \"boron_carbide\"", ""),
+                "contact.body1.coating.thickness",
+            ),
+            (
+                scene_text("thickness = \"0 um\"\nmaterial = \"boron_carbide\"", ""),
+                "contact.body1.coating.thickness",
+            ),
+            (
+                scene_text("material = \"boron_carbide\"", ""),
+                "contact.body1.coating.thickness",
+            ),
+            (
+                scene_text("thickness = \"2 um\"", ""),
+                "contact.body1.coating.modulus",
+            ),
+            (
+                scene_text(
+                    "thickness = \"2 um\"\nmaterial = \"boron_carbide\"\ncolour = 1",
+                    "",
+                ),
+                "colour",
+            ),
+            (
+                scene_text(
+                    "thickness = \"2 um\"\nmaterial = \"boron_carbide\"",
+                    "[contact.body2.coating]\nthickness = \"1 um\"\nmaterial = \"steel\"\n",
+                ),
+                "contact.body2",
+            ),
+            (
+                scene_text(
+                    "thickness = \"2 um\"\nmaterial = \"boron_carbide\"",
+                    "[thermal]\nspeed = \"1 m/s\"\n",
+                ),
+                "thermal",
+            ),
+        ] {
+            let message = error_of(&text);
+            assert!(message.contains(key), "{key}: {message}");
+        }
+        // A coating on a line contact and on body 2 only.
+        let line = scene_text("thickness = \"2 um\"\nmaterial = \"boron_carbide\"", "")
+            .replace("kind = \"point\"", "kind = \"line\"")
+            .replace("load = \"5 N\"", "load = \"5 kN/m\"");
+        assert!(error_of(&line).contains("contact.body1.coating"));
+        let body2_only = "format = 1\n[contact]\nkind = \"point\"\nload = \"5 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[contact.body2.coating]\nthickness = \"1 um\"\nmaterial = \"boron_carbide\"\n";
+        let message = error_of(body2_only);
+        assert!(message.contains("contact.body2.coating"), "{message}");
+        // A rigid counter-body is taken in a coated scene, and refused in an uncoated one.
+        let rigid = scene_text("thickness = \"20 um\"\nmaterial = \"boron_carbide\"", "").replace(
+            "radius = \"6.35 mm\"\nmaterial = \"steel\"",
+            "radius = \"6.35 mm\"\nmaterial = \"rigid\"",
+        );
+        let scene = Scene::parse(&rigid, "test", "test.toml").expect("rigid counter-body");
+        assert!(scene.contact.coating.is_some_and(|c| c.counter_rigid));
+    }
+
+    #[test]
+    fn a_grid_too_coarse_for_the_coating_names_the_cells_needed() {
+        let text = scene_text(
+            "thickness = \"0.5 um\"\nmaterial = \"boron_carbide\"",
+            "[numerical]\ncells = 64\n",
+        );
+        let scene = Scene::parse(&text, "test", "test.toml").expect("valid");
+        let message = solve(&scene).expect_err("too coarse").to_string();
+        assert!(message.starts_with("numerical.cells"), "{message}");
+        assert!(message.contains("at least 859"), "{message}");
+    }
+
+    #[test]
+    fn a_thick_coating_gives_the_coatings_hertz_contact_and_the_json_has_its_keys() {
+        // h = 20 a: the coating's Hertz contact (p0 and a to the grid's resolution).
+        let text = scene_text(
+            "thickness = \"1 mm\"\nmaterial = \"boron_carbide\"",
+            "[numerical]\ncells = 96\n",
+        );
+        let scene = Scene::parse(&text, "test", "test.toml").expect("valid");
+        let study = solve(&scene).expect("solve");
+        let (a, p0) = (study.hertz_semi_axes_m[0], study.hertz_p0_pa);
+        let (ep, ea) = (
+            study.solution.max_pressure_pa / p0 - 1.0,
+            study.contact_radius_m / a - 1.0,
+        );
+        eprintln!("measured: h = 20a, against the coating's Hertz contact: peak pressure {:+.2} %, radius {:+.2} %", 100.0 * ep, 100.0 * ea);
+        assert!(ep.abs() < 0.01 && ea.abs() < 0.02, "{ep} {ea}");
+        // The stress maximum is the homogeneous sliding sphere's (Hamilton, ν = 0.17, μ = 0.1),
+        // searched on the plane y = 0 at steps of a/200.
+        let mut hamilton: f64 = 0.0;
+        for i in 0..=400 {
+            for k in 0..=300 {
+                let (x, z) = (-1.0 + i as f64 / 200.0, k as f64 / 200.0);
+                let s = crate::solution::sphere_hertz::stress_over_p0(x, 0.0, z, 0.1, 0.17);
+                hamilton = hamilton.max(s.von_mises());
+            }
+        }
+        let von_mises = study.maxima.von_mises.value_pa / p0;
+        eprintln!(
+            "measured: h = 20a, von Mises maximum {von_mises:.4} p0 against Hamilton's {hamilton:.4} p0: {:+.2} %",
+            100.0 * (von_mises / hamilton - 1.0)
+        );
+        assert!((von_mises / hamilton - 1.0).abs() < 0.02);
+        let json = CoatedReport::new(&study).json_fields();
+        for key in [
+            "max_pressure_pa",
+            "contact_radius_m",
+            "contact_area_m2",
+            "approach_m",
+            "von_mises_max_pa",
+            "von_mises_max_depth_m",
+        ] {
+            assert!(json[key].as_f64().is_some_and(f64::is_finite), "{key}");
+        }
+        let coating = CoatedReport::new(&study).json();
+        for key in [
+            "thickness_m",
+            "von_mises_max_pa",
+            "interface_shear_max_pa",
+            "interface_normal_min_pa",
+            "substrate_von_mises_max_pa",
+        ] {
+            assert!(coating[key].as_f64().is_some_and(f64::is_finite), "{key}");
+        }
+        assert_eq!(coating["thickness_m"].as_f64(), Some(1e-3));
+        assert_eq!(json["coating"], coating);
+    }
 }

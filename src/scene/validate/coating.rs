@@ -78,7 +78,7 @@ impl Validator<'_> {
         })?;
         let value = units::parse(text, Dimension::Length)
             .map_err(|m| self.error("contact.body1.coating.thickness", m, None))?;
-        if !(value > 0.0) {
+        if value.is_nan() || value <= 0.0 {
             return Err(self.error(
                 "contact.body1.coating.thickness",
                 format!(
@@ -101,7 +101,8 @@ impl Validator<'_> {
             poisson: raw.poisson,
             ..RawBody::default()
         };
-        let material = self.elastic("contact.body1.coating", &as_body, "missing elastic modulus")?;
+        let material =
+            self.elastic("contact.body1.coating", &as_body, "missing elastic modulus")?;
         let (counter_per_pa, counter_rigid) = match counter {
             Some(m) => ((1.0 - m.poisson * m.poisson) / m.modulus_pa, false),
             None => (0.0, true),

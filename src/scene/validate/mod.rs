@@ -301,9 +301,21 @@ impl Validator<'_> {
         if contact.coating.is_some() {
             // What a coated scene does not compute is refused, never drawn homogeneous.
             for (key, given, what) in [
-                ("thermal", raw.thermal.is_some(), "frictional heating of a coated body"),
-                ("volume", raw.volume.is_some(), "a volume recording of a coated body"),
-                ("panel", !raw.panels.is_empty(), "panels of a coated body (its figure draws its own sections)"),
+                (
+                    "thermal",
+                    raw.thermal.is_some(),
+                    "frictional heating of a coated body",
+                ),
+                (
+                    "volume",
+                    raw.volume.is_some(),
+                    "a volume recording of a coated body",
+                ),
+                (
+                    "panel",
+                    !raw.panels.is_empty(),
+                    "panels of a coated body (its figure draws its own sections)",
+                ),
             ] {
                 if given {
                     return Err(self.error(

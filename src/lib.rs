@@ -48,6 +48,7 @@
 //!   the trailing edge is `x = -a`, where `σxx = +2 μ p0`.
 //! - SI units internally; solutions work in units of the half-width `a` and peak pressure `p0`.
 
+pub mod coating;
 pub mod contact;
 pub mod field;
 pub mod figure;

@@ -79,6 +79,17 @@ pub fn run(command: Command) -> Result<()> {
             json,
         } => {
             let scene = stressfield::study::load_scene(&scene_path)?;
+            if scene.contact.coating.is_some() {
+                let study = stressfield::study::coated::solve(&scene)
+                    .with_context(|| format!("scene {}", scene.name))?;
+                let report = stressfield::report::coated::CoatedReport::new(&study);
+                if json {
+                    let text = serde_json::to_string_pretty(&report.json_fields())
+                        .context("encoding the coated report as JSON")?;
+                    return print_out(&format!("{text}\n"));
+                }
+                return print_out(&report.text(&scene, &study));
+            }
             match scene.contact.kind {
                 ContactKind::Rough => surface::contact(&scene_path, json, None),
                 ContactKind::Surface => surface::surface_of_scene(&scene_path, json),

@@ -33,6 +33,9 @@ pub(super) fn probe_command(args: &ProbeArgs) -> Result<()> {
     let mut loaded = None;
     if let Some(path) = scene {
         let scene = stressfield::study::load_scene(path)?;
+        if scene.contact.coating.is_some() {
+            anyhow::bail!("contact.body1.coating: probe evaluates the homogeneous closed forms, not a coated body\nhint: `stressfield hertz {}` reports the coated body's stresses", path.display());
+        }
         (mu, nu) = (scene.contact.friction, scene.contact.poisson);
         kind = match scene.contact.kind {
             ContactKind::Line => ContactArg::Line,

@@ -7,6 +7,7 @@
 //! Uses: [`crate::operator`] (the rough solver's FFT and elastic operator) and [`crate::io`];
 //! its tests also use `solution` and `thermal` as second methods.
 
+pub mod coated;
 pub mod elliptic;
 pub mod gear;
 pub mod material;

@@ -5,6 +5,7 @@
 //! Uses: [`crate::study`] (what is computed), [`crate::field`], [`crate::render`] (the
 //! figure and sheet types), [`crate::report`] (the tables of a sheet), [`crate::io`].
 
+pub mod coated;
 pub mod rough;
 pub mod surface;
 pub mod thermal;
@@ -54,6 +55,8 @@ pub enum DrawError {
         "a rough scene's sheet draws its solved contact: solve it first (study::rough::solve)"
     )]
     Unsolved,
+    #[error(transparent)]
+    Coated(#[from] crate::study::coated::CoatedStudyError),
 }
 
 /// Draws any scene: a figure ([`build`]) or the sheet of a surface or rough scene; a rough
@@ -64,6 +67,13 @@ pub fn draw(
     rough: Option<&crate::contact::rough::RoughSolution>,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Drawing, DrawError> {
+    if scene.contact.coating.is_some() {
+        // A coated body's section, from its study (the homogeneous closed forms do not hold).
+        let study = study::coated::solve(scene)?;
+        return Ok(Drawing::Figure(crate::figure::coated::coated_figure(
+            scene, &study,
+        )));
+    }
     Ok(match scene.contact.kind {
         ContactKind::Rough => {
             let solution = rough.ok_or(DrawError::Unsolved)?;

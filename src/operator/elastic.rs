@@ -163,6 +163,8 @@ pub enum Periodicity {
 pub struct ElasticOperator {
     shape: [usize; 2],
     periodicity: Periodicity,
+    /// The kernel at offset zero, m/Pa.
+    own_m_per_pa: f64,
     plan: RealFft2,
     /// The real transform of the kernel (even in x and y), in m/Pa.
     kernel: Array2<f64>,
@@ -221,6 +223,54 @@ impl ElasticOperator {
         Ok(Self {
             shape,
             periodicity,
+            own_m_per_pa: uniform_patch_displacement(
+                0.0,
+                0.0,
+                spacing_m[0] / 2.0,
+                spacing_m[1] / 2.0,
+            ) / (PI * e_star_pa),
+            plan,
+            kernel,
+            spectrum,
+            work,
+        })
+    }
+
+    /// The operator of any kernel given in real space (m/Pa, even in x and y): on the
+    /// `[2ny, 2nx]` grid in wrap-around order (non-periodic) or on the `[ny, nx]` period
+    /// (periodic; its mean mode is dropped), e.g. a coated body's
+    /// ([`crate::coating::kernel::kernel_grid`]).
+    pub fn from_kernel(
+        shape: [usize; 2],
+        periodicity: Periodicity,
+        kernel_grid: &Array2<f64>,
+    ) -> Result<Self, TransformError> {
+        let [ny, nx] = shape;
+        let plan_shape = match periodicity {
+            Periodicity::NonPeriodic => [2 * ny, 2 * nx],
+            Periodicity::Periodic => [ny, nx],
+        };
+        assert_eq!(
+            kernel_grid.dim(),
+            (plan_shape[0], plan_shape[1]),
+            "the kernel grid must have the plan's shape"
+        );
+        let plan = RealFft2::new(plan_shape);
+        let mut work = plan.work();
+        let mut spectrum = plan.new_spectrum();
+        plan.forward(kernel_grid.view(), &mut spectrum, &mut work)?;
+        let mut kernel = spectrum.mapv(|c| c.re);
+        if periodicity == Periodicity::Periodic {
+            kernel[[0, 0]] = 0.0;
+        }
+        Ok(Self {
+            shape,
+            periodicity,
+            own_m_per_pa: match periodicity {
+                Periodicity::NonPeriodic => kernel_grid[[0, 0]],
+                // Relative to the mean displacement, which the dropped mean mode removes.
+                Periodicity::Periodic => kernel_grid[[0, 0]] - kernel_grid.mean().unwrap_or(0.0),
+            },
             plan,
             kernel,
             spectrum,
@@ -230,6 +280,12 @@ impl ElasticOperator {
 
     pub fn shape(&self) -> [usize; 2] {
         self.shape
+    }
+
+    /// A cell's displacement under its own unit pressure, m/Pa (the solver's local
+    /// stiffness).
+    pub fn own_m_per_pa(&self) -> f64 {
+        self.own_m_per_pa
     }
 
     pub fn periodicity(&self) -> Periodicity {
@@ -250,6 +306,12 @@ impl ElasticOperator {
         self.plan
             .inverse(&mut self.spectrum, displacement, &mut self.work)
     }
+}
+
+/// `K_per π E*` on the `[ny, nx]` grid of signed offsets in wrap-around order (module doc),
+/// for the layered kernels of [`crate::coating::kernel`].
+pub fn periodic_love_kernel(shape: [usize; 2], spacing_m: [f64; 2]) -> Array2<f64> {
+    periodic_kernel(shape, spacing_m)
 }
 
 /// `K_per π E*` on the `[ny, nx]` grid of signed offsets in wrap-around order (module doc).

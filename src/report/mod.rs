@@ -3,6 +3,7 @@
 //! Uses: the study's results and the layers below it (assess, contact, solution, stress,
 //! surface, thermal), [`crate::render`]'s tables, [`crate::io`] for numbers.
 
+pub mod coated;
 pub mod hertz;
 pub mod probe;
 pub mod rough;

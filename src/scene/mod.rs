@@ -24,9 +24,9 @@ use crate::solution::dcfft::TractionGrid;
 use raw::RawScene;
 
 pub use spec::{
-    Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit, Levelling, Method,
-    Numerical, PanelSpec, RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec,
-    ThermalBody, ThermalSpec, TractionDirection, WearSpec, YieldStrength,
+    CoatingSpec, Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit,
+    Levelling, Method, Numerical, PanelSpec, RoughSpec, Scale, SectionKind, SeriesEntry,
+    StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection, WearSpec, YieldStrength,
     ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };

@@ -191,6 +191,20 @@ pub struct RawBody {
     pub density: Option<String>,
     pub specific_heat: Option<String>,
     pub expansion: Option<String>,
+    /// A layer bonded to the body (`[contact.body1.coating]`).
+    pub coating: Option<RawCoating>,
+    /// Several layers (`[[contact.body1.layers]]`): refused with a message (one layer only).
+    pub layers: Option<toml::Value>,
+}
+
+/// `[contact.body1.coating]`: the layer's thickness and elastic constants.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawCoating {
+    pub thickness: Option<String>,
+    pub material: Option<String>,
+    pub modulus: Option<String>,
+    pub poisson: Option<f64>,
 }
 
 #[derive(Debug, Deserialize)]

@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use crate::contact::elliptic::EllipticalContact;
 use crate::contact::gear::SpurGearPair;
+use crate::contact::material::Material;
 use crate::contact::rough::Control;
 use crate::contact::{Body, LineContact, PointContact};
 use crate::render::{ColorMap, Levels, Mark};
@@ -198,6 +199,33 @@ pub struct Contact {
     pub tangential: Option<f64>,
     /// Rough and surface scenes: control, materials and solver settings.
     pub rough: Option<RoughSpec>,
+    /// A layer bonded to body 1 (`[contact.body1.coating]`).
+    pub coating: Option<CoatingSpec>,
+}
+
+/// A coating on body 1: the layer, the body under it (the substrate) and the counter-body.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CoatingSpec {
+    pub thickness_m: f64,
+    /// The layer's elastic constants.
+    pub material: Material,
+    /// Body 1's own material, under the layer.
+    pub substrate: Material,
+    /// The counter-body's `(1 - ν²)/E`, Pa⁻¹: 0 when it is rigid.
+    pub counter_per_pa: f64,
+    /// Whether the counter-body is rigid (`material = "rigid"`).
+    pub counter_rigid: bool,
+}
+
+impl CoatingSpec {
+    /// The layered half-space of body 1.
+    pub fn layered(&self) -> crate::coating::Layered {
+        crate::coating::Layered {
+            coating: self.material,
+            substrate: self.substrate,
+            thickness_m: self.thickness_m,
+        }
+    }
 }
 
 /// The contact of a rough or surface scene.

@@ -13,6 +13,7 @@
 
 pub mod admit;
 pub mod assess;
+pub mod coated;
 mod compass;
 pub mod coupled;
 pub mod gear_heating;

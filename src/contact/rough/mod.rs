@@ -227,6 +227,22 @@ pub struct OperatorCache {
 type OperatorKey = ([usize; 2], [f64; 2], f64, Periodicity);
 
 impl OperatorCache {
+    /// A cache holding `operator` for `problem`'s grid, spacing, `E*` and periodicity: the
+    /// solves of `problem` use it instead of Love's (a coated body's operator,
+    /// [`crate::coating::kernel`]; `E*` then names the one the problem states).
+    pub fn holding(problem: &RoughContactProblem, operator: ElasticOperator) -> Self {
+        let (ny, nx) = problem.heights_m.dim();
+        let key = (
+            [ny, nx],
+            problem.spacing_m,
+            problem.e_star_pa,
+            problem.periodicity,
+        );
+        Self {
+            kept: Some((operator, key)),
+        }
+    }
+
     /// The operator of `problem`'s grid: the kept one, or a new one, kept.
     fn operator(
         &mut self,
@@ -385,12 +401,9 @@ pub fn solve_cached(
         elastic: cache.operator(problem)?,
         local_m_per_pa: local,
     };
-    // Local stiffness: a cell's own displacement per unit pressure (Love's centre value), and
-    // the local compliance.
-    let own_compliance =
-        crate::operator::elastic::uniform_patch_displacement(0.0, 0.0, dx / 2.0, dy / 2.0)
-            / (std::f64::consts::PI * problem.e_star_pa)
-            + local;
+    // Local stiffness: a cell's own displacement per unit pressure (Love's centre value, or a
+    // coated body's), and the local compliance.
+    let own_compliance = operator.elastic.own_m_per_pa() + local;
 
     let approach_given = match problem.control {
         Control::Approach { m } => Some(m),

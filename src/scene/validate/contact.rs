@@ -171,6 +171,7 @@ impl Validator<'_> {
                 aspect,
                 tangential,
                 rough: None,
+                coating: None,
             });
         }
         if raw.aspect.is_some() {
@@ -226,8 +227,29 @@ impl Validator<'_> {
         let elliptical = kind == ContactKind::Elliptical;
         let raw1 = raw.body1.as_ref().unwrap_or(&empty);
         let raw2 = raw.body2.as_ref().unwrap_or(&empty);
+        self.coating_placement(raw1, raw2)?;
+        let coated = raw1.coating.is_some();
+        let rigid2 = coated && raw2.material.as_deref().map(str::trim) == Some("rigid");
         let mut body1 = self.body("contact.body1", raw1, gears.is_some(), elliptical)?;
-        let mut body2 = self.body("contact.body2", raw2, gears.is_some(), elliptical)?;
+        let mut body2 = if rigid2 {
+            self.rigid_counter_body(raw2, elliptical)?
+        } else {
+            self.body("contact.body2", raw2, gears.is_some(), elliptical)?
+        };
+        let coating = match &raw1.coating {
+            Some(raw_coating) => {
+                let spec = self.coating(
+                    kind,
+                    raw_coating,
+                    body1.material,
+                    (!rigid2).then_some(body2.material),
+                )?;
+                // The scene's scale (a, p0) is the coating's Hertz contact.
+                body1.material = spec.material;
+                Some(spec)
+            }
+            None => None,
+        };
         if let Some(pair) = gears {
             body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);
             body2.radius_m = pair.curvature_radius_at_pitch_point_m(1);
@@ -311,7 +333,38 @@ impl Validator<'_> {
             aspect,
             tangential,
             rough: None,
+            coating,
         })
+    }
+
+    /// A rigid counter-body of a coated scene (`material = "rigid"`): its radius (or radii), an
+    /// infinite modulus (it adds nothing to the compliance).
+    fn rigid_counter_body(&self, raw: &RawBody, elliptical: bool) -> Result<Body, SceneError> {
+        for (name, given) in [
+            ("modulus", raw.modulus.is_some()),
+            ("poisson", raw.poisson.is_some()),
+        ] {
+            if given {
+                return Err(self.error(
+                    &format!("contact.body2.{name}"),
+                    "a rigid body has no elastic constants",
+                    Some("remove it, or replace material = \"rigid\" by the body's material"),
+                ));
+            }
+        }
+        let stand_in = RawBody {
+            radius: raw.radius.clone(),
+            radius_x: raw.radius_x.clone(),
+            radius_y: raw.radius_y.clone(),
+            material: Some("steel".to_string()),
+            ..RawBody::default()
+        };
+        let mut body = self.body("contact.body2", &stand_in, false, elliptical)?;
+        body.material = Material {
+            modulus_pa: f64::INFINITY,
+            poisson: 0.0,
+        };
+        Ok(body)
     }
 
     /// Every value derived from the load, the radii and the moduli (E*, R, a, b, p0, the mean

@@ -2,6 +2,7 @@
 //! (errors with the key, numbers with units, ranges, friction and Poisson's ratio) are here.
 
 mod bodies;
+mod coating;
 mod contact;
 mod figure;
 mod numerical;
@@ -296,6 +297,41 @@ impl Validator<'_> {
                 format!("{} panels is too many for one figure", panels.len()),
                 Some("use at most 6 [[panel]] tables; split the rest into another scene"),
             ));
+        }
+        if contact.coating.is_some() {
+            // What a coated scene does not compute is refused, never drawn homogeneous.
+            for (key, given, what) in [
+                (
+                    "thermal",
+                    raw.thermal.is_some(),
+                    "frictional heating of a coated body",
+                ),
+                (
+                    "volume",
+                    raw.volume.is_some(),
+                    "a volume recording of a coated body",
+                ),
+                (
+                    "panel",
+                    !raw.panels.is_empty(),
+                    "panels of a coated body (its figure draws its own sections)",
+                ),
+            ] {
+                if given {
+                    return Err(self.error(
+                        key,
+                        format!("{what} is not computed"),
+                        Some("remove the table; `hertz` reports the coated contact and its stresses, `render` draws its sheet"),
+                    ));
+                }
+            }
+            if raw.sweep.is_some() {
+                return Err(self.error(
+                    "sweep",
+                    "a sweep of a coated scene is not recorded in this version",
+                    Some("remove [sweep]; run `hertz` on scenes with different contact.body1.coating.thickness to compare"),
+                ));
+            }
         }
         let mut scene = Scene {
             name: name.into(),

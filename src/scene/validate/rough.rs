@@ -120,6 +120,18 @@ impl Validator<'_> {
             None
         };
         let friction = self.friction("contact.friction", raw.friction.unwrap_or(0.0))?;
+        {
+            let empty = RawBody::default();
+            let raw1 = raw.body1.as_ref().unwrap_or(&empty);
+            self.coating_placement(raw1, raw.body2.as_ref().unwrap_or(&empty))?;
+            if raw1.coating.is_some() {
+                return Err(self.error(
+                    "contact.body1.coating",
+                    "a coating on a rough surface is not computed in this version: coated contacts are solved on the gridded paraboloids of point and elliptical contacts",
+                    Some("use kind = \"point\" or \"elliptical\" with [contact.body1.coating], or remove the coating"),
+                ));
+            }
+        }
         let bodies = match (&raw.body1, &raw.body2) {
             (Some(b1), Some(b2)) => Some((
                 self.rough_body("contact.body1", b1)?,
@@ -168,6 +180,7 @@ impl Validator<'_> {
             yield_strength,
             aspect: 1.0,
             tangential: None,
+            coating: None,
             rough: Some(RoughSpec {
                 control,
                 periodic: raw.periodic.unwrap_or(false),

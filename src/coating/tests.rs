@@ -1,0 +1,291 @@
+//! Tests of the layered half-space's wave response: the homogeneous limit, the thin and thick
+//! layer, the free surface and the interface conditions to round-off.
+
+use super::response::{plane_strain_modulus, Layered, Side};
+use crate::contact::material::Material;
+
+const STEEL: Material = Material {
+    modulus_pa: 210e9,
+    poisson: 0.3,
+};
+const B4C: Material = Material {
+    modulus_pa: 450e9,
+    poisson: 0.17,
+};
+const SOFT: Material = Material {
+    modulus_pa: 70e9,
+    poisson: 0.35,
+};
+
+fn layered(coating: Material, substrate: Material) -> Layered {
+    Layered {
+        coating,
+        substrate,
+        thickness_m: 1e-6,
+    }
+}
+
+#[test]
+fn equal_materials_give_the_homogeneous_waves() {
+    // Johnson §2.8: F_p = (1 + ζ) e^(-ζ), F_q = ζ e^(-ζ), U = e^(-ζ), k u_z / p = 2 / E'.
+    let body = layered(STEEL, STEEL);
+    let mut worst: f64 = 0.0;
+    for k_h in [1e-6, 0.01, 0.3, 1.0, 4.0, 30.0, 800.0] {
+        let wave = body.wave(k_h);
+        for zeta in [0.0, 0.1 * k_h, k_h, 1.7 * k_h + 0.2, 5.0] {
+            let side = if zeta <= k_h {
+                Side::Coating
+            } else {
+                Side::Substrate
+            };
+            let at = wave.at(zeta, side, &body);
+            let e = (-zeta).exp();
+            let fp = [
+                (1.0 + zeta) * e,
+                -zeta * e,
+                (zeta - 1.0) * e,
+                (2.0 - zeta) * e,
+            ];
+            let fq = [
+                zeta * e,
+                (1.0 - zeta) * e,
+                (zeta - 2.0) * e,
+                (3.0 - zeta) * e,
+            ];
+            for i in 0..4 {
+                worst = worst.max((at.pressure[i] - fp[i]).abs());
+                worst = worst.max((at.shear[i] - fq[i]).abs());
+            }
+            worst = worst.max((at.antiplane[0] - e).abs());
+            worst = worst.max((at.antiplane[1] + e).abs());
+        }
+        let compliance = body.normal_compliance_times_k(k_h) * plane_strain_modulus(&STEEL) / 2.0;
+        worst = worst.max((compliance - 1.0).abs());
+    }
+    eprintln!("measured: equal moduli, wave response against the homogeneous: {worst:.1e}");
+    assert!(worst < 1e-13, "{worst}");
+}
+
+#[test]
+fn thick_and_thin_layers_give_the_coating_and_the_substrate() {
+    // k u_z / p -> 2 / E1' as kh -> infinity and 2 / E2' as kh -> 0 (the k -> 0 limit of the
+    // kernel is the substrate's).
+    for (coating, substrate) in [(B4C, STEEL), (SOFT, STEEL), (STEEL, SOFT)] {
+        let body = layered(coating, substrate);
+        let thick = body.normal_compliance_times_k(60.0) * plane_strain_modulus(&coating) / 2.0;
+        let thin = body.normal_compliance_times_k(1e-9) * plane_strain_modulus(&substrate) / 2.0;
+        assert!((thick - 1.0).abs() < 1e-13, "thick {thick}");
+        assert!((thin - 1.0).abs() < 1e-8, "thin {thin}");
+    }
+}
+
+#[test]
+fn free_surface_and_interface_conditions_hold_to_round_off() {
+    let mut worst: f64 = 0.0;
+    for (coating, substrate) in [(B4C, STEEL), (SOFT, STEEL), (STEEL, SOFT)] {
+        let body = layered(coating, substrate);
+        for k_h in [1e-4, 0.05, 0.7, 3.0, 25.0] {
+            let wave = body.wave(k_h);
+            // Surface: F_p(0) = 1, F_p'(0) = 0; F_q(0) = 0, F_q'(0) = 1; U'(0) = -1 (σtz = -q_t).
+            let s = wave.at(0.0, Side::Coating, &body);
+            for (got, want) in [
+                (s.pressure[0], 1.0),
+                (s.pressure[1], 0.0),
+                (s.shear[0], 0.0),
+                (s.shear[1], 1.0),
+                (s.antiplane[1], -1.0),
+            ] {
+                worst = worst.max((got - want).abs());
+            }
+            // Interface: f, f' (σzz, σsz), G U' (σtz), U, and the displacements continuous.
+            let above = wave.at(k_h, Side::Coating, &body);
+            let below = wave.at(k_h, Side::Substrate, &body);
+            let (da, db) = (above.plane_displacements(), below.plane_displacements());
+            for load in 0..2 {
+                let (fa, fb) = if load == 0 {
+                    (above.pressure, below.pressure)
+                } else {
+                    (above.shear, below.shear)
+                };
+                let scale = 1.0 + fa[0].abs() + fa[1].abs();
+                worst = worst.max((fa[0] - fb[0]).abs() / scale);
+                worst = worst.max((fa[1] - fb[1]).abs() / scale);
+                for c in 0..2 {
+                    let scale = 1.0 + da[load][c].abs();
+                    worst = worst.max((da[load][c] - db[load][c]).abs() / scale);
+                }
+            }
+            worst = worst.max((above.antiplane[0] - below.antiplane[0]).abs());
+            worst = worst.max((above.antiplane[1] - below.shear_ratio * below.antiplane[1]).abs());
+            // The in-plane stress σss = f'' jumps where the moduli differ.
+            if k_h > 0.01 && k_h < 10.0 {
+                assert!((above.pressure[2] - below.pressure[2]).abs() > 1e-6);
+            }
+        }
+    }
+    eprintln!("measured: free surface and interface conditions of the waves: {worst:.1e}");
+    assert!(worst < 1e-12, "{worst}");
+}
+
+#[test]
+fn the_waves_are_in_equilibrium_at_every_depth() {
+    // ∂σij/∂xj = 0 for each wave: i k·σ (the in-plane derivatives) + ∂σiz/∂z, the depth
+    // derivative by central differences in ζ = kz (step 1e-5), in both materials.
+    let body = Layered {
+        coating: B4C,
+        substrate: SOFT,
+        thickness_m: 1.0,
+    };
+    let mut worst: f64 = 0.0;
+    for (k_h, n) in [(0.3, [0.6, 0.8]), (1.7, [-0.28, 0.96]), (6.0, [1.0, 0.0])] {
+        let wave = body.wave(k_h);
+        for zeta in [0.2 * k_h, 0.8 * k_h, 1.3 * k_h, 2.5 * k_h] {
+            let side = if zeta < k_h {
+                Side::Coating
+            } else {
+                Side::Substrate
+            };
+            let step = 1e-5;
+            let at = |z: f64| wave.at(z, side, &body).stress(n);
+            let (here, up, down) = (at(zeta), at(zeta + step), at(zeta - step));
+            // Components [xx, yy, zz, yz, xz, xy]; rows of ∇·σ: x (xx, xy, xz), y (xy, yy, yz),
+            // z (xz, yz, zz).
+            for (cx, cy, cz) in [(0, 5, 4), (5, 1, 3), (4, 3, 2)] {
+                for load in 0..3 {
+                    for part in 0..2 {
+                        // i n·(σ) : (re, im) -> (-im, re)
+                        let other = 1 - part;
+                        let sign = if part == 0 { -1.0 } else { 1.0 };
+                        let in_plane =
+                            sign * (n[0] * here[cx][load][other] + n[1] * here[cy][load][other]);
+                        let depth = (up[cz][load][part] - down[cz][load][part]) / (2.0 * step);
+                        worst = worst.max((in_plane + depth).abs());
+                    }
+                }
+            }
+        }
+    }
+    eprintln!("measured: equilibrium of the layered waves (central differences): {worst:.1e}");
+    assert!(worst < 1e-8, "{worst}");
+}
+
+/// Hertz tractions (`p0 = 1`, `a = 1`, `q = μ p`) on `n x n` cells over ±2a.
+fn hertz_tractions(n: usize, mu: f64) -> (ndarray::Array2<f64>, ndarray::Array2<f64>, f64) {
+    let d = 4.0 / n as f64;
+    let p = ndarray::Array2::from_shape_fn((n, n), |(j, i)| {
+        let (x, y) = (-2.0 + (i as f64 + 0.5) * d, -2.0 + (j as f64 + 0.5) * d);
+        (1.0 - x * x - y * y).max(0.0).sqrt()
+    });
+    let q = p.mapv(|v| mu * v);
+    (p, q, d)
+}
+
+#[test]
+fn equal_moduli_give_the_homogeneous_field_and_the_free_surface_holds() {
+    use super::stress::LayeredStress;
+    let (n, mu) = (128, 0.2);
+    let (p, q, d) = hertz_tractions(n, mu);
+    let body = Layered {
+        coating: STEEL,
+        substrate: STEEL,
+        thickness_m: 0.4,
+    };
+    let layers = LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
+    // The free surface: σzz = -p, σxz = -q, σyz = 0 at every centre.
+    let surface = layers.layer(0.0, Side::Coating).expect("layer");
+    let mut surface_error: f64 = 0.0;
+    for ((j, i), &pv) in p.indexed_iter() {
+        surface_error = surface_error
+            .max((surface[[2, j, i]] + pv).abs())
+            .max((surface[[4, j, i]] + q[[j, i]]).abs())
+            .max(surface[[3, j, i]].abs());
+    }
+    eprintln!("measured: free surface of the layered field: {surface_error:.1e} p0");
+    assert!(surface_error < 1e-12, "{surface_error}");
+    // Against Hamilton's closed form below the surface, |x|, |y| <= 1.5a.
+    let mut worst: f64 = 0.0;
+    for z in [0.25, 0.5, 0.8] {
+        let layer = layers.layer(z, Side::Coating).expect("layer");
+        for j in 0..n {
+            for i in 0..n {
+                let (x, y) = (-2.0 + (i as f64 + 0.5) * d, -2.0 + (j as f64 + 0.5) * d);
+                if x.abs() > 1.5 || y.abs() > 1.5 {
+                    continue;
+                }
+                let s = crate::solution::sphere_hertz::stress_over_p0(x, y, z, mu, 0.3);
+                for (c, want) in [s.xx, s.yy, s.zz, s.yz, s.xz, s.xy].iter().enumerate() {
+                    worst = worst.max((layer[[c, j, i]] - want).abs());
+                }
+            }
+        }
+    }
+    // The largest error lies at the window's edge (σxx at x = -1.5a, z = 0.8a): the periodic
+    // images two grid lengths apart.
+    eprintln!("measured: equal moduli, layered field against Hamilton's closed form (128² over ±2a, |x|, |y| <= 1.5a, z = 0.25a to 0.8a): {worst:.1e} p0");
+    assert!(worst < 1e-2, "{worst}");
+}
+
+#[test]
+fn the_field_is_continuous_where_it_must_be_across_the_interface() {
+    use super::stress::LayeredStress;
+    let (n, mu) = (64, 0.3);
+    let (p, q, d) = hertz_tractions(n, mu);
+    for (coating, substrate) in [(B4C, STEEL), (SOFT, STEEL)] {
+        let body = Layered {
+            coating,
+            substrate,
+            thickness_m: 0.3,
+        };
+        let layers =
+            LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
+        let above = layers.layer(0.3, Side::Coating).expect("above");
+        let below = layers.layer(0.3, Side::Substrate).expect("below");
+        let mut continuous: f64 = 0.0;
+        let mut jump: f64 = 0.0;
+        for c in 0..6 {
+            let difference = (&above.index_axis(ndarray::Axis(0), c)
+                - &below.index_axis(ndarray::Axis(0), c))
+                .iter()
+                .fold(0.0f64, |m, v| m.max(v.abs()));
+            if [2, 3, 4].contains(&c) {
+                continuous = continuous.max(difference);
+            } else {
+                jump = jump.max(difference);
+            }
+        }
+        eprintln!("measured: interface, σzz σyz σxz continuous to {continuous:.1e} p0; σxx σyy σxy jump by up to {jump:.2} p0");
+        assert!(continuous < 1e-12, "{continuous}");
+        assert!(jump > 0.05, "{jump}");
+    }
+}
+
+#[test]
+fn a_row_alone_equals_the_layer_s_row() {
+    use super::stress::LayeredStress;
+    let (n, mu) = (32, 0.3);
+    let (p, q, d) = hertz_tractions(n, mu);
+    let body = Layered {
+        coating: B4C,
+        substrate: STEEL,
+        thickness_m: 0.4,
+    };
+    let layers = LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
+    let mut worst: f64 = 0.0;
+    for (z, side) in [
+        (0.0, Side::Coating),
+        (0.4, Side::Coating),
+        (0.4, Side::Substrate),
+        (0.9, Side::Substrate),
+    ] {
+        let layer = layers.layer(z, side).expect("layer");
+        for j in [0, n / 2, n - 1] {
+            let row = layers.row(j, z, side);
+            for c in 0..6 {
+                for i in 0..n {
+                    worst = worst.max((layer[[c, j, i]] - row[[c, i]]).abs());
+                }
+            }
+        }
+    }
+    assert!(worst < 1e-13, "{worst}");
+}

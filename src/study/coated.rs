@@ -1,0 +1,502 @@
+//! A coated scene computed once for every sink: the contact of the gridded paraboloid solved
+//! with the layered influence coefficients ([`crate::contact::coated`]), then the stresses in
+//! the plane of sliding `y = 0` (the plane of symmetry of the Hertz pair) at depths through
+//! the coating, on both sides of the interface and into the substrate
+//! ([`crate::coating::stress`]), and their maxima.
+//!
+//! ## The grid
+//! The scene's `[numerical]` grid: `cells` per side over ±`extent` semi-axes of the coating's
+//! Hertz contact (the contact of a half-space of the coating's material, which sets the
+//! scene's `a` and `p0`). Its cells must be at most half the coating's thickness
+//! ([`crate::coating::kernel::MIN_THICKNESS_CELLS`]); a coarser grid is refused under
+//! `numerical.cells` with the count needed. The pressure must stay inside the grid (a hard
+//! coating on a soft substrate spreads the contact up to `(E1'/E2')^(1/3)` times the coating's
+//! Hertz radius), or the solver's "enlarge the domain" error names the edge.
+//!
+//! ## The depths
+//! In the coating `max(12, 2h/dx)` depths from the surface to the interface (its coating side),
+//! then the interface's substrate side, then 72 depths to `max(2.5 a, h + 1.5 a)`. The maxima
+//! are the largest samples (no refinement between them): their places are good to the
+//! sampling, a cell along `x` and the depth step.
+
+use ndarray::Array2;
+use rayon::prelude::*;
+
+use crate::coating::stress::LayeredStress;
+use crate::coating::{Layered, Side};
+use crate::contact::coated::{self, CoatedContactError};
+use crate::contact::rough::{self, Control, RoughContactProblem, RoughSolution};
+use crate::operator::elastic::Periodicity;
+use crate::scene::{CoatingSpec, Hertz};
+use crate::scene::{ContactKind, Scene};
+use crate::stress::Stress;
+
+/// The most cells per side a coated scene takes (its kernel is built on a grid four times as
+/// wide: 1024 cells need about 0.6 GB).
+pub const MAX_CELLS: usize = 1024;
+
+/// Why a coated scene cannot be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum CoatedStudyError {
+    #[error("numerical.cells: the coating ({thickness_um} µm) needs cells of at most {needed_um} µm (half its thickness), the grid of {cells} cells over ±{extent} semi-axes has {cell_um} µm\nhint: set numerical.cells to at least {cells_needed} (or numerical.extent lower, or a thicker contact.body1.coating.thickness)")]
+    GridTooCoarse {
+        thickness_um: String,
+        needed_um: String,
+        cell_um: String,
+        cells: usize,
+        extent: String,
+        cells_needed: usize,
+    },
+    #[error("numerical.cells: a coated scene takes at most {MAX_CELLS} cells per side, and this coating needs {cells_needed} over ±{extent} semi-axes\nhint: lower numerical.extent (the contact must stay inside it), or raise the load: the coating must be at least {MAX_CELLS}th of the grid's width / 2")]
+    TooManyCells { cells_needed: usize, extent: String },
+    #[error("a coated scene needs a point or elliptical contact with bodies and a load")]
+    NotDimensional,
+    #[error(transparent)]
+    Contact(#[from] CoatedContactError),
+    #[error(transparent)]
+    Transform(#[from] crate::operator::transform::TransformError),
+}
+
+/// A stress value and its place (m; `y` is 0: the plane of sliding).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Located {
+    pub value_pa: f64,
+    pub x_m: f64,
+    pub z_m: f64,
+}
+
+impl Located {
+    const NONE: Located = Located {
+        value_pa: f64::NEG_INFINITY,
+        x_m: 0.0,
+        z_m: 0.0,
+    };
+
+    fn keep_larger(&mut self, value: f64, x: f64, z: f64) {
+        if value > self.value_pa {
+            *self = Located {
+                value_pa: value,
+                x_m: x,
+                z_m: z,
+            };
+        }
+    }
+}
+
+/// The maxima of a coated body's stresses in the plane of sliding.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CoatedMaxima {
+    /// Von Mises anywhere (coating or substrate).
+    pub von_mises: Located,
+    pub coating_von_mises: Located,
+    pub coating_tresca: Located,
+    pub substrate_von_mises: Located,
+    pub substrate_tresca: Located,
+    /// The interface's shear traction `sqrt(σxz² + σyz²)` at `z = h`.
+    pub interface_shear: Located,
+    /// The interface's normal stress `σzz` at `z = h`: most compressive (a value, negative)
+    /// and most tensile.
+    pub interface_normal_min: Located,
+    pub interface_normal_max: Located,
+    /// The largest `σxx` on the surface (with friction, at the trailing edge).
+    pub surface_tension: Located,
+}
+
+/// The section `y = 0` the figure draws: von Mises at each depth (rows) and cell (columns).
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoatedSection {
+    /// Cell centres along x, m.
+    pub x_m: Vec<f64>,
+    /// Depths of the rows, m (increasing; the interface appears twice, coating side first).
+    pub z_m: Vec<f64>,
+    /// Which side of the interface each row belongs to.
+    pub sides: Vec<Side>,
+    /// `[row, column]`, Pa.
+    pub von_mises_pa: Array2<f64>,
+    /// The surface pressure along the section, Pa.
+    pub pressure_pa: Vec<f64>,
+}
+
+/// A coated scene, computed.
+#[derive(Clone, Debug)]
+pub struct CoatedStudy {
+    pub spec: CoatingSpec,
+    pub kind: ContactKind,
+    pub friction: f64,
+    pub load_n: f64,
+    /// The coating's Hertz contact: semi-axes along x and y, peak pressure.
+    pub hertz_semi_axes_m: [f64; 2],
+    pub hertz_p0_pa: f64,
+    pub spacing_m: [f64; 2],
+    pub solution: RoughSolution,
+    pub contact_area_m2: f64,
+    /// `sqrt(area / π)`.
+    pub contact_radius_m: f64,
+    /// Half the contact's extent along x and along y through the centre, m.
+    pub semi_axes_m: [f64; 2],
+    pub maxima: CoatedMaxima,
+    pub section: CoatedSection,
+    /// Wall-clock seconds of the contact solve and of the stresses.
+    pub solve_seconds: f64,
+    pub stress_seconds: f64,
+}
+
+/// The coated contact and its stresses (module doc).
+pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
+    let spec = scene
+        .contact
+        .coating
+        .ok_or(CoatedStudyError::NotDimensional)?;
+    let dimensional = scene
+        .contact
+        .dimensional
+        .ok_or(CoatedStudyError::NotDimensional)?;
+    let (semi_axes, curvature, p0, load) = match dimensional.hertz {
+        Hertz::Point(point) => {
+            let c = 0.5 / point.effective_radius_m;
+            ([point.radius_m; 2], [c, c], point.p0_pa, point.load_n)
+        }
+        Hertz::Elliptical(e) => (
+            [e.semi_axis_x_m, e.semi_axis_y_m],
+            [
+                e.curvature.half_curvature_x_per_m,
+                e.curvature.half_curvature_y_per_m,
+            ],
+            e.p0_pa,
+            e.load_n,
+        ),
+        Hertz::Line(_) => return Err(CoatedStudyError::NotDimensional),
+    };
+    let cells = scene.numerical.cells;
+    let extent = scene.numerical.extent_over_a;
+    let spacing = semi_axes.map(|s| 2.0 * extent * s / cells as f64);
+    let h = spec.thickness_m;
+    let largest = coated::largest_cell_m(h);
+    let coarsest = spacing[0].max(spacing[1]);
+    let um = |m: f64| crate::io::text::approx(m * 1e6);
+    if coarsest > largest * (1.0 + 1e-12) {
+        let needed = (2.0 * extent * semi_axes[0].max(semi_axes[1]) / largest).ceil() as usize;
+        if needed > MAX_CELLS {
+            return Err(CoatedStudyError::TooManyCells {
+                cells_needed: needed,
+                extent: crate::io::text::approx(extent),
+            });
+        }
+        return Err(CoatedStudyError::GridTooCoarse {
+            thickness_um: um(h),
+            needed_um: um(largest),
+            cell_um: um(coarsest),
+            cells,
+            extent: crate::io::text::approx(extent),
+            cells_needed: needed,
+        });
+    }
+    let shape = [cells, cells];
+    let origin = [
+        -extent * semi_axes[0] + 0.5 * spacing[0],
+        -extent * semi_axes[1] + 0.5 * spacing[1],
+    ];
+    let heights = super::coupled::paraboloid(shape, spacing, origin, curvature);
+    let layered = spec.layered();
+    let e_far = 1.0
+        / ((1.0 - spec.substrate.poisson.powi(2)) / spec.substrate.modulus_pa
+            + spec.counter_per_pa);
+    let problem = RoughContactProblem {
+        heights_m: heights.view(),
+        spacing_m: spacing,
+        e_star_pa: e_far,
+        periodicity: Periodicity::NonPeriodic,
+        control: Control::Load { newtons: load },
+        hardness_pa: None,
+        tolerance: rough::DEFAULT_TOLERANCE,
+        max_iterations: rough::DEFAULT_MAX_ITERATIONS,
+        memory_limit_bytes: crate::field::memory_limit_bytes(),
+    };
+    let started = std::time::Instant::now();
+    let solution = coated::solve(&problem, &layered, spec.counter_per_pa, &mut |_, _| {})?;
+    let solve_seconds = started.elapsed().as_secs_f64();
+    let started = std::time::Instant::now();
+    let friction = scene.contact.friction;
+    let pressure = &solution.pressure_pa;
+    let shear = pressure.mapv(|p| friction * p);
+    let layers = LayeredStress::new(
+        layered,
+        pressure.view(),
+        (friction != 0.0).then_some(shear.view()),
+        spacing,
+        false,
+    )?;
+    let depths = depths(&layered, spacing[0], semi_axes[0].max(semi_axes[1]));
+    let centre_row = cells / 2;
+    let rows: Vec<Array2<f64>> = depths
+        .par_iter()
+        .map(|&(z, side)| layers.row(centre_row, z, side))
+        .collect();
+    let x_m: Vec<f64> = (0..cells)
+        .map(|i| origin[0] + i as f64 * spacing[0])
+        .collect();
+    let mut maxima = CoatedMaxima {
+        von_mises: Located::NONE,
+        coating_von_mises: Located::NONE,
+        coating_tresca: Located::NONE,
+        substrate_von_mises: Located::NONE,
+        substrate_tresca: Located::NONE,
+        interface_shear: Located::NONE,
+        interface_normal_min: Located::NONE,
+        interface_normal_max: Located::NONE,
+        surface_tension: Located::NONE,
+    };
+    let mut von_mises = Array2::zeros((depths.len(), cells));
+    for (r, ((z, side), row)) in depths.iter().zip(&rows).enumerate() {
+        for (i, &x) in x_m.iter().enumerate() {
+            let s = Stress {
+                xx: row[[0, i]],
+                yy: row[[1, i]],
+                zz: row[[2, i]],
+                yz: row[[3, i]],
+                xz: row[[4, i]],
+                xy: row[[5, i]],
+            };
+            let vm = s.von_mises();
+            let tresca = s.max_shear();
+            von_mises[[r, i]] = vm;
+            maxima.von_mises.keep_larger(vm, x, *z);
+            match side {
+                Side::Coating => {
+                    maxima.coating_von_mises.keep_larger(vm, x, *z);
+                    maxima.coating_tresca.keep_larger(tresca, x, *z);
+                }
+                Side::Substrate => {
+                    maxima.substrate_von_mises.keep_larger(vm, x, *z);
+                    maxima.substrate_tresca.keep_larger(tresca, x, *z);
+                }
+            }
+            if *z == h && *side == Side::Coating {
+                maxima.interface_shear.keep_larger(s.xz.hypot(s.yz), x, *z);
+                maxima.interface_normal_max.keep_larger(s.zz, x, *z);
+                // The most compressive: the largest of -σzz, stored with its sign.
+                if -s.zz > -maxima.interface_normal_min.value_pa
+                    || maxima.interface_normal_min.value_pa == f64::NEG_INFINITY
+                {
+                    maxima.interface_normal_min = Located {
+                        value_pa: s.zz,
+                        x_m: x,
+                        z_m: *z,
+                    };
+                }
+            }
+            if *z == 0.0 {
+                maxima.surface_tension.keep_larger(s.xx, x, 0.0);
+            }
+        }
+    }
+    let stress_seconds = started.elapsed().as_secs_f64();
+    let cell_area = spacing[0] * spacing[1];
+    let contact_cells = pressure.iter().filter(|&&p| p > 0.0).count();
+    let contact_area_m2 = contact_cells as f64 * cell_area;
+    let extent_along = |line: Vec<f64>, d: f64| {
+        let count = line.iter().filter(|&&p| p > 0.0).count();
+        0.5 * count as f64 * d
+    };
+    let semi_axes_m = [
+        extent_along(pressure.row(centre_row).to_vec(), spacing[0]),
+        extent_along(pressure.column(cells / 2).to_vec(), spacing[1]),
+    ];
+    Ok(CoatedStudy {
+        spec,
+        kind: scene.contact.kind,
+        friction,
+        load_n: load,
+        hertz_semi_axes_m: semi_axes,
+        hertz_p0_pa: p0,
+        spacing_m: spacing,
+        contact_area_m2,
+        contact_radius_m: (contact_area_m2 / std::f64::consts::PI).sqrt(),
+        semi_axes_m,
+        maxima,
+        section: CoatedSection {
+            x_m,
+            z_m: depths.iter().map(|d| d.0).collect(),
+            sides: depths.iter().map(|d| d.1).collect(),
+            von_mises_pa: von_mises,
+            pressure_pa: pressure.row(centre_row).to_vec(),
+        },
+        solution,
+        solve_seconds,
+        stress_seconds,
+    })
+}
+
+/// The depths sampled (module doc), with their side of the interface.
+fn depths(layered: &Layered, cell_m: f64, semi_axis_m: f64) -> Vec<(f64, Side)> {
+    let h = layered.thickness_m;
+    let in_coating = ((2.0 * h / cell_m).ceil() as usize).clamp(12, 48);
+    let mut out: Vec<(f64, Side)> = (0..=in_coating)
+        .map(|i| {
+            let z = if i == in_coating {
+                h
+            } else {
+                h * i as f64 / in_coating as f64
+            };
+            (z, Side::Coating)
+        })
+        .collect();
+    out.push((h, Side::Substrate));
+    let end = (2.5 * semi_axis_m).max(h + 1.5 * semi_axis_m);
+    let below = 72;
+    for i in 1..=below {
+        out.push((h + (end - h) * i as f64 / below as f64, Side::Substrate));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::report::coated::CoatedReport;
+
+    /// A 12.7 mm steel ball on a coated steel flat (5 N), with `coating` lines in the coating
+    /// table and `extra` appended.
+    fn scene_text(coating: &str, extra: &str) -> String {
+        format!(
+            "format = 1\n[contact]\nkind = \"point\"\nload = \"5 N\"\nfriction = 0.1\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body1.coating]\n{coating}\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n{extra}"
+        )
+    }
+
+    fn error_of(text: &str) -> String {
+        match Scene::parse(text, "test", "test.toml") {
+            Ok(_) => panic!("accepted: {text}"),
+            Err(e) => e.to_string(),
+        }
+    }
+
+    #[test]
+    fn bad_coatings_are_refused_by_key() {
+        for (text, key) in [
+            (
+                scene_text("thickness = \"-2 um\"\nmaterial = \"boron_carbide\"", ""),
+                "contact.body1.coating.thickness",
+            ),
+            (
+                scene_text("thickness = \"0 um\"\nmaterial = \"boron_carbide\"", ""),
+                "contact.body1.coating.thickness",
+            ),
+            (
+                scene_text("material = \"boron_carbide\"", ""),
+                "contact.body1.coating.thickness",
+            ),
+            (
+                scene_text("thickness = \"2 um\"", ""),
+                "contact.body1.coating.modulus",
+            ),
+            (
+                scene_text(
+                    "thickness = \"2 um\"\nmaterial = \"boron_carbide\"\ncolour = 1",
+                    "",
+                ),
+                "colour",
+            ),
+            (
+                scene_text(
+                    "thickness = \"2 um\"\nmaterial = \"boron_carbide\"",
+                    "[contact.body2.coating]\nthickness = \"1 um\"\nmaterial = \"steel\"\n",
+                ),
+                "contact.body2",
+            ),
+            (
+                scene_text(
+                    "thickness = \"2 um\"\nmaterial = \"boron_carbide\"",
+                    "[thermal]\nspeed = \"1 m/s\"\n",
+                ),
+                "thermal",
+            ),
+        ] {
+            let message = error_of(&text);
+            assert!(message.contains(key), "{key}: {message}");
+        }
+        // A coating on a line contact and on body 2 only.
+        let line = scene_text("thickness = \"2 um\"\nmaterial = \"boron_carbide\"", "")
+            .replace("kind = \"point\"", "kind = \"line\"")
+            .replace("load = \"5 N\"", "load = \"5 kN/m\"");
+        assert!(error_of(&line).contains("contact.body1.coating"));
+        let body2_only = "format = 1\n[contact]\nkind = \"point\"\nload = \"5 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[contact.body2.coating]\nthickness = \"1 um\"\nmaterial = \"boron_carbide\"\n";
+        let message = error_of(body2_only);
+        assert!(message.contains("contact.body2.coating"), "{message}");
+        // A rigid counter-body is taken in a coated scene, and refused in an uncoated one.
+        let rigid = scene_text("thickness = \"20 um\"\nmaterial = \"boron_carbide\"", "").replace(
+            "radius = \"6.35 mm\"\nmaterial = \"steel\"",
+            "radius = \"6.35 mm\"\nmaterial = \"rigid\"",
+        );
+        let scene = Scene::parse(&rigid, "test", "test.toml").expect("rigid counter-body");
+        assert!(scene.contact.coating.is_some_and(|c| c.counter_rigid));
+    }
+
+    #[test]
+    fn a_grid_too_coarse_for_the_coating_names_the_cells_needed() {
+        let text = scene_text(
+            "thickness = \"0.5 um\"\nmaterial = \"boron_carbide\"",
+            "[numerical]\ncells = 64\n",
+        );
+        let scene = Scene::parse(&text, "test", "test.toml").expect("valid");
+        let message = solve(&scene).expect_err("too coarse").to_string();
+        assert!(message.starts_with("numerical.cells"), "{message}");
+        assert!(message.contains("at least 859"), "{message}");
+    }
+
+    #[test]
+    fn a_thick_coating_gives_the_coatings_hertz_contact_and_the_json_has_its_keys() {
+        // h = 20 a: the coating's Hertz contact (p0 and a to the grid's resolution).
+        let text = scene_text(
+            "thickness = \"1 mm\"\nmaterial = \"boron_carbide\"",
+            "[numerical]\ncells = 96\n",
+        );
+        let scene = Scene::parse(&text, "test", "test.toml").expect("valid");
+        let study = solve(&scene).expect("solve");
+        let (a, p0) = (study.hertz_semi_axes_m[0], study.hertz_p0_pa);
+        let (ep, ea) = (
+            study.solution.max_pressure_pa / p0 - 1.0,
+            study.contact_radius_m / a - 1.0,
+        );
+        eprintln!("measured: h = 20a, against the coating's Hertz contact: peak pressure {:+.2} %, radius {:+.2} %", 100.0 * ep, 100.0 * ea);
+        assert!(ep.abs() < 0.01 && ea.abs() < 0.02, "{ep} {ea}");
+        // The stress maximum is the homogeneous sliding sphere's (Hamilton, ν = 0.17, μ = 0.1),
+        // searched on the plane y = 0 at steps of a/200.
+        let mut hamilton: f64 = 0.0;
+        for i in 0..=400 {
+            for k in 0..=300 {
+                let (x, z) = (-1.0 + i as f64 / 200.0, k as f64 / 200.0);
+                let s = crate::solution::sphere_hertz::stress_over_p0(x, 0.0, z, 0.1, 0.17);
+                hamilton = hamilton.max(s.von_mises());
+            }
+        }
+        let von_mises = study.maxima.von_mises.value_pa / p0;
+        eprintln!(
+            "measured: h = 20a, von Mises maximum {von_mises:.4} p0 against Hamilton's {hamilton:.4} p0: {:+.2} %",
+            100.0 * (von_mises / hamilton - 1.0)
+        );
+        assert!((von_mises / hamilton - 1.0).abs() < 0.02);
+        let json = CoatedReport::new(&study).json_fields();
+        for key in [
+            "max_pressure_pa",
+            "contact_radius_m",
+            "contact_area_m2",
+            "approach_m",
+            "von_mises_max_pa",
+            "von_mises_max_depth_m",
+        ] {
+            assert!(json[key].as_f64().is_some_and(f64::is_finite), "{key}");
+        }
+        let coating = CoatedReport::new(&study).json();
+        for key in [
+            "thickness_m",
+            "von_mises_max_pa",
+            "interface_shear_max_pa",
+            "interface_normal_min_pa",
+            "substrate_von_mises_max_pa",
+        ] {
+            assert!(coating[key].as_f64().is_some_and(f64::is_finite), "{key}");
+        }
+        assert_eq!(coating["thickness_m"].as_f64(), Some(1e-3));
+        assert_eq!(json["coating"], coating);
+    }
+}

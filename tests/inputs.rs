@@ -970,7 +970,7 @@ fn the_heatings_cost_is_estimated_and_refused_at_check() {
         ],
     );
     assert!(started.elapsed().as_secs() < 20, "refused before computing");
-    // A sphere at Pe 190: its grid is refined to 640 x 480 cells.
+    // A sphere at Pe 190: its grid is refined to 640 x 481 cells (an odd count: a row at y = 0).
     let fast = std::fs::read_to_string(crate::cli::repo("scenes/thermal_sliding_sphere.toml"))
         .expect("shipped")
         .replace("speed = \"2 m/s\"", "speed = \"11.8 m/s\"");
@@ -981,7 +981,7 @@ fn the_heatings_cost_is_estimated_and_refused_at_check() {
             &run(&[command, path.to_str().expect("utf8")]),
             &[
                 "key `thermal.speed`",
-                "640 x 480 cells",
+                "640 x 481 cells",
                 "262144 cells allowed",
                 "Péclet number of about 148",
             ],

@@ -241,16 +241,19 @@ pub fn warnings(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
         rough.and_then(|r| r.e_star_pa),
         rough.and_then(|r| r.hardness_pa),
     );
-    // A measured map solved periodically, its contact on a seam where its edges do not meet.
-    if let (Some(surface), Some(true)) = (&scene.surface, rough.map(|r| r.periodic)) {
-        if !surface.generated {
-            warnings.extend(seam_warning(
-                surface.heights.heights_m().view(),
-                &solution.pressure_pa,
-            ));
-        }
-    }
+    warnings.extend(scene_seam_warning(scene, solution));
     warnings
+}
+
+/// [`seam_warning`] of a scene's measured map solved periodically (none for a generated map,
+/// which tiles by construction, or an isolated contact).
+fn scene_seam_warning(scene: &Scene, solution: &RoughSolution) -> Option<String> {
+    let periodic = scene.contact.rough.is_some_and(|r| r.periodic);
+    let surface = scene
+        .surface
+        .as_ref()
+        .filter(|s| periodic && !s.generated)?;
+    seam_warning(surface.heights.heights_m().view(), &solution.pressure_pa)
 }
 
 /// [`warnings`] of a contact solved with `e_star_pa` and `hardness_pa` (Pa).
@@ -334,7 +337,7 @@ pub fn findings(
     solution: &RoughSolution,
 ) -> Result<ContactFindings, NumericalError> {
     let rough = scene.contact.rough;
-    findings_of(
+    let mut findings = findings_of(
         solution,
         &RoughMaterials {
             friction: scene.contact.friction,
@@ -346,7 +349,11 @@ pub fn findings(
             .surface
             .as_ref()
             .map(|surface| (surface.heights.as_ref(), surface.generated)),
-    )
+    )?;
+    findings
+        .warnings
+        .extend(scene_seam_warning(scene, solution));
+    Ok(findings)
 }
 
 /// What [`findings_of`] needs of a rough contact besides its solution: body 1's friction

@@ -414,7 +414,7 @@ fn a_stationary_source_is_said_on_the_peclet_chart() {
         .expect("the stationary limit");
     let scene_k = studied.body1.max_temperature_rise_k;
     assert!(
-        stationary.label.contains(&format!("this scene"))
+        stationary.label.contains("this scene")
             && stationary.label.contains(&format!("{scene_k:.1} K")),
         "{}",
         stationary.label

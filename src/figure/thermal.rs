@@ -114,7 +114,9 @@ pub(crate) fn surface_map(
 
 /// The two asymptotes of body 1's maximum flash temperature against the Péclet number from
 /// `lo` to `hi`, dashed: stationary `θ = slow Pe` (none for a line contact) and fast
-/// `θ = fast √Pe` (Jaeger 1942; Blok 1937; see [`crate::study::thermal_sections`]).
+/// `θ = fast √Pe` (Jaeger 1942; Blok 1937; see [`crate::study::thermal_sections`]). Used by
+/// the speed sweep's recording alone (the sheet's chart has its own since issue 38).
+#[cfg(feature = "rerun")]
 pub(crate) fn asymptotes(slow: Option<f64>, fast: f64, lo: f64, hi: f64) -> Vec<Series> {
     let line = |f: &dyn Fn(f64) -> f64| -> Vec<(f64, f64)> {
         (0..=40)

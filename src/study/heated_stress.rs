@@ -350,13 +350,13 @@ impl HeatedStress {
         tolerance_m: f64,
         progress: &mut dyn FnMut(usize),
     ) -> Result<[Maximum; QUANTITIES], ThermalStudyError> {
-        let mut found: Vec<(f64, [(f64, usize, usize); QUANTITIES])> = Vec::new();
+        let mut found: Vec<DepthBest> = Vec::new();
         for (done, &z) in coarse.iter().enumerate() {
             let layer = self.layer(z)?;
             found.push((z, self.layer_best(&layer)));
             progress(done + 1);
         }
-        let value = |found: &[(f64, [(f64, usize, usize); QUANTITIES])], z: f64, k: usize| {
+        let value = |found: &[DepthBest], z: f64, k: usize| {
             found
                 .iter()
                 .find(|(d, _)| *d == z)
@@ -471,3 +471,7 @@ impl HeatedStress {
             .collect()
     }
 }
+
+/// A searched depth (m) and, per quantity, its largest value there with its cell `(value,
+/// row, column)`.
+type DepthBest = (f64, [(f64, usize, usize); QUANTITIES]);

@@ -120,7 +120,7 @@ fn a_rough_recording_has_a_layer_at_the_reports_maximum_with_its_value() {
     // The report's depth, exactly one of the layers, marked, and its largest σvM the report's.
     let at: Vec<&(i64, String)> = titles
         .iter()
-        .filter(|(_, t)| t.ends_with(": the depth of the report's largest σvM"))
+        .filter(|(_, t)| t.ends_with(": the report's largest σvM"))
         .collect();
     assert_eq!(at.len(), 1, "{titles:?}");
     let (time, title) = at[0];
@@ -156,7 +156,7 @@ fn a_rough_recording_has_a_layer_at_the_reports_maximum_with_its_value() {
     }
     assert_no_backticks(&contents);
     // The layers are at the scene's load, one of the sweep's, and say which.
-    assert!(title.contains("under W = 0.2 N (step 2 of 3)"), "{title}");
+    assert!(title.contains(", W = 0.2 N (step 2 of 3)"), "{title}");
     // The chart of the largest stresses against depth follows the layers.
     assert_eq!(contents.rows_on("/charts/depth_maxima", "depth"), layers);
     assert!(contents.view_names().iter().any(|v| v == "σvM, τ vs z"));
@@ -226,7 +226,7 @@ fn a_rough_sweeps_single_load_views_say_which_load_they_show() {
     assert!(
         depth
             .iter()
-            .all(|(_, t)| t.contains("under W = 0.3 N (not one of the swept loads)")),
+            .all(|(_, t)| t.contains(", W = 0.3 N (not one of the swept loads)")),
         "{depth:?}"
     );
     // The shipped sweep shows one of its loads.

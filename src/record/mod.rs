@@ -402,7 +402,8 @@ fn rerun_colormap(map: ColorMap) -> rerun::components::Colormap {
         // Rerun has no cividis; viridis is its nearest relative.
         ColorMap::Cividis => Colormap::Viridis,
         ColorMap::Turbo => Colormap::Turbo,
-        // Rerun's one diverging map (red at the low end, blue at the high end).
+        // Rerun's one diverging map (red at the first end of its range, blue at the second:
+        // the sections give it the high end first, `section::colour_range`).
         ColorMap::Diverging => Colormap::Spectral,
     }
 }

@@ -157,7 +157,7 @@ pub(super) fn record_sections(
     log_series_styles(stream, scene, figure0)?;
     let volume_setup = match &scene.volume {
         Some(spec) => {
-            volume::log_static(stream, spec)?;
+            volume::log_static(stream, scene, spec)?;
             let levels = volume::levels(spec, volume_largest);
             let scale = volume::scale(scene, spec, volume_largest);
             Some((spec, levels, scale))
@@ -363,6 +363,12 @@ pub(super) fn step_title(
     panel_title
 }
 
+/// Whether a figure's marks (and so the plotted series) include the minimum; the maximum is
+/// plotted always.
+fn marks_minimum(mark: Mark) -> bool {
+    matches!(mark, Mark::Min | Mark::Both)
+}
+
 /// Names and colours of the plotted series (static).
 pub(super) fn log_series_styles(
     stream: &RecordingStream,
@@ -375,10 +381,14 @@ pub(super) fn log_series_styles(
             format!("series/{k}/maximum"),
             &super::series_line(format!("max {symbol}"), PALETTE[1]),
         )?;
-        stream.log_static(
-            format!("series/{k}/minimum"),
-            &super::series_line(format!("min {symbol}"), PALETTE[0]),
-        )?;
+        // The minimum is plotted only where the figure marks it (a style without values
+        // would be a view error).
+        if marks_minimum(figure.mark) {
+            stream.log_static(
+                format!("series/{k}/minimum"),
+                &super::series_line(format!("min {symbol}"), PALETTE[0]),
+            )?;
+        }
         stream.log_static(
             format!("series/{k}/maximum_depth"),
             &super::series_line(
@@ -540,13 +550,19 @@ pub(super) fn plan_layout(
             }
             // Native plots (hover, zoom) against the parameter's own timeline, which the time
             // panel opens on ([`super::value_timeline`]).
+            // "max, min" only where both are plotted.
+            let (extremes, contents): (&str, &[&str]) = if marks_minimum(figure.mark) {
+                ("max, min", &["$origin/maximum", "$origin/minimum"])
+            } else {
+                ("max", &["$origin/maximum"])
+            };
             plots.push(Node::View(
                 View::new(
                     ViewKind::TimeSeries,
-                    format!("max, min {unit} vs {parameter}{}", panel_suffix(k)),
+                    format!("{extremes} {unit} vs {parameter}{}", panel_suffix(k)),
                     format!("series/{k}"),
                 )
-                .with_contents(&["$origin/maximum", "$origin/minimum"]),
+                .with_contents(contents),
             ));
             if figure.axes_of(&figure.panels[k]).vertical_is_depth {
                 plots.push(Node::View(
@@ -565,8 +581,10 @@ pub(super) fn plan_layout(
         (_, true) => documents,
         (true, false) => Node::Vertical(vec![Node::Tabs(plots, 0), documents], vec![1.3, 1.0]),
         (false, false) => Node::Vertical(
+            // The histories run over about 1.6 p0 (σzz to σvM): tall enough for the viewer to
+            // label their axis every 0.1 p0, not only at 0.
             vec![Node::Tabs(histories, 0), Node::Tabs(plots, 0), documents],
-            vec![1.1, 1.0, 0.9],
+            vec![1.6, 0.9, 0.6],
         ),
     };
     Layout {

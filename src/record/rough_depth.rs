@@ -115,13 +115,13 @@ pub(super) fn log_depth_steps(
             log_map_static(stream, "depth", frame, &figure, &shown, Some(range))?;
         }
         let mut title = format!(
-            "layer {} of {count}: z = {} µm below the surface, under {}",
+            "layer {} of {count}: z = {} µm deep, {}",
             step_time(k),
             crate::scene::compact(depth_um),
             load_text(scene, solution)
         );
         if k == reported_layer {
-            title.push_str(": the depth of the report's largest σvM");
+            title.push_str(": the report's largest σvM");
         }
         log_map_step(
             stream,
@@ -134,6 +134,18 @@ pub(super) fn log_depth_steps(
             &title,
         )?;
         stream.log("series/depth_um", &rerun::Scalars::new([depth_um]))?;
+        if on_load {
+            // The charts against W have values on this timeline too, the scene's load's
+            // (flat through depth: the layers are all under that load), so that they are
+            // not left empty with a missing-component error when the time panel is on `depth`.
+            for (path, value) in [
+                ("series/contact_fraction", solution.contact_fraction),
+                ("series/spots", solution.spots as f64),
+                ("series/max_pressure_mpa", solution.max_pressure_pa * 1e-6),
+            ] {
+                stream.log(path, &rerun::Scalars::new([value]))?;
+            }
+        }
         let chart = depth_chart(&layers, k, reported)?;
         stream.log(
             "charts/depth_maxima",
@@ -150,7 +162,7 @@ pub(super) fn log_depth_steps(
         if let Some(values) = super::value_timeline(scene) {
             stream.set_time_sequence(values.timeline()?, values.values[0]);
         }
-        let title = format!("{title} (the timeline \"depth\" steps through depth)");
+        let title = format!("{title} (the timeline \"depth\" steps down)");
         log_map_step(
             stream,
             When::Step,
@@ -196,8 +208,10 @@ fn depth_chart(
         * 1e-6;
     chart.x_range = Some((0.0, deepest.max(1e-9)));
     chart.y_range = Some((0.0, (1.25 * highest).max(1e-9)));
-    chart.width_px = 520;
-    chart.height_px = 400;
+    // The shape of its panel in the default window (a third of its width, a third of its
+    // height), so that the viewer fits the image without black bands.
+    chart.width_px = 560;
+    chart.height_px = 340;
     for (label, colour, of) in [
         (
             "max σvM",

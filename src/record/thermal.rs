@@ -39,6 +39,27 @@ use crate::thermal::heating::Partition;
 
 /// The timeline of the steps.
 const TIMELINE: &str = "peclet";
+/// The power of ten the Péclet numbers are scaled by on their own timeline (`Pe × 100`, which
+/// the time panel opens on, so that it shows Pe, not the step): the smallest from 100 up that
+/// keeps every step's value apart.
+fn peclet_scale(steps: &[SpeedStep]) -> i32 {
+    (2..=6)
+        .find(|&k| {
+            let mut values: Vec<i64> = steps
+                .iter()
+                .map(|s| (s.peclet * 10f64.powi(k)).round() as i64)
+                .collect();
+            values.sort_unstable();
+            values.windows(2).all(|w| w[0] != w[1])
+        })
+        .unwrap_or(6)
+}
+
+/// The name of the Péclet numbers' timeline at scale `10^k`.
+fn peclet_timeline(k: i32) -> String {
+    format!("Pe × {}", 10i64.pow(k.unsigned_abs()))
+}
+
 /// Height shares of the surface map and of the section below it.
 const SURFACE_SHARE: f32 = 2.0;
 const SECTION_SHARE: f32 = 1.0;
@@ -106,12 +127,26 @@ pub fn record(
     let blok = spec.partition == Partition::Blok;
     super::layout::send(
         stream,
-        &plan_layout(&surface_frame, &section_frame, blok, steps > 1),
+        &plan_layout(
+            &surface_frame,
+            &section_frame,
+            blok,
+            (steps > 1).then(|| peclet_timeline(peclet_scale(&sweep.steps))),
+        ),
         live,
     )?;
     flush()?;
+    let pe_scale = peclet_scale(&sweep.steps);
+    let pe_timeline = rerun::TimelineName::try_new(&peclet_timeline(pe_scale))
+        .map_err(|e| RecordError::Rerun(e.to_string()))?;
     for (k, step) in sweep.steps.iter().enumerate() {
         stream.set_time_sequence(TIMELINE, super::step_time(k));
+        if steps > 1 {
+            stream.set_time_sequence(
+                pe_timeline.clone(),
+                (step.peclet * 10f64.powi(pe_scale)).round() as i64,
+            );
+        }
         let text = sweep_spec.describe(k, scene);
         let max_k = step.body1.max_temperature_rise_k;
         let range = (0.0, super::round_up(1.03 * max_k).max(1e-9));
@@ -286,8 +321,10 @@ fn charts(sweep: &SpeedSweep, current: usize, blok: bool) -> Vec<(&'static str, 
         chart.x_scale = Scale::Log;
         chart.x_range = x_range;
         chart.y_range = Some(y_range);
+        // The shape of the charts' panel in the default window (a third of its width, a bit
+        // over half its height), so that the viewer fits the image without black bands.
         chart.width_px = 520;
-        chart.height_px = 400;
+        chart.height_px = 560;
         chart
     };
     // The maximum: body 1 under its share and, when that differs, with all the heat; the
@@ -377,7 +414,7 @@ fn log_series_styles(stream: &RecordingStream) -> Result<(), RecordError> {
 
 /// The layout: the surface map over the section; beside them the charts against Pe and the
 /// series by step, over the description and the steps.
-fn plan_layout(surface: &Frame, section: &Frame, blok: bool, sweeps: bool) -> Layout {
+fn plan_layout(surface: &Frame, section: &Frame, blok: bool, timeline: Option<String>) -> Layout {
     let view2d = |name: &str, origin: &str, frame: Option<&Frame>| {
         Node::View(View::new(
             ViewKind::Spatial2D(frame.map(|f| f.bounds)),
@@ -408,9 +445,10 @@ fn plan_layout(surface: &Frame, section: &Frame, blok: bool, sweeps: bool) -> La
     if blok {
         plots.push(view2d("share vs Pe", "charts/share", None));
     }
-    // The temperatures by step (hover, zoom) beside the documents, where the tabs fit.
+    // The temperatures against Pe (its timeline's linear axis; hover, zoom) beside the
+    // documents, where the tabs fit.
     let by_step = Node::View(
-        View::new(ViewKind::TimeSeries, "ΔT by step", "series").with_contents(&[
+        View::new(ViewKind::TimeSeries, "ΔT vs Pe", "series").with_contents(&[
             "$origin/max_temperature_rise_k",
             "$origin/mean_temperature_rise_k",
         ]),
@@ -431,7 +469,7 @@ fn plan_layout(surface: &Frame, section: &Frame, blok: bool, sweeps: bool) -> La
             ],
             vec![super::MAIN_SHARE, super::SIDE_SHARE],
         ),
-        timeline: sweeps.then(|| TIMELINE.to_string()),
+        timeline,
     }
 }
 

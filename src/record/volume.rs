@@ -55,23 +55,30 @@ pub fn eye(spec: &VolumeSpec) -> Eye {
     let target = [
         0.5 * (spec.x.0 + spec.x.1),
         half(spec).1,
-        spec.z.0 + 0.3 * depth,
+        spec.z.0 + 0.45 * depth,
     ];
-    // About 25 degrees above the surface, a little towards the trailing edge, as close as
-    // shows the shells and the patch whole (the box's far corners may leave the view).
+    // About 25 degrees above the surface, a little towards the trailing edge, far enough
+    // back that the box's near corner, where the axes start, and its ticked edges stay in
+    // view.
     Eye {
         position: [
-            (target[0] - 0.3 * size) as f32,
-            (target[1] + 0.95 * size) as f32,
-            (target[2] - 0.5 * size) as f32,
+            (target[0] - 0.4 * size) as f32,
+            (target[1] + 1.45 * size) as f32,
+            (target[2] - 0.85 * size) as f32,
         ],
         target: target.map(|c| c as f32),
         up: [0.0, 0.0, -1.0],
     }
 }
 
-/// Logs what stays: the view's axes (z down) and the outline of the box's top face.
-pub fn log_static(stream: &RecordingStream, spec: &VolumeSpec) -> Result<(), RecordError> {
+/// Logs what stays: the view's axes (z down), the outline of the box's top face and ticks
+/// with their values along its near edges (x along the front of the surface, y along its left
+/// side, z down the near corner).
+pub fn log_static(
+    stream: &RecordingStream,
+    scene: &Scene,
+    spec: &VolumeSpec,
+) -> Result<(), RecordError> {
     stream.log_static("volume", &rerun::ViewCoordinates::RIGHT_HAND_Z_DOWN())?;
     let (x0, x1) = (spec.x.0 as f32, spec.x.1 as f32);
     let (y0, y1) = (spec.y.0 as f32, spec.y.1 as f32);
@@ -106,6 +113,70 @@ pub fn log_static(stream: &RecordingStream, spec: &VolumeSpec) -> Result<(), Rec
         ])
         .with_labels(["x", "y", "z (depth)"])
         .with_show_labels(true),
+    )?;
+    log_ticks(stream, scene, spec)
+}
+
+/// Ticks along the box's near edges, each labelled with its value and the length unit.
+fn log_ticks(
+    stream: &RecordingStream,
+    scene: &Scene,
+    spec: &VolumeSpec,
+) -> Result<(), RecordError> {
+    let suffix = scene.figure.length_unit.suffix();
+    let tick = 0.02 * (spec.x.1 - spec.x.0).max(spec.y.1 - spec.y.0);
+    let (x0, y0, y1) = (spec.x.0, spec.y.0, spec.y.1);
+    let mut strips: Vec<[[f32; 3]; 2]> = Vec::new();
+    let mut anchors: Vec<[f32; 3]> = Vec::new();
+    let mut labels: Vec<String> = Vec::new();
+    let point = |p: [f64; 3]| p.map(|c| c as f32);
+    let text = |v: f64| format!("{}{suffix}", super::section::short(v));
+    // x along the front edge (y = y1), ticks pointing out of the box.
+    // No labels at the near corner, where the axes' own labels are (its ticks are the edges'
+    // first values: x0, y1 and the surface).
+    let away = |c: f64, corner: f64, span: f64| (c - corner).abs() > 1e-9 * span.abs().max(1.0);
+    for x in super::section::nice_ticks(spec.x.0, spec.x.1, 5)
+        .into_iter()
+        .filter(|&x| away(x, x0, spec.x.1 - spec.x.0))
+    {
+        strips.push([point([x, y1, 0.0]), point([x, y1 + tick, 0.0])]);
+        anchors.push(point([x, y1 + 3.0 * tick, 0.0]));
+        labels.push(format!("x = {}", text(x)));
+    }
+    // y along the left edge (x = x0).
+    for y in super::section::nice_ticks(y0, y1, 3)
+        .into_iter()
+        .filter(|&y| away(y, y1, y1 - y0))
+    {
+        strips.push([point([x0, y, 0.0]), point([x0 - tick, y, 0.0])]);
+        anchors.push(point([x0 - 3.0 * tick, y, 0.0]));
+        labels.push(format!("y = {}", text(y)));
+    }
+    // z down the near corner (x0, y1).
+    for z in super::section::nice_ticks(spec.z.0, spec.z.1, 4)
+        .into_iter()
+        .filter(|&z| away(z, spec.z.0, spec.z.1 - spec.z.0))
+    {
+        strips.push([point([x0, y1, z]), point([x0 - tick, y1 + tick, z])]);
+        anchors.push(point([x0 - 3.0 * tick, y1 + 3.0 * tick, z]));
+        labels.push(format!("z = {}", text(z)));
+    }
+    // The box's near vertical edge, down which z is ticked.
+    strips.push([point([x0, y1, spec.z.0]), point([x0, y1, spec.z.1])]);
+    let grey = rerun::Color::from_rgb(170, 170, 170);
+    stream.log_static(
+        "volume/ticks",
+        &rerun::LineStrips3D::new(strips)
+            .with_colors([grey])
+            .with_radii([rerun::Radius::new_ui_points(0.75)]),
+    )?;
+    stream.log_static(
+        "volume/ticks/labels",
+        &rerun::Points3D::new(anchors)
+            .with_radii([rerun::Radius::new_ui_points(0.0)])
+            .with_colors([rerun::Color::from_rgb(210, 210, 210)])
+            .with_labels(labels)
+            .with_show_labels(true),
     )?;
     Ok(())
 }
@@ -319,7 +390,9 @@ fn contact_patch(scene: &Scene, spec: &VolumeSpec) -> rerun::Mesh3D {
             triangles.push([a, d, b]);
         }
     }
+    // Half transparent: the maximum under the patch (and its dot) shows through.
     rerun::Mesh3D::new(positions)
         .with_triangle_indices(triangles)
         .with_vertex_colors(colors)
+        .with_albedo_factor(rerun::Rgba32::from_unmultiplied_rgba(255, 255, 255, 120))
 }

@@ -30,6 +30,9 @@ pub struct Avoid<'a> {
     pub lines: &'a [(f64, f64)],
 }
 
+/// The free pixels kept between two labels' boxes.
+const LABEL_GAP_PX: f64 = 4.0;
+
 /// Half the size of the box kept free around a marked point (its dot is 4 points in radius).
 pub(super) const DOT_PX: f64 = 6.0;
 
@@ -44,11 +47,14 @@ pub(super) fn place_labels(
     avoid: &Avoid<'_>,
 ) -> Vec<(f64, f64)> {
     let height = frame.label_height();
+    let step = height + LABEL_GAP_PX / frame.px;
+    // Boxes a few pixels taller than a label: two labels placed one above the other keep a
+    // gap the eye sees, not a shared edge.
     let boxed = |(u, v): (f64, f64), text: &str| LabelBox {
         u,
         v,
         half_width: 0.5 * (text.chars().count() as f64 * CHAR_PX + 10.0) / frame.px,
-        half_height: 0.5 * height,
+        half_height: 0.5 * step,
     };
     let point = |&(u, v): &(f64, f64), half: f64| LabelBox {
         u,
@@ -79,7 +85,7 @@ pub(super) fn place_labels(
         // Below the point as wanted, then above it, then further down and up.
         let candidates: Vec<LabelBox> = std::iter::once(0.0)
             .chain((1..12).flat_map(|k| [-f64::from(k) - 0.8, f64::from(k)]))
-            .map(|shift| boxed((u, v + shift * height), text))
+            .map(|shift| boxed((u, v + shift * step), text))
             .collect();
         let clear = |b: &LabelBox, obstacles: &[&[LabelBox]]| {
             obstacles

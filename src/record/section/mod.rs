@@ -166,7 +166,7 @@ pub fn log_colour_bar(
             .map_err(|e| RecordError::Rerun(e.to_string()))?
             .with_meter(1.0)
             .with_colormap(rerun_colormap(map))
-            .with_depth_range(rerun::components::ValueRange::new(lo, hi)),
+            .with_depth_range(colour_range(map, lo, hi)),
     )?;
     let to_v = |value: f64| frame.v.1 - (value - lo) / (hi - lo) * (frame.v.1 - frame.v.0);
     let bar_px = (frame.v.1 - frame.v.0) * frame.px;
@@ -221,6 +221,17 @@ pub fn log_colour_bar(
 
 pub use crate::figure::{extremes, Extreme};
 
+/// The range a map's colours run over, as Rerun reads it. Rerun's one diverging map
+/// (Spectral) runs from red at the range's first end to blue at its second, the other way from
+/// the figures' (tension, positive, red): a diverging map's range is given high end first, so
+/// that positive values are red in the recordings too.
+fn colour_range(map: ColorMap, lo: f64, hi: f64) -> rerun::components::ValueRange {
+    match map {
+        ColorMap::Diverging => rerun::components::ValueRange::new(hi, lo),
+        _ => rerun::components::ValueRange::new(lo, hi),
+    }
+}
+
 /// An extreme smaller than this fraction of the colour range's largest magnitude is not
 /// marked: the far end of a lobe cut by the map's edge, or the flat remainder of a signed
 /// field where the load has not arrived yet, is no feature worth a label (the charts still
@@ -266,7 +277,7 @@ pub fn log_step(
             .map_err(|e| RecordError::Rerun(e.to_string()))?
             .with_meter(1.0)
             .with_colormap(rerun_colormap(map))
-            .with_depth_range(rerun::components::ValueRange::new(range.0, range.1)),
+            .with_depth_range(colour_range(map, range.0, range.1)),
     )?;
     if changing.values {
         put(
@@ -281,7 +292,7 @@ pub fn log_step(
                     let axes = figure.axes_of(panel);
                     [axes.z_label.to_string(), axes.x_label.to_string()]
                 })
-                .with_value_range(rerun::components::ValueRange::new(range.0, range.1)),
+                .with_value_range(colour_range(map, range.0, range.1)),
         )?;
     }
     let notation = changing.notation;

@@ -70,6 +70,10 @@ pub struct Notation {
     pub length: String,
     /// The map is drawn with its vertical coordinate negated (see [`displayed`]).
     pub flipped: bool,
+    /// A coordinate smaller than this (a millionth of the map's extent) is written as zero:
+    /// a refined maximum on a symmetry plane lands there within rounding (`y = 5.59e-9 mm` on
+    /// a 1 mm map), not off it.
+    pub zero_below: f64,
 }
 
 impl Notation {
@@ -89,6 +93,10 @@ impl Notation {
             axes: (horizontal, vertical),
             length,
             flipped: !axes.vertical_is_depth,
+            zero_below: 1e-6
+                * [panel.x.min, panel.x.max, panel.z.min, panel.z.max]
+                    .iter()
+                    .fold(0.0f64, |m, c| m.max(c.abs())),
         }
     }
 
@@ -100,6 +108,13 @@ impl Notation {
     /// A displayed position with its unit: `x = −0.45a, z = 0.16a`.
     pub fn position(&self, u: f64, v: f64) -> String {
         let v = if self.flipped { -v } else { v };
+        let snap = |c: f64| {
+            if c.abs() < self.zero_below {
+                0.0
+            } else {
+                snap(c)
+            }
+        };
         format!(
             "{} = {}{length}, {} = {}{length}",
             self.axes.0,

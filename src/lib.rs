@@ -53,6 +53,7 @@ pub mod contact;
 pub mod field;
 pub mod figure;
 pub mod io;
+pub mod limits;
 pub mod operator;
 #[cfg(feature = "rerun")]
 pub mod record;

@@ -125,9 +125,7 @@ impl Precision for f32 {
     }
 }
 
-/// Largest grid (in bytes of stored values) that [`evaluate`] accepts on any machine; less
-/// when the machine has less memory available (see [`memory_limit_bytes`]).
-pub const MAX_FIELD_BYTES: usize = 4 << 30;
+pub use crate::limits::MAX_FIELD_BYTES;
 
 /// The largest grid this machine should hold: [`MAX_FIELD_BYTES`], or three quarters of the
 /// memory available now (`MemAvailable` of `/proc/meminfo` on Linux) when that is smaller.

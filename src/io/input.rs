@@ -58,7 +58,7 @@ pub fn read_to_string(path: &Path, limit: u64) -> Result<String, InputError> {
 
 /// The largest reference file of a regression run (`render --compare`: a PNG or a field
 /// archive): a quarter of the memory a figure may use, so the largest figure's field fits.
-pub const REFERENCE_FILE_LIMIT: u64 = (crate::field::MAX_FIELD_BYTES / 4) as u64;
+pub const REFERENCE_FILE_LIMIT: u64 = (crate::limits::MAX_FIELD_BYTES / 4) as u64;
 
 /// Reads the whole of `path` as bytes, failing as soon as more than `limit` bytes come.
 pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, InputError> {

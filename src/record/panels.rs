@@ -607,40 +607,27 @@ pub(super) fn levels_text(scene: &Scene, levels: &[f64]) -> String {
     format!("{}{unit}", values.join(", "))
 }
 
-/// Stresses at the sweep's material points (body frame) as a moving load passes: `σxx`,
-/// `σzz`, `τxz` and the figure's quantity, in the figure's stress unit.
+/// Plots the stresses at the sweep's material points (body frame) as a moving load passes,
+/// computed by [`study::panels::material_point_stresses`]: `σxx`, `σzz`, `τxz`, τ1, σvM and
+/// the figure's quantity, in the figure's stress unit.
 pub(super) fn log_material_points(
     stream: &RecordingStream,
     scene: &Scene,
 ) -> Result<(), RecordError> {
-    let Some(sweep) = &scene.sweep else {
-        return Ok(());
-    };
-    if sweep.material_points.is_empty() {
-        return Ok(());
-    }
-    let unit_over_a = scene.length_unit_over_a();
+    let stresses = study::panels::material_point_stresses(scene).map_err(RecordError::Field)?;
     let stress_per_p0 = study::DisplayUnits::of(scene).stress_per_p0;
     let quantity = scene.figure.quantity;
-    for (k, panel) in scene.panels.iter().enumerate() {
-        let solution = study::solution(scene, panel)
-            .map_err(|e| RecordError::Field(FieldError::Numerical(e.to_string())))?;
-        let y = match panel.section {
-            crate::scene::SectionKind::Xz => panel.at * unit_over_a,
-            _ => 0.0,
-        };
-        for (j, &(x, z)) in sweep.material_points.iter().enumerate() {
-            // Finite on the surface on a strip or cell edge too (the mean of the neighbours).
-            let s = solution.finite_stress_over_p0(x * unit_over_a, y, z * unit_over_a);
+    for (k, points) in stresses.iter().enumerate() {
+        for (j, s) in points.iter().enumerate() {
             let base = format!("history/{k}/point{j}");
             for (key, _) in history_components(scene) {
                 let value = match key {
                     "sxx" => s.xx,
                     "szz" => s.zz,
                     "sxz" => s.xz,
-                    "tau1" => crate::stress::Quantity::Tau1.of(&s),
-                    "von_mises" => crate::stress::Quantity::VonMises.of(&s),
-                    _ => quantity.of(&s),
+                    "tau1" => crate::stress::Quantity::Tau1.of(s),
+                    "von_mises" => crate::stress::Quantity::VonMises.of(s),
+                    _ => quantity.of(s),
                 };
                 stream.log(
                     format!("{base}/{key}"),

@@ -137,13 +137,13 @@ pub fn record(
     )?;
     flush()?;
     let pe_scale = peclet_scale(&sweep.steps);
-    let pe_timeline = rerun::TimelineName::try_new(&peclet_timeline(pe_scale))
+    let pe_timeline = rerun::TimelineName::try_new(peclet_timeline(pe_scale))
         .map_err(|e| RecordError::Rerun(e.to_string()))?;
     for (k, step) in sweep.steps.iter().enumerate() {
         stream.set_time_sequence(TIMELINE, super::step_time(k));
         if steps > 1 {
             stream.set_time_sequence(
-                pe_timeline.clone(),
+                pe_timeline,
                 (step.peclet * 10f64.powi(pe_scale)).round() as i64,
             );
         }

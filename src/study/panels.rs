@@ -222,3 +222,38 @@ fn traction_samples(
         })
         .collect()
 }
+
+/// The stress tensor (over `p0`) at each of a moving load's material points (the sweep's
+/// `material_points`, body frame, in the figure's length unit) under each panel's contact at
+/// this step, `[panel][point]`; empty without a sweep or its points. On the surface, on a strip
+/// or cell edge, the mean of the neighbours ([`Solution::finite_stress_over_p0`]). Computed
+/// here once per step; the recording only plots them.
+pub fn material_point_stresses(
+    scene: &Scene,
+) -> Result<Vec<Vec<crate::stress::Stress>>, FieldError> {
+    let Some(sweep) = scene
+        .sweep
+        .as_ref()
+        .filter(|s| !s.material_points.is_empty())
+    else {
+        return Ok(Vec::new());
+    };
+    let unit_over_a = scene.length_unit_over_a();
+    scene
+        .panels
+        .iter()
+        .map(|panel| {
+            let solution =
+                super::solution(scene, panel).map_err(|e| FieldError::Numerical(e.to_string()))?;
+            let y = match panel.section {
+                crate::scene::SectionKind::Xz => panel.at * unit_over_a,
+                _ => 0.0,
+            };
+            Ok(sweep
+                .material_points
+                .iter()
+                .map(|&(x, z)| solution.finite_stress_over_p0(x * unit_over_a, y, z * unit_over_a))
+                .collect())
+        })
+        .collect()
+}

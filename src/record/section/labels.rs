@@ -13,9 +13,16 @@ pub(super) struct LabelBox {
 }
 
 impl LabelBox {
+    #[cfg(test)]
     pub(super) fn overlaps(&self, other: &LabelBox) -> bool {
+        self.within(other, 0.0)
+    }
+
+    /// Whether the two boxes come closer than `gap` (units) above or below each other, or
+    /// overlap side by side.
+    fn within(&self, other: &LabelBox, gap: f64) -> bool {
         (self.u - other.u).abs() < self.half_width + other.half_width
-            && (self.v - other.v).abs() < self.half_height + other.half_height
+            && (self.v - other.v).abs() < self.half_height + other.half_height + gap
     }
 }
 
@@ -39,8 +46,8 @@ pub(super) const DOT_PX: f64 = 6.0;
 /// Places labels at their preferred centres, kept inside the map's width (a label is
 /// centred on its point, so one near a side would be cut by the view's edge). A label is wanted
 /// just below its point; one that would cover an earlier label, a label of `avoid` or a
-/// marked point goes just above it, else further down or up by label heights, and where
-/// possible it covers no line either. Returns the centres.
+/// marked point goes beside it (right, then left), else just above it, else further down or
+/// up by label heights, and where possible it covers no line either. Returns the centres.
 pub(super) fn place_labels(
     frame: &Frame,
     wanted: &[((f64, f64), &str)],
@@ -48,13 +55,13 @@ pub(super) fn place_labels(
 ) -> Vec<(f64, f64)> {
     let height = frame.label_height();
     let step = height + LABEL_GAP_PX / frame.px;
-    // Boxes a few pixels taller than a label: two labels placed one above the other keep a
-    // gap the eye sees, not a shared edge.
+    // Two labels placed one above the other keep a gap the eye sees, not a shared edge
+    // (candidates a label height and that gap apart).
     let boxed = |(u, v): (f64, f64), text: &str| LabelBox {
         u,
         v,
         half_width: 0.5 * (text.chars().count() as f64 * CHAR_PX + 10.0) / frame.px,
-        half_height: 0.5 * step,
+        half_height: 0.5 * height,
     };
     let point = |&(u, v): &(f64, f64), half: f64| LabelBox {
         u,
@@ -77,20 +84,35 @@ pub(super) fn place_labels(
     for &((u, v), text) in wanted {
         let half_width = boxed((u, v), text).half_width;
         let (left, right) = (frame.u.0 + half_width, frame.bar.0 - half_width);
+        let point_u = u;
         let u = if left <= right {
             u.clamp(left, right)
         } else {
             0.5 * (frame.u.0 + frame.bar.0)
         };
-        // Below the point as wanted, then above it, then further down and up.
-        let candidates: Vec<LabelBox> = std::iter::once(0.0)
-            .chain((1..12).flat_map(|k| [-f64::from(k) - 0.8, f64::from(k)]))
-            .map(|shift| boxed((u, v + shift * step), text))
+        // Below the point as wanted; beside it, right then left, where that fits the map;
+        // then above it, further down and up.
+        let beside = half_width + (DOT_PX + 2.0) / frame.px;
+        let point_v = v - 0.9 * height;
+        let sides = [point_u + beside, point_u - beside]
+            .into_iter()
+            .filter(|side| (left..=right).contains(side))
+            .map(|side| boxed((side, point_v), text));
+        let candidates: Vec<LabelBox> = std::iter::once(boxed((u, v), text))
+            .chain(sides)
+            .chain(
+                (1..12)
+                    .flat_map(|k| [-f64::from(k) - 0.8, f64::from(k)])
+                    .map(|shift| boxed((u, v + shift * step), text)),
+            )
             .collect();
+        // Other labels are kept a gap away (the first list); dots and lines only uncovered.
+        let gap = LABEL_GAP_PX / frame.px;
         let clear = |b: &LabelBox, obstacles: &[&[LabelBox]]| {
-            obstacles
-                .iter()
-                .all(|list| list.iter().all(|o| !b.overlaps(o)))
+            obstacles.iter().enumerate().all(|(k, list)| {
+                let gap = if k == 0 { gap } else { 0.0 };
+                list.iter().all(|o| !b.within(o, gap))
+            })
         };
         // Lines are given up first, then nothing else: a label may only land on another if
         // there is no room at all.

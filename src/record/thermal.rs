@@ -1,7 +1,7 @@
 //! Recordings of speed sweeps: scenes with `[thermal]` and `[sweep] parameter = "peclet"`
 //! (issue 21). Draws what [`crate::study::thermal_sweep`] computed.
 //!
-//! ## Entities (steps on the timeline `peclet`)
+//! ## Entities (steps on the timeline `peclet`, and at Pe × 100 on `Pe × 100`)
 //! - `description`: the scene's `hertz` report and its heating at its own speed (`stressfield
 //!   thermal`), the sweep, and how to read the views.
 //! - `surface`: body 1's surface temperature rise (K) under its share of the heat, as a map
@@ -493,7 +493,7 @@ fn describe(scene: &Scene, sweep: &SpeedSweep) -> Result<String, RecordError> {
     let last = sweep_spec.values.len() - 1;
     Ok(format!(
         "# {title}\n\n\
-         Scene `{name}`: body 1's flash temperature as the sliding speed rises, {n} steps from {first} to {final_} on the timeline `peclet`.\n\n\
+         Scene `{name}`: body 1's flash temperature as the sliding speed rises, {n} steps from {first} to {final_} on the timeline `peclet` (the steps) and on `Pe × 100` (each step at its Pe times a hundred, or a larger power of ten where a hundred would merge two steps; the time panel opens on it).\n\n\
          The Péclet number is body 1's, Pe = V1 a / (2κ1): how far the contact moves over body 1 (a = {a} µm) while heat diffuses across it. Every speed of the scene is scaled by the same factor, so the frictional flux q = μ p V grows with V. Heat partition: {partition}.\n\n\
          **Reading the views.** The contact moves in +x over body 1: its material enters at the leading edge x = +a and leaves at the trailing edge x = −a, carrying heat behind. At Pe well below 1 the heat spreads in every direction before the contact moves on: the field is centred on the contact, deep and wide, and the temperature grows like V. At Pe well above 1 the heat has no time to spread ahead or down: it stays in a thin layer swept back into a wake, the hottest point moves towards the trailing edge, and the temperature grows only like √V (Jaeger 1942; Blok 1937).\n\n\
          - `surface`: body 1's surface temperature rise (K) under its share of the heat, the contact outlined in white, the maximum labelled.\n\

@@ -50,8 +50,10 @@ fn small(extra: &str) -> Result<Scene, String> {
 fn solved_sheet(scene: &Scene) -> (RoughSolution, ContactFindings, Sheet) {
     let solution = rough_study::solve(scene, &mut |_, _| {}).expect("solves");
     let findings = rough_study::findings(scene, &solution).expect("findings");
-    let sheet = stressfield::figure::rough::rough_sheet(scene, &solution, &findings.maxima, &|| {})
-        .expect("sheet");
+    let fields =
+        stressfield::study::rough_sheet::sheet_fields(scene, &solution, &findings.maxima, &|| {})
+            .expect("fields");
+    let sheet = stressfield::figure::rough::rough_sheet(scene, &solution, &fields).expect("sheet");
     (solution, findings, sheet)
 }
 

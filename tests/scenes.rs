@@ -55,7 +55,7 @@ fn every_shipped_scene_renders() {
             stressfield::study::rough::solve(&scene, &mut |_, _| {})
                 .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
         });
-        let drawing = figure::draw(&scene, rough.as_ref(), &|| {})
+        let drawing = figure::compute_and_draw(&scene, rough.as_ref(), &|| {})
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let image = drawing
             .png()

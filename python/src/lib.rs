@@ -197,7 +197,7 @@ fn scene_drawing(scene: &stressfield::scene::Scene, svg: bool) -> Result<Vec<u8>
             ContactKind::Rough => Some(study::rough::solve(scene, &mut |_, _| {})?),
             _ => None,
         };
-        stressfield::figure::draw(scene, rough.as_ref(), &|| {})?
+        stressfield::figure::compute_and_draw(scene, rough.as_ref(), &|| {})?
     };
     Ok(if svg {
         drawing.svg()?.into_bytes()

@@ -188,7 +188,10 @@ fn render_scene(
     };
     let drawing = match &wear {
         Some(study) => Drawing::Sheet(figure::wear::wear_sheet(scene, study)),
-        None => figure::draw(scene, rough.as_ref(), &on_row)?,
+        None => {
+            let inputs = study::drawing::inputs(scene, rough.as_ref(), &on_row)?;
+            figure::draw(scene, rough.as_ref(), &inputs)?
+        }
     };
     let image = drawing.png()?;
     let png = render::encode_png(&image)?;

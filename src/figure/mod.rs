@@ -51,49 +51,55 @@ pub enum DrawError {
     Field(#[from] FieldError),
     #[error(transparent)]
     Sheet(#[from] crate::figure::rough::SheetError),
-    #[error(
-        "a rough scene's sheet draws its solved contact: solve it first (study::rough::solve)"
-    )]
-    Unsolved,
     #[error(transparent)]
-    Coated(#[from] crate::study::coated::CoatedStudyError),
+    Inputs(#[from] study::drawing::DrawingError),
+    #[error(
+        "the drawing's inputs are not this scene's kind: compute them with study::drawing::inputs"
+    )]
+    Mismatch,
 }
 
-/// Draws any scene: a figure ([`build`]) or the sheet of a surface or rough scene; a rough
-/// scene draws its contact as solved by the study (`rough`, from
-/// [`crate::study::rough::solve`]).
+/// Draws any scene from what the study computed for it ([`study::drawing::inputs`]): a
+/// figure ([`build`]), a coated body's section, or the sheet of a surface or rough scene (a
+/// rough scene's contact as solved, `rough`). Computes nothing itself.
 pub fn draw(
+    scene: &Scene,
+    rough: Option<&crate::contact::rough::RoughSolution>,
+    inputs: &study::drawing::DrawingInputs,
+) -> Result<Drawing, DrawError> {
+    use study::drawing::DrawingInputs;
+    Ok(match inputs {
+        DrawingInputs::Coated(study) => {
+            Drawing::Figure(crate::figure::coated::coated_figure(scene, study))
+        }
+        DrawingInputs::Rough { fields, .. } => {
+            let solution = rough.ok_or(study::drawing::DrawingError::Unsolved)?;
+            Drawing::Sheet(crate::figure::rough::rough_sheet(scene, solution, fields)?)
+        }
+        DrawingInputs::Surface(characterisation) => Drawing::Sheet(
+            crate::figure::surface::surface_sheet(scene, characterisation)?,
+        ),
+        DrawingInputs::Panels(fields) => {
+            if matches!(
+                scene.contact.kind,
+                ContactKind::Rough | ContactKind::Surface
+            ) {
+                return Err(DrawError::Mismatch);
+            }
+            Drawing::Figure(build(scene, fields))
+        }
+    })
+}
+
+/// Computes what `scene`'s drawing needs ([`study::drawing::inputs`]) and draws it: for the
+/// callers that compute and draw in one step (the `render` command, the tests).
+pub fn compute_and_draw(
     scene: &Scene,
     rough: Option<&crate::contact::rough::RoughSolution>,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Drawing, DrawError> {
-    if scene.contact.coating.is_some() {
-        // A coated body's section, from its study (the homogeneous closed forms do not hold).
-        let study = study::coated::solve(scene)?;
-        return Ok(Drawing::Figure(crate::figure::coated::coated_figure(
-            scene, &study,
-        )));
-    }
-    Ok(match scene.contact.kind {
-        ContactKind::Rough => {
-            let solution = rough.ok_or(DrawError::Unsolved)?;
-            // The report's maxima: the sheet's section passes through them.
-            let (maxima, _) = study::rough::subsurface_maxima(
-                solution,
-                scene.contact.friction,
-                scene.contact.poisson,
-            )
-            .map_err(|e| FieldError::Numerical(e.to_string()))?;
-            Drawing::Sheet(crate::figure::rough::rough_sheet(
-                scene, solution, &maxima, on_row,
-            )?)
-        }
-        ContactKind::Surface => Drawing::Sheet(crate::figure::surface::surface_sheet(
-            scene,
-            &study::surface::characterise(scene).map_err(crate::figure::rough::SheetError::from)?,
-        )?),
-        _ => Drawing::Figure(build(scene, &study::panel_fields(scene, on_row)?)),
-    })
+    let inputs = study::drawing::inputs(scene, rough, on_row)?;
+    draw(scene, rough, &inputs)
 }
 
 /// Assembles the figure of `scene` from its panels' fields (computed by

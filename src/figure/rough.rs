@@ -23,7 +23,6 @@ use crate::operator::elastic::Periodicity;
 use crate::render::chart::{Cell, Chart, Series, Sheet, Style, PALETTE};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample};
 use crate::scene::{ContactKind, Scene};
-use crate::study::assess::StressMaxima;
 use crate::study::map_roll::Roll;
 use crate::study::rough::{self as rough_study, RoughStudyError};
 use crate::study::rough_sheet::RoughSheetFields;
@@ -145,13 +144,12 @@ fn spot_outlines(solution: &RoughSolution, roll: Roll) -> Vec<Vec<(f64, f64)>> {
 
 /// The rough scene's sheet of its solved contact (`solution`, solved by the study; the area
 /// against load, of a nominally flat surface, solved by [`rough_study::area_curve`]), its xz
-/// section through the report's maximum in `maxima` (the `contact` report's, from
-/// [`rough_study::findings`]). `on_row` is called per evaluated grid row.
+/// section through the report's maximum, all from `fields`, which the study computed through
+/// the report's maxima ([`crate::study::drawing::inputs`]). Draws; computes no field.
 pub fn rough_sheet(
     scene: &Scene,
     solution: &RoughSolution,
-    maxima: &StressMaxima,
-    on_row: &(dyn Fn() + Sync),
+    fields: &RoughSheetFields,
 ) -> Result<Sheet, SheetError> {
     if scene.contact.kind != ContactKind::Rough {
         return Err(SheetError::NoSurface);
@@ -160,9 +158,9 @@ pub fn rough_sheet(
     let stress_per_pa = 1.0 / scene.figure.stress_unit.pascals(1.0);
     let unit = scene.figure.stress_unit.label("");
     let unit = unit.trim();
-    // The fields under the solved contact, computed by the study, and how the maps are shown:
-    // a periodic contact's centred on the report's maximum (a contact on the seam whole).
-    let fields = crate::study::rough_sheet::sheet_fields(scene, solution, maxima, on_row)?;
+    // The fields under the solved contact, computed by the study
+    // ([`crate::study::rough_sheet::sheet_fields`]), and how the maps are shown: a periodic
+    // contact's centred on the report's maximum (a contact on the seam whole).
     let roll = fields.roll;
     let axes = map_axes_um(&surface.heights, roll);
     let outlines = spot_outlines(solution, roll);
@@ -234,12 +232,12 @@ pub fn rough_sheet(
 
     // A rough ball or cylinder: its pressure against the smooth body's (Hertz); a nominally
     // flat surface: its real area against load.
-    let area_chart = match (fields.area_curve, &fields.characterisation, surface.shape) {
+    let area_chart = match (&fields.area_curve, &fields.characterisation, surface.shape) {
         (Some(curve), Some(c), _) => {
             let e_star = rough_study::problem(scene)
                 .ok_or(SheetError::NoSurface)?
                 .e_star_pa;
-            area_against_load(curve, c, e_star)
+            area_against_load(curve.clone(), c, e_star)
         }
         (_, _, shape) => pressure_against_hertz(scene, solution, shape)?,
     };

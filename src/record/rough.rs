@@ -87,11 +87,13 @@ pub fn record(
         (Some(c), _, _) => {
             Drawing::Sheet(crate::figure::surface::surface_sheet(scene, c).map_err(rerun_error)?)
         }
-        (None, Some(solution), Some(findings)) => Drawing::Sheet(
-            crate::figure::rough::rough_sheet(scene, solution, &findings.maxima, on_row)
-                .map_err(rerun_error)?,
-        ),
-        _ => figure::draw(scene, solution, on_row).map_err(rerun_error)?,
+        (None, Some(solution), Some(findings)) => {
+            let inputs =
+                crate::study::drawing::rough_inputs(scene, solution, findings.maxima, on_row)
+                    .map_err(rerun_error)?;
+            figure::draw(scene, Some(solution), &inputs).map_err(rerun_error)?
+        }
+        _ => figure::compute_and_draw(scene, solution, on_row).map_err(rerun_error)?,
     };
     let Drawing::Sheet(sheet) = &drawing else {
         return Err(rerun_error("a surface scene draws a sheet"));

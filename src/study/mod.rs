@@ -16,6 +16,7 @@ pub mod assess;
 pub mod coated;
 mod compass;
 pub mod coupled;
+pub mod drawing;
 pub mod gear_heating;
 mod grid;
 pub(crate) mod heated_stress;

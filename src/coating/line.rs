@@ -36,9 +36,13 @@
 //! The tractions, zero-padded to a period of at least sixteen times the grid, are the
 //! band-limited functions through their samples; every wave of the padded transform gives its
 //! stress at depth in closed form and one inverse transform per component the field at the
-//! cell centres. The mean wave stands for the wavenumbers within half a step of zero: the
-//! waves' `k -> 0` limit (`σzz = -p̄`, `σxz = -q̄`, `σxx = p̄ f''(0⁺)`, for a homogeneous body
-//! `-p̄`). The periodic images sixteen grid lengths apart change the stress under the contact
+//! cell centres. The mean wave stands for the wavenumbers within half a step of zero,
+//! `|k| < π/L` (`L` the period), where the tractions' transform is nearly their resultant: its
+//! factors are the waves' averaged over that band (16 Gauss–Legendre points; for a homogeneous
+//! body `σzz = σxx = -p̄`, `σxz = -q̄`). The band average matters for a layer thicker than the
+//! period's scale, whose waves change from the substrate's to the coating's inside the band:
+//! the `k -> 0` limit alone put 0.3 % into the surface von Mises stress of a coating 220 b
+//! thick. The periodic images sixteen grid lengths apart change the stress under the contact
 //! by about `(a/L)² p0` (Flamant's field of the images; below 1e-3 p0 here), which the check
 //! against McEwen's closed form measures ([`super::tests`], `docs/coatings.md`).
 //!
@@ -227,19 +231,30 @@ impl LineStress {
                 }
             }
         }
-        // The mean wave: the waves' k -> 0 limit (module doc).
+        // The mean wave: the waves averaged over the band |k| < π/L it stands for (module doc).
+        let (nodes, weights) = crate::thermal::special::gauss_legendre(16);
+        let band = PI / self.period_m;
         let h = self.layered.thickness_m;
-        let k = 1e-6 / (h + z_m + self.period_m);
-        let limit = self
-            .layered
-            .wave(k * h)
-            .at(k * z_m, side, &self.layered)
-            .stress([1.0, 0.0]);
+        let mut average = [[0.0; 3]; 6];
+        for (t, w) in nodes.iter().zip(&weights) {
+            let k = 0.5 * band * (1.0 + t);
+            let factors = self
+                .layered
+                .wave(k * h)
+                .at(k * z_m, side, &self.layered)
+                .stress([1.0, 0.0]);
+            for (c, row) in average.iter_mut().enumerate() {
+                for (load, slot) in row.iter_mut().enumerate() {
+                    *slot += 0.5 * w * factors[c][load][0];
+                }
+            }
+        }
         for (load, traction) in &self.loads {
             let mean = traction[0].re;
             for (c, column) in columns[0].iter_mut().enumerate() {
-                // Only the real factors survive for a real mean: σxx, σyy, σzz of p, σxz of q.
-                *column += Complex::new(limit[c][*load][0] * mean, 0.0);
+                // Only the real factors survive for a real mean (the imaginary ones are odd in
+                // k): σxx, σyy, σzz of p, σxz of q.
+                *column += Complex::new(average[c][*load] * mean, 0.0);
             }
         }
         let mut planner = RealFftPlanner::<f64>::new();
@@ -346,6 +361,7 @@ mod tests {
         let field = LineStress::new(layered, &p, Some(&q), d).expect("stress");
         let mut worst: f64 = 0.0;
         let mut surface: f64 = 0.0;
+        let mut in_plane: f64 = 0.0;
         for z in [0.0, 0.25, 0.5, 0.78, 1.0] {
             let side = if z <= 0.3 {
                 Side::Coating
@@ -358,6 +374,12 @@ mod tests {
                     surface = surface
                         .max((rows[[2, i]] + p[i]).abs())
                         .max((rows[[4, i]] + q[i]).abs());
+                    if xi.abs() < 0.9 {
+                        let exact = crate::solution::line_hertz::stress_over_p0(xi, 0.0, 0.2, 0.3);
+                        in_plane = in_plane
+                            .max((rows[[0, i]] - exact.xx).abs())
+                            .max((rows[[1, i]] - exact.yy).abs());
+                    }
                     continue;
                 }
                 if xi.abs() > 1.5 {
@@ -372,7 +394,7 @@ mod tests {
                 }
             }
         }
-        eprintln!("measured: equal moduli, the line field against McEwen's (μ = 0.2, 400 strips over ±2b, |x| <= 1.5b, z = 0.25b to b): {worst:.1e} p0; free surface {surface:.1e} p0");
+        eprintln!("measured: equal moduli, the line field against McEwen's (μ = 0.2, 400 strips over ±2b, |x| <= 1.5b, z = 0.25b to b): {worst:.1e} p0; free surface {surface:.1e} p0; surface σxx, σyy (|x| < 0.9b) {in_plane:.1e} p0");
         assert!(worst < 2e-3, "{worst}");
         assert!(surface < 1e-12, "{surface}");
     }

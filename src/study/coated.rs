@@ -64,6 +64,8 @@ pub enum CoatedStudyError {
     Contact(#[from] CoatedContactError),
     #[error(transparent)]
     Transform(#[from] crate::operator::transform::TransformError),
+    #[error("sweep step {step}: {message}")]
+    Step { step: usize, message: String },
 }
 
 /// A stress value and its place (m; `y` is 0: the plane of sliding).
@@ -406,6 +408,29 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
         solve_seconds,
         stress_seconds,
     })
+}
+
+/// Every step of a coated scene's sweep (`[sweep] parameter = "coating_thickness"`), each
+/// solved as [`solve`] does (the layered kernels depend on the thickness: built once per
+/// step); the scene itself as one step without a sweep. `on_step(done, total)` after each.
+pub fn sweep(
+    scene: &Scene,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<CoatedStudy>, CoatedStudyError> {
+    let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
+    let mut out = Vec::with_capacity(steps);
+    for k in 0..steps {
+        let stepped = super::at_step(scene, k).map_err(|e| CoatedStudyError::Step {
+            step: k + 1,
+            message: e.to_string(),
+        })?;
+        out.push(solve(&stepped).map_err(|e| CoatedStudyError::Step {
+            step: k + 1,
+            message: e.to_string(),
+        })?);
+        on_step(k + 1, steps);
+    }
+    Ok(out)
 }
 
 /// The maxima of the rows (`[component, x]` at each of `depths`) and the von Mises section.

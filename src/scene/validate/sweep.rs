@@ -194,6 +194,11 @@ impl Validator<'_> {
                     (format!("sweep.values[{i}]"), value, text)
                 })
                 .collect(),
+            // A coating's thicknesses in m (from and to were in the figure's length unit).
+            (None, Some(_), Some(_)) if parameter == SweepParameter::CoatingThickness => vec![
+                ("sweep.from".to_string(), values[0], None),
+                ("sweep.to".to_string(), values[values.len() - 1], None),
+            ],
             (None, Some(from), Some(to)) => vec![
                 ("sweep.from".to_string(), from, None),
                 ("sweep.to".to_string(), to, None),

@@ -85,7 +85,11 @@ pub fn record(
     log_map_static(stream, "section", &frame, &figure0, &shown0, Some(range))?;
     for (path, name, colour) in [
         ("series/von_mises_max", "σvM max (MPa)", PALETTE[0]),
-        ("series/coating_von_mises_max", "coating σvM max (MPa)", PALETTE[1]),
+        (
+            "series/coating_von_mises_max",
+            "coating σvM max (MPa)",
+            PALETTE[1],
+        ),
         (
             "series/substrate_von_mises_max",
             "substrate σvM max (MPa)",
@@ -147,10 +151,7 @@ pub fn record(
         )?;
         for (path, value) in [
             ("series/coating_thickness_um", h * 1e6),
-            (
-                "series/von_mises_max",
-                m.von_mises.value_pa * stress_unit,
-            ),
+            ("series/von_mises_max", m.von_mises.value_pa * stress_unit),
             (
                 "series/coating_von_mises_max",
                 m.coating_von_mises.value_pa * stress_unit,
@@ -190,7 +191,10 @@ pub(super) fn charts(studies: &[CoatedStudy], current: usize) -> Vec<(&'static s
     let (lo, hi) = studies.iter().fold((f64::INFINITY, 0.0f64), |(l, u), s| {
         (l.min(h_um(s)), u.max(h_um(s)))
     });
-    let series = |label: &str, colour: [u8; 3], f: &dyn Fn(&CoatedStudy) -> f64, x: &dyn Fn(&CoatedStudy) -> f64| {
+    let series = |label: &str,
+                  colour: [u8; 3],
+                  f: &dyn Fn(&CoatedStudy) -> f64,
+                  x: &dyn Fn(&CoatedStudy) -> f64| {
         vec![
             Series {
                 label: label.to_string(),
@@ -254,10 +258,7 @@ pub(super) fn charts(studies: &[CoatedStudy], current: usize) -> Vec<(&'static s
     depth.y_range = Some((0.0, (1.15 * deepest).max(1.0)));
     depth.series.push(Series {
         label: "the interface z = h".into(),
-        points: studies
-            .iter()
-            .map(|s| (h_over_a(s), h_over_a(s)))
-            .collect(),
+        points: studies.iter().map(|s| (h_over_a(s), h_over_a(s))).collect(),
         style: Style::Dashed,
         colour: PALETTE[6],
     });
@@ -311,10 +312,7 @@ fn plan_layout(frame: &Frame, timeline: &str, sweeps: bool) -> Layout {
         documents
     };
     Layout {
-        root: Node::Horizontal(
-            vec![main, side],
-            vec![super::MAIN_SHARE, super::SIDE_SHARE],
-        ),
+        root: Node::Horizontal(vec![main, side], vec![super::MAIN_SHARE, super::SIDE_SHARE]),
         timeline: sweeps.then(|| timeline.to_string()),
     }
 }
@@ -343,7 +341,9 @@ fn describe(scene: &Scene, studies: &[CoatedStudy], range: (f64, f64)) -> String
         "**Reading the views.** `section`: von Mises stress in MPa in the plane of sliding y = 0, depth downwards in µm; the white line is the interface z = h, the coating above it, the substrate below. Colours 0 to {} MPa at every step. The title gives where the largest value lies: in the substrate (a thin coating: nearly the substrate's own Hertz field), at the interface (where σxx jumps with the moduli) or inside the coating (a thick one: the coating's Hertz field). Charts: the largest von Mises stress in each material and the interface's shear against h; the depth of the overall maximum against h/a with the interface z = h dashed (on the line: at the interface; below it: in the coating). Hovering the map reads the value (the viewer calls it a \"Depth\" in m: ignore that line).\n\n",
         section::short(range.1)
     ));
-    text.push_str("Conventions: z points into the body, tension positive, q = μp acts in +x on the body.\n\n");
+    text.push_str(
+        "Conventions: z points into the body, tension positive, q = μp acts in +x on the body.\n\n",
+    );
     for (name, study) in [("first", first), ("last", last)] {
         let report = crate::report::coated::CoatedReport::new(study);
         let mut stepped = scene.clone();

@@ -742,4 +742,62 @@ mod tests {
         assert!(message.starts_with("numerical.cells"), "{message}");
         assert!(message.contains("at least"), "{message}");
     }
+
+    #[test]
+    fn a_thickness_sweep_is_validated_by_key() {
+        let sweep = "[figure]\nlength_unit = \"um\"\n[sweep]\nparameter = \"coating_thickness\"\nfrom = 2\nto = 100\nsteps = 4\n";
+        // Uncoated: the sweep needs a coating.
+        let plain = "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n".to_string() + sweep;
+        assert!(error_of(&plain).contains("sweep.parameter"));
+        // Coated, another parameter: refused by key.
+        let friction = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            "[sweep]\nparameter = \"friction\"\nvalues = [0.0, 0.1]\n",
+        );
+        assert!(error_of(&friction).contains("sweep.parameter"));
+        // A thinnest coating the grid cannot resolve names sweep.from and numerical.cells.
+        let thin = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            &sweep.replace("from = 2", "from = 0.5"),
+        );
+        let message = error_of(&thin);
+        assert!(
+            message.contains("sweep.from") && message.contains("numerical.cells to at least"),
+            "{message}"
+        );
+        // Values with units are taken.
+        let listed = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            "[sweep]\nparameter = \"coating_thickness\"\nvalues = [\"5 um\", \"0.02 mm\"]\n",
+        );
+        let scene = Scene::parse(&listed, "test", "test.toml").expect("valid");
+        let values = scene.sweep.map(|s| s.values).unwrap_or_default();
+        assert_eq!(values.len(), 2);
+        assert!((values[0] / 5e-6 - 1.0).abs() < 1e-12 && (values[1] / 2e-5 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_maximum_travels_from_the_substrate_into_a_thickening_hard_coating() {
+        // The frictionless ball on B4C-coated steel (a = 53.7 µm), h = 4, 32 and 256 µm on 128
+        // cells: the largest von Mises stress lies in the steel under the thin coating, on the
+        // interface's coating side under the middle one and inside the thick coating.
+        let text = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            "[figure]\nlength_unit = \"um\"\n[sweep]\nparameter = \"coating_thickness\"\nfrom = 4\nto = 256\nsteps = 3\n[numerical]\ncells = 128\n",
+        )
+        .replace("friction = 0.1", "friction = 0.0");
+        let scene = Scene::parse(&text, "test", "test.toml").expect("valid");
+        let studies = sweep(&scene, &mut |_, _| {}).expect("sweep");
+        let depth_over_h: Vec<f64> = studies
+            .iter()
+            .map(|s| s.maxima.von_mises.z_m / s.spec.thickness_m)
+            .collect();
+        eprintln!(
+            "measured: thickness sweep 4, 32, 256 µm: depth of the maximum over h {depth_over_h:?}"
+        );
+        assert_eq!(studies.len(), 3);
+        assert!(depth_over_h[0] > 1.0, "{depth_over_h:?}");
+        assert!((depth_over_h[1] - 1.0).abs() < 1e-12, "{depth_over_h:?}");
+        assert!(depth_over_h[2] < 1.0, "{depth_over_h:?}");
+    }
 }

@@ -9,7 +9,9 @@ impl Validator<'_> {
             self.error(
                 "sweep.parameter",
                 format!("unknown sweep parameter `{}`", raw.parameter),
-                Some("use \"friction\", \"load\", \"position\", \"peclet\" or \"coating_thickness\""),
+                Some(
+                    "use \"friction\", \"load\", \"position\", \"peclet\" or \"coating_thickness\"",
+                ),
             )
         })?;
         let contact = &scene.contact;

@@ -118,7 +118,7 @@ pub fn solve_line(
             needed_m: largest_cell_m(layered.thickness_m),
         });
     }
-    if cells < 8 || !(load_n_per_m > 0.0) {
+    if cells < 8 || load_n_per_m.is_nan() || load_n_per_m <= 0.0 {
         return Err(CoatedContactError::Contact(RoughContactError::Parameter {
             name: "the load per unit length",
             requirement: "must be positive on at least 8 cells",
@@ -167,10 +167,8 @@ pub fn solve_line(
             }
         }
         if !changed {
-            for i in 0..cells {
-                if active[i] {
-                    continue;
-                }
+            let outside: Vec<usize> = (0..cells).filter(|&i| !active[i]).collect();
+            for i in outside {
                 let displacement: f64 = set
                     .iter()
                     .map(|&j| kernel[i.abs_diff(j)] * pressure[j])

@@ -140,7 +140,7 @@ pub fn line_kernel(
             Complex::new(remainder(layered, k) * sinc(0.5 * k * d), 0.0)
         })
         .collect();
-    if length % 2 == 0 {
+    if length.is_multiple_of(2) {
         // The Nyquist wave is real: its cosine alone.
         let last = spectrum.len() - 1;
         spectrum[last].im = 0.0;
@@ -265,7 +265,7 @@ impl LineStress {
         for c in 0..6 {
             let mut spectrum: Vec<Complex<f64>> = columns.iter().map(|v| v[c]).collect();
             spectrum[0].im = 0.0;
-            if self.period % 2 == 0 {
+            if self.period.is_multiple_of(2) {
                 spectrum[width - 1] = Complex::new(0.0, 0.0);
             }
             inverse.process(&mut spectrum, &mut line)?;

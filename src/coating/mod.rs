@@ -17,6 +17,8 @@
 //! Uses nothing of the crate above `contact::material`, `operator` and `stress`.
 
 pub mod kernel;
+pub mod line;
+pub mod line_reference;
 pub mod reference;
 pub mod response;
 pub mod stress;

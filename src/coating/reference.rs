@@ -290,7 +290,7 @@ pub fn rigid_sphere_under_load(
     c1
 }
 
-fn solve_dense(mut matrix: Vec<Vec<f64>>, mut rhs: Vec<f64>) -> Vec<f64> {
+pub(super) fn solve_dense(mut matrix: Vec<Vec<f64>>, mut rhs: Vec<f64>) -> Vec<f64> {
     let n = rhs.len();
     for column in 0..n {
         let pivot = (column..n)

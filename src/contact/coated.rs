@@ -6,6 +6,18 @@
 //! The problem's `e_star_pa` is the far field's, `1/E* = (1 - ν_s²)/E_s + (1 - ν2²)/E2` (the
 //! substrate's and the counter-body's), which is what a coated body's compliance tends to at
 //! long wavelengths; the solver takes it only for its checks.
+//!
+//! A coated **line** contact (plane strain) is solved on a 1-D grid by [`solve_line`]: the
+//! influence coefficients of [`crate::coating::line`] (strips of uniform pressure on the
+//! layered half-plane) in a dense system over the cells in contact, and an active set
+//! (Kalker's: drop the cells of negative pressure, add the cells the surfaces would
+//! interpenetrate, solve again), which for the smooth convex gap of two cylinders ends in a
+//! few iterations. The load per unit length closes the system; the approach it returns is
+//! relative (a plane problem's displacements are defined up to a constant).
+//!
+//! ## Reference
+//! J. J. Kalker, *Three-Dimensional Elastic Bodies in Rolling Contact*, Kluwer (1990), ch. 2
+//! (the active-set contact algorithm on influence coefficients).
 
 use crate::coating::kernel::{kernel_grid, MIN_THICKNESS_CELLS};
 use crate::coating::Layered;
@@ -25,6 +37,192 @@ pub enum CoatedContactError {
     },
     #[error(transparent)]
     Contact(#[from] RoughContactError),
+    #[error("the coated line contact reaches the edge of its grid (cell {cell} of {cells}): the contact must lie inside it\nhint: raise numerical.extent")]
+    LineAtEdge { cell: usize, cells: usize },
+    #[error("the coated line contact's active set did not settle in {iterations} iterations")]
+    LineNotConverged { iterations: usize },
+}
+
+/// A solved coated line contact.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineSolution {
+    /// Pressure at the cell centres, Pa.
+    pub pressure_pa: Vec<f64>,
+    pub max_pressure_pa: f64,
+    /// The contact's edges, m: from the first and last loaded cells, where `p²` (linear in the
+    /// distance from a smooth contact's edge, `p ∝ sqrt(b - |x|)`) extrapolated from the two
+    /// outermost loaded cells vanishes, kept within the cell beyond them.
+    pub edges_m: [f64; 2],
+    /// Half the distance between the edges, m.
+    pub half_width_m: f64,
+    /// The approach, m, relative to the influence coefficients' arbitrary constant.
+    pub relative_approach_m: f64,
+    /// Active-set iterations.
+    pub iterations: usize,
+}
+
+/// The most active-set iterations of [`solve_line`].
+const LINE_ITERATIONS: usize = 200;
+
+/// Solves `A x = b` (row-major `n x n`) by Gaussian elimination with partial pivoting.
+fn solve_dense_row_major(mut a: Vec<f64>, mut b: Vec<f64>) -> Vec<f64> {
+    let n = b.len();
+    for column in 0..n {
+        let pivot = (column..n)
+            .max_by(|&x, &y| a[x * n + column].abs().total_cmp(&a[y * n + column].abs()))
+            .unwrap_or(column);
+        if pivot != column {
+            for j in 0..n {
+                a.swap(column * n + j, pivot * n + j);
+            }
+            b.swap(column, pivot);
+        }
+        let (head, tail) = a.split_at_mut((column + 1) * n);
+        let pivot_row = &head[column * n..];
+        let diagonal = pivot_row[column];
+        for (offset, row) in tail.chunks_exact_mut(n).enumerate() {
+            let factor = row[column] / diagonal;
+            if factor != 0.0 {
+                for (target, source) in row[column..].iter_mut().zip(&pivot_row[column..]) {
+                    *target -= factor * source;
+                }
+                b[column + 1 + offset] -= factor * b[column];
+            }
+        }
+    }
+    let mut x = vec![0.0; n];
+    for row in (0..n).rev() {
+        let sum: f64 = (row + 1..n).map(|j| a[row * n + j] * x[j]).sum();
+        x[row] = (b[row] - sum) / a[row * n + row];
+    }
+    x
+}
+
+/// Solves the line contact of a coated body 1 (`layered`) against a counter-body of compliance
+/// `counter_per_pa` (0 when rigid): the initial separation `gap_m` at the centres of cells
+/// `spacing_m` wide starting at `origin_m` (the centre of the first), pressed together by
+/// `load_n_per_m` (module doc).
+pub fn solve_line(
+    layered: &Layered,
+    counter_per_pa: f64,
+    gap_m: &[f64],
+    spacing_m: f64,
+    origin_m: f64,
+    load_n_per_m: f64,
+) -> Result<LineSolution, CoatedContactError> {
+    let cells = gap_m.len();
+    if spacing_m > largest_cell_m(layered.thickness_m) * (1.0 + 1e-12) {
+        return Err(CoatedContactError::TooThin {
+            thickness_m: layered.thickness_m,
+            cell_m: spacing_m,
+            needed_m: largest_cell_m(layered.thickness_m),
+        });
+    }
+    if cells < 8 || load_n_per_m.is_nan() || load_n_per_m <= 0.0 {
+        return Err(CoatedContactError::Contact(RoughContactError::Parameter {
+            name: "the load per unit length",
+            requirement: "must be positive on at least 8 cells",
+            value: load_n_per_m,
+        }));
+    }
+    let kernel = crate::coating::line::line_kernel(layered, counter_per_pa, cells, spacing_m)
+        .map_err(RoughContactError::from)?;
+    let (lowest, highest) = gap_m
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &g| {
+            (l.min(g), h.max(g))
+        });
+    let span = (highest - lowest).max(f64::MIN_POSITIVE);
+    let mut active: Vec<bool> = gap_m.iter().map(|&g| g <= lowest + 0.25 * span).collect();
+    let scale = kernel[0];
+    let tolerance = 1e-12 * span;
+    for iteration in 1..=LINE_ITERATIONS {
+        let set: Vec<usize> = (0..cells).filter(|&i| active[i]).collect();
+        let n = set.len() + 1;
+        let mut matrix = vec![0.0; n * n];
+        let mut rhs = vec![0.0; n];
+        for (r, &i) in set.iter().enumerate() {
+            for (c, &j) in set.iter().enumerate() {
+                matrix[r * n + c] = kernel[i.abs_diff(j)];
+            }
+            // The approach, in units of `scale` Pa.
+            matrix[r * n + n - 1] = -scale;
+            rhs[r] = -gap_m[i];
+        }
+        for c in 0..set.len() {
+            matrix[(n - 1) * n + c] = scale;
+        }
+        rhs[n - 1] = scale * load_n_per_m / spacing_m;
+        let x = solve_dense_row_major(matrix, rhs);
+        let mut pressure = vec![0.0; cells];
+        for (r, &i) in set.iter().enumerate() {
+            pressure[i] = x[r];
+        }
+        let approach = x[n - 1] * scale;
+        let mut changed = false;
+        for &i in &set {
+            if pressure[i] < 0.0 {
+                active[i] = false;
+                changed = true;
+            }
+        }
+        if !changed {
+            let outside: Vec<usize> = (0..cells).filter(|&i| !active[i]).collect();
+            for i in outside {
+                let displacement: f64 = set
+                    .iter()
+                    .map(|&j| kernel[i.abs_diff(j)] * pressure[j])
+                    .sum();
+                if gap_m[i] + displacement - approach < -tolerance {
+                    active[i] = true;
+                    changed = true;
+                }
+            }
+        }
+        if changed {
+            continue;
+        }
+        let first = set.first().copied().unwrap_or(0);
+        let last = set.last().copied().unwrap_or(0);
+        if set.is_empty() || first == 0 || last == cells - 1 {
+            return Err(CoatedContactError::LineAtEdge {
+                cell: if first == 0 { 0 } else { last },
+                cells,
+            });
+        }
+        let x_of = |i: usize| origin_m + i as f64 * spacing_m;
+        // p² linear towards the edge (doc of `edges_m`).
+        let edge = |outer: usize, inner: usize, outward: f64| {
+            let (p_outer, p_inner) = (pressure[outer].powi(2), pressure[inner].powi(2));
+            let step = if p_inner > p_outer {
+                (spacing_m * p_outer / (p_inner - p_outer)).min(spacing_m)
+            } else {
+                0.5 * spacing_m
+            };
+            x_of(outer) + outward * step
+        };
+        let left = if last > first {
+            edge(first, first + 1, -1.0)
+        } else {
+            x_of(first) - 0.5 * spacing_m
+        };
+        let right = if last > first {
+            edge(last, last - 1, 1.0)
+        } else {
+            x_of(last) + 0.5 * spacing_m
+        };
+        return Ok(LineSolution {
+            max_pressure_pa: pressure.iter().copied().fold(0.0, f64::max),
+            pressure_pa: pressure,
+            edges_m: [left, right],
+            half_width_m: 0.5 * (right - left),
+            relative_approach_m: approach,
+            iterations: iteration,
+        });
+    }
+    Err(CoatedContactError::LineNotConverged {
+        iterations: LINE_ITERATIONS,
+    })
 }
 
 /// The largest cell (m) a coating of `thickness_m` allows.
@@ -234,6 +432,164 @@ mod tests {
                 100.0 * ep
             );
             assert!(ea.abs() < 0.005 && ep.abs() < 0.01, "{ea} {ep}");
+        }
+    }
+
+    /// A cylinder (R = 10 mm) of compliance `counter` on the coated half-plane under `load`
+    /// (N/m), on cells of `spacing` over ±`extent_m`.
+    fn line_gridded(
+        layered: &Layered,
+        counter: f64,
+        load: f64,
+        spacing: f64,
+        extent_m: f64,
+    ) -> (LineSolution, Vec<f64>) {
+        let radius = 10e-3;
+        let n = (2.0 * extent_m / spacing).round() as usize;
+        let origin = -0.5 * (n as f64 - 1.0) * spacing;
+        let x: Vec<f64> = (0..n).map(|i| origin + i as f64 * spacing).collect();
+        let gap: Vec<f64> = x.iter().map(|x| x * x / (2.0 * radius)).collect();
+        let solved = solve_line(layered, counter, &gap, spacing, origin, load).expect("line solve");
+        (solved, x)
+    }
+
+    #[test]
+    fn equal_moduli_line_contact_gives_hertz() {
+        // Johnson §4.2: b = sqrt(4WR/(πE*)), p = p0 sqrt(1 - x²/b²), p0 = 2W/(πb).
+        let steel = Material {
+            modulus_pa: 210e9,
+            poisson: 0.3,
+        };
+        let layered = Layered {
+            coating: steel,
+            substrate: steel,
+            thickness_m: 20e-6,
+        };
+        let counter = 0.91 / 210e9;
+        let e_star = 210e9 / (2.0 * 0.91);
+        let b: f64 = 100e-6;
+        let load = std::f64::consts::PI * e_star * b * b / (4.0 * 10e-3);
+        let p0 = 2.0 * load / (std::f64::consts::PI * b);
+        let (solved, x) = line_gridded(&layered, counter, load, b / 50.0, 1.5 * b);
+        let profile = x
+            .iter()
+            .zip(&solved.pressure_pa)
+            .map(|(x, p)| (p - p0 * (1.0 - (x / b).powi(2)).max(0.0).sqrt()).abs())
+            .fold(0.0, f64::max)
+            / p0;
+        let (ep, eb) = (
+            solved.max_pressure_pa / p0 - 1.0,
+            solved.half_width_m / b - 1.0,
+        );
+        eprintln!("measured: equal moduli line contact (b/50 cells) against Hertz: peak pressure {:+.3} %, half-width {:+.3} %, profile {profile:.1e} p0 ({} iterations)", 100.0 * ep, 100.0 * eb, solved.iterations);
+        assert!(
+            ep.abs() < 2e-3 && eb.abs() < 5e-3 && profile < 2e-2,
+            "{ep} {eb} {profile}"
+        );
+    }
+
+    #[test]
+    fn coated_line_contact_agrees_with_the_fourier_reference() {
+        // Ec/Es = 2 and 0.5 on steel, h/b = 0.1, 0.5, 2, a rigid cylinder: peak pressure,
+        // half-width and the pressure profile of the 1-D solve against the plane-strain
+        // reference at the reference's load.
+        use crate::coating::line_reference::cylinder;
+        let steel = Material {
+            modulus_pa: 210e9,
+            poisson: 0.3,
+        };
+        let (radius, b) = (10e-3, 100e-6);
+        let (mut worst_p, mut worst_b, mut worst_profile) = (0.0f64, 0.0f64, 0.0f64);
+        for ratio in [2.0, 0.5] {
+            let coating = Material {
+                modulus_pa: ratio * 210e9,
+                poisson: 0.3,
+            };
+            for h_over_b in [0.1, 0.5, 2.0] {
+                let layered = Layered {
+                    coating,
+                    substrate: steel,
+                    thickness_m: h_over_b * b,
+                };
+                let reference = cylinder(&layered, 0.0, radius, b, 8);
+                let e1 = plane_strain_modulus(&coating);
+                let b_hertz =
+                    (4.0 * reference.load_n_per_m * radius / (std::f64::consts::PI * e1)).sqrt();
+                let p_hertz = 2.0 * reference.load_n_per_m / (std::f64::consts::PI * b_hertz);
+                let spacing = b / (2.0 / h_over_b).max(50.0);
+                let (solved, x) =
+                    line_gridded(&layered, 0.0, reference.load_n_per_m, spacing, 1.5 * b);
+                let profile = x
+                    .iter()
+                    .zip(&solved.pressure_pa)
+                    .map(|(x, p)| (p - reference.pressure_pa(*x)).abs())
+                    .fold(0.0, f64::max)
+                    / reference.max_pressure_pa;
+                let (ep, eb) = (
+                    solved.max_pressure_pa / reference.max_pressure_pa - 1.0,
+                    solved.half_width_m / b - 1.0,
+                );
+                eprintln!(
+                    "measured: line, Ec/Es = {ratio}, h/b = {h_over_b}: reference p/p0c = {:.4}, b/bc = {:.4} (residual {:.1e}); 1-D solve errors: peak {:+.3} %, half-width {:+.3} %, profile {profile:.1e} p",
+                    reference.max_pressure_pa / p_hertz,
+                    b / b_hertz,
+                    reference.residual,
+                    100.0 * ep,
+                    100.0 * eb
+                );
+                worst_p = worst_p.max(ep.abs());
+                worst_b = worst_b.max(eb.abs());
+                worst_profile = worst_profile.max(profile);
+            }
+        }
+        assert!(worst_p < 3e-3, "peak pressure {worst_p}");
+        assert!(worst_b < 5e-3, "half-width {worst_b}");
+        assert!(worst_profile < 2e-2, "profile {worst_profile}");
+    }
+
+    #[test]
+    fn coated_line_contact_limits_are_the_coatings_and_the_substrates_hertz() {
+        // h = 20 b: the coating's Hertz line contact (1-D solve); h/b = 0.002: the substrate's
+        // (reference, the grid would need 1000 cells per b).
+        use crate::coating::line_reference::cylinder;
+        let steel = Material {
+            modulus_pa: 210e9,
+            poisson: 0.3,
+        };
+        let radius = 10e-3;
+        for ratio in [2.0, 0.5] {
+            let coating = Material {
+                modulus_pa: ratio * 210e9,
+                poisson: 0.3,
+            };
+            let e1 = plane_strain_modulus(&coating);
+            let b: f64 = 100e-6;
+            let load = std::f64::consts::PI * e1 * b * b / (4.0 * radius);
+            let thick = Layered {
+                coating,
+                substrate: steel,
+                thickness_m: 20.0 * b,
+            };
+            let (solved, _) = line_gridded(&thick, 0.0, load, b / 50.0, 1.5 * b);
+            let p0 = 2.0 * load / (std::f64::consts::PI * b);
+            let (ep, eb) = (
+                solved.max_pressure_pa / p0 - 1.0,
+                solved.half_width_m / b - 1.0,
+            );
+            let thin = Layered {
+                coating,
+                substrate: steel,
+                thickness_m: 0.002 * b,
+            };
+            let reference = cylinder(&thin, 0.0, radius, b, 6);
+            let e2 = plane_strain_modulus(&steel);
+            let b_sub =
+                (4.0 * reference.load_n_per_m * radius / (std::f64::consts::PI * e2)).sqrt();
+            let p_sub = 2.0 * reference.load_n_per_m / (std::f64::consts::PI * b_sub);
+            let (tp, tb) = (reference.max_pressure_pa / p_sub - 1.0, b / b_sub - 1.0);
+            eprintln!("measured: line, Ec/Es = {ratio}: h = 20b against the coating's Hertz: peak {:+.3} %, half-width {:+.3} %; h/b = 0.002 against the substrate's: peak {:+.3} %, half-width {:+.3} %", 100.0 * ep, 100.0 * eb, 100.0 * tp, 100.0 * tb);
+            assert!(ep.abs() < 3e-3 && eb.abs() < 5e-3, "{ep} {eb}");
+            assert!(tp.abs() < 5e-3 && tb.abs() < 5e-3, "{tp} {tb}");
         }
     }
 

@@ -62,8 +62,19 @@ fn material_name(material: &crate::contact::material::Material) -> String {
     }
 }
 
+/// The depth the figure of `study` draws to, m: `max(2a, h + a)`.
+pub fn drawn_depth_m(study: &CoatedStudy) -> f64 {
+    let a = study.hertz_semi_axes_m[0];
+    (2.0 * a).max(study.spec.thickness_m + a)
+}
+
 /// The figure (module doc).
 pub fn coated_figure(scene: &Scene, study: &CoatedStudy) -> Figure {
+    coated_figure_to_depth(scene, study, drawn_depth_m(study))
+}
+
+/// The figure drawn to the depth `z_end_m` (a sweep's steps share one frame).
+pub fn coated_figure_to_depth(scene: &Scene, study: &CoatedStudy, z_end_m: f64) -> Figure {
     let section = &study.section;
     let a = study.hertz_semi_axes_m[0];
     let h = study.spec.thickness_m;
@@ -72,7 +83,7 @@ pub fn coated_figure(scene: &Scene, study: &CoatedStudy) -> Figure {
     let columns: Vec<usize> = (0..section.x_m.len())
         .filter(|&i| section.x_m[i] >= x_min && section.x_m[i] <= x_max)
         .collect();
-    let z_end = (2.0 * a).max(h + a);
+    let z_end = z_end_m;
     let mut values = Array2::zeros((ROWS, columns.len()));
     for r in 0..ROWS {
         let z = z_end * r as f64 / (ROWS - 1) as f64;

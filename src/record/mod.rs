@@ -24,7 +24,8 @@
 //!   shaded by the pressure), `volume/maximum`, `volume/surface` (the box's top face).
 //! - `log`: one line per step.
 //!
-//! Rough and surface scenes are recorded by [`rough`]; speed sweeps (`parameter = "peclet"`,
+//! Rough and surface scenes are recorded by [`rough`]; coated scenes (and their
+//! coating-thickness sweeps) by [`coated`]; speed sweeps (`parameter = "peclet"`,
 //! scenes with `[thermal]`: `surface`, `section`, `charts/...` and `series/...` of body 1's
 //! flash temperature) by [`thermal`].
 //!
@@ -36,6 +37,7 @@
 //! Uses: [`crate::study`], [`crate::figure`], [`crate::render`], [`crate::report`] and the
 //! scene; it draws what they computed.
 
+mod coated;
 mod isosurface;
 mod layout;
 mod panels;
@@ -261,12 +263,13 @@ fn is_speed_sweep(scene: &Scene) -> bool {
 }
 
 /// Grid rows a recording of `scene` evaluates (its sections at every step), for progress;
-/// recordings of rough and surface scenes and speed sweeps report none.
+/// recordings of rough, surface and coated scenes and speed sweeps report none.
 pub fn rows(scene: &Scene) -> usize {
     if matches!(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
     ) || is_speed_sweep(scene)
+        || scene.contact.coating.is_some()
     {
         return 0;
     }
@@ -325,6 +328,10 @@ fn record_with(
         ContactKind::Rough | ContactKind::Surface
     ) {
         return rough::record(scene, stream, live, flush, solved);
+    }
+    if scene.contact.coating.is_some() {
+        // A coated body's section, from its study (never the homogeneous panels).
+        return coated::record(scene, stream, live, flush);
     }
     if is_speed_sweep(scene) {
         return thermal::record(scene, stream, live, flush);

@@ -44,6 +44,10 @@ pub(super) fn parameter_axis(scene: &Scene) -> Option<(String, Vec<f64>)> {
             sweep.values.clone(),
         ),
         SweepParameter::Peclet => ("Pe".into(), sweep.values.clone()),
+        SweepParameter::CoatingThickness => (
+            "h (µm)".into(),
+            sweep.values.iter().map(|v| v * 1e6).collect(),
+        ),
     })
 }
 

@@ -2,8 +2,10 @@
 //! `[contact.body1.coating]`): a readable table, and the values of the JSON contract.
 //!
 //! JSON (SI; [`CoatedReport::json_fields`] for the keys of `hertz --json`):
-//! `"max_pressure_pa"`, `"contact_radius_m"` (point: `sqrt(area/π)`), `"contact_area_m2"`,
-//! `"approach_m"`, `"von_mises_max_pa"`, `"von_mises_max_depth_m"`, and `"coating"`
+//! `"max_pressure_pa"`, `"contact_radius_m"` (point: `sqrt(area/π)`) or `"half_width_m"`
+//! (line), `"contact_area_m2"` (point and elliptical), `"approach_m"` (`null` for a line
+//! contact, whose displacements a plane problem defines only up to a constant),
+//! `"von_mises_max_pa"`, `"von_mises_max_depth_m"`, and `"coating"`
 //! ([`CoatingJson`], [`CoatedReport::json`]): `{"thickness_m", "von_mises_max_pa",
 //! "interface_shear_max_pa", "interface_normal_min_pa", "substrate_von_mises_max_pa"}`.
 
@@ -34,8 +36,14 @@ pub struct CoatedJson {
     /// Point contacts: `sqrt(area / π)`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub contact_radius_m: Option<f64>,
-    pub contact_area_m2: f64,
-    pub approach_m: f64,
+    /// Line contacts: half the distance between the refined edges.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub half_width_m: Option<f64>,
+    /// Point and elliptical contacts.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_area_m2: Option<f64>,
+    /// `null` for a line contact.
+    pub approach_m: Option<f64>,
     pub von_mises_max_pa: f64,
     pub von_mises_max_depth_m: f64,
     pub coating: CoatingJson,
@@ -52,11 +60,12 @@ impl CoatedReport {
         let m = &study.maxima;
         Self {
             fields: CoatedJson {
-                max_pressure_pa: study.solution.max_pressure_pa,
+                max_pressure_pa: study.solution.max_pressure_pa(),
                 contact_radius_m: (study.kind == ContactKind::Point)
                     .then_some(study.contact_radius_m),
-                contact_area_m2: study.contact_area_m2,
-                approach_m: study.solution.approach_m,
+                half_width_m: (study.kind == ContactKind::Line).then_some(study.semi_axes_m[0]),
+                contact_area_m2: (study.kind != ContactKind::Line).then_some(study.contact_area_m2),
+                approach_m: study.solution.approach_m(),
                 von_mises_max_pa: m.von_mises.value_pa,
                 von_mises_max_depth_m: m.von_mises.z_m,
                 coating: CoatingJson {
@@ -112,10 +121,12 @@ impl CoatedReport {
                 format!("(1 - ν²)/E = {:.4e} 1/Pa", spec.counter_per_pa)
             }
         );
+        let line = study.kind == ContactKind::Line;
         let _ = writeln!(
             out,
-            "load                         W  = {} N, friction μ = {}",
+            "load                         W  = {} {}, friction μ = {}",
             crate::io::text::approx(study.load_n),
+            if line { "N/m" } else { "N" },
             study.friction
         );
         let _ = writeln!(
@@ -134,20 +145,35 @@ impl CoatedReport {
             "h / a                        {:.4}",
             spec.thickness_m / a
         );
-        let _ = writeln!(
-            out,
-            "coated contact (DC-FFT, {} x {} cells of {:.3} µm, layered influence coefficients):",
-            study.solution.pressure_pa.dim().1,
-            study.solution.pressure_pa.dim().0,
-            study.spacing_m[0] * 1e6
-        );
+        let [nx, ny] = study.solution.grid();
+        if line {
+            let _ = writeln!(
+                out,
+                "coated line contact (plane strain, {nx} strips of {:.3} µm, layered influence coefficients, active set):",
+                study.spacing_m[0] * 1e6
+            );
+        } else {
+            let _ = writeln!(
+                out,
+                "coated contact (DC-FFT, {nx} x {ny} cells of {:.3} µm, layered influence coefficients):",
+                study.spacing_m[0] * 1e6
+            );
+        }
+        let peak = study.solution.max_pressure_pa();
         let _ = writeln!(
             out,
             "  peak pressure              {:.2} MPa ({:.4} p0)",
-            mpa(study.solution.max_pressure_pa),
-            study.solution.max_pressure_pa / p0
+            mpa(peak),
+            peak / p0
         );
-        if study.kind == ContactKind::Point {
+        if line {
+            let _ = writeln!(
+                out,
+                "  half-width                 {:.3} µm ({:.4} a)",
+                study.semi_axes_m[0] * 1e6,
+                study.semi_axes_m[0] / a
+            );
+        } else if study.kind == ContactKind::Point {
             let _ = writeln!(
                 out,
                 "  contact radius sqrt(A/π)   {:.3} µm ({:.4} a)",
@@ -162,16 +188,16 @@ impl CoatedReport {
                 study.semi_axes_m[1] * 1e6
             );
         }
-        let _ = writeln!(
-            out,
-            "  contact area               {:.4e} mm²",
-            study.contact_area_m2 * 1e6
-        );
-        let _ = writeln!(
-            out,
-            "  approach                   {:.4} µm",
-            study.solution.approach_m * 1e6
-        );
+        if !line {
+            let _ = writeln!(
+                out,
+                "  contact area               {:.4e} mm²",
+                study.contact_area_m2 * 1e6
+            );
+        }
+        if let Some(approach) = study.solution.approach_m() {
+            let _ = writeln!(out, "  approach                   {:.4} µm", approach * 1e6);
+        }
         let m = &study.maxima;
         let _ = writeln!(out, "stress maxima in the plane of sliding (y = 0):");
         let rows = [

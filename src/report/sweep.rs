@@ -9,7 +9,12 @@
 //!   as the recording's `series/<k>/...`;
 //! - a rough scene's load sweep: `load_n`, `contact_fraction`, `spots`, `max_pressure_pa`;
 //! - a speed sweep (`parameter = "peclet"`): `peclet`, `sliding_speed_m_per_s`,
-//!   `max_temperature_rise_k`, `mean_temperature_rise_k`, `max_x_over_a`, `body1_share`.
+//!   `max_temperature_rise_k`, `mean_temperature_rise_k`, `max_x_over_a`, `body1_share`;
+//! - a coating-thickness sweep (`parameter = "coating_thickness"`): `coating_thickness_m`,
+//!   `max_pressure_pa`, `von_mises_max_pa`, `von_mises_max_depth_m`,
+//!   `max_depth_over_thickness` (below 1: in the coating, 1: at the interface, above: in the
+//!   substrate), `coating_von_mises_max_pa`, `substrate_von_mises_max_pa`,
+//!   `interface_shear_max_pa` (as the recording's charts).
 //!
 //! A value a step does not have (an extreme the figure does not mark) is `null` in JSON and
 //! empty in CSV. JSON: `{"scene", "parameter", "units": {column: unit}, "steps": [{column:
@@ -92,6 +97,34 @@ pub fn sweep_table(
                 Some(solution.max_pressure_pa),
             ]);
             on_step(k + 1, steps);
+        }
+        return Ok(table);
+    }
+    if sweep.parameter == SweepParameter::CoatingThickness {
+        let studies = study::coated::sweep(scene, on_step).map_err(|e| step_error(0, e))?;
+        table.columns = vec![
+            column("coating_thickness_m", "m"),
+            column("max_pressure_pa", "Pa"),
+            column("von_mises_max_pa", "Pa"),
+            column("von_mises_max_depth_m", "m"),
+            column("max_depth_over_thickness", "h"),
+            column("coating_von_mises_max_pa", "Pa"),
+            column("substrate_von_mises_max_pa", "Pa"),
+            column("interface_shear_max_pa", "Pa"),
+        ];
+        for step in &studies {
+            let m = &step.maxima;
+            let h = step.spec.thickness_m;
+            table.rows.push(vec![
+                Some(h),
+                Some(step.solution.max_pressure_pa()),
+                Some(m.von_mises.value_pa),
+                Some(m.von_mises.z_m),
+                Some(m.von_mises.z_m / h),
+                Some(m.coating_von_mises.value_pa),
+                Some(m.substrate_von_mises.value_pa),
+                Some(m.interface_shear.value_pa),
+            ]);
         }
         return Ok(table);
     }

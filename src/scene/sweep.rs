@@ -24,6 +24,10 @@ pub enum SweepParameter {
     /// flux `q = μ p V` grows with it. Values from `from`/`to`/`steps` are spaced
     /// geometrically (Pe 0.1 to 100 is three decades).
     Peclet,
+    /// The thickness of body 1's coating (m; coated scenes), at fixed load: the maximum
+    /// travelling between the substrate, the interface and the layer. Values from
+    /// `from`/`to`/`steps` (in the figure's length unit) are spaced geometrically.
+    CoatingThickness,
 }
 
 impl SweepParameter {
@@ -33,6 +37,7 @@ impl SweepParameter {
             "load" => Some(Self::Load),
             "position" => Some(Self::Position),
             "peclet" => Some(Self::Peclet),
+            "coating_thickness" => Some(Self::CoatingThickness),
             _ => None,
         }
     }
@@ -44,6 +49,7 @@ impl SweepParameter {
             Self::Load => "load",
             Self::Position => "position",
             Self::Peclet => "peclet",
+            Self::CoatingThickness => "coating_thickness",
         }
     }
 }
@@ -53,7 +59,7 @@ impl SweepParameter {
 pub struct Sweep {
     pub parameter: SweepParameter,
     /// Friction coefficients; loads in N/m (line) or N (point); positions in the figure's
-    /// length unit; body 1's Péclet numbers.
+    /// length unit; body 1's Péclet numbers; coating thicknesses in m.
     pub values: Vec<f64>,
     /// Material points `(x, z)` (figure length unit, body frame, in the plane of the section)
     /// whose stresses are recorded at every step: the stress history as the load passes.
@@ -92,6 +98,12 @@ impl Sweep {
                     "x0 = {}{}",
                     compact(value),
                     scene.figure.length_unit.suffix()
+                )
+            }
+            SweepParameter::CoatingThickness => {
+                format!(
+                    "h = {} µm",
+                    crate::io::text::significant(value * 1e6, 3, 1e6, true)
                 )
             }
             SweepParameter::Peclet => {

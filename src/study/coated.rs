@@ -22,9 +22,10 @@
 use ndarray::Array2;
 use rayon::prelude::*;
 
+use crate::coating::line::LineStress;
 use crate::coating::stress::LayeredStress;
 use crate::coating::{Layered, Side};
-use crate::contact::coated::{self, CoatedContactError};
+use crate::contact::coated::{self, CoatedContactError, LineSolution};
 use crate::contact::rough::{self, Control, RoughContactProblem, RoughSolution};
 use crate::operator::elastic::Periodicity;
 use crate::scene::{CoatingSpec, Hertz};
@@ -34,6 +35,10 @@ use crate::stress::Stress;
 /// The most cells per side a coated scene takes (its kernel is built on a grid four times as
 /// wide: 1024 cells need about 0.6 GB).
 pub const MAX_CELLS: usize = 1024;
+
+/// The most strips a coated line contact takes (its active set solves a dense system over the
+/// strips in contact: 4096 strips over ±2b, about 2048 in contact, take some seconds).
+pub const MAX_LINE_CELLS: usize = 4096;
 
 /// Why a coated scene cannot be computed.
 #[derive(Debug, thiserror::Error)]
@@ -47,14 +52,20 @@ pub enum CoatedStudyError {
         extent: String,
         cells_needed: usize,
     },
-    #[error("numerical.cells: a coated scene takes at most {MAX_CELLS} cells per side, and this coating needs {cells_needed} over ±{extent} semi-axes\nhint: lower numerical.extent (the contact must stay inside it), or raise the load: the coating must be at least {MAX_CELLS}th of the grid's width / 2")]
-    TooManyCells { cells_needed: usize, extent: String },
-    #[error("a coated scene needs a point or elliptical contact with bodies and a load")]
+    #[error("numerical.cells: a coated scene takes at most {max_cells} cells (per side), and this coating needs {cells_needed} over ±{extent} semi-axes\nhint: lower numerical.extent (the contact must stay inside it), or raise the load: the coating must be at least {max_cells}th of the grid's width / 2")]
+    TooManyCells {
+        max_cells: usize,
+        cells_needed: usize,
+        extent: String,
+    },
+    #[error("a coated scene needs a line, point or elliptical contact with bodies and a load")]
     NotDimensional,
     #[error(transparent)]
     Contact(#[from] CoatedContactError),
     #[error(transparent)]
     Transform(#[from] crate::operator::transform::TransformError),
+    #[error("sweep step {step}: {message}")]
+    Step { step: usize, message: String },
 }
 
 /// A stress value and its place (m; `y` is 0: the plane of sliding).
@@ -117,28 +128,114 @@ pub struct CoatedSection {
     pub pressure_pa: Vec<f64>,
 }
 
+/// The solved contact of a coated scene.
+#[derive(Clone, Debug)]
+pub enum CoatedSolution {
+    /// Point and elliptical contacts: the 2-D grid of the DC-FFT solver.
+    Surface(RoughSolution),
+    /// Line contacts: the 1-D grid of [`crate::contact::coated::solve_line`].
+    Line(LineSolution),
+}
+
+impl CoatedSolution {
+    pub fn max_pressure_pa(&self) -> f64 {
+        match self {
+            Self::Surface(s) => s.max_pressure_pa,
+            Self::Line(l) => l.max_pressure_pa,
+        }
+    }
+
+    /// The approach of distant points of the bodies, m; `None` for a line contact (a plane
+    /// problem's displacements are defined up to a constant).
+    pub fn approach_m(&self) -> Option<f64> {
+        match self {
+            Self::Surface(s) => Some(s.approach_m),
+            Self::Line(_) => None,
+        }
+    }
+
+    /// `[nx, ny]` cells (`ny = 1` for a line contact).
+    pub fn grid(&self) -> [usize; 2] {
+        match self {
+            Self::Surface(s) => [s.pressure_pa.dim().1, s.pressure_pa.dim().0],
+            Self::Line(l) => [l.pressure_pa.len(), 1],
+        }
+    }
+}
+
 /// A coated scene, computed.
 #[derive(Clone, Debug)]
 pub struct CoatedStudy {
     pub spec: CoatingSpec,
     pub kind: ContactKind,
     pub friction: f64,
+    /// N (point, elliptical) or N/m (line).
     pub load_n: f64,
-    /// The coating's Hertz contact: semi-axes along x and y, peak pressure.
+    /// The coating's Hertz contact: semi-axes along x and y (a line contact's half-width
+    /// twice), peak pressure.
     pub hertz_semi_axes_m: [f64; 2],
     pub hertz_p0_pa: f64,
+    /// Cell sides along x and y (a line contact's strips: the width twice).
     pub spacing_m: [f64; 2],
-    pub solution: RoughSolution,
+    pub solution: CoatedSolution,
+    /// Point and elliptical contacts: the loaded cells' area, m² (0 for a line contact).
     pub contact_area_m2: f64,
-    /// `sqrt(area / π)`.
+    /// `sqrt(area / π)` (0 for a line contact).
     pub contact_radius_m: f64,
-    /// Half the contact's extent along x and along y through the centre, m.
+    /// Half the contact's extent along x and along y through the centre, m (a line contact:
+    /// its half-width, from the refined edges of [`LineSolution::edges_m`], twice).
     pub semi_axes_m: [f64; 2],
     pub maxima: CoatedMaxima,
     pub section: CoatedSection,
     /// Wall-clock seconds of the contact solve and of the stresses.
     pub solve_seconds: f64,
     pub stress_seconds: f64,
+}
+
+/// The grid of a coated scene: `cells` over ±`extent` semi-axes `semi_axis_m` (the larger),
+/// refused when coarser than the coating allows (module doc).
+fn check_grid(
+    spec: &CoatingSpec,
+    cells: usize,
+    extent: f64,
+    semi_axis_m: f64,
+    max_cells: usize,
+) -> Result<f64, CoatedStudyError> {
+    let spacing = 2.0 * extent * semi_axis_m / cells as f64;
+    let h = spec.thickness_m;
+    let largest = coated::largest_cell_m(h);
+    let um = |m: f64| crate::io::text::approx(m * 1e6);
+    if spacing > largest * (1.0 + 1e-12) {
+        let needed = (2.0 * extent * semi_axis_m / largest).ceil() as usize;
+        if needed > max_cells {
+            return Err(CoatedStudyError::TooManyCells {
+                max_cells,
+                cells_needed: needed,
+                extent: crate::io::text::approx(extent),
+            });
+        }
+        return Err(CoatedStudyError::GridTooCoarse {
+            thickness_um: um(h),
+            needed_um: um(largest),
+            cell_um: um(spacing),
+            cells,
+            extent: crate::io::text::approx(extent),
+            cells_needed: needed,
+        });
+    }
+    Ok(spacing)
+}
+
+/// What the contact solve hands the stresses: the solution, the section's cell centres, the
+/// pressure along it, the loaded area and the contact's semi-axes.
+struct Solved {
+    solution: CoatedSolution,
+    spacing_m: [f64; 2],
+    x_m: Vec<f64>,
+    pressure_pa: Vec<f64>,
+    contact_area_m2: f64,
+    semi_axes_m: [f64; 2],
+    rows: Vec<Array2<f64>>,
 }
 
 /// The coated contact and its stresses (module doc).
@@ -151,90 +248,198 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
         .contact
         .dimensional
         .ok_or(CoatedStudyError::NotDimensional)?;
-    let (semi_axes, curvature, p0, load) = match dimensional.hertz {
-        Hertz::Point(point) => {
-            let c = 0.5 / point.effective_radius_m;
-            ([point.radius_m; 2], [c, c], point.p0_pa, point.load_n)
-        }
-        Hertz::Elliptical(e) => (
-            [e.semi_axis_x_m, e.semi_axis_y_m],
-            [
-                e.curvature.half_curvature_x_per_m,
-                e.curvature.half_curvature_y_per_m,
-            ],
-            e.p0_pa,
-            e.load_n,
-        ),
-        Hertz::Line(_) => return Err(CoatedStudyError::NotDimensional),
-    };
+    let friction = scene.contact.friction;
+    let layered = spec.layered();
     let cells = scene.numerical.cells;
     let extent = scene.numerical.extent_over_a;
-    let spacing = semi_axes.map(|s| 2.0 * extent * s / cells as f64);
-    let h = spec.thickness_m;
-    let largest = coated::largest_cell_m(h);
-    let coarsest = spacing[0].max(spacing[1]);
-    let um = |m: f64| crate::io::text::approx(m * 1e6);
-    if coarsest > largest * (1.0 + 1e-12) {
-        let needed = (2.0 * extent * semi_axes[0].max(semi_axes[1]) / largest).ceil() as usize;
-        if needed > MAX_CELLS {
-            return Err(CoatedStudyError::TooManyCells {
-                cells_needed: needed,
-                extent: crate::io::text::approx(extent),
-            });
-        }
-        return Err(CoatedStudyError::GridTooCoarse {
-            thickness_um: um(h),
-            needed_um: um(largest),
-            cell_um: um(coarsest),
-            cells,
-            extent: crate::io::text::approx(extent),
-            cells_needed: needed,
-        });
-    }
-    let shape = [cells, cells];
-    let origin = [
-        -extent * semi_axes[0] + 0.5 * spacing[0],
-        -extent * semi_axes[1] + 0.5 * spacing[1],
-    ];
-    let heights = super::coupled::paraboloid(shape, spacing, origin, curvature);
-    let layered = spec.layered();
-    let e_far = 1.0
-        / ((1.0 - spec.substrate.poisson.powi(2)) / spec.substrate.modulus_pa
-            + spec.counter_per_pa);
-    let problem = RoughContactProblem {
-        heights_m: heights.view(),
-        spacing_m: spacing,
-        e_star_pa: e_far,
-        periodicity: Periodicity::NonPeriodic,
-        control: Control::Load { newtons: load },
-        hardness_pa: None,
-        tolerance: rough::DEFAULT_TOLERANCE,
-        max_iterations: rough::DEFAULT_MAX_ITERATIONS,
-        memory_limit_bytes: crate::field::memory_limit_bytes(),
+    let (semi_axes, p0, load) = match dimensional.hertz {
+        Hertz::Point(point) => ([point.radius_m; 2], point.p0_pa, point.load_n),
+        Hertz::Elliptical(e) => ([e.semi_axis_x_m, e.semi_axis_y_m], e.p0_pa, e.load_n),
+        Hertz::Line(line) => ([line.half_width_m; 2], line.p0_pa, line.load_n_per_m),
     };
+    let depths = |spacing: f64| depths(&layered, spacing, semi_axes[0].max(semi_axes[1]));
+    let solve_started = std::time::Instant::now();
+    let (solved, depths, mut stress_seconds) = match dimensional.hertz {
+        Hertz::Line(line) => {
+            let d = check_grid(&spec, cells, extent, semi_axes[0], MAX_LINE_CELLS)?;
+            let origin = -extent * semi_axes[0] + 0.5 * d;
+            let x_m: Vec<f64> = (0..cells).map(|i| origin + i as f64 * d).collect();
+            let gap: Vec<f64> = x_m
+                .iter()
+                .map(|x| x * x / (2.0 * line.effective_radius_m))
+                .collect();
+            let solution =
+                coated::solve_line(&layered, spec.counter_per_pa, &gap, d, origin, load)?;
+            let started = std::time::Instant::now();
+            let shear: Vec<f64> = solution.pressure_pa.iter().map(|p| friction * p).collect();
+            let field = LineStress::new(
+                layered,
+                &solution.pressure_pa,
+                (friction != 0.0).then_some(&shear[..]),
+                d,
+            )?;
+            let depths = depths(d);
+            let rows = depths
+                .par_iter()
+                .map(|&(z, side)| field.at_depth(z, side))
+                .collect::<Result<Vec<_>, _>>()?;
+            let stress_seconds = started.elapsed().as_secs_f64();
+            let half_width = solution.half_width_m;
+            (
+                Solved {
+                    pressure_pa: solution.pressure_pa.clone(),
+                    solution: CoatedSolution::Line(solution),
+                    spacing_m: [d, d],
+                    x_m,
+                    contact_area_m2: 0.0,
+                    semi_axes_m: [half_width; 2],
+                    rows,
+                },
+                depths,
+                stress_seconds,
+            )
+        }
+        Hertz::Point(_) | Hertz::Elliptical(_) => {
+            let curvature = match dimensional.hertz {
+                Hertz::Elliptical(e) => [
+                    e.curvature.half_curvature_x_per_m,
+                    e.curvature.half_curvature_y_per_m,
+                ],
+                Hertz::Point(point) => [0.5 / point.effective_radius_m; 2],
+                Hertz::Line(_) => return Err(CoatedStudyError::NotDimensional),
+            };
+            check_grid(
+                &spec,
+                cells,
+                extent,
+                semi_axes[0].max(semi_axes[1]),
+                MAX_CELLS,
+            )?;
+            let spacing = semi_axes.map(|s| 2.0 * extent * s / cells as f64);
+            let shape = [cells, cells];
+            let origin = [
+                -extent * semi_axes[0] + 0.5 * spacing[0],
+                -extent * semi_axes[1] + 0.5 * spacing[1],
+            ];
+            let heights = super::coupled::paraboloid(shape, spacing, origin, curvature);
+            let e_far = 1.0
+                / ((1.0 - spec.substrate.poisson.powi(2)) / spec.substrate.modulus_pa
+                    + spec.counter_per_pa);
+            let problem = RoughContactProblem {
+                heights_m: heights.view(),
+                spacing_m: spacing,
+                e_star_pa: e_far,
+                periodicity: Periodicity::NonPeriodic,
+                control: Control::Load { newtons: load },
+                hardness_pa: None,
+                tolerance: rough::DEFAULT_TOLERANCE,
+                max_iterations: rough::DEFAULT_MAX_ITERATIONS,
+                memory_limit_bytes: crate::field::memory_limit_bytes(),
+            };
+            let solution = coated::solve(&problem, &layered, spec.counter_per_pa, &mut |_, _| {})?;
+            let started = std::time::Instant::now();
+            let pressure = &solution.pressure_pa;
+            let shear = pressure.mapv(|p| friction * p);
+            let layers = LayeredStress::new(
+                layered,
+                pressure.view(),
+                (friction != 0.0).then_some(shear.view()),
+                spacing,
+                false,
+            )?;
+            let depths = depths(spacing[0]);
+            let centre_row = cells / 2;
+            let rows: Vec<Array2<f64>> = depths
+                .par_iter()
+                .map(|&(z, side)| layers.row(centre_row, z, side))
+                .collect();
+            let stress_seconds = started.elapsed().as_secs_f64();
+            let x_m: Vec<f64> = (0..cells)
+                .map(|i| origin[0] + i as f64 * spacing[0])
+                .collect();
+            let contact_cells = pressure.iter().filter(|&&p| p > 0.0).count();
+            let extent_along = |line: Vec<f64>, d: f64| {
+                let count = line.iter().filter(|&&p| p > 0.0).count();
+                0.5 * count as f64 * d
+            };
+            let semi_axes_m = [
+                extent_along(pressure.row(centre_row).to_vec(), spacing[0]),
+                extent_along(pressure.column(cells / 2).to_vec(), spacing[1]),
+            ];
+            (
+                Solved {
+                    pressure_pa: pressure.row(centre_row).to_vec(),
+                    contact_area_m2: contact_cells as f64 * spacing[0] * spacing[1],
+                    solution: CoatedSolution::Surface(solution),
+                    spacing_m: spacing,
+                    x_m,
+                    semi_axes_m,
+                    rows,
+                },
+                depths,
+                stress_seconds,
+            )
+        }
+    };
+    let solve_seconds = solve_started.elapsed().as_secs_f64() - stress_seconds;
     let started = std::time::Instant::now();
-    let solution = coated::solve(&problem, &layered, spec.counter_per_pa, &mut |_, _| {})?;
-    let solve_seconds = started.elapsed().as_secs_f64();
-    let started = std::time::Instant::now();
-    let friction = scene.contact.friction;
-    let pressure = &solution.pressure_pa;
-    let shear = pressure.mapv(|p| friction * p);
-    let layers = LayeredStress::new(
-        layered,
-        pressure.view(),
-        (friction != 0.0).then_some(shear.view()),
-        spacing,
-        false,
-    )?;
-    let depths = depths(&layered, spacing[0], semi_axes[0].max(semi_axes[1]));
-    let centre_row = cells / 2;
-    let rows: Vec<Array2<f64>> = depths
-        .par_iter()
-        .map(|&(z, side)| layers.row(centre_row, z, side))
-        .collect();
-    let x_m: Vec<f64> = (0..cells)
-        .map(|i| origin[0] + i as f64 * spacing[0])
-        .collect();
+    let (maxima, von_mises) = maxima_of(&depths, &solved.rows, &solved.x_m, spec.thickness_m);
+    stress_seconds += started.elapsed().as_secs_f64();
+    Ok(CoatedStudy {
+        spec,
+        kind: scene.contact.kind,
+        friction,
+        load_n: load,
+        hertz_semi_axes_m: semi_axes,
+        hertz_p0_pa: p0,
+        spacing_m: solved.spacing_m,
+        contact_area_m2: solved.contact_area_m2,
+        contact_radius_m: (solved.contact_area_m2 / std::f64::consts::PI).sqrt(),
+        semi_axes_m: solved.semi_axes_m,
+        maxima,
+        section: CoatedSection {
+            x_m: solved.x_m,
+            z_m: depths.iter().map(|d| d.0).collect(),
+            sides: depths.iter().map(|d| d.1).collect(),
+            von_mises_pa: von_mises,
+            pressure_pa: solved.pressure_pa,
+        },
+        solution: solved.solution,
+        solve_seconds,
+        stress_seconds,
+    })
+}
+
+/// Every step of a coated scene's sweep (`[sweep] parameter = "coating_thickness"`), each
+/// solved as [`solve`] does (the layered kernels depend on the thickness: built once per
+/// step); the scene itself as one step without a sweep. `on_step(done, total)` after each.
+pub fn sweep(
+    scene: &Scene,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<Vec<CoatedStudy>, CoatedStudyError> {
+    let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
+    let mut out = Vec::with_capacity(steps);
+    for k in 0..steps {
+        let stepped = super::at_step(scene, k).map_err(|e| CoatedStudyError::Step {
+            step: k + 1,
+            message: e.to_string(),
+        })?;
+        out.push(solve(&stepped).map_err(|e| CoatedStudyError::Step {
+            step: k + 1,
+            message: e.to_string(),
+        })?);
+        on_step(k + 1, steps);
+    }
+    Ok(out)
+}
+
+/// The maxima of the rows (`[component, x]` at each of `depths`) and the von Mises section.
+fn maxima_of(
+    depths: &[(f64, Side)],
+    rows: &[Array2<f64>],
+    x_m: &[f64],
+    h: f64,
+) -> (CoatedMaxima, Array2<f64>) {
     let mut maxima = CoatedMaxima {
         von_mises: Located::NONE,
         coating_von_mises: Located::NONE,
@@ -246,8 +451,8 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
         interface_normal_max: Located::NONE,
         surface_tension: Located::NONE,
     };
-    let mut von_mises = Array2::zeros((depths.len(), cells));
-    for (r, ((z, side), row)) in depths.iter().zip(&rows).enumerate() {
+    let mut von_mises = Array2::zeros((depths.len(), x_m.len()));
+    for (r, ((z, side), row)) in depths.iter().zip(rows).enumerate() {
         for (i, &x) in x_m.iter().enumerate() {
             let s = Stress {
                 xx: row[[0, i]],
@@ -290,41 +495,7 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
             }
         }
     }
-    let stress_seconds = started.elapsed().as_secs_f64();
-    let cell_area = spacing[0] * spacing[1];
-    let contact_cells = pressure.iter().filter(|&&p| p > 0.0).count();
-    let contact_area_m2 = contact_cells as f64 * cell_area;
-    let extent_along = |line: Vec<f64>, d: f64| {
-        let count = line.iter().filter(|&&p| p > 0.0).count();
-        0.5 * count as f64 * d
-    };
-    let semi_axes_m = [
-        extent_along(pressure.row(centre_row).to_vec(), spacing[0]),
-        extent_along(pressure.column(cells / 2).to_vec(), spacing[1]),
-    ];
-    Ok(CoatedStudy {
-        spec,
-        kind: scene.contact.kind,
-        friction,
-        load_n: load,
-        hertz_semi_axes_m: semi_axes,
-        hertz_p0_pa: p0,
-        spacing_m: spacing,
-        contact_area_m2,
-        contact_radius_m: (contact_area_m2 / std::f64::consts::PI).sqrt(),
-        semi_axes_m,
-        maxima,
-        section: CoatedSection {
-            x_m,
-            z_m: depths.iter().map(|d| d.0).collect(),
-            sides: depths.iter().map(|d| d.1).collect(),
-            von_mises_pa: von_mises,
-            pressure_pa: pressure.row(centre_row).to_vec(),
-        },
-        solution,
-        solve_seconds,
-        stress_seconds,
-    })
+    (maxima, von_mises)
 }
 
 /// The depths sampled (module doc), with their side of the interface.
@@ -414,11 +585,15 @@ mod tests {
             let message = error_of(&text);
             assert!(message.contains(key), "{key}: {message}");
         }
-        // A coating on a line contact and on body 2 only.
-        let line = scene_text("thickness = \"2 um\"\nmaterial = \"boron_carbide\"", "")
-            .replace("kind = \"point\"", "kind = \"line\"")
-            .replace("load = \"5 N\"", "load = \"5 kN/m\"");
-        assert!(error_of(&line).contains("contact.body1.coating"));
+        // A coating on a line contact is taken, with numerical.extent; on body 2 only refused.
+        let line = scene_text(
+            "thickness = \"2 um\"\nmaterial = \"boron_carbide\"",
+            "[numerical]\nextent = 3\n",
+        )
+        .replace("kind = \"point\"", "kind = \"line\"")
+        .replace("load = \"5 N\"", "load = \"5 kN/m\"");
+        let scene = Scene::parse(&line, "test", "test.toml").expect("a coated line contact");
+        assert_eq!(scene.numerical.extent_over_a, 3.0);
         let body2_only = "format = 1\n[contact]\nkind = \"point\"\nload = \"5 N\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[contact.body2.coating]\nthickness = \"1 um\"\nmaterial = \"boron_carbide\"\n";
         let message = error_of(body2_only);
         assert!(message.contains("contact.body2.coating"), "{message}");
@@ -454,7 +629,7 @@ mod tests {
         let study = solve(&scene).expect("solve");
         let (a, p0) = (study.hertz_semi_axes_m[0], study.hertz_p0_pa);
         let (ep, ea) = (
-            study.solution.max_pressure_pa / p0 - 1.0,
+            study.solution.max_pressure_pa() / p0 - 1.0,
             study.contact_radius_m / a - 1.0,
         );
         eprintln!("measured: h = 20a, against the coating's Hertz contact: peak pressure {:+.2} %, radius {:+.2} %", 100.0 * ep, 100.0 * ea);
@@ -498,5 +673,131 @@ mod tests {
         }
         assert_eq!(coating["thickness_m"].as_f64(), Some(1e-3));
         assert_eq!(json["coating"], coating);
+    }
+
+    /// A 20 mm steel roller on a coated steel flat, 100 kN/m, μ = 0.1.
+    fn line_scene(coating: &str, extra: &str) -> Scene {
+        let text = format!(
+            "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\nfriction = 0.1\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body1.coating]\n{coating}\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n{extra}"
+        );
+        Scene::parse(&text, "test", "test.toml").expect("valid")
+    }
+
+    #[test]
+    fn a_thick_coating_on_a_line_contact_gives_the_coatings_hertz_and_mcewens_maximum() {
+        // h = 220 b (B4C on steel): the coating's Hertz line contact and McEwen's largest von
+        // Mises stress (ν = 0.17, μ = 0.1), the line JSON's keys. (A line load's stresses
+        // fall as 1/r: at h = 22 b the steel under the B4C still raises the surface von Mises
+        // stress by 0.96 %, at 220 b by 0.1 %.)
+        let scene = line_scene(
+            "thickness = \"20 mm\"\nmaterial = \"boron_carbide\"",
+            "[numerical]\ncells = 400\n",
+        );
+        let study = solve(&scene).expect("solve");
+        let (b, p0) = (study.hertz_semi_axes_m[0], study.hertz_p0_pa);
+        let (ep, eb) = (
+            study.solution.max_pressure_pa() / p0 - 1.0,
+            study.semi_axes_m[0] / b - 1.0,
+        );
+        let mut mcewen: f64 = 0.0;
+        for i in 0..=400 {
+            for k in 0..=300 {
+                let (x, z) = (-1.0 + i as f64 / 200.0, k as f64 / 200.0);
+                let s = crate::solution::line_hertz::stress_over_p0(x, z, 0.1, 0.17);
+                mcewen = mcewen.max(s.von_mises());
+            }
+        }
+        let von_mises = study.maxima.von_mises.value_pa / p0;
+        eprintln!(
+            "measured: line, h = 220b: against the coating's Hertz, peak {:+.3} %, half-width {:+.3} %; von Mises maximum {von_mises:.4} p0 against McEwen's {mcewen:.4} p0: {:+.2} %",
+            100.0 * ep,
+            100.0 * eb,
+            100.0 * (von_mises / mcewen - 1.0)
+        );
+        assert!(ep.abs() < 3e-3 && eb.abs() < 5e-3, "{ep} {eb}");
+        assert!((von_mises / mcewen - 1.0).abs() < 0.005);
+        let json = CoatedReport::new(&study).json_fields();
+        assert!(json["half_width_m"]
+            .as_f64()
+            .is_some_and(|w| (w / study.semi_axes_m[0] - 1.0).abs() < 1e-15));
+        assert!(json["approach_m"].is_null());
+        assert!(json.get("contact_area_m2").is_none() && json.get("contact_radius_m").is_none());
+        for key in [
+            "max_pressure_pa",
+            "von_mises_max_pa",
+            "von_mises_max_depth_m",
+        ] {
+            assert!(json[key].as_f64().is_some_and(f64::is_finite), "{key}");
+        }
+        assert_eq!(json["coating"]["thickness_m"].as_f64(), Some(20e-3));
+    }
+
+    #[test]
+    fn a_coated_line_grid_too_coarse_names_the_cells_needed() {
+        let scene = line_scene(
+            "thickness = \"0.5 um\"\nmaterial = \"boron_carbide\"",
+            "[numerical]\ncells = 100\n",
+        );
+        let message = solve(&scene).expect_err("too coarse").to_string();
+        assert!(message.starts_with("numerical.cells"), "{message}");
+        assert!(message.contains("at least"), "{message}");
+    }
+
+    #[test]
+    fn a_thickness_sweep_is_validated_by_key() {
+        let sweep = "[figure]\nlength_unit = \"um\"\n[sweep]\nparameter = \"coating_thickness\"\nfrom = 2\nto = 100\nsteps = 4\n";
+        // Uncoated: the sweep needs a coating.
+        let plain = "format = 1\n[contact]\nkind = \"line\"\nload = \"100 kN/m\"\n[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body2]\nradius = \"10 mm\"\nmaterial = \"steel\"\n".to_string() + sweep;
+        assert!(error_of(&plain).contains("sweep.parameter"));
+        // Coated, another parameter: refused by key.
+        let friction = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            "[sweep]\nparameter = \"friction\"\nvalues = [0.0, 0.1]\n",
+        );
+        assert!(error_of(&friction).contains("sweep.parameter"));
+        // A thinnest coating the grid cannot resolve names sweep.from and numerical.cells.
+        let thin = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            &sweep.replace("from = 2", "from = 0.5"),
+        );
+        let message = error_of(&thin);
+        assert!(
+            message.contains("sweep.from") && message.contains("numerical.cells to at least"),
+            "{message}"
+        );
+        // Values with units are taken.
+        let listed = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            "[sweep]\nparameter = \"coating_thickness\"\nvalues = [\"5 um\", \"0.02 mm\"]\n",
+        );
+        let scene = Scene::parse(&listed, "test", "test.toml").expect("valid");
+        let values = scene.sweep.map(|s| s.values).unwrap_or_default();
+        assert_eq!(values.len(), 2);
+        assert!((values[0] / 5e-6 - 1.0).abs() < 1e-12 && (values[1] / 2e-5 - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_maximum_travels_from_the_substrate_into_a_thickening_hard_coating() {
+        // The frictionless ball on B4C-coated steel (a = 53.7 µm), h = 4, 32 and 256 µm on 128
+        // cells: the largest von Mises stress lies in the steel under the thin coating, on the
+        // interface's coating side under the middle one and inside the thick coating.
+        let text = scene_text(
+            "thickness = \"10 um\"\nmaterial = \"boron_carbide\"",
+            "[figure]\nlength_unit = \"um\"\n[sweep]\nparameter = \"coating_thickness\"\nfrom = 4\nto = 256\nsteps = 3\n[numerical]\ncells = 128\n",
+        )
+        .replace("friction = 0.1", "friction = 0.0");
+        let scene = Scene::parse(&text, "test", "test.toml").expect("valid");
+        let studies = sweep(&scene, &mut |_, _| {}).expect("sweep");
+        let depth_over_h: Vec<f64> = studies
+            .iter()
+            .map(|s| s.maxima.von_mises.z_m / s.spec.thickness_m)
+            .collect();
+        eprintln!(
+            "measured: thickness sweep 4, 32, 256 µm: depth of the maximum over h {depth_over_h:?}"
+        );
+        assert_eq!(studies.len(), 3);
+        assert!(depth_over_h[0] > 1.0, "{depth_over_h:?}");
+        assert!((depth_over_h[1] - 1.0).abs() < 1e-12, "{depth_over_h:?}");
+        assert!(depth_over_h[2] < 1.0, "{depth_over_h:?}");
     }
 }

@@ -150,8 +150,9 @@ pub fn closed_form(scene: &Scene, panel: &PanelSpec) -> Option<Solution> {
 }
 
 /// The scene at step `k` of its sweep (the scene itself when it has none): the friction of
-/// every panel, the load (Hertz recomputed at fixed geometry), the load's position, or the
-/// speeds of `[thermal]` (scaled together to body 1's Péclet number).
+/// every panel, the load (Hertz recomputed at fixed geometry), the load's position, the
+/// speeds of `[thermal]` (scaled together to body 1's Péclet number), or the coating's
+/// thickness.
 pub fn at_step(scene: &Scene, k: usize) -> Result<Scene, ContactError> {
     let Some(sweep) = &scene.sweep else {
         return Ok(scene.clone());
@@ -172,6 +173,11 @@ pub fn at_step(scene: &Scene, k: usize) -> Result<Scene, ContactError> {
         SweepParameter::Peclet => {
             let a = scene.contact.half_width_m();
             stepped.thermal = scene.thermal.map(|t| t.at_body1_peclet(value, a));
+        }
+        SweepParameter::CoatingThickness => {
+            if let Some(coating) = &mut stepped.contact.coating {
+                coating.thickness_m = value;
+            }
         }
     }
     Ok(stepped)

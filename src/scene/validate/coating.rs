@@ -43,7 +43,7 @@ impl Validator<'_> {
         Ok(())
     }
 
-    /// The coating of body 1 on a scene of `kind` (point, elliptical: gridded paraboloids),
+    /// The coating of body 1 on a scene of `kind` (line, point, elliptical: gridded gaps),
     /// with body 1's own material under it and the counter-body's compliance.
     pub(super) fn coating(
         &self,
@@ -53,19 +53,12 @@ impl Validator<'_> {
         counter: Option<Material>,
     ) -> Result<CoatingSpec, SceneError> {
         match kind {
-            ContactKind::Point | ContactKind::Elliptical => {}
-            ContactKind::Line => {
-                return Err(self.error(
-                    "contact.body1.coating",
-                    "a coated line contact is not computed: the coated contact is solved on a gridded surface (point and elliptical contacts)",
-                    Some("use kind = \"point\" or \"elliptical\" (a long ellipse, e.g. radius_y much larger than radius_x, approaches a line contact), or remove the coating"),
-                ))
-            }
+            ContactKind::Line | ContactKind::Point | ContactKind::Elliptical => {}
             ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => {
                 return Err(self.error(
                     "contact.body1.coating",
-                    format!("a coating is computed on point and elliptical contacts, not on kind = \"{}\"", kind_key(kind)),
-                    Some("use kind = \"point\" or \"elliptical\", or remove the coating"),
+                    format!("a coating is computed on line, point and elliptical contacts, not on kind = \"{}\"", kind_key(kind)),
+                    Some("use kind = \"line\", \"point\" or \"elliptical\", or remove the coating"),
                 ))
             }
         }

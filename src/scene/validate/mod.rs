@@ -325,12 +325,14 @@ impl Validator<'_> {
                     ));
                 }
             }
-            if raw.sweep.is_some() {
-                return Err(self.error(
-                    "sweep",
-                    "a sweep of a coated scene is not recorded in this version",
-                    Some("remove [sweep]; run `hertz` on scenes with different contact.body1.coating.thickness to compare"),
-                ));
+            if let Some(sweep) = &raw.sweep {
+                if sweep.parameter.trim() != "coating_thickness" {
+                    return Err(self.error(
+                        "sweep.parameter",
+                        format!("a coated scene records a sweep of its coating's thickness, not `{}`", sweep.parameter.trim()),
+                        Some("use parameter = \"coating_thickness\" (from/to in the figure's length unit, spaced geometrically), or run `hertz` on scenes with other loads or friction"),
+                    ));
+                }
             }
         }
         let mut scene = Scene {

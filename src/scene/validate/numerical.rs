@@ -38,8 +38,11 @@ impl Validator<'_> {
                 ))
             }
         };
+        // A coated line contact is solved on a grid over ±extent half-widths of the coating's
+        // Hertz contact, like a coated point contact; an uncoated one spans -a..a.
+        let coated = contact.coating.is_some();
         let extent_over_a = match (raw.extent, contact.kind) {
-            (Some(_), ContactKind::Line) => {
+            (Some(_), ContactKind::Line) if !coated => {
                 return Err(self.error(
                     "numerical.extent",
                     "a line contact's strips always span the contact -a..a",

@@ -9,17 +9,33 @@ impl Validator<'_> {
             self.error(
                 "sweep.parameter",
                 format!("unknown sweep parameter `{}`", raw.parameter),
-                Some("use \"friction\", \"load\", \"position\" or \"peclet\""),
+                Some(
+                    "use \"friction\", \"load\", \"position\", \"peclet\" or \"coating_thickness\"",
+                ),
             )
         })?;
         let contact = &scene.contact;
+        if parameter == SweepParameter::CoatingThickness && contact.coating.is_none() {
+            return Err(self.error(
+                "sweep.parameter",
+                "a coating-thickness sweep needs a coated body",
+                Some("add [contact.body1.coating] with thickness and material, or sweep another parameter"),
+            ));
+        }
+        // A coating's thickness given as a plain number is in the figure's length unit.
+        let unit_m = scene.figure.length_unit.metres(contact.half_width_m());
         let values: Vec<f64> = match (&raw.values, raw.from, raw.to, raw.steps) {
             (Some(values), None, None, None) => {
                 let mut numbers = Vec::with_capacity(values.len());
                 for (i, value) in values.iter().enumerate() {
                     let key = format!("sweep.values[{i}]");
                     numbers.push(match (value, parameter) {
+                        (NumberOrText::Number(v), SweepParameter::CoatingThickness) => v * unit_m,
                         (NumberOrText::Number(v), _) => *v,
+                        (NumberOrText::Text(text), SweepParameter::CoatingThickness) => {
+                            units::parse(text, Dimension::Length)
+                                .map_err(|m| self.error(&key, m, None))?
+                        }
                         (NumberOrText::Text(text), SweepParameter::Load) => {
                             let dimension = if contact.kind == ContactKind::Line {
                                 Dimension::ForcePerLength
@@ -32,7 +48,7 @@ impl Validator<'_> {
                             return Err(self.error(
                                 &key,
                                 format!("expected a number, got `{text}`"),
-                                Some("friction, position and Péclet values are plain numbers"),
+                                Some("friction, position and Péclet values are plain numbers; loads and coating thicknesses may carry units"),
                             ))
                         }
                     });
@@ -71,7 +87,24 @@ impl Validator<'_> {
                     ));
                 }
                 let n = steps as usize;
-                if parameter == SweepParameter::Peclet {
+                if parameter == SweepParameter::CoatingThickness {
+                    // Geometric steps in the figure's length unit: 1 µm to 100 µm is two decades.
+                    for (key, value) in [("sweep.from", from), ("sweep.to", to)] {
+                        if value <= 0.0 {
+                            return Err(self.error(
+                                key,
+                                format!(
+                                    "coating thicknesses are spaced geometrically from `from` to `to` (in the figure's length unit), so both must be positive, got {}",
+                                    crate::io::text::number(value)
+                                ),
+                                Some("e.g. from = 2, to = 128, steps = 7 with figure.length_unit = \"um\""),
+                            ));
+                        }
+                    }
+                    (0..n)
+                        .map(|k| unit_m * from * (to / from).powf(k as f64 / (n - 1) as f64))
+                        .collect()
+                } else if parameter == SweepParameter::Peclet {
                     // Geometric steps: Pe 0.1 to 100 is three decades.
                     for (key, value) in [("sweep.from", from), ("sweep.to", to)] {
                         if value <= 0.0 {
@@ -163,6 +196,11 @@ impl Validator<'_> {
                     (format!("sweep.values[{i}]"), value, text)
                 })
                 .collect(),
+            // A coating's thicknesses in m (from and to were in the figure's length unit).
+            (None, Some(_), Some(_)) if parameter == SweepParameter::CoatingThickness => vec![
+                ("sweep.from".to_string(), values[0], None),
+                ("sweep.to".to_string(), values[values.len() - 1], None),
+            ],
             (None, Some(from), Some(to)) => vec![
                 ("sweep.from".to_string(), from, None),
                 ("sweep.to".to_string(), to, None),
@@ -201,6 +239,7 @@ impl Validator<'_> {
                     }
                 }
                 SweepParameter::Peclet => self.peclet(key, value)?,
+                SweepParameter::CoatingThickness => self.swept_thickness(key, value, scene)?,
                 SweepParameter::Position => {
                     // In units of a, like every figure range.
                     let over_a = value * scene.length_unit_over_a();
@@ -326,6 +365,38 @@ impl Validator<'_> {
             material_points,
             generated: raw.values.is_none(),
         })
+    }
+
+    /// A coating thickness of a sweep (m): positive, within the coating's bounds, and resolved
+    /// by the scene's grid (cells of at most half of it).
+    fn swept_thickness(&self, key: &str, value: f64, scene: &Scene) -> Result<(), SceneError> {
+        let written = format!("{} m", crate::io::text::number(value));
+        if !(value.is_finite() && (1e-9..=1.0).contains(&value)) {
+            return Err(self.error(
+                key,
+                format!("a coating thickness must lie in 1 nm..=1 m, got {written}"),
+                Some("give thicknesses in the figure's length unit, e.g. from = 2, to = 128 with figure.length_unit = \"um\""),
+            ));
+        }
+        let contact = &scene.contact;
+        let semi_axis = contact.half_width_m() * contact.aspect.max(1.0);
+        let (cells, extent) = (scene.numerical.cells, scene.numerical.extent_over_a);
+        let cell = 2.0 * extent * semi_axis / cells as f64;
+        let largest = crate::contact::coated::largest_cell_m(value);
+        if cell > largest * (1.0 + 1e-12) {
+            let needed = (2.0 * extent * semi_axis / largest).ceil() as usize;
+            return Err(self.error(
+                key,
+                format!(
+                    "the grid's cells ({} µm: numerical.cells = {cells} over ±{} semi-axes) are coarser than half this coating ({} µm)",
+                    crate::io::text::approx(cell * 1e6),
+                    crate::io::text::approx(extent),
+                    crate::io::text::approx(value * 1e6)
+                ),
+                Some(&format!("set numerical.cells to at least {needed}, or start the sweep at a thicker coating")),
+            ));
+        }
+        Ok(())
     }
 
     /// A Péclet number of a speed sweep: at least [`MIN_PECLET`]. Whether the sweep's grid

@@ -249,9 +249,13 @@ fn few_cells_and_an_impossible_peak_are_warned_about() {
         .text(&scene)
         .contains("warning: the contact is resolved by only"));
     let findings = stressfield::study::rough::findings(&scene, &solution).expect("findings");
-    let sheet =
-        stressfield::figure::rough::rough_sheet(&scene, &solution, &findings.maxima, &|| {})
-            .expect("sheet");
+    let sheet = stressfield::figure::rough::rough_sheet(
+        &scene,
+        &solution,
+        &stressfield::study::rough_sheet::sheet_fields(&scene, &solution, &findings.maxima, &|| {})
+            .expect("fields"),
+    )
+    .expect("sheet");
     assert_eq!(sheet.notes.len(), 2);
 
     // Pressed harder, capped at 300 HV: hundreds of cells, no peak beyond the cap.

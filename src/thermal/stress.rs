@@ -74,6 +74,10 @@ type C64 = Complex<f64>;
 /// The six stress components in [`crate::stress::Stress`] order: xx, yy, zz, yz, xz, xy.
 pub const COMPONENTS: usize = 6;
 
+/// The parity of each component's response in `η` (and of its lattice in `y`): `σyz` and
+/// `σxy` carry a factor `η`, the others are even.
+const PARITY: [f64; COMPONENTS] = [1.0, 1.0, 1.0, -1.0, 1.0, -1.0];
+
 /// How many times longer in x than the kernel's own lattice the periodic lattice of the smooth
 /// part is: the narrow wake behind a fast source is long, and its images must lie beyond it.
 const SMOOTH_OVERSAMPLING: usize = 4;
@@ -161,6 +165,27 @@ fn corner_xy(x: f64, y: f64, z: f64) -> f64 {
     -(log - r)
 }
 
+/// `[Fxx, Fyy, Fxy]` (without the 1/(2π)) at the corners `((i - 1/2) dx, (j - 1/2) dy)` of
+/// the cells of offsets `-n <= i, j < n` and the last corners beyond them, `-n <= i, j <= n`:
+/// row-major, `2 nx + 1` a row.
+fn stationary_corners(grid: &CellGrid, z: f64) -> Vec<[f64; 3]> {
+    let [ny, nx] = grid.shape;
+    let [dx, dy] = grid.spacing_m;
+    let width = 2 * nx + 1;
+    let mut corners = vec![[0.0; 3]; (2 * ny + 1) * width];
+    corners
+        .par_chunks_mut(width)
+        .enumerate()
+        .for_each(|(row, line)| {
+            let y = (row as i64 - ny as i64) as f64 * dy - 0.5 * dy;
+            for (column, slot) in line.iter_mut().enumerate() {
+                let x = (column as i64 - nx as i64) as f64 * dx - 0.5 * dx;
+                *slot = [corner_xx(x, y, z), corner_xx(y, x, z), corner_xy(x, y, z)];
+            }
+        });
+    corners
+}
+
 /// The stationary cell integrals per `E α / K` of xx, yy, xy over `[x0, x1] x [y0, y1]`.
 pub fn stationary_rectangle(x0: f64, x1: f64, y0: f64, y1: f64, z: f64) -> [f64; 3] {
     let sum =
@@ -212,14 +237,24 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     let [ny, nx] = grid.shape;
     let [dx, dy] = grid.spacing_m;
     let mut out = Array3::zeros((COMPONENTS, 2 * ny, 2 * nx));
-    // Stationary part.
-    let stationary = [0usize, 1, 5];
-    for (slot, &component) in stationary.iter().enumerate() {
-        let lattice = grid.offset_lattice(|i, j| {
-            let (x, y) = (i as f64 * dx, j as f64 * dy);
-            stationary_rectangle(x - 0.5 * dx, x + 0.5 * dx, y - 0.5 * dy, y + 0.5 * dy, z)[slot]
-        });
-        out.index_axis_mut(Axis(0), component).assign(&lattice);
+    // Stationary part: the corner sums of the cells, each corner's three values computed once.
+    let corner_values = stationary_corners(grid, z);
+    let at = |row: usize, column: usize| corner_values[row * (2 * nx + 1) + column];
+    for (slot, &component) in [0usize, 1, 5].iter().enumerate() {
+        out.index_axis_mut(Axis(0), component)
+            .axis_iter_mut(Axis(0))
+            .into_par_iter()
+            .enumerate()
+            .for_each(|(row, mut line)| {
+                // Cell offset j spans the corners j and j + 1 of the corner grid (offset + n).
+                let j = (signed(row, 2 * ny) + ny as i64) as usize;
+                for (column, value) in line.iter_mut().enumerate() {
+                    let i = (signed(column, 2 * nx) + nx as i64) as usize;
+                    *value = (at(j + 1, i + 1)[slot] - at(j, i + 1)[slot] - at(j + 1, i)[slot]
+                        + at(j, i)[slot])
+                        / (2.0 * PI);
+                }
+            });
     }
     if u == 0.0 {
         return out;
@@ -228,7 +263,7 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     let kw = 8.0 * PI / (2.0 * nx as f64 * dx).min(2.0 * ny as f64 * dy);
     let window = |k: f64| (-(k / kw).powi(2)).exp();
     let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
-    add_band(&mut out, grid, kw * 5.0, &|xi, eta| {
+    add_band(&mut out, grid, kw * 5.0, PARITY, &|xi, eta| {
         let mut h = remainder(xi, eta, z, two_u, nu);
         let s = window(xi.hypot(eta)) * cell(xi, eta);
         for v in h.iter_mut() {
@@ -243,7 +278,7 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     } else {
         0
     };
-    add_smooth(&mut out, grid, aliases, SMOOTH_OVERSAMPLING, &|xi, eta| {
+    add_smooth(&mut out, grid, aliases, SMOOTH_OVERSAMPLING, PARITY, &|xi, eta| {
         let k = xi.hypot(eta);
         if k == 0.0 {
             return [C64::new(0.0, 0.0); COMPONENTS];
@@ -260,81 +295,151 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
 
 /// Adds `(1/4π²) ∫∫ F e^(i(ξx + ηy))` over `|ξ|, |η| <= cut` at every lattice offset, for a
 /// Hermitian `F` (`F(-ξ, -η) = conj F(ξ, η)`): twice the real part of the `ξ > 0` half.
+/// Component `c` of `F` has the parity `parity[c]` (`+1` even, `-1` odd) in `η`, and so its
+/// lattice in `y`: only `η > 0` is evaluated (`e^(iηy) ± e^(-iηy)` is `2 cos ηy` or
+/// `2i sin ηy`), the rows `y >= 0` are summed and the rows `y < 0` mirrored, and each sum over
+/// `ξ` serves `x` and `-x` (its cosine and sine parts): a quarter of the direct sum's work.
 pub(super) fn add_band<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
     cut: f64,
+    parity: [f64; N],
     f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
 ) {
     let [ny, nx] = grid.shape;
     let [dx, dy] = grid.spacing_m;
     let (half, half_weights) = band_rule(cut);
-    let mut etas: Vec<f64> = half.iter().rev().map(|e| -e).collect();
-    etas.extend(&half);
-    let mut eta_weights: Vec<f64> = half_weights.iter().rev().copied().collect();
-    eta_weights.extend(&half_weights);
-    let ys: Vec<f64> = (0..2 * ny).map(|r| signed(r, 2 * ny) as f64 * dy).collect();
-    let xs: Vec<f64> = (0..2 * nx).map(|c| signed(c, 2 * nx) as f64 * dx).collect();
-    // Phase tables: e^(iηy) for every η and row, e^(iξx) for every ξ and column.
-    let eta_phase: Vec<C64> = ys
-        .iter()
-        .flat_map(|&y| etas.iter().map(move |&eta| C64::from_polar(1.0, eta * y)))
-        .collect();
-    let xi_phase: Vec<(f64, f64)> = half
-        .iter()
-        .flat_map(|&xi| xs.iter().map(move |&x| (xi * x).sin_cos()))
-        .collect();
-    // partial[n][component][row] = w_n Σ_η w F(ξn, η) e^(iηy).
-    let partial: Vec<Vec<Vec<C64>>> = half
+    let m = half.len();
+    // Rows y = j dy and columns x = i dx for 0 <= j <= ny, 0 <= i <= nx (the lattice's -ny
+    // and -nx mirrored from +ny and +nx).
+    let rows = ny + 1;
+    let columns = nx + 1;
+    // cos ηy and sin ηy for every row and η > 0.
+    let (eta_cos, eta_sin): (Vec<f64>, Vec<f64>) = (0..rows)
+        .flat_map(|j| {
+            let y = j as f64 * dy;
+            half.iter().map(move |&eta| {
+                let (s, c) = (eta * y).sin_cos();
+                (c, s)
+            })
+        })
+        .unzip();
+    // cos ξx and sin ξx for every ξ > 0 and column, rows padded to a multiple of the block.
+    const BLOCK: usize = 4;
+    let stride = columns.div_ceil(BLOCK) * BLOCK;
+    let mut xi_cos = vec![0.0; m * stride];
+    let mut xi_sin = vec![0.0; m * stride];
+    for (n, &xi) in half.iter().enumerate() {
+        for i in 0..columns {
+            let (s, c) = (xi * i as f64 * dx).sin_cos();
+            xi_cos[n * stride + i] = c;
+            xi_sin[n * stride + i] = s;
+        }
+    }
+    // partial[n][j][component] = w_n Σ_η w F(ξn, η) e^(iηy_j) over both signs of η.
+    let partial: Vec<Vec<[C64; N]>> = half
         .par_iter()
         .zip(&half_weights)
         .map(|(&xi, &w_xi)| {
-            let values: Vec<[C64; N]> = etas
+            let values: Vec<[C64; N]> = half
                 .iter()
-                .zip(&eta_weights)
+                .zip(&half_weights)
                 .map(|(&eta, &w)| {
                     let mut v = f(xi, eta);
                     for c in v.iter_mut() {
-                        *c *= w * w_xi;
+                        *c *= 2.0 * w * w_xi;
                     }
                     v
                 })
                 .collect();
-            let mut rows = vec![vec![C64::new(0.0, 0.0); ys.len()]; N];
-            for (row, phases) in eta_phase.chunks_exact(etas.len()).enumerate() {
-                for (v, phase) in values.iter().zip(phases) {
-                    for (component, value) in v.iter().enumerate() {
-                        rows[component][row] += value * phase;
+            (0..rows)
+                .map(|j| {
+                    let (cosines, sines) = (&eta_cos[j * m..][..m], &eta_sin[j * m..][..m]);
+                    let mut sum = [C64::new(0.0, 0.0); N];
+                    for ((v, &c), &s) in values.iter().zip(cosines).zip(sines) {
+                        for component in 0..N {
+                            if parity[component] > 0.0 {
+                                sum[component] += v[component] * c;
+                            } else {
+                                sum[component] += v[component] * C64::new(0.0, s);
+                            }
+                        }
                     }
-                }
-            }
-            rows
+                    sum
+                })
+                .collect()
         })
         .collect();
     let scale = 2.0 / (4.0 * PI * PI);
-    for (component, mut layer) in out.axis_iter_mut(Axis(0)).enumerate() {
-        layer
-            .axis_iter_mut(Axis(0))
-            .into_par_iter()
-            .enumerate()
-            .for_each(|(row, mut line)| {
-                for (n, phases) in xi_phase.chunks_exact(xs.len()).enumerate() {
-                    let a = partial[n][component][row];
-                    for (slot, &(s, c)) in line.iter_mut().zip(phases) {
-                        *slot += scale * (a.re * c - a.im * s);
+    // One row of every component: `[component][column]`, x >= 0 then x < 0, from
+    // P = Σ a.re cos ξx and Q = Σ a.im sin ξx: (P - Q) at x, (P + Q) at -x.
+    let row_values = |j: usize| -> Vec<Vec<f64>> {
+        let mut p = vec![[0.0f64; N]; stride];
+        let mut q = vec![[0.0f64; N]; stride];
+        for block in (0..stride).step_by(BLOCK) {
+            let mut acc_p = [[0.0f64; N]; BLOCK];
+            let mut acc_q = [[0.0f64; N]; BLOCK];
+            for (n, values) in partial.iter().enumerate() {
+                let a = &values[j];
+                let cosines = &xi_cos[n * stride + block..][..BLOCK];
+                let sines = &xi_sin[n * stride + block..][..BLOCK];
+                for k in 0..BLOCK {
+                    for component in 0..N {
+                        acc_p[k][component] += a[component].re * cosines[k];
+                        acc_q[k][component] += a[component].im * sines[k];
                     }
                 }
-            });
+            }
+            p[block..block + BLOCK].copy_from_slice(&acc_p);
+            q[block..block + BLOCK].copy_from_slice(&acc_q);
+        }
+        (0..N)
+            .map(|component| {
+                (0..2 * nx)
+                    .map(|column| {
+                        let i = signed(column, 2 * nx);
+                        let at = i.unsigned_abs() as usize;
+                        let (pp, qq) = (p[at][component], q[at][component]);
+                        scale * if i >= 0 { pp - qq } else { pp + qq }
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    // Rows in chunks, so that the buffer stays small.
+    const CHUNK: usize = 64;
+    for start in (0..rows).step_by(CHUNK) {
+        let end = (start + CHUNK).min(rows);
+        let values: Vec<Vec<Vec<f64>>> = (start..end).into_par_iter().map(row_values).collect();
+        for (j, row) in (start..end).zip(values) {
+            for (component, line) in row.iter().enumerate() {
+                let mut layer = out.index_axis_mut(Axis(0), component);
+                // Row +j (j < ny), and -j (1 <= j <= ny) at lattice row 2ny - j.
+                if j < ny {
+                    for (slot, &v) in layer.row_mut(j).iter_mut().zip(line) {
+                        *slot += v;
+                    }
+                }
+                if j >= 1 {
+                    let sign = parity[component];
+                    for (slot, &v) in layer.row_mut(2 * ny - j).iter_mut().zip(line) {
+                        *slot += sign * v;
+                    }
+                }
+            }
+        }
     }
 }
 
 /// Adds the lattice samples of the inverse transform of `F` (free of a singularity at `k = 0`)
-/// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way.
+/// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way;
+/// component `c` has the parity `parity[c]` in `η`, so only `η >= 0` is evaluated.
 pub(super) fn add_smooth<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
     aliases: i64,
     over: usize,
+    parity: [f64; N],
     f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
 ) {
     let [ny, nx] = grid.shape;
@@ -342,13 +447,16 @@ pub(super) fn add_smooth<const N: usize>(
     // The periodic lattice is `over` times longer in x than the kernel's (images farther).
     let (mx, my) = (2 * nx * over, 2 * ny);
     let plan = RealFft2::new([my, mx]);
-    let [kxs, kys] = plan.spectrum_shape();
+    let [kxs, _] = plan.spectrum_shape();
     let (px, py) = (mx as f64 * dx, my as f64 * dy);
+    // Each column's values for 0 <= ky <= my/2; the rows my/2 < ky < my (η < 0) are
+    // `parity` times those of my - ky (the aliases of -η0 are those of η0 mirrored).
+    let half_rows = my / 2 + 1;
     let columns: Vec<Vec<[C64; N]>> = (0..kxs)
         .into_par_iter()
         .map(|kx| {
             let xi0 = 2.0 * PI * kx as f64 / px;
-            (0..kys)
+            (0..half_rows)
                 .map(|ky| {
                     let eta0 = 2.0 * PI * signed_index(ky, my) as f64 / py;
                     let mut sum = [C64::new(0.0, 0.0); N];
@@ -366,14 +474,19 @@ pub(super) fn add_smooth<const N: usize>(
                 .collect()
         })
         .collect();
+    let value = |kx: usize, ky: usize, component: usize| {
+        if ky < half_rows {
+            columns[kx][ky][component]
+        } else {
+            columns[kx][my - ky][component] * parity[component]
+        }
+    };
     let mut work = plan.work();
     let mut periodic = Array2::zeros((my, mx));
     for component in 0..N {
         let mut spectrum = plan.new_spectrum();
-        for (kx, column) in columns.iter().enumerate() {
-            for (ky, values) in column.iter().enumerate() {
-                spectrum[[kx, ky]] = values[component] / (dx * dy);
-            }
+        for ((kx, ky), slot) in spectrum.indexed_iter_mut() {
+            *slot = value(kx, ky, component) / (dx * dy);
         }
         // A failure here is a planning bug; the lattice then keeps its other parts.
         if plan

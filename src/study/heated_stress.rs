@@ -362,11 +362,19 @@ impl HeatedStress {
                 .find(|(d, _)| *d == z)
                 .map_or(f64::NEG_INFINITY, |(_, b)| b[k].0)
         };
-        // The contact's maxima come from the closed form when there is one.
+        // The contact's maxima come from the closed form when there is one, and a rough
+        // contact's from `contact`'s own search ([`super::thermal::study`]): neither is refined
+        // here (each refined depth is a whole layer of the thermal stress).
+        let contact_elsewhere = self.closed_form()
+            || matches!(
+                self.contact,
+                ContactPart::Layers {
+                    fft: Layers::Tractions(_),
+                    ..
+                }
+            );
         let searched: Vec<usize> = (0..QUANTITIES)
-            .filter(|&k| {
-                !(self.closed_form() && (k == CONTACT_VON_MISES || k == CONTACT_MAX_SHEAR))
-            })
+            .filter(|&k| !(contact_elsewhere && (k == CONTACT_VON_MISES || k == CONTACT_MAX_SHEAR)))
             .collect();
         for &k in &searched {
             let best = (0..coarse.len())

@@ -94,7 +94,8 @@ fn phi1(w: C64) -> C64 {
 /// `H(ξ, η; z)` of the six stresses per unit flux, `K = 1`, per `E α` (module doc); `two_u` is
 /// `V / κ` (1/m). `k` must be positive.
 pub fn response(xi: f64, eta: f64, z: f64, two_u: f64, nu: f64) -> [C64; COMPONENTS] {
-    let k = xi.hypot(eta);
+    // (No overflow: wavenumbers are far below 1e150.)
+    let k = (xi * xi + eta * eta).sqrt();
     let gamma = C64::new(k * k, -two_u * xi).sqrt();
     let b = 1.0 / (gamma + k);
     let delta = C64::new(0.0, -two_u * xi) * b;
@@ -125,7 +126,7 @@ pub fn response(xi: f64, eta: f64, z: f64, two_u: f64, nu: f64) -> [C64; COMPONE
 
 /// The stationary part `H_s` of [`response`] (zero for zz, yz, xz).
 pub fn stationary_response(xi: f64, eta: f64, z: f64) -> [f64; COMPONENTS] {
-    let k = xi.hypot(eta);
+    let k = (xi * xi + eta * eta).sqrt();
     let c = (-k * z).exp() / (k * k * k);
     [-eta * eta * c, -xi * xi * c, 0.0, 0.0, 0.0, xi * eta * c]
 }
@@ -265,7 +266,7 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
     add_band(&mut out, grid, kw * 5.0, PARITY, &|xi, eta| {
         let mut h = remainder(xi, eta, z, two_u, nu);
-        let s = window(xi.hypot(eta)) * cell(xi, eta);
+        let s = window((xi * xi + eta * eta).sqrt()) * cell(xi, eta);
         for v in h.iter_mut() {
             *v *= s;
         }
@@ -279,7 +280,7 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
         0
     };
     add_smooth(&mut out, grid, aliases, SMOOTH_OVERSAMPLING, PARITY, &|xi, eta| {
-        let k = xi.hypot(eta);
+        let k = (xi * xi + eta * eta).sqrt();
         if k == 0.0 {
             return [C64::new(0.0, 0.0); COMPONENTS];
         }

@@ -43,8 +43,11 @@
 //!   on `|ξ|, |η| <= 5 kw` (where `W < 2e-11`);
 //! - `(1 - W)(H - H_s)`, free of the singularity, sampled at the discrete wavenumbers of a
 //!   periodic lattice four times longer in x than the kernel's (the wake behind a fast source
-//!   is long and narrow, so its part above `kw` reaches far behind), with its aliases (3 each
-//!   way on the surface, 1 within two cells of it), and inverse-transformed by FFT.
+//!   is long and narrow, so its part above `kw` reaches far behind; not oversampled, or
+//!   twice, for a source slow on the lattice's scale, `u <= kw/4` or `u <= kw`), with its
+//!   aliases (3 each way on the surface, 1 within two cells of it; none at a cell Péclet
+//!   number `u dx <= 0.05`, where the moving part beyond the Nyquist wavenumber is
+//!   `O(u dx)` of the exact stationary one), and inverse-transformed by FFT.
 //!
 //! Against the polar inverse transform of a Gaussian flux (test) the lattice is within 0.06 %
 //! for a stationary source and 0.3 % at `u s = 3`; `kw` twice smaller or no oversampling
@@ -81,6 +84,46 @@ const PARITY: [f64; COMPONENTS] = [1.0, 1.0, 1.0, -1.0, 1.0, -1.0];
 /// How many times longer in x than the kernel's own lattice the periodic lattice of the smooth
 /// part is: the narrow wake behind a fast source is long, and its images must lie beyond it.
 const SMOOTH_OVERSAMPLING: usize = 4;
+
+/// Below this `u / kw` (a slow source for the lattice: `u (2 nx dx) <= 2π`) the smooth part
+/// has no long wake and its lattice is not oversampled; up to `kw`, twice.
+const SLOW_OVER_WINDOW: f64 = 0.25;
+
+/// Below this cell Péclet number `u max(dx, dy)` the smooth part takes no aliases.
+const ALIAS_FREE_CELL_PECLET: f64 = 0.05;
+
+/// The smooth part's oversampling in x for `u` and the window's `kw` (module doc). The
+/// smooth part `(1 - W)(H - H_s)` of a source slow on the lattice's scale is concentrated
+/// within a few `1/kw` of the cell (its kernel falls as `1/r³`), so its images `2 nx dx`
+/// away are negligible: on the rough ball of `benches/thermal.rs` (`u/kw = 0.2`) the
+/// thermal von Mises maximum moved by 4e-5 of itself without oversampling (measured).
+fn smooth_oversampling(u: f64, kw: f64) -> usize {
+    if u <= SLOW_OVER_WINDOW * kw {
+        1
+    } else if u <= kw {
+        2
+    } else {
+        SMOOTH_OVERSAMPLING
+    }
+}
+
+/// The aliases each way of the smooth part at depth `z` (module doc): 3 on the surface, 1
+/// within two cells of it, none deeper (`e^(-kz)` then damps them); none either at a cell
+/// Péclet number `u dx` below [`ALIAS_FREE_CELL_PECLET`]: beyond the lattice's Nyquist
+/// wavenumber `γ = k - i u ξ / k + O(u²)`, so `H - H_s` is `O(u/k)`, at most `u dx / π`,
+/// of the stationary response there (whose cell integral is exact); on the rough ball of
+/// `benches/thermal.rs` (`u dx = 0.02`) they moved the thermal maximum by 1e-6 (measured).
+fn smooth_aliases(z: f64, u: f64, dx: f64, dy: f64) -> i64 {
+    if u * dx.max(dy) <= ALIAS_FREE_CELL_PECLET {
+        0
+    } else if z < 0.25 * dx.min(dy) {
+        3
+    } else if z < 2.0 * dx.min(dy) {
+        1
+    } else {
+        0
+    }
+}
 
 /// `(e^w - 1) / w`, accurate near `w = 0`.
 fn phi1(w: C64) -> C64 {
@@ -272,14 +315,9 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
         }
         h
     });
-    let aliases = if z < 0.25 * dx.min(dy) {
-        3
-    } else if z < 2.0 * dx.min(dy) {
-        1
-    } else {
-        0
-    };
-    add_smooth(&mut out, grid, aliases, SMOOTH_OVERSAMPLING, PARITY, &|xi, eta| {
+    let aliases = smooth_aliases(z, u, dx, dy);
+    let oversampling = smooth_oversampling(u, kw);
+    add_smooth(&mut out, grid, aliases, oversampling, PARITY, &|xi, eta| {
         let k = (xi * xi + eta * eta).sqrt();
         if k == 0.0 {
             return [C64::new(0.0, 0.0); COMPONENTS];

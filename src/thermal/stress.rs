@@ -191,7 +191,7 @@ fn corner_xx(x: f64, y: f64, z: f64) -> f64 {
     let first = if y == 0.0 {
         0.0
     } else {
-        -y * (x / y.hypot(z)).asinh()
+        -y * (x / (y * y + z * z).sqrt()).asinh()
     };
     let second = if z == 0.0 || x == 0.0 || y == 0.0 {
         0.0

@@ -209,25 +209,42 @@ fn corner_xy(x: f64, y: f64, z: f64) -> f64 {
     -(log - r)
 }
 
-/// `[Fxx, Fyy, Fxy]` (without the 1/(2π)) at the corners `((i - 1/2) dx, (j - 1/2) dy)` of
-/// the cells of offsets `-n <= i, j < n` and the last corners beyond them, `-n <= i, j <= n`:
-/// row-major, `2 nx + 1` a row.
-fn stationary_corners(grid: &CellGrid, z: f64) -> Vec<[f64; 3]> {
-    let [ny, nx] = grid.shape;
-    let [dx, dy] = grid.spacing_m;
-    let width = 2 * nx + 1;
-    let mut corners = vec![[0.0; 3]; (2 * ny + 1) * width];
-    corners
-        .par_chunks_mut(width)
-        .enumerate()
-        .for_each(|(row, line)| {
-            let y = (row as i64 - ny as i64) as f64 * dy - 0.5 * dy;
-            for (column, slot) in line.iter_mut().enumerate() {
-                let x = (column as i64 - nx as i64) as f64 * dx - 0.5 * dx;
-                *slot = [corner_xx(x, y, z), corner_xx(y, x, z), corner_xy(x, y, z)];
-            }
-        });
-    corners
+/// `[Fxx, Fyy, Fxy]` (without the 1/(2π)) at the corners `((m + 1/2) dx, (l + 1/2) dy)`,
+/// `0 <= m <= nx`, `0 <= l <= ny`: row-major, `nx + 1` a row. These are all the corners of
+/// the cells of offsets `-n <= i, j < n` up to sign: `Fxx` and `Fyy` are odd in `x` and in
+/// `y`, `Fxy` is even in both ([`StationaryCorners::fold`]).
+struct StationaryCorners {
+    values: Vec<[f64; 3]>,
+}
+
+impl StationaryCorners {
+    fn new(grid: &CellGrid, z: f64) -> Self {
+        let [ny, nx] = grid.shape;
+        let [dx, dy] = grid.spacing_m;
+        let width = nx + 1;
+        let mut values = vec![[0.0; 3]; (ny + 1) * width];
+        values
+            .par_chunks_mut(width)
+            .enumerate()
+            .for_each(|(l, line)| {
+                let y = (l as f64 + 0.5) * dy;
+                for (m, slot) in line.iter_mut().enumerate() {
+                    let x = (m as f64 + 0.5) * dx;
+                    *slot = [corner_xx(x, y, z), corner_xx(y, x, z), corner_xy(x, y, z)];
+                }
+            });
+        Self { values }
+    }
+
+    /// The corner `c` (`0 <= c <= 2n`) of an axis of `n` cells each way lies at
+    /// `(c - n - 1/2)` cells: `(|m|, sign)` with the corner at `sign (m + 1/2)`.
+    fn fold(c: usize, n: usize) -> (usize, f64) {
+        if c > n {
+            (c - n - 1, 1.0)
+        } else {
+            (n - c, -1.0)
+        }
+    }
 }
 
 /// The stationary cell integrals per `E α / K` of xx, yy, xy over `[x0, x1] x [y0, y1]`.
@@ -282,9 +299,20 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     let [dx, dy] = grid.spacing_m;
     let mut out = Array3::zeros((COMPONENTS, 2 * ny, 2 * nx));
     // Stationary part: the corner sums of the cells, each corner's three values computed once.
-    let corner_values = stationary_corners(grid, z);
-    let at = |row: usize, column: usize| corner_values[row * (2 * nx + 1) + column];
+    let corners = StationaryCorners::new(grid, z);
+    // Each lattice column's two corners (offset + n and the next), folded.
+    let column_corners: Vec<[(usize, f64); 2]> = (0..2 * nx)
+        .map(|column| {
+            let i = (signed(column, 2 * nx) + nx as i64) as usize;
+            [
+                StationaryCorners::fold(i, nx),
+                StationaryCorners::fold(i + 1, nx),
+            ]
+        })
+        .collect();
     for (slot, &component) in [0usize, 1, 5].iter().enumerate() {
+        // Fxx and Fyy are odd in x and y, Fxy even.
+        let odd = slot < 2;
         out.index_axis_mut(Axis(0), component)
             .axis_iter_mut(Axis(0))
             .into_par_iter()
@@ -292,10 +320,21 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
             .for_each(|(row, mut line)| {
                 // Cell offset j spans the corners j and j + 1 of the corner grid (offset + n).
                 let j = (signed(row, 2 * ny) + ny as i64) as usize;
-                for (column, value) in line.iter_mut().enumerate() {
-                    let i = (signed(column, 2 * nx) + nx as i64) as usize;
-                    *value = (at(j + 1, i + 1)[slot] - at(j, i + 1)[slot] - at(j + 1, i)[slot]
-                        + at(j, i)[slot])
+                let rows = [
+                    StationaryCorners::fold(j, ny),
+                    StationaryCorners::fold(j + 1, ny),
+                ];
+                let value = |(l, sy): (usize, f64), (m, sx): (usize, f64)| {
+                    let v = corners.values[l * (nx + 1) + m][slot];
+                    if odd {
+                        sx * sy * v
+                    } else {
+                        v
+                    }
+                };
+                for (slot_value, [c0, c1]) in line.iter_mut().zip(&column_corners) {
+                    *slot_value = (value(rows[1], *c1) - value(rows[0], *c1) - value(rows[1], *c0)
+                        + value(rows[0], *c0))
                         / (2.0 * PI);
                 }
             });
@@ -395,14 +434,20 @@ pub(super) fn add_band<const N: usize>(
                 .map(|j| {
                     let (cosines, sines) = (&eta_cos[j * m..][..m], &eta_sin[j * m..][..m]);
                     let mut sum = [C64::new(0.0, 0.0); N];
-                    for ((v, &c), &s) in values.iter().zip(cosines).zip(sines) {
-                        for component in 0..N {
-                            if parity[component] > 0.0 {
-                                sum[component] += v[component] * c;
-                            } else {
-                                sum[component] += v[component] * C64::new(0.0, s);
-                            }
+                    for (component, slot) in sum.iter_mut().enumerate() {
+                        let even = parity[component] > 0.0;
+                        let trig = if even { cosines } else { sines };
+                        let (mut re, mut im) = (0.0, 0.0);
+                        for (v, &t) in values.iter().zip(trig) {
+                            re += v[component].re * t;
+                            im += v[component].im * t;
                         }
+                        // The odd part's 2i sin ηy.
+                        *slot = if even {
+                            C64::new(re, im)
+                        } else {
+                            C64::new(-im, re)
+                        };
                     }
                     sum
                 })
@@ -416,21 +461,31 @@ pub(super) fn add_band<const N: usize>(
         let mut p = vec![[0.0f64; N]; stride];
         let mut q = vec![[0.0f64; N]; stride];
         for block in (0..stride).step_by(BLOCK) {
-            let mut acc_p = [[0.0f64; N]; BLOCK];
-            let mut acc_q = [[0.0f64; N]; BLOCK];
+            // Component-major, so that the loop over the block's columns vectorises.
+            let mut acc_p = [[0.0f64; BLOCK]; N];
+            let mut acc_q = [[0.0f64; BLOCK]; N];
             for (n, values) in partial.iter().enumerate() {
                 let a = &values[j];
-                let cosines = &xi_cos[n * stride + block..][..BLOCK];
-                let sines = &xi_sin[n * stride + block..][..BLOCK];
-                for k in 0..BLOCK {
-                    for component in 0..N {
-                        acc_p[k][component] += a[component].re * cosines[k];
-                        acc_q[k][component] += a[component].im * sines[k];
+                let cosines: &[f64; BLOCK] = xi_cos[n * stride + block..][..BLOCK]
+                    .try_into()
+                    .unwrap_or(&[0.0; BLOCK]);
+                let sines: &[f64; BLOCK] = xi_sin[n * stride + block..][..BLOCK]
+                    .try_into()
+                    .unwrap_or(&[0.0; BLOCK]);
+                for component in 0..N {
+                    let (re, im) = (a[component].re, a[component].im);
+                    for k in 0..BLOCK {
+                        acc_p[component][k] += re * cosines[k];
+                        acc_q[component][k] += im * sines[k];
                     }
                 }
             }
-            p[block..block + BLOCK].copy_from_slice(&acc_p);
-            q[block..block + BLOCK].copy_from_slice(&acc_q);
+            for k in 0..BLOCK {
+                for component in 0..N {
+                    p[block + k][component] = acc_p[component][k];
+                    q[block + k][component] = acc_q[component][k];
+                }
+            }
         }
         (0..N)
             .map(|component| {
@@ -577,9 +632,11 @@ impl ThermalStressOperator {
     pub fn apply(&mut self, flux: ArrayView2<f64>) -> Result<Array3<f64>, TransformError> {
         let [ny, nx] = self.convolutions[0].shape();
         let mut out = Array3::zeros((COMPONENTS, ny, nx));
+        // One transform of the flux for the six kernels.
+        let spectrum = self.convolutions[0].transform(flux)?;
         for (component, convolution) in self.convolutions.iter_mut().enumerate() {
             let mut layer = out.index_axis_mut(Axis(0), component);
-            convolution.apply(flux, layer.view_mut())?;
+            convolution.apply_transformed(&spectrum, layer.view_mut())?;
             layer.mapv_inplace(|s| s * self.scale);
         }
         Ok(out)

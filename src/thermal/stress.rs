@@ -68,7 +68,7 @@ use ndarray::{Array2, Array3, ArrayView2, Axis};
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 
-use super::kernel::{signed, CellGrid, Convolution};
+use super::kernel::{signed, CellGrid};
 use super::special::gauss_legendre;
 use crate::operator::transform::{signed_index, RealFft2, TransformError};
 
@@ -392,19 +392,18 @@ pub(super) fn add_band<const N: usize>(
     // and -nx mirrored from +ny and +nx).
     let rows = ny + 1;
     let columns = nx + 1;
-    // cos ηy and sin ηy for every row and η > 0.
-    let (eta_cos, eta_sin): (Vec<f64>, Vec<f64>) = (0..rows)
-        .flat_map(|j| {
-            let y = j as f64 * dy;
-            half.iter().map(move |&eta| {
-                let (s, c) = (eta * y).sin_cos();
-                (c, s)
-            })
-        })
-        .unzip();
-    // cos ξx and sin ξx for every ξ > 0 and column, rows padded to a multiple of the block.
-    const BLOCK: usize = 4;
-    let stride = columns.div_ceil(BLOCK) * BLOCK;
+    // cos ηy and sin ηy for every η > 0 and row (`[η][row]`).
+    let mut eta_cos = vec![0.0; m * rows];
+    let mut eta_sin = vec![0.0; m * rows];
+    for (index, &eta) in half.iter().enumerate() {
+        for j in 0..rows {
+            let (s, c) = (eta * j as f64 * dy).sin_cos();
+            eta_cos[index * rows + j] = c;
+            eta_sin[index * rows + j] = s;
+        }
+    }
+    // cos ξx and sin ξx for every ξ > 0 and column.
+    let stride = columns;
     let mut xi_cos = vec![0.0; m * stride];
     let mut xi_sin = vec![0.0; m * stride];
     for (n, &xi) in half.iter().enumerate() {
@@ -414,8 +413,9 @@ pub(super) fn add_band<const N: usize>(
             xi_sin[n * stride + i] = s;
         }
     }
-    // partial[n][j][component] = w_n Σ_η w F(ξn, η) e^(iηy_j) over both signs of η.
-    let partial: Vec<Vec<[C64; N]>> = half
+    // partial[n][component] = (re, im) over the rows: w_n Σ_η w F(ξn, η) e^(iηy_j) over
+    // both signs of η (sums along the rows, which vectorise).
+    let partial: Vec<Vec<[Vec<f64>; 2]>> = half
         .par_iter()
         .zip(&half_weights)
         .map(|(&xi, &w_xi)| {
@@ -430,26 +430,25 @@ pub(super) fn add_band<const N: usize>(
                     v
                 })
                 .collect();
-            (0..rows)
-                .map(|j| {
-                    let (cosines, sines) = (&eta_cos[j * m..][..m], &eta_sin[j * m..][..m]);
-                    let mut sum = [C64::new(0.0, 0.0); N];
-                    for (component, slot) in sum.iter_mut().enumerate() {
-                        let even = parity[component] > 0.0;
-                        let trig = if even { cosines } else { sines };
-                        let (mut re, mut im) = (0.0, 0.0);
-                        for (v, &t) in values.iter().zip(trig) {
-                            re += v[component].re * t;
-                            im += v[component].im * t;
+            (0..N)
+                .map(|component| {
+                    let even = parity[component] > 0.0;
+                    let table = if even { &eta_cos } else { &eta_sin };
+                    let (mut re, mut im) = (vec![0.0; rows], vec![0.0; rows]);
+                    for (index, v) in values.iter().enumerate() {
+                        let trig = &table[index * rows..][..rows];
+                        let (a, b) = (v[component].re, v[component].im);
+                        for ((r, i), &t) in re.iter_mut().zip(im.iter_mut()).zip(trig) {
+                            *r += a * t;
+                            *i += b * t;
                         }
-                        // The odd part's 2i sin ηy.
-                        *slot = if even {
-                            C64::new(re, im)
-                        } else {
-                            C64::new(-im, re)
-                        };
                     }
-                    sum
+                    // The odd part's 2i sin ηy.
+                    if even {
+                        [re, im]
+                    } else {
+                        [im.iter().map(|v| -v).collect(), re]
+                    }
                 })
                 .collect()
         })
@@ -458,32 +457,19 @@ pub(super) fn add_band<const N: usize>(
     // One row of every component: `[component][column]`, x >= 0 then x < 0, from
     // P = Σ a.re cos ξx and Q = Σ a.im sin ξx: (P - Q) at x, (P + Q) at -x.
     let row_values = |j: usize| -> Vec<Vec<f64>> {
-        let mut p = vec![[0.0f64; N]; stride];
-        let mut q = vec![[0.0f64; N]; stride];
-        for block in (0..stride).step_by(BLOCK) {
-            // Component-major, so that the loop over the block's columns vectorises.
-            let mut acc_p = [[0.0f64; BLOCK]; N];
-            let mut acc_q = [[0.0f64; BLOCK]; N];
-            for (n, values) in partial.iter().enumerate() {
-                let a = &values[j];
-                let cosines: &[f64; BLOCK] = xi_cos[n * stride + block..][..BLOCK]
-                    .try_into()
-                    .unwrap_or(&[0.0; BLOCK]);
-                let sines: &[f64; BLOCK] = xi_sin[n * stride + block..][..BLOCK]
-                    .try_into()
-                    .unwrap_or(&[0.0; BLOCK]);
-                for component in 0..N {
-                    let (re, im) = (a[component].re, a[component].im);
-                    for k in 0..BLOCK {
-                        acc_p[component][k] += re * cosines[k];
-                        acc_q[component][k] += im * sines[k];
-                    }
+        // P and Q of each component along the columns x >= 0 (long sums, which vectorise).
+        let mut p = vec![vec![0.0f64; stride]; N];
+        let mut q = vec![vec![0.0f64; stride]; N];
+        for (n, sums) in partial.iter().enumerate() {
+            let cosines = &xi_cos[n * stride..][..stride];
+            let sines = &xi_sin[n * stride..][..stride];
+            for component in 0..N {
+                let (re, im) = (sums[component][0][j], sums[component][1][j]);
+                for (slot, &c) in p[component].iter_mut().zip(cosines) {
+                    *slot += re * c;
                 }
-            }
-            for k in 0..BLOCK {
-                for component in 0..N {
-                    p[block + k][component] = acc_p[component][k];
-                    q[block + k][component] = acc_q[component][k];
+                for (slot, &s) in q[component].iter_mut().zip(sines) {
+                    *slot += im * s;
                 }
             }
         }
@@ -493,7 +479,7 @@ pub(super) fn add_band<const N: usize>(
                     .map(|column| {
                         let i = signed(column, 2 * nx);
                         let at = i.unsigned_abs() as usize;
-                        let (pp, qq) = (p[at][component], q[at][component]);
+                        let (pp, qq) = (p[component][at], q[component][at]);
                         scale * if i >= 0 { pp - qq } else { pp + qq }
                     })
                     .collect()
@@ -602,9 +588,12 @@ pub(super) fn add_smooth<const N: usize>(
 }
 
 /// The thermal stress (Pa) of body 1 at one depth under a gridded flux: six DC-FFT
-/// convolutions.
+/// convolutions. It keeps the six lattices, not their spectra: each lattice is transformed
+/// when applied, into one buffer (a layer is applied once; its spectra would double the
+/// memory, and six more buffers of the same size treble it).
 pub struct ThermalStressOperator {
-    convolutions: Vec<Convolution>,
+    shape: [usize; 2],
+    lattices: Array3<f64>,
     scale: f64,
 }
 
@@ -617,26 +606,36 @@ impl ThermalStressOperator {
         nu: f64,
         modulus_expansion_over_conductivity: f64,
     ) -> Result<Self, TransformError> {
-        let lattices = influence_lattices(grid, z, u, nu);
-        let convolutions = lattices
-            .axis_iter(Axis(0))
-            .map(|lattice| Convolution::new(grid.shape, lattice))
-            .collect::<Result<Vec<_>, _>>()?;
         Ok(Self {
-            convolutions,
+            shape: grid.shape,
+            lattices: influence_lattices(grid, z, u, nu),
             scale: modulus_expansion_over_conductivity,
         })
     }
 
+    /// Bytes held while a layer of `shape` is computed: the six lattices of `[2 ny, 2 nx]`
+    /// (8 bytes a value), the flux's spectrum and one kernel's (16 bytes a value of
+    /// `[nx + 1, 2 ny]`), and the layer `[6, ny, nx]`.
+    pub fn memory_bytes(shape: [usize; 2]) -> usize {
+        let [ny, nx] = shape;
+        COMPONENTS * 4 * ny * nx * 8 + 2 * (nx + 1) * 2 * ny * 16 + COMPONENTS * ny * nx * 8
+    }
+
     /// `[6, ny, nx]`: xx, yy, zz, yz, xz, xy (Pa) under `flux` (W/m²).
     pub fn apply(&mut self, flux: ArrayView2<f64>) -> Result<Array3<f64>, TransformError> {
-        let [ny, nx] = self.convolutions[0].shape();
+        let [ny, nx] = self.shape;
+        let plan = RealFft2::new([2 * ny, 2 * nx]);
+        let mut work = plan.work();
         let mut out = Array3::zeros((COMPONENTS, ny, nx));
         // One transform of the flux for the six kernels.
-        let spectrum = self.convolutions[0].transform(flux)?;
-        for (component, convolution) in self.convolutions.iter_mut().enumerate() {
+        let mut flux_spectrum = plan.new_spectrum();
+        plan.forward(flux, &mut flux_spectrum, &mut work)?;
+        let mut spectrum = plan.new_spectrum();
+        for (component, lattice) in self.lattices.axis_iter(Axis(0)).enumerate() {
+            plan.forward(lattice, &mut spectrum, &mut work)?;
+            spectrum.zip_mut_with(&flux_spectrum, |value, &q| *value *= q);
             let mut layer = out.index_axis_mut(Axis(0), component);
-            convolution.apply_transformed(&spectrum, layer.view_mut())?;
+            plan.inverse(&mut spectrum, layer.view_mut(), &mut work)?;
             layer.mapv_inplace(|s| s * self.scale);
         }
         Ok(out)

@@ -97,7 +97,7 @@ const ALIAS_FREE_CELL_PECLET: f64 = 0.05;
 /// within a few `1/kw` of the cell (its kernel falls as `1/r³`), so its images `2 nx dx`
 /// away are negligible: on the rough ball of `benches/thermal.rs` (`u/kw = 0.2`) the
 /// thermal von Mises maximum moved by 4e-5 of itself without oversampling (measured).
-fn smooth_oversampling(u: f64, kw: f64) -> usize {
+pub(crate) fn smooth_oversampling(u: f64, kw: f64) -> usize {
     if u <= SLOW_OVER_WINDOW * kw {
         1
     } else if u <= kw {
@@ -105,6 +105,18 @@ fn smooth_oversampling(u: f64, kw: f64) -> usize {
     } else {
         SMOOTH_OVERSAMPLING
     }
+}
+
+/// [`smooth_oversampling`] on a grid of `shape` and cells `spacing_m` (its window's `kw`).
+pub fn smooth_oversampling_of(shape: [usize; 2], spacing_m: [f64; 2], u: f64) -> usize {
+    smooth_oversampling(u, window_wavenumber(shape, spacing_m))
+}
+
+/// `kw = 8π / min(2 nx dx, 2 ny dy)` of the window (module doc).
+fn window_wavenumber(shape: [usize; 2], spacing_m: [f64; 2]) -> f64 {
+    let [ny, nx] = shape;
+    let [dx, dy] = spacing_m;
+    8.0 * PI / (2.0 * nx as f64 * dx).min(2.0 * ny as f64 * dy)
 }
 
 /// The aliases each way of the smooth part at depth `z` (module doc): 3 on the surface, 1
@@ -343,7 +355,7 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
         return out;
     }
     let two_u = 2.0 * u;
-    let kw = 8.0 * PI / (2.0 * nx as f64 * dx).min(2.0 * ny as f64 * dy);
+    let kw = window_wavenumber(grid.shape, grid.spacing_m);
     let window = |k: f64| (-(k / kw).powi(2)).exp();
     let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
     add_band(&mut out, grid, kw * 5.0, PARITY, &|xi, eta| {

@@ -150,8 +150,8 @@ fn rough_heating(c: &mut Criterion) {
                 let name = format!("{kind}_{}", if heated { "thermal" } else { "contact" });
                 group.bench_with_input(BenchmarkId::new(name, n), &scene, |b, scene| {
                     b.iter(|| {
-                        let solution =
-                            stressfield::study::rough::solve(scene, &mut |_, _| {}).expect("solved");
+                        let solution = stressfield::study::rough::solve(scene, &mut |_, _| {})
+                            .expect("solved");
                         let findings =
                             stressfield::study::rough::findings(scene, &solution).expect("maxima");
                         let heating = scene.thermal.map(|_| {

@@ -92,7 +92,8 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
     }
     // A rough contact: the solve and the subsurface search within the memory allowed
     // (estimated, [`super::heating_plan::contact_cost`]; issue 41).
-    if let (crate::scene::ContactKind::Rough, Some(surface)) = (scene.contact.kind, &scene.surface) {
+    if let (crate::scene::ContactKind::Rough, Some(surface)) = (scene.contact.kind, &scene.surface)
+    {
         let shape = surface.heights.shape();
         let (bytes, seconds) = super::heating_plan::contact_cost(shape);
         let limit = memory_limit_bytes();

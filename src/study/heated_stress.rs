@@ -352,7 +352,13 @@ impl HeatedStress {
         for row in self.rows() {
             for column in 0..self.grid.shape[1] {
                 let (thermal, contact) = self.at(layer, row, column);
-                offer(&mut best, THERMAL_VON_MISES, thermal.von_mises(), row, column);
+                offer(
+                    &mut best,
+                    THERMAL_VON_MISES,
+                    thermal.von_mises(),
+                    row,
+                    column,
+                );
                 let total = thermal + contact;
                 let total_von_mises = total.von_mises();
                 offer(&mut best, TOTAL_VON_MISES, total_von_mises, row, column);
@@ -363,7 +369,13 @@ impl HeatedStress {
                     let contact_von_mises = contact.von_mises();
                     offer(&mut best, CONTACT_VON_MISES, contact_von_mises, row, column);
                     if contact_von_mises * bound >= best[CONTACT_MAX_SHEAR].0 {
-                        offer(&mut best, CONTACT_MAX_SHEAR, contact.max_shear(), row, column);
+                        offer(
+                            &mut best,
+                            CONTACT_MAX_SHEAR,
+                            contact.max_shear(),
+                            row,
+                            column,
+                        );
                     }
                 }
             }

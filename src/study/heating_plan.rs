@@ -29,10 +29,14 @@
 //! is small (the gears' 41 points of the path and the study at the hottest: 0.1 s).
 //!
 //! ## The limits
-//! - A 3-D heating grid of at most [`MAX_CELLS`] cells (512 x 512: about five minutes of CPU,
-//!   about three on two idle cores, and 400 MB): a Hertz contact's grid is refined with the speed
-//!   (cells of `1/u` below `a/20`), so this bounds the Péclet number (about 148 for a sphere);
-//!   a rough scene's grid is its map.
+//! - A Hertz contact's 3-D heating grid of at most [`MAX_CELLS`] cells (512 x 512): its grid is
+//!   refined with the speed (cells of `1/u` below `a/20`), so this bounds the Péclet number
+//!   (about 148 for a sphere).
+//! - A rough map's heating of at most [`ROUGH_MAX_CELLS`] cells (2048 x 2048), the grid being
+//!   the map's, within the same memory as its contact (issue 41): measured (`/usr/bin/time -v`,
+//!   2026-11-28, issue 41's rough ball) 65 MB at 256² and 222 MB at 512² against 40 and 126 MB
+//!   for `contact`, so [`ROUGH_HEATING_BYTES_PER_CELL`] and [`CONTACT_BYTES_PER_CELL`]
+//!   ([`contact_cost`], which `check` states for a rough scene without heating too).
 //! - Memory within [`crate::field::memory_limit_bytes`].
 //! - The cell Péclet number `u dx` within [`MAX_CELL_PECLET`] (a Hertz grid of at most 640
 //!   cells across `4a`; a rough map as sampled; gears at every point of the path).

@@ -69,13 +69,16 @@ pub const ROUGH_MAX_CELLS: usize = 1 << 22;
 /// and 222 MB at 512² (issue 41's ball, `/usr/bin/time -v`), 800 bytes a cell.
 pub const ROUGH_HEATING_BYTES_PER_CELL: usize = 800;
 /// Peak memory of `contact` of a rough map a cell (the solve and the subsurface search):
-/// measured 40 and 126 MB at 256² and 512² (isolated; periodic 36 and 117 MB), 440 bytes a cell.
-pub const CONTACT_BYTES_PER_CELL: usize = 440;
+/// measured (issue 41's rough ball, isolated) 40, 126, 472 and 1218 MB at 256², 512², 1024²
+/// and 2048² (periodic 36, 117 and 433 MB to 1024²): 360 bytes a cell is within 22 % of each
+/// (the search's layers stop growing with the grid at 2048²).
+pub const CONTACT_BYTES_PER_CELL: usize = 360;
 /// Memory of `contact` and `thermal` of a rough map besides the cells (the process, the
 /// scene): the intercept of the measurements.
 pub const ROUGH_BASE_BYTES: usize = 12 << 20;
-/// CPU time of `contact` of a rough map a cell, s (measured while other builds ran: 14 µs at
-/// 256², 19 µs at 512²).
+/// CPU time of `contact` of a rough map a cell at 256², s, growing as the square of
+/// `log2(cells) / 16` (measured while other builds ran: 14, 19, 24 and 40 µs a cell at 256²,
+/// 512², 1024² and 2048²: more iterations and longer transforms on finer maps).
 pub const CONTACT_CPU_SECONDS_PER_CELL: f64 = 2e-5;
 /// CPU time of the heating of a rough map a cell, s (measured while other builds ran: 105 µs
 /// at 256², 119 µs at 512², the contact included).
@@ -93,7 +96,7 @@ pub fn contact_cost(shape: [usize; 2]) -> (usize, f64) {
     let cells = shape[0] * shape[1];
     (
         ROUGH_BASE_BYTES + CONTACT_BYTES_PER_CELL.saturating_mul(cells),
-        CONTACT_CPU_SECONDS_PER_CELL * cells as f64,
+        CONTACT_CPU_SECONDS_PER_CELL * cells as f64 * ((cells.max(1) as f64).log2() / 16.0).powi(2).max(1.0),
     )
 }
 

@@ -96,7 +96,9 @@ pub fn contact_cost(shape: [usize; 2]) -> (usize, f64) {
     let cells = shape[0] * shape[1];
     (
         ROUGH_BASE_BYTES + CONTACT_BYTES_PER_CELL.saturating_mul(cells),
-        CONTACT_CPU_SECONDS_PER_CELL * cells as f64 * ((cells.max(1) as f64).log2() / 16.0).powi(2).max(1.0),
+        CONTACT_CPU_SECONDS_PER_CELL
+            * cells as f64
+            * ((cells.max(1) as f64).log2() / 16.0).powi(2).max(1.0),
     )
 }
 

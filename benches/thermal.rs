@@ -109,5 +109,63 @@ fn coupled_solve(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, temperature, coupled_solve);
+/// A rough steel ball (R = 2 mm, Sq 0.05 µm, seed 3) on a steel flat under 0.5 N, μ = 0.1, over a
+/// 128 µm window (isolated), or the same roughness without the ball pressed to 0.5 GPa
+/// (periodic), with `[thermal]` sliding at 0.5 m/s (Pe about 1.3, Blok's partition): the scene
+/// of issue 41.
+fn rough_scene(samples: usize, periodic: bool, heated: bool) -> stressfield::scene::Scene {
+    let spacing_um = 128.0 / samples as f64;
+    let (control, form) = if periodic {
+        ("mean_pressure = \"0.5 GPa\"\nperiodic = true", "")
+    } else {
+        ("load = \"0.5 N\"", "sphere_radius = \"2 mm\"\n")
+    };
+    let thermal = if heated {
+        "[thermal]\nspeed = \"0.5 m/s\"\npartition = \"blok\"\n"
+    } else {
+        ""
+    };
+    let text = format!(
+        "format = 1\n[contact]\nkind = \"rough\"\n{control}\nfriction = 0.1\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = {samples}\nspacing = \"{spacing_um} um\"\nhurst = 0.8\nrolloff = \"32 um\"\ncutoff = \"2 um\"\nrms_height = \"0.05 um\"\n{form}seed = 3\n{thermal}"
+    );
+    stressfield::scene::Scene::parse(&text, "bench", "bench.toml").expect("the bench scene")
+}
+
+/// What `stressfield contact` computes of a rough scene, without and with `[thermal]`, side by
+/// side: the solve and the subsurface maxima, and then the heating study (issue 41's target:
+/// at most twice the time). `STRESSFIELD_BENCH_SIZES` (e.g. `256,512,1024`) chooses the grids
+/// (default 256).
+fn rough_heating(c: &mut Criterion) {
+    let mut group = c.benchmark_group("thermal_rough");
+    group.sample_size(10);
+    let sizes: Vec<usize> = std::env::var("STRESSFIELD_BENCH_SIZES")
+        .ok()
+        .map(|v| v.split(',').filter_map(|s| s.trim().parse().ok()).collect())
+        .unwrap_or_else(|| vec![256]);
+    for n in sizes {
+        for periodic in [false, true] {
+            let kind = if periodic { "periodic" } else { "isolated" };
+            for heated in [false, true] {
+                let scene = rough_scene(n, periodic, heated);
+                let name = format!("{kind}_{}", if heated { "thermal" } else { "contact" });
+                group.bench_with_input(BenchmarkId::new(name, n), &scene, |b, scene| {
+                    b.iter(|| {
+                        let solution = stressfield::study::rough::solve(scene, &mut |_, _| {})
+                            .expect("solved");
+                        let findings =
+                            stressfield::study::rough::findings(scene, &solution).expect("maxima");
+                        let heating = scene.thermal.map(|_| {
+                            stressfield::study::thermal::study(scene, Some(&solution), &mut |_| {})
+                                .expect("heated")
+                        });
+                        (findings, heating)
+                    })
+                });
+            }
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, temperature, coupled_solve, rough_heating);
 criterion_main!(benches);

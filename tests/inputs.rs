@@ -948,14 +948,15 @@ fn heating_outputs_are_checked_first_and_written_all_or_none() {
 }
 
 /// Issue 42, class 2: the heating's memory and time are estimated before anything is
-/// computed, by `check` too: a rough ball of 1024² samples with `[thermal]` (2048² climbed
-/// past 4 GB and aborted after 189 s) is refused at once naming the map's size, a sphere
+/// computed, by `check` too: a rough ball of 4096² samples with `[thermal]` (before issue 41,
+/// 2048² climbed past 4 GB and aborted after 189 s; since, 2048² heats within the memory its
+/// contact takes) is refused at once naming the map's size, a sphere
 /// slid at Pe 190 (the grid refined to 640 x 480 cells) naming the speed; an accepted scene's
 /// `check` line states the estimate.
 #[test]
 fn the_heatings_cost_is_estimated_and_refused_at_check() {
     let dir = tempfile::tempdir().expect("dir");
-    let rough = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\nfriction = 0.1\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 1024\nspacing = \"0.125 um\"\nhurst = 0.8\nrolloff = \"32 um\"\ncutoff = \"4 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\nseed = 3\n[thermal]\nspeed = \"2 m/s\"\n";
+    let rough = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.5 N\"\nfriction = 0.1\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 4096\nspacing = \"0.03125 um\"\nhurst = 0.8\nrolloff = \"32 um\"\ncutoff = \"4 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\nseed = 3\n[thermal]\nspeed = \"2 m/s\"\n";
     let path = dir.path().join("rough.toml");
     std::fs::write(&path, rough).expect("scene");
     let started = std::time::Instant::now();
@@ -963,7 +964,7 @@ fn the_heatings_cost_is_estimated_and_refused_at_check() {
         &run(&["check", path.to_str().expect("utf8")]),
         &[
             "key `surface.generate.samples`",
-            "the heating of a 1024 x 1024 map",
+            "of a 4096 x 4096 map",
             "min of CPU",
             "GiB",
             "half the samples a side",

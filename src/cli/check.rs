@@ -40,6 +40,15 @@ fn check_summary(scene: &Scene) -> String {
             } else {
                 "surface"
             };
+            if scene.contact.kind == ContactKind::Rough && scene.thermal.is_none() {
+                // What `contact` will take (issue 41): estimated before anything is computed.
+                let (bytes, seconds) = study::heating_plan::contact_cost([ny, nx]);
+                return format!(
+                    "{kind}, {nx} x {ny} samples; contact: about {} of CPU and {}",
+                    study::heating_plan::duration(seconds),
+                    stressfield::io::text::bytes(bytes as u64)
+                );
+            }
             format!("{kind}, {nx} x {ny} samples")
         }
         (None, Some(_)) => {

@@ -90,6 +90,34 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             ));
         }
     }
+    // A rough contact: the solve and the subsurface search within the memory allowed
+    // (estimated, [`super::heating_plan::contact_cost`]; issue 41).
+    if let (crate::scene::ContactKind::Rough, Some(surface)) = (scene.contact.kind, &scene.surface)
+    {
+        let shape = surface.heights.shape();
+        let (bytes, seconds) = super::heating_plan::contact_cost(shape);
+        let limit = memory_limit_bytes();
+        if bytes > limit {
+            let key = if surface.generated {
+                "surface.generate.samples"
+            } else {
+                "surface.file"
+            };
+            return Err(error(
+                key,
+                format!(
+                    "the contact of a {} x {} map needs about {} of CPU and {} ({} bytes a cell), more than the {} this machine allows",
+                    shape[1],
+                    shape[0],
+                    super::heating_plan::duration(seconds),
+                    crate::io::text::bytes(bytes as u64),
+                    super::heating_plan::CONTACT_BYTES_PER_CELL,
+                    crate::io::text::bytes(limit as u64)
+                ),
+                "use a coarser map (half the samples a side takes a quarter of the memory)",
+            ));
+        }
+    }
     // The heating: its grid resolves the speeds, and its memory and time are within the
     // limits (issue 42, classes 2 and 4), refused under the key the scene wrote.
     if let Err(refusal) = super::heating_plan::plan(scene) {

@@ -93,7 +93,7 @@ type LayerMaxima = ([(f64, usize, usize); 2], [bool; 2]);
 /// and `d²`, so `τ = d/2` lies between `σvM/2` and `σvM/√3`: the classical comparison of the
 /// Tresca and von Mises yield criteria (e.g. R. Hill, *The Mathematical Theory of Plasticity*,
 /// 1950).
-const TRESCA_PER_VON_MISES: f64 = (1.0 + 1e-9) / 1.732_050_807_568_877_2;
+pub(crate) const TRESCA_PER_VON_MISES: f64 = (1.0 + 1e-9) / 1.732_050_807_568_877_2;
 
 /// The maxima of each layer at `depths` ([`grid_maxima`]).
 fn layer_maxima(

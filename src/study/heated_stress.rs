@@ -323,16 +323,59 @@ impl HeatedStress {
         (thermal, self.contact_at(x, self.y_m(row), layer.depth_m))
     }
 
-    /// Each quantity's largest value over the layer's cells: `(value, row, column)`.
+    /// Whether the contact's maxima come from elsewhere: the closed form, or a rough
+    /// contact's own search ([`super::thermal::study`]).
+    fn contact_elsewhere(&self) -> bool {
+        self.closed_form()
+            || matches!(
+                self.contact,
+                ContactPart::Layers {
+                    fft: Layers::Tractions(_),
+                    ..
+                }
+            )
+    }
+
+    /// Each quantity's largest value over the layer's cells: `(value, row, column)` (the
+    /// contact's alone are left unsearched when they come from elsewhere). A maximum shear
+    /// is computed (its principal stresses are most of the time) only where the von Mises
+    /// bound `τ <= σvM/√3` could beat the best so far, as `contact`'s search does.
     fn layer_best(&self, layer: &StressLayer) -> [(f64, usize, usize); QUANTITIES] {
+        let contact_too = !self.contact_elsewhere();
         let mut best = [(f64::NEG_INFINITY, 0, 0); QUANTITIES];
+        fn offer(best: &mut [(f64, usize, usize)], k: usize, v: f64, row: usize, column: usize) {
+            if v > best[k].0 {
+                best[k] = (v, row, column);
+            }
+        }
+        let bound = super::assess::TRESCA_PER_VON_MISES;
         for row in self.rows() {
             for column in 0..self.grid.shape[1] {
                 let (thermal, contact) = self.at(layer, row, column);
-                for (k, b) in best.iter_mut().enumerate() {
-                    let v = measure(k, &thermal, &contact);
-                    if v > b.0 {
-                        *b = (v, row, column);
+                offer(
+                    &mut best,
+                    THERMAL_VON_MISES,
+                    thermal.von_mises(),
+                    row,
+                    column,
+                );
+                let total = thermal + contact;
+                let total_von_mises = total.von_mises();
+                offer(&mut best, TOTAL_VON_MISES, total_von_mises, row, column);
+                if total_von_mises * bound >= best[TOTAL_MAX_SHEAR].0 {
+                    offer(&mut best, TOTAL_MAX_SHEAR, total.max_shear(), row, column);
+                }
+                if contact_too {
+                    let contact_von_mises = contact.von_mises();
+                    offer(&mut best, CONTACT_VON_MISES, contact_von_mises, row, column);
+                    if contact_von_mises * bound >= best[CONTACT_MAX_SHEAR].0 {
+                        offer(
+                            &mut best,
+                            CONTACT_MAX_SHEAR,
+                            contact.max_shear(),
+                            row,
+                            column,
+                        );
                     }
                 }
             }
@@ -362,11 +405,12 @@ impl HeatedStress {
                 .find(|(d, _)| *d == z)
                 .map_or(f64::NEG_INFINITY, |(_, b)| b[k].0)
         };
-        // The contact's maxima come from the closed form when there is one.
+        // The contact's maxima come from the closed form when there is one, and a rough
+        // contact's from `contact`'s own search ([`super::thermal::study`]): neither is refined
+        // here (each refined depth is a whole layer of the thermal stress).
+        let contact_elsewhere = self.contact_elsewhere();
         let searched: Vec<usize> = (0..QUANTITIES)
-            .filter(|&k| {
-                !(self.closed_form() && (k == CONTACT_VON_MISES || k == CONTACT_MAX_SHEAR))
-            })
+            .filter(|&k| !(contact_elsewhere && (k == CONTACT_VON_MISES || k == CONTACT_MAX_SHEAR)))
             .collect();
         for &k in &searched {
             let best = (0..coarse.len())

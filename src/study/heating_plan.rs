@@ -29,10 +29,14 @@
 //! is small (the gears' 41 points of the path and the study at the hottest: 0.1 s).
 //!
 //! ## The limits
-//! - A 3-D heating grid of at most [`MAX_CELLS`] cells (512 x 512: about five minutes of CPU,
-//!   about three on two idle cores, and 400 MB): a Hertz contact's grid is refined with the speed
-//!   (cells of `1/u` below `a/20`), so this bounds the Péclet number (about 148 for a sphere);
-//!   a rough scene's grid is its map.
+//! - A Hertz contact's 3-D heating grid of at most [`MAX_CELLS`] cells (512 x 512): its grid is
+//!   refined with the speed (cells of `1/u` below `a/20`), so this bounds the Péclet number
+//!   (about 148 for a sphere).
+//! - A rough map's heating of at most [`ROUGH_MAX_CELLS`] cells (2048 x 2048), the grid being
+//!   the map's, within the same memory as its contact (issue 41): measured (`/usr/bin/time -v`,
+//!   2026-11-28, issue 41's rough ball) 65 MB at 256² and 222 MB at 512² against 40 and 126 MB
+//!   for `contact`, so [`ROUGH_HEATING_BYTES_PER_CELL`] and [`CONTACT_BYTES_PER_CELL`]
+//!   ([`contact_cost`], which `check` states for a rough scene without heating too).
 //! - Memory within [`crate::field::memory_limit_bytes`].
 //! - The cell Péclet number `u dx` within [`MAX_CELL_PECLET`] (a Hertz grid of at most 640
 //!   cells across `4a`; a rough map as sampled; gears at every point of the path).
@@ -43,18 +47,60 @@ use crate::study::gear_heating::{path_positions, scene_at};
 use crate::study::thermal::{hertz_layout, inverse_length, ThermalStudyError, STUDY_WINDOW};
 use crate::thermal::temperature::MAX_CELL_PECLET;
 
-/// Peak memory of a 3-D heating study a cell of its grid (measured: 1.47 to 1.54 kB).
+/// Peak memory of a 3-D heating study of a Hertz contact a cell of its grid (measured before
+/// issue 41: 1.47 to 1.54 kB; since its thermal stress keeps no kernel spectra, an upper bound).
 pub const BYTES_PER_CELL: usize = 1600;
 /// Memory besides the grid (the process, the scene).
 pub const BASE_BYTES: usize = 16 << 20;
-/// CPU time of a 3-D heating study a cell of its grid, s (measured: 0.44 to 0.55 ms with 16
-/// depths; 1.2 ms since the maxima are refined in depth and x, about 40 layers: the sliding
-/// sphere at 2 m/s, 12 513 cells, 15.4 s, 2026-11-28).
-pub const CPU_SECONDS_PER_CELL: f64 = 1.2e-3;
+/// CPU time of a 3-D heating study of a Hertz contact a cell of its grid, s (1.2 ms before
+/// issue 41, about 40 layers; 0.49 ms since: the sliding sphere at 2 m/s, 12 513 cells, 6.1 s
+/// of CPU measured while other builds ran, 2026-11-28).
+pub const CPU_SECONDS_PER_CELL: f64 = 5e-4;
 /// The heating sheet's sections (25 depths) against the study's 16: its CPU time a cell.
 pub const SHEET_CPU_SECONDS_PER_CELL: f64 = 8e-4;
-/// The most cells of a 3-D heating grid: 512 x 512.
+/// The most cells of a Hertz contact's 3-D heating grid: 512 x 512 (it bounds the Péclet
+/// number).
 pub const MAX_CELLS: usize = 1 << 18;
+/// The most cells of a rough map's heating: 2048 x 2048, the same as its contact within the
+/// memory allowed (issue 41).
+pub const ROUGH_MAX_CELLS: usize = 1 << 22;
+/// Peak memory of `thermal` of a rough map a cell, besides [`ROUGH_BASE_BYTES`], for a source
+/// slow on the map's scale (the smooth part's lattice not oversampled): measured 65 MB at 256²
+/// and 222 MB at 512² (issue 41's ball, `/usr/bin/time -v`), 800 bytes a cell.
+pub const ROUGH_HEATING_BYTES_PER_CELL: usize = 800;
+/// Peak memory of `contact` of a rough map a cell (the solve and the subsurface search):
+/// measured (issue 41's rough ball, isolated) 40, 126, 472 and 1218 MB at 256², 512², 1024²
+/// and 2048² (periodic 36, 117 and 433 MB to 1024²): 360 bytes a cell is within 22 % of each
+/// (the search's layers stop growing with the grid at 2048²).
+pub const CONTACT_BYTES_PER_CELL: usize = 360;
+/// Memory of `contact` and `thermal` of a rough map besides the cells (the process, the
+/// scene): the intercept of the measurements.
+pub const ROUGH_BASE_BYTES: usize = 12 << 20;
+/// CPU time of `contact` of a rough map a cell at 256², s, growing as the square of
+/// `log2(cells) / 16` (measured while other builds ran: 14, 19, 24 and 40 µs a cell at 256²,
+/// 512², 1024² and 2048²: more iterations and longer transforms on finer maps).
+pub const CONTACT_CPU_SECONDS_PER_CELL: f64 = 2e-5;
+/// CPU time of the heating of a rough map a cell, s (measured while other builds ran: 105 µs
+/// at 256², 119 µs at 512², the contact included).
+pub const ROUGH_CPU_SECONDS_PER_CELL: f64 = 1.2e-4;
+
+/// The smooth part's extra memory a cell when its lattice is oversampled `over` times in x
+/// ([`crate::thermal::stress`]): its samples of six components (96 bytes a value of half the
+/// lattice), one spectrum and the periodic lattice.
+fn smooth_bytes_per_cell(over: usize) -> usize {
+    (over - 1) * (2 * 96 + 2 * 16 + 4 * 8)
+}
+
+/// What `contact` of a rough map of `shape` takes: `(bytes, CPU seconds)`.
+pub fn contact_cost(shape: [usize; 2]) -> (usize, f64) {
+    let cells = shape[0] * shape[1];
+    (
+        ROUGH_BASE_BYTES + CONTACT_BYTES_PER_CELL.saturating_mul(cells),
+        CONTACT_CPU_SECONDS_PER_CELL
+            * cells as f64
+            * ((cells.max(1) as f64).log2() / 16.0).powi(2).max(1.0),
+    )
+}
 
 /// The heating of a scene as planned.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -264,13 +310,27 @@ fn rough(scene: &Scene, spec: &ThermalSpec) -> Result<HeatingPlan, Refusal> {
             });
         }
     }
-    let periodicity = match scene.contact.rough.map(|r| r.periodic) {
-        Some(true) => crate::operator::elastic::Periodicity::Periodic,
-        _ => crate::operator::elastic::Periodicity::NonPeriodic,
+    let cells = ny * nx;
+    let (contact_bytes, contact_seconds) = contact_cost([ny, nx]);
+    // The smooth part's oversampling for the fastest body ([`crate::thermal::stress`]).
+    let dy = surface.heights.spacing_m()[1];
+    let u = std::iter::once(&spec.body1)
+        .chain(spec.body2.iter())
+        .map(inverse_length)
+        .fold(0.0, f64::max);
+    let over = crate::thermal::stress::smooth_oversampling_of([ny, nx], [dx, dy], u);
+    let heating_bytes = ROUGH_BASE_BYTES.saturating_add(
+        (ROUGH_HEATING_BYTES_PER_CELL + smooth_bytes_per_cell(over)).saturating_mul(cells),
+    );
+    let plan = HeatingPlan {
+        shape: [ny, nx],
+        line: false,
+        bytes: heating_bytes.max(contact_bytes),
+        cpu_seconds: (ROUGH_CPU_SECONDS_PER_CELL * cells as f64).max(contact_seconds),
+        // The sheet's 25 depths against the search's (about 37): about as long again.
+        sheet_cpu_seconds: ROUGH_CPU_SECONDS_PER_CELL * cells as f64,
     };
-    let solve = crate::contact::rough::RoughContactProblem::memory_bytes([ny, nx], periodicity);
-    let plan = HeatingPlan::of_grid([ny, nx], false, solve);
-    if ny * nx > MAX_CELLS || plan.bytes > memory_limit_bytes() {
+    if cells > ROUGH_MAX_CELLS || plan.bytes > memory_limit_bytes() {
         let key = if surface.generated {
             "surface.generate.samples"
         } else {
@@ -279,10 +339,8 @@ fn rough(scene: &Scene, spec: &ThermalSpec) -> Result<HeatingPlan, Refusal> {
         return Err(Refusal {
             key: key.into(),
             message: format!(
-                "the heating of a {nx} x {ny} map needs {}: more than the heating allows ({} cells, {}; memory within {})",
+                "the heating of a {nx} x {ny} map needs {}: more than the heating allows (2048 x 2048 cells, memory within {})",
                 plan.summary(),
-                MAX_CELLS,
-                limit_text(),
                 crate::io::text::bytes(memory_limit_bytes() as u64)
             ),
             hint: "use a coarser map for the heating (half the samples a side takes a quarter of the time and memory), or remove [thermal] to solve the contact alone".into(),

@@ -145,7 +145,7 @@ pub fn influence_lattice(grid: &CellGrid, u: f64) -> Array2<f64> {
     let two_u = 2.0 * u;
     let window = |k: f64| (-(k / kw).powi(2)).exp();
     let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
-    add_band(&mut out, grid, kw * 5.0, &|xi, eta| {
+    add_band(&mut out, grid, kw * 5.0, [1.0], &|xi, eta| {
         [response(xi, eta, two_u) * window(xi.hypot(eta)) * cell(xi, eta)]
     });
     // The lattice's wavenumber steps (those of `add_smooth`).
@@ -191,7 +191,7 @@ pub fn influence_lattice(grid: &CellGrid, u: f64) -> Array2<f64> {
         }
         C64::new(re, im) / d_xi
     };
-    add_smooth(&mut out, grid, ALIASES, OVERSAMPLING, &|xi, eta| {
+    add_smooth(&mut out, grid, ALIASES, OVERSAMPLING, [1.0], &|xi, eta| {
         if xi.abs() < 3.5 * d_xi && eta.abs() < eta_cusp {
             if eta == 0.0 {
                 // The whole cell about k = 0, halves in η (the cusp closes at η = 0).

@@ -104,6 +104,31 @@ impl Convolution {
         self.shape
     }
 
+    /// The zero-padded spectrum of `input` (`[ny, nx]`), for [`Self::apply_transformed`]: one
+    /// transform of a flux serves every kernel of the same grid.
+    pub fn transform(
+        &mut self,
+        input: ArrayView2<f64>,
+    ) -> Result<Array2<Complex<f64>>, TransformError> {
+        let mut spectrum = self.plan.new_spectrum();
+        self.plan.forward(input, &mut spectrum, &mut self.work)?;
+        Ok(spectrum)
+    }
+
+    /// `output = kernel * input` from the input's spectrum ([`Self::transform`], of a
+    /// convolution of the same grid).
+    pub fn apply_transformed(
+        &mut self,
+        input_spectrum: &Array2<Complex<f64>>,
+        output: ArrayViewMut2<f64>,
+    ) -> Result<(), TransformError> {
+        self.spectrum.assign(input_spectrum);
+        self.spectrum
+            .zip_mut_with(&self.kernel, |value, &k| *value *= k);
+        self.plan
+            .inverse(&mut self.spectrum, output, &mut self.work)
+    }
+
     /// `output = kernel * input` (linear convolution), both `[ny, nx]`.
     pub fn apply(
         &mut self,

@@ -43,8 +43,11 @@
 //!   on `|ξ|, |η| <= 5 kw` (where `W < 2e-11`);
 //! - `(1 - W)(H - H_s)`, free of the singularity, sampled at the discrete wavenumbers of a
 //!   periodic lattice four times longer in x than the kernel's (the wake behind a fast source
-//!   is long and narrow, so its part above `kw` reaches far behind), with its aliases (3 each
-//!   way on the surface, 1 within two cells of it), and inverse-transformed by FFT.
+//!   is long and narrow, so its part above `kw` reaches far behind; not oversampled, or
+//!   twice, for a source slow on the lattice's scale, `u <= kw/4` or `u <= kw`), with its
+//!   aliases (3 each way on the surface, 1 within two cells of it; none at a cell Péclet
+//!   number `u dx <= 0.05`, where the moving part beyond the Nyquist wavenumber is
+//!   `O(u dx)` of the exact stationary one), and inverse-transformed by FFT.
 //!
 //! Against the polar inverse transform of a Gaussian flux (test) the lattice is within 0.06 %
 //! for a stationary source and 0.3 % at `u s = 3`; `kw` twice smaller or no oversampling
@@ -65,7 +68,7 @@ use ndarray::{Array2, Array3, ArrayView2, Axis};
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 
-use super::kernel::{signed, CellGrid, Convolution};
+use super::kernel::{signed, CellGrid};
 use super::special::gauss_legendre;
 use crate::operator::transform::{signed_index, RealFft2, TransformError};
 
@@ -74,9 +77,65 @@ type C64 = Complex<f64>;
 /// The six stress components in [`crate::stress::Stress`] order: xx, yy, zz, yz, xz, xy.
 pub const COMPONENTS: usize = 6;
 
+/// The parity of each component's response in `η` (and of its lattice in `y`): `σyz` and
+/// `σxy` carry a factor `η`, the others are even.
+const PARITY: [f64; COMPONENTS] = [1.0, 1.0, 1.0, -1.0, 1.0, -1.0];
+
 /// How many times longer in x than the kernel's own lattice the periodic lattice of the smooth
 /// part is: the narrow wake behind a fast source is long, and its images must lie beyond it.
 const SMOOTH_OVERSAMPLING: usize = 4;
+
+/// Below this `u / kw` (a slow source for the lattice: `u (2 nx dx) <= 2π`) the smooth part
+/// has no long wake and its lattice is not oversampled; up to `kw`, twice.
+const SLOW_OVER_WINDOW: f64 = 0.25;
+
+/// Below this cell Péclet number `u max(dx, dy)` the smooth part takes no aliases.
+const ALIAS_FREE_CELL_PECLET: f64 = 0.05;
+
+/// The smooth part's oversampling in x for `u` and the window's `kw` (module doc). The
+/// smooth part `(1 - W)(H - H_s)` of a source slow on the lattice's scale is concentrated
+/// within a few `1/kw` of the cell (its kernel falls as `1/r³`), so its images `2 nx dx`
+/// away are negligible: on the rough ball of `benches/thermal.rs` (`u/kw = 0.2`) the
+/// thermal von Mises maximum moved by 4e-5 of itself without oversampling (measured).
+pub(crate) fn smooth_oversampling(u: f64, kw: f64) -> usize {
+    if u <= SLOW_OVER_WINDOW * kw {
+        1
+    } else if u <= kw {
+        2
+    } else {
+        SMOOTH_OVERSAMPLING
+    }
+}
+
+/// [`smooth_oversampling`] on a grid of `shape` and cells `spacing_m` (its window's `kw`).
+pub fn smooth_oversampling_of(shape: [usize; 2], spacing_m: [f64; 2], u: f64) -> usize {
+    smooth_oversampling(u, window_wavenumber(shape, spacing_m))
+}
+
+/// `kw = 8π / min(2 nx dx, 2 ny dy)` of the window (module doc).
+fn window_wavenumber(shape: [usize; 2], spacing_m: [f64; 2]) -> f64 {
+    let [ny, nx] = shape;
+    let [dx, dy] = spacing_m;
+    8.0 * PI / (2.0 * nx as f64 * dx).min(2.0 * ny as f64 * dy)
+}
+
+/// The aliases each way of the smooth part at depth `z` (module doc): 3 on the surface, 1
+/// within two cells of it, none deeper (`e^(-kz)` then damps them); none either at a cell
+/// Péclet number `u dx` below [`ALIAS_FREE_CELL_PECLET`]: beyond the lattice's Nyquist
+/// wavenumber `γ = k - i u ξ / k + O(u²)`, so `H - H_s` is `O(u/k)`, at most `u dx / π`,
+/// of the stationary response there (whose cell integral is exact); on the rough ball of
+/// `benches/thermal.rs` (`u dx = 0.02`) they moved the thermal maximum by 1e-6 (measured).
+fn smooth_aliases(z: f64, u: f64, dx: f64, dy: f64) -> i64 {
+    if u * dx.max(dy) <= ALIAS_FREE_CELL_PECLET {
+        0
+    } else if z < 0.25 * dx.min(dy) {
+        3
+    } else if z < 2.0 * dx.min(dy) {
+        1
+    } else {
+        0
+    }
+}
 
 /// `(e^w - 1) / w`, accurate near `w = 0`.
 fn phi1(w: C64) -> C64 {
@@ -90,7 +149,8 @@ fn phi1(w: C64) -> C64 {
 /// `H(ξ, η; z)` of the six stresses per unit flux, `K = 1`, per `E α` (module doc); `two_u` is
 /// `V / κ` (1/m). `k` must be positive.
 pub fn response(xi: f64, eta: f64, z: f64, two_u: f64, nu: f64) -> [C64; COMPONENTS] {
-    let k = xi.hypot(eta);
+    // (No overflow: wavenumbers are far below 1e150.)
+    let k = (xi * xi + eta * eta).sqrt();
     let gamma = C64::new(k * k, -two_u * xi).sqrt();
     let b = 1.0 / (gamma + k);
     let delta = C64::new(0.0, -two_u * xi) * b;
@@ -121,7 +181,7 @@ pub fn response(xi: f64, eta: f64, z: f64, two_u: f64, nu: f64) -> [C64; COMPONE
 
 /// The stationary part `H_s` of [`response`] (zero for zz, yz, xz).
 pub fn stationary_response(xi: f64, eta: f64, z: f64) -> [f64; COMPONENTS] {
-    let k = xi.hypot(eta);
+    let k = (xi * xi + eta * eta).sqrt();
     let c = (-k * z).exp() / (k * k * k);
     [-eta * eta * c, -xi * xi * c, 0.0, 0.0, 0.0, xi * eta * c]
 }
@@ -143,7 +203,7 @@ fn corner_xx(x: f64, y: f64, z: f64) -> f64 {
     let first = if y == 0.0 {
         0.0
     } else {
-        -y * (x / y.hypot(z)).asinh()
+        -y * (x / (y * y + z * z).sqrt()).asinh()
     };
     let second = if z == 0.0 || x == 0.0 || y == 0.0 {
         0.0
@@ -159,6 +219,44 @@ fn corner_xy(x: f64, y: f64, z: f64) -> f64 {
     let r = (x * x + y * y + z * z).sqrt();
     let log = if z == 0.0 { 0.0 } else { z * (r + z).ln() };
     -(log - r)
+}
+
+/// `[Fxx, Fyy, Fxy]` (without the 1/(2π)) at the corners `((m + 1/2) dx, (l + 1/2) dy)`,
+/// `0 <= m <= nx`, `0 <= l <= ny`: row-major, `nx + 1` a row. These are all the corners of
+/// the cells of offsets `-n <= i, j < n` up to sign: `Fxx` and `Fyy` are odd in `x` and in
+/// `y`, `Fxy` is even in both ([`StationaryCorners::fold`]).
+struct StationaryCorners {
+    values: Vec<[f64; 3]>,
+}
+
+impl StationaryCorners {
+    fn new(grid: &CellGrid, z: f64) -> Self {
+        let [ny, nx] = grid.shape;
+        let [dx, dy] = grid.spacing_m;
+        let width = nx + 1;
+        let mut values = vec![[0.0; 3]; (ny + 1) * width];
+        values
+            .par_chunks_mut(width)
+            .enumerate()
+            .for_each(|(l, line)| {
+                let y = (l as f64 + 0.5) * dy;
+                for (m, slot) in line.iter_mut().enumerate() {
+                    let x = (m as f64 + 0.5) * dx;
+                    *slot = [corner_xx(x, y, z), corner_xx(y, x, z), corner_xy(x, y, z)];
+                }
+            });
+        Self { values }
+    }
+
+    /// The corner `c` (`0 <= c <= 2n`) of an axis of `n` cells each way lies at
+    /// `(c - n - 1/2)` cells: `(|m|, sign)` with the corner at `sign (m + 1/2)`.
+    fn fold(c: usize, n: usize) -> (usize, f64) {
+        if c > n {
+            (c - n - 1, 1.0)
+        } else {
+            (n - c, -1.0)
+        }
+    }
 }
 
 /// The stationary cell integrals per `E α / K` of xx, yy, xy over `[x0, x1] x [y0, y1]`.
@@ -212,39 +310,66 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     let [ny, nx] = grid.shape;
     let [dx, dy] = grid.spacing_m;
     let mut out = Array3::zeros((COMPONENTS, 2 * ny, 2 * nx));
-    // Stationary part.
-    let stationary = [0usize, 1, 5];
-    for (slot, &component) in stationary.iter().enumerate() {
-        let lattice = grid.offset_lattice(|i, j| {
-            let (x, y) = (i as f64 * dx, j as f64 * dy);
-            stationary_rectangle(x - 0.5 * dx, x + 0.5 * dx, y - 0.5 * dy, y + 0.5 * dy, z)[slot]
-        });
-        out.index_axis_mut(Axis(0), component).assign(&lattice);
+    // Stationary part: the corner sums of the cells, each corner's three values computed once.
+    let corners = StationaryCorners::new(grid, z);
+    // Each lattice column's two corners (offset + n and the next), folded.
+    let column_corners: Vec<[(usize, f64); 2]> = (0..2 * nx)
+        .map(|column| {
+            let i = (signed(column, 2 * nx) + nx as i64) as usize;
+            [
+                StationaryCorners::fold(i, nx),
+                StationaryCorners::fold(i + 1, nx),
+            ]
+        })
+        .collect();
+    for (slot, &component) in [0usize, 1, 5].iter().enumerate() {
+        // Fxx and Fyy are odd in x and y, Fxy even.
+        let odd = slot < 2;
+        out.index_axis_mut(Axis(0), component)
+            .axis_iter_mut(Axis(0))
+            .into_par_iter()
+            .enumerate()
+            .for_each(|(row, mut line)| {
+                // Cell offset j spans the corners j and j + 1 of the corner grid (offset + n).
+                let j = (signed(row, 2 * ny) + ny as i64) as usize;
+                let rows = [
+                    StationaryCorners::fold(j, ny),
+                    StationaryCorners::fold(j + 1, ny),
+                ];
+                let value = |(l, sy): (usize, f64), (m, sx): (usize, f64)| {
+                    let v = corners.values[l * (nx + 1) + m][slot];
+                    if odd {
+                        sx * sy * v
+                    } else {
+                        v
+                    }
+                };
+                for (slot_value, [c0, c1]) in line.iter_mut().zip(&column_corners) {
+                    *slot_value = (value(rows[1], *c1) - value(rows[0], *c1) - value(rows[1], *c0)
+                        + value(rows[0], *c0))
+                        / (2.0 * PI);
+                }
+            });
     }
     if u == 0.0 {
         return out;
     }
     let two_u = 2.0 * u;
-    let kw = 8.0 * PI / (2.0 * nx as f64 * dx).min(2.0 * ny as f64 * dy);
+    let kw = window_wavenumber(grid.shape, grid.spacing_m);
     let window = |k: f64| (-(k / kw).powi(2)).exp();
     let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
-    add_band(&mut out, grid, kw * 5.0, &|xi, eta| {
+    add_band(&mut out, grid, kw * 5.0, PARITY, &|xi, eta| {
         let mut h = remainder(xi, eta, z, two_u, nu);
-        let s = window(xi.hypot(eta)) * cell(xi, eta);
+        let s = window((xi * xi + eta * eta).sqrt()) * cell(xi, eta);
         for v in h.iter_mut() {
             *v *= s;
         }
         h
     });
-    let aliases = if z < 0.25 * dx.min(dy) {
-        3
-    } else if z < 2.0 * dx.min(dy) {
-        1
-    } else {
-        0
-    };
-    add_smooth(&mut out, grid, aliases, SMOOTH_OVERSAMPLING, &|xi, eta| {
-        let k = xi.hypot(eta);
+    let aliases = smooth_aliases(z, u, dx, dy);
+    let oversampling = smooth_oversampling(u, kw);
+    add_smooth(&mut out, grid, aliases, oversampling, PARITY, &|xi, eta| {
+        let k = (xi * xi + eta * eta).sqrt();
         if k == 0.0 {
             return [C64::new(0.0, 0.0); COMPONENTS];
         }
@@ -260,81 +385,153 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
 
 /// Adds `(1/4π²) ∫∫ F e^(i(ξx + ηy))` over `|ξ|, |η| <= cut` at every lattice offset, for a
 /// Hermitian `F` (`F(-ξ, -η) = conj F(ξ, η)`): twice the real part of the `ξ > 0` half.
+/// Component `c` of `F` has the parity `parity[c]` (`+1` even, `-1` odd) in `η`, and so its
+/// lattice in `y`: only `η > 0` is evaluated (`e^(iηy) ± e^(-iηy)` is `2 cos ηy` or
+/// `2i sin ηy`), the rows `y >= 0` are summed and the rows `y < 0` mirrored, and each sum over
+/// `ξ` serves `x` and `-x` (its cosine and sine parts): a quarter of the direct sum's work.
 pub(super) fn add_band<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
     cut: f64,
+    parity: [f64; N],
     f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
 ) {
     let [ny, nx] = grid.shape;
     let [dx, dy] = grid.spacing_m;
     let (half, half_weights) = band_rule(cut);
-    let mut etas: Vec<f64> = half.iter().rev().map(|e| -e).collect();
-    etas.extend(&half);
-    let mut eta_weights: Vec<f64> = half_weights.iter().rev().copied().collect();
-    eta_weights.extend(&half_weights);
-    let ys: Vec<f64> = (0..2 * ny).map(|r| signed(r, 2 * ny) as f64 * dy).collect();
-    let xs: Vec<f64> = (0..2 * nx).map(|c| signed(c, 2 * nx) as f64 * dx).collect();
-    // Phase tables: e^(iηy) for every η and row, e^(iξx) for every ξ and column.
-    let eta_phase: Vec<C64> = ys
-        .iter()
-        .flat_map(|&y| etas.iter().map(move |&eta| C64::from_polar(1.0, eta * y)))
-        .collect();
-    let xi_phase: Vec<(f64, f64)> = half
-        .iter()
-        .flat_map(|&xi| xs.iter().map(move |&x| (xi * x).sin_cos()))
-        .collect();
-    // partial[n][component][row] = w_n Σ_η w F(ξn, η) e^(iηy).
-    let partial: Vec<Vec<Vec<C64>>> = half
+    let m = half.len();
+    // Rows y = j dy and columns x = i dx for 0 <= j <= ny, 0 <= i <= nx (the lattice's -ny
+    // and -nx mirrored from +ny and +nx).
+    let rows = ny + 1;
+    let columns = nx + 1;
+    // cos ηy and sin ηy for every η > 0 and row (`[η][row]`).
+    let mut eta_cos = vec![0.0; m * rows];
+    let mut eta_sin = vec![0.0; m * rows];
+    for (index, &eta) in half.iter().enumerate() {
+        for j in 0..rows {
+            let (s, c) = (eta * j as f64 * dy).sin_cos();
+            eta_cos[index * rows + j] = c;
+            eta_sin[index * rows + j] = s;
+        }
+    }
+    // cos ξx and sin ξx for every ξ > 0 and column.
+    let stride = columns;
+    let mut xi_cos = vec![0.0; m * stride];
+    let mut xi_sin = vec![0.0; m * stride];
+    for (n, &xi) in half.iter().enumerate() {
+        for i in 0..columns {
+            let (s, c) = (xi * i as f64 * dx).sin_cos();
+            xi_cos[n * stride + i] = c;
+            xi_sin[n * stride + i] = s;
+        }
+    }
+    // partial[n][component] = (re, im) over the rows: w_n Σ_η w F(ξn, η) e^(iηy_j) over
+    // both signs of η (sums along the rows, which vectorise).
+    let partial: Vec<Vec<[Vec<f64>; 2]>> = half
         .par_iter()
         .zip(&half_weights)
         .map(|(&xi, &w_xi)| {
-            let values: Vec<[C64; N]> = etas
+            let values: Vec<[C64; N]> = half
                 .iter()
-                .zip(&eta_weights)
+                .zip(&half_weights)
                 .map(|(&eta, &w)| {
                     let mut v = f(xi, eta);
                     for c in v.iter_mut() {
-                        *c *= w * w_xi;
+                        *c *= 2.0 * w * w_xi;
                     }
                     v
                 })
                 .collect();
-            let mut rows = vec![vec![C64::new(0.0, 0.0); ys.len()]; N];
-            for (row, phases) in eta_phase.chunks_exact(etas.len()).enumerate() {
-                for (v, phase) in values.iter().zip(phases) {
-                    for (component, value) in v.iter().enumerate() {
-                        rows[component][row] += value * phase;
+            (0..N)
+                .map(|component| {
+                    let even = parity[component] > 0.0;
+                    let table = if even { &eta_cos } else { &eta_sin };
+                    let (mut re, mut im) = (vec![0.0; rows], vec![0.0; rows]);
+                    for (index, v) in values.iter().enumerate() {
+                        let trig = &table[index * rows..][..rows];
+                        let (a, b) = (v[component].re, v[component].im);
+                        for ((r, i), &t) in re.iter_mut().zip(im.iter_mut()).zip(trig) {
+                            *r += a * t;
+                            *i += b * t;
+                        }
                     }
-                }
-            }
-            rows
+                    // The odd part's 2i sin ηy.
+                    if even {
+                        [re, im]
+                    } else {
+                        [im.iter().map(|v| -v).collect(), re]
+                    }
+                })
+                .collect()
         })
         .collect();
     let scale = 2.0 / (4.0 * PI * PI);
-    for (component, mut layer) in out.axis_iter_mut(Axis(0)).enumerate() {
-        layer
-            .axis_iter_mut(Axis(0))
-            .into_par_iter()
-            .enumerate()
-            .for_each(|(row, mut line)| {
-                for (n, phases) in xi_phase.chunks_exact(xs.len()).enumerate() {
-                    let a = partial[n][component][row];
-                    for (slot, &(s, c)) in line.iter_mut().zip(phases) {
-                        *slot += scale * (a.re * c - a.im * s);
+    // One row of every component: `[component][column]`, x >= 0 then x < 0, from
+    // P = Σ a.re cos ξx and Q = Σ a.im sin ξx: (P - Q) at x, (P + Q) at -x.
+    let row_values = |j: usize| -> Vec<Vec<f64>> {
+        // P and Q of each component along the columns x >= 0 (long sums, which vectorise).
+        let mut p = vec![vec![0.0f64; stride]; N];
+        let mut q = vec![vec![0.0f64; stride]; N];
+        for (n, sums) in partial.iter().enumerate() {
+            let cosines = &xi_cos[n * stride..][..stride];
+            let sines = &xi_sin[n * stride..][..stride];
+            for component in 0..N {
+                let (re, im) = (sums[component][0][j], sums[component][1][j]);
+                for (slot, &c) in p[component].iter_mut().zip(cosines) {
+                    *slot += re * c;
+                }
+                for (slot, &s) in q[component].iter_mut().zip(sines) {
+                    *slot += im * s;
+                }
+            }
+        }
+        (0..N)
+            .map(|component| {
+                (0..2 * nx)
+                    .map(|column| {
+                        let i = signed(column, 2 * nx);
+                        let at = i.unsigned_abs() as usize;
+                        let (pp, qq) = (p[component][at], q[component][at]);
+                        scale * if i >= 0 { pp - qq } else { pp + qq }
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    // Rows in chunks, so that the buffer stays small.
+    const CHUNK: usize = 64;
+    for start in (0..rows).step_by(CHUNK) {
+        let end = (start + CHUNK).min(rows);
+        let values: Vec<Vec<Vec<f64>>> = (start..end).into_par_iter().map(row_values).collect();
+        for (j, row) in (start..end).zip(values) {
+            for (component, line) in row.iter().enumerate() {
+                let mut layer = out.index_axis_mut(Axis(0), component);
+                // Row +j (j < ny), and -j (1 <= j <= ny) at lattice row 2ny - j.
+                if j < ny {
+                    for (slot, &v) in layer.row_mut(j).iter_mut().zip(line) {
+                        *slot += v;
                     }
                 }
-            });
+                if j >= 1 {
+                    let sign = parity[component];
+                    for (slot, &v) in layer.row_mut(2 * ny - j).iter_mut().zip(line) {
+                        *slot += sign * v;
+                    }
+                }
+            }
+        }
     }
 }
 
 /// Adds the lattice samples of the inverse transform of `F` (free of a singularity at `k = 0`)
-/// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way.
+/// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way;
+/// component `c` has the parity `parity[c]` in `η`, so only `η >= 0` is evaluated.
 pub(super) fn add_smooth<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
     aliases: i64,
     over: usize,
+    parity: [f64; N],
     f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
 ) {
     let [ny, nx] = grid.shape;
@@ -342,13 +539,16 @@ pub(super) fn add_smooth<const N: usize>(
     // The periodic lattice is `over` times longer in x than the kernel's (images farther).
     let (mx, my) = (2 * nx * over, 2 * ny);
     let plan = RealFft2::new([my, mx]);
-    let [kxs, kys] = plan.spectrum_shape();
+    let [kxs, _] = plan.spectrum_shape();
     let (px, py) = (mx as f64 * dx, my as f64 * dy);
+    // Each column's values for 0 <= ky <= my/2; the rows my/2 < ky < my (η < 0) are
+    // `parity` times those of my - ky (the aliases of -η0 are those of η0 mirrored).
+    let half_rows = my / 2 + 1;
     let columns: Vec<Vec<[C64; N]>> = (0..kxs)
         .into_par_iter()
         .map(|kx| {
             let xi0 = 2.0 * PI * kx as f64 / px;
-            (0..kys)
+            (0..half_rows)
                 .map(|ky| {
                     let eta0 = 2.0 * PI * signed_index(ky, my) as f64 / py;
                     let mut sum = [C64::new(0.0, 0.0); N];
@@ -366,14 +566,19 @@ pub(super) fn add_smooth<const N: usize>(
                 .collect()
         })
         .collect();
+    let value = |kx: usize, ky: usize, component: usize| {
+        if ky < half_rows {
+            columns[kx][ky][component]
+        } else {
+            columns[kx][my - ky][component] * parity[component]
+        }
+    };
     let mut work = plan.work();
     let mut periodic = Array2::zeros((my, mx));
     for component in 0..N {
         let mut spectrum = plan.new_spectrum();
-        for (kx, column) in columns.iter().enumerate() {
-            for (ky, values) in column.iter().enumerate() {
-                spectrum[[kx, ky]] = values[component] / (dx * dy);
-            }
+        for ((kx, ky), slot) in spectrum.indexed_iter_mut() {
+            *slot = value(kx, ky, component) / (dx * dy);
         }
         // A failure here is a planning bug; the lattice then keeps its other parts.
         if plan
@@ -395,9 +600,12 @@ pub(super) fn add_smooth<const N: usize>(
 }
 
 /// The thermal stress (Pa) of body 1 at one depth under a gridded flux: six DC-FFT
-/// convolutions.
+/// convolutions. It keeps the six lattices, not their spectra: each lattice is transformed
+/// when applied, into one buffer (a layer is applied once; its spectra would double the
+/// memory, and six more buffers of the same size treble it).
 pub struct ThermalStressOperator {
-    convolutions: Vec<Convolution>,
+    shape: [usize; 2],
+    lattices: Array3<f64>,
     scale: f64,
 }
 
@@ -410,24 +618,36 @@ impl ThermalStressOperator {
         nu: f64,
         modulus_expansion_over_conductivity: f64,
     ) -> Result<Self, TransformError> {
-        let lattices = influence_lattices(grid, z, u, nu);
-        let convolutions = lattices
-            .axis_iter(Axis(0))
-            .map(|lattice| Convolution::new(grid.shape, lattice))
-            .collect::<Result<Vec<_>, _>>()?;
         Ok(Self {
-            convolutions,
+            shape: grid.shape,
+            lattices: influence_lattices(grid, z, u, nu),
             scale: modulus_expansion_over_conductivity,
         })
     }
 
+    /// Bytes held while a layer of `shape` is computed: the six lattices of `[2 ny, 2 nx]`
+    /// (8 bytes a value), the flux's spectrum and one kernel's (16 bytes a value of
+    /// `[nx + 1, 2 ny]`), and the layer `[6, ny, nx]`.
+    pub fn memory_bytes(shape: [usize; 2]) -> usize {
+        let [ny, nx] = shape;
+        COMPONENTS * 4 * ny * nx * 8 + 2 * (nx + 1) * 2 * ny * 16 + COMPONENTS * ny * nx * 8
+    }
+
     /// `[6, ny, nx]`: xx, yy, zz, yz, xz, xy (Pa) under `flux` (W/m²).
     pub fn apply(&mut self, flux: ArrayView2<f64>) -> Result<Array3<f64>, TransformError> {
-        let [ny, nx] = self.convolutions[0].shape();
+        let [ny, nx] = self.shape;
+        let plan = RealFft2::new([2 * ny, 2 * nx]);
+        let mut work = plan.work();
         let mut out = Array3::zeros((COMPONENTS, ny, nx));
-        for (component, convolution) in self.convolutions.iter_mut().enumerate() {
+        // One transform of the flux for the six kernels.
+        let mut flux_spectrum = plan.new_spectrum();
+        plan.forward(flux, &mut flux_spectrum, &mut work)?;
+        let mut spectrum = plan.new_spectrum();
+        for (component, lattice) in self.lattices.axis_iter(Axis(0)).enumerate() {
+            plan.forward(lattice, &mut spectrum, &mut work)?;
+            spectrum.zip_mut_with(&flux_spectrum, |value, &q| *value *= q);
             let mut layer = out.index_axis_mut(Axis(0), component);
-            convolution.apply(flux, layer.view_mut())?;
+            plan.inverse(&mut spectrum, layer.view_mut(), &mut work)?;
             layer.mapv_inplace(|s| s * self.scale);
         }
         Ok(out)

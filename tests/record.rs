@@ -705,6 +705,14 @@ fn every_shipped_recording_scene_records() {
                 "{}",
                 path.display()
             );
+        } else if scene.contact.coating.is_some() {
+            // A coated scene's section at every thickness, from its study.
+            assert_eq!(
+                contents.rows_on("/section/field", record::timeline(&scene)),
+                steps,
+                "{}",
+                path.display()
+            );
         } else if scene.contact.kind == stressfield::scene::ContactKind::Rough {
             let timeline = record::timeline(&scene);
             assert_eq!(

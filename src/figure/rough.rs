@@ -202,7 +202,7 @@ pub fn rough_sheet(
     );
     robust_colours(&mut pressure);
 
-    let section_map = section_figure(scene, solution, &fields);
+    let section_map = section_figure(scene, solution, fields);
     let quantity = scene.figure.quantity;
     let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
     let values_xy = roll.apply(fields.xy_pa.mapv(|v| v * stress_per_pa).view());

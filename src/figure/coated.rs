@@ -103,8 +103,8 @@ pub fn coated_figure_to_depth(scene: &Scene, study: &CoatedStudy, z_end_m: f64) 
         .collect();
     let m = &study.maxima;
     let subtitle = format!(
-        "coating {:.3} µm ({}) above the dashed interface; substrate below ({}); max {:.0} MPa in the {}",
-        h * um,
+        "coating {} µm ({}) above the dashed interface; substrate below ({}); max {:.0} MPa in the {}",
+        crate::scene::compact(h * um),
         material_name(&study.spec.material),
         material_name(&study.spec.substrate),
         m.von_mises.value_pa * 1e-6,

@@ -268,6 +268,12 @@ pub(super) fn charts(studies: &[CoatedStudy], current: usize) -> Vec<(&'static s
         &|s| s.maxima.von_mises.z_m / a,
         &h_over_a,
     ));
+    // The shape of the charts' panel in the default window (as the Péclet sweep's charts),
+    // so that the viewer fits the images without black bands.
+    for chart in [&mut maxima, &mut depth] {
+        chart.width_px = 520;
+        chart.height_px = 560;
+    }
     vec![("maxima", maxima), ("depth", depth)]
 }
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import stressfield as sf
-from conftest import BIN, ROOT, SCENES, cli_json
+from conftest import BIN, ROOT, SCENES, cli, cli_error, cli_json
 
 HERTZ_SCENES = [
     "sphere_ball_on_flat",  # point, dimensional, yield strength
@@ -144,3 +144,35 @@ def test_scene_sweep_is_sweep_json(name):
     assert sf.load_scene(path).sweep() == expected
     assert len(expected["steps"]) >= 2
     assert list(expected["steps"][0]) == list(expected["units"])
+
+
+@pytest.mark.skipif(not sf._ext.has_rerun(), reason="the package was built without Rerun")
+def test_scene_record_writes_the_command_line_s_recording(tmp_path):
+    # A recording holds its recording id and wall-clock times, so two recordings of one scene
+    # are not byte-equal; the same scene recorded twice by the command line differs in size by
+    # a few bytes only. The package's recording must be the command line's: the RRD magic, and
+    # its size within 0.1 % of the command line's.
+    for name in ["record_sphere_volume", "record_line_friction_sweep"]:
+        path = SCENES / f"{name}.toml"
+        ours, theirs = tmp_path / f"{name}_py.rrd", tmp_path / f"{name}_cli.rrd"
+        sf.load_scene(path).record(ours)
+        cli("record", path, "-o", theirs)
+        head = ours.read_bytes()[:4]
+        assert head == theirs.read_bytes()[:4] == b"RRF2", head
+        assert ours.stat().st_size == pytest.approx(theirs.stat().st_size, rel=1e-3), name
+    # A heated scene of one state is refused with the command line's message, and nothing is
+    # left behind.
+    heated = SCENES / "thermal_sliding_sphere.toml"
+    target = tmp_path / "heated.rrd"
+    with pytest.raises(sf.StressfieldError) as caught:
+        sf.load_scene(heated).record(target)
+    # (`record` takes several scenes and ends with a summary line of its own.)
+    expected = cli_error("record", heated, "-o", target).split("\nerror: ")[0]
+    assert str(caught.value) == expected
+    assert not target.exists()
+    # An unwritable destination names the path, as the command line does.
+    missing = tmp_path / "missing" / "x.rrd"
+    with pytest.raises(sf.StressfieldError) as caught:
+        sf.load_scene(SCENES / "record_sphere_volume.toml").record(missing)
+    assert "missing/x.rrd" in str(caught.value), str(caught.value)
+    assert not missing.exists()

@@ -11,6 +11,7 @@
 //! (its memory, the speeds a sweep resolves) is the study's second stage,
 //! [`crate::study::admit`]; commands read scenes through [`crate::study::load_scene`].
 
+mod display;
 mod raw;
 mod spec;
 mod sweep;

@@ -113,7 +113,7 @@ pub fn record(
     stream.log_static(
         "description",
         &rerun::TextDocument::from_markdown(format!(
-            "# {}\n\n```text\n{report}```\n\nThe time panel steps through the sliding distance. Maps are in µm; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m or mm: ignore that line).",
+            "# {}\n\n```text\n{report}```\n\nThe time panel steps through the sliding distance. Maps are in µm; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m or mm: ignore that line).\n\n**Reading the views.** `pressure`: the cells at the hardness cap are outlined, and the title counts them. `worn topography`: the scar (the worn cells) is outlined. A title ending \"(own colour range)\" means that the steps' peaks span more than a decade, so each step's colours run from 0 to its own maximum: compare steps by the labelled maxima and the charts, not by colour. `worn volume`: with Archard's law, the volume summed from the local wear `k p ds` over the cells equals Archard's `k W s` (the pressure carries the load at every step), so its two lines lie on each other.",
             sheet.title
         )),
     )?;
@@ -341,15 +341,18 @@ pub fn record(
         let mut pressure = pressure_map.clone();
         pressure.panels[0] = panel(x, y, p, outlines);
         let shown = section::displayed(&pressure, &pressure.panels[0]);
+        // Short enough to clear the colour bar's label (the description says that the cells at
+        // the cap are outlined and what "own colour range" means).
         let mut text = format!(
-            "{distance}: {} spots, real area {} mm², scar {} mm²",
+            "{distance}: {} spot{}, area {} mm², scar {} mm²",
             solution.spots,
+            if solution.spots == 1 { "" } else { "s" },
             section::short(step.contact_area_m2() * 1e6),
             section::short(step.scar_area_m2() * 1e6)
         );
         if let Some(h) = hardness_mpa {
             text.push_str(&format!(
-                "; {} cells at the hardness {} MPa (outlined)",
+                "; {} cells at the hardness {} MPa",
                 solution.plastic_cells,
                 section::short(h)
             ));

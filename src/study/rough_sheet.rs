@@ -190,7 +190,7 @@ pub fn sheet_fields(
                 reported.quantity,
                 solution.spacing_m,
             );
-            Stresses::Layered(layers, side)
+            Stresses::Layered(Box::new(layers), side)
         }
         None => Stresses::Homogeneous(
             rough::stress_solution(solution, friction, poisson)
@@ -306,7 +306,10 @@ pub fn sheet_fields(
 /// layered waves with the side of the interface its report's maximum lies on.
 enum Stresses {
     Homogeneous(crate::solution::Solution),
-    Layered(crate::coating::stress::LayeredStress, crate::coating::Side),
+    Layered(
+        Box<crate::coating::stress::LayeredStress>,
+        crate::coating::Side,
+    ),
 }
 
 impl Stresses {

@@ -79,7 +79,7 @@ pub fn run(command: Command) -> Result<()> {
             json,
         } => {
             let scene = stressfield::study::load_scene(&scene_path)?;
-            if scene.contact.coating.is_some() {
+            if scene.contact.coating.is_some() && scene.contact.kind != ContactKind::Rough {
                 let study = stressfield::study::coated::solve(&scene)
                     .with_context(|| format!("scene {}", scene.name))?;
                 let report = stressfield::report::coated::CoatedReport::new(&study);

@@ -102,6 +102,11 @@ impl LayeredStress {
         &self.layered
     }
 
+    /// The tractions' grid `[ny, nx]`.
+    pub fn shape(&self) -> [usize; 2] {
+        self.shape
+    }
+
     /// The stresses (Pa) at depth `z_m` along grid row `row` (e.g. the centre row, the plane of
     /// symmetry of a contact centred on the grid), `[component, x]` at the `nx` cell centres:
     /// each component's waves summed over `ky` with the row's phase, then one transform along

@@ -239,6 +239,24 @@ pub fn solve(
     counter_per_pa: f64,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<RoughSolution, CoatedContactError> {
+    let mut cache = operator_cache(problem, layered, counter_per_pa)?;
+    Ok(solve_cached(
+        problem,
+        &Warm::default(),
+        &mut cache,
+        progress,
+    )?)
+}
+
+/// The layered operator of `problem`'s grid, spacing and periodicity (built once; the solves
+/// of problems on the same grid, e.g. at other loads, reuse it through
+/// [`crate::contact::rough::solve_cached`]), refused on cells coarser than half the
+/// coating's thickness.
+pub fn operator_cache(
+    problem: &RoughContactProblem,
+    layered: &Layered,
+    counter_per_pa: f64,
+) -> Result<OperatorCache, CoatedContactError> {
     let cell = problem.spacing_m[0].max(problem.spacing_m[1]);
     if cell > largest_cell_m(layered.thickness_m) * (1.0 + 1e-12) {
         return Err(CoatedContactError::TooThin {
@@ -258,13 +276,7 @@ pub fn solve(
     .map_err(RoughContactError::from)?;
     let operator = ElasticOperator::from_kernel([ny, nx], problem.periodicity, &grid)
         .map_err(RoughContactError::from)?;
-    let mut cache = OperatorCache::holding(problem, operator);
-    Ok(solve_cached(
-        problem,
-        &Warm::default(),
-        &mut cache,
-        progress,
-    )?)
+    Ok(OperatorCache::holding(problem, operator))
 }
 
 #[cfg(test)]

@@ -47,7 +47,7 @@ fn at_depth(study: &CoatedStudy, z: f64, column: usize) -> f64 {
 }
 
 /// A material's name for the subtitle: the preset whose constants it has, else its modulus.
-fn material_name(material: &crate::contact::material::Material) -> String {
+pub(super) fn material_name(material: &crate::contact::material::Material) -> String {
     let preset = crate::contact::material::PRESETS
         .iter()
         .find(|p| p.material == *material)

@@ -300,6 +300,19 @@ fn section_figure(scene: &Scene, solution: &RoughSolution, fields: &RoughSheetFi
         outlines = lines;
         subtitle.push_str(&format!("; {note}"));
     }
+    // A coated body: the interface dashed across the section, both materials named.
+    if let Some(coating) = &scene.contact.coating {
+        let h = coating.thickness_m / rough_study::REFERENCE_LENGTH_M;
+        if h > xz.v.min && h < xz.v.max {
+            outlines.push(vec![(xz.u.min, h), (xz.u.max, h)]);
+        }
+        subtitle = format!(
+            "coating {} µm ({}) above the dashed interface, substrate ({}) below; {subtitle}",
+            crate::scene::compact(h),
+            super::coated::material_name(&coating.material),
+            super::coated::material_name(&coating.substrate),
+        );
+    }
     let quantity_label = scene.figure.stress_unit.label(quantity.symbol());
     // A non-negative quantity's colours to the 99.5 % quantile of the section (a single
     // cell's spike would darken the rest); beyond in the top colour, the maximum labelled.
@@ -536,7 +549,12 @@ fn pressure_against_hertz(
     });
     chart.series.push(Series {
         label: format!(
-            "Hertz, smooth: {} = {:.1} µm, p0 = {:.0} MPa",
+            "Hertz, smooth{}: {} = {:.1} µm, p0 = {:.0} MPa",
+            if scene.contact.coating.is_some() {
+                ", uncoated"
+            } else {
+                ""
+            },
             if cylinder { "b" } else { "a" },
             half_width * 1e6,
             p0 * 1e-6

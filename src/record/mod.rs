@@ -82,6 +82,8 @@ pub enum RecordError {
     Wear(#[from] crate::study::wear::WearStudyError),
     #[error("rerun: {0}")]
     Rerun(String),
+    #[error("contact.body1.coating: a coated rough contact is not recorded (the recording's depth timeline draws the homogeneous body's planes)\nhint: `stressfield render` draws its sheet and `stressfield contact` reports its stresses in the coating, on the interface and in the substrate")]
+    CoatedRough,
     #[error("cannot write {path}: {message}\nhint: check that the directory exists, is writable and has free space, or choose another with --out-dir or -o")]
     Output { path: PathBuf, message: String },
     #[error("standard output is a terminal, and a recording is binary\nhint: pipe it into a viewer: stressfield record SCENE -o - | rerun -")]
@@ -327,6 +329,9 @@ fn record_with(
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
     ) {
+        if scene.contact.coating.is_some() {
+            return Err(RecordError::CoatedRough);
+        }
         return rough::record(scene, stream, live, flush, solved);
     }
     if scene.contact.coating.is_some() {

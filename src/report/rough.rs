@@ -11,7 +11,10 @@
 //! `levelling` (null for a generated map, else `{"removed": "plane" | "quadratic" | "none",
 //! "plane_m": [c0, c1, c2]}`: what was removed from the measured map before solving, and its
 //! least-squares plane c0 + c1 x + c2 y in m and m/m, x and y from its first sample; null
-//! `plane_m` when nothing was removed).
+//! `plane_m` when nothing was removed), and for a coated body 1 `coating` (absent otherwise):
+//! `{"thickness_m", "von_mises_max_pa", "interface_shear_max_pa", "interface_normal_min_pa",
+//! "substrate_von_mises_max_pa"}`, the same object as `hertz --json` of a coated point or line
+//! scene ([`crate::report::coated::CoatingJson`]).
 
 use std::fmt::Write as _;
 
@@ -55,6 +58,12 @@ pub struct ContactReport {
     pub warnings: Vec<String>,
     /// What was removed from a measured map before solving (`None` for a generated map).
     pub levelling: Option<LevellingReport>,
+    /// A coated body's maxima in the coating, on the interface and in the substrate.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub coating: Option<super::coated::CoatingJson>,
+    /// Where the coated maxima lie, for the readable table (not in the JSON).
+    #[serde(skip)]
+    pub coating_places: Option<crate::study::coated_rough::CoatingMaxima>,
 }
 
 /// What was removed from a measured map before its contact was solved.
@@ -166,6 +175,14 @@ impl ContactReport {
                 removed: "none",
                 plane_m: None,
             }),
+            coating: findings.coating.map(|c| super::coated::CoatingJson {
+                thickness_m: c.thickness_m,
+                von_mises_max_pa: c.coating_von_mises.value_pa,
+                interface_shear_max_pa: c.interface_shear.value_pa,
+                interface_normal_min_pa: c.interface_normal_min.value_pa,
+                substrate_von_mises_max_pa: c.substrate_von_mises.value_pa,
+            }),
+            coating_places: findings.coating,
         }
     }
 
@@ -222,10 +239,28 @@ impl ContactReport {
             self.friction,
             self.poisson
         )?;
+        if let Some(coating) = &scene.contact.coating {
+            writeln!(
+                out,
+                "coated body 1: {} µm of E = {:.0} GPa, ν = {} on E = {:.0} GPa, ν = {} (E* above: the substrate's with the counter-body, the long waves')",
+                crate::scene::compact(coating.thickness_m * 1e6),
+                coating.material.modulus_pa * 1e-9,
+                coating.material.poisson,
+                coating.substrate.modulus_pa * 1e-9,
+                coating.substrate.poisson
+            )?;
+        }
         writeln!(
             out,
-            "solver: Polonsky-Keer conjugate gradients, {} iterations, residual {:.2e} (tolerance {:.0e})",
-            self.iterations, self.residual, self.tolerance
+            "solver: Polonsky-Keer conjugate gradients{}, {} iterations, residual {:.2e} (tolerance {:.0e})",
+            if scene.contact.coating.is_some() {
+                " on the layered influence coefficients"
+            } else {
+                ""
+            },
+            self.iterations,
+            self.residual,
+            self.tolerance
         )?;
         writeln!(out)?;
         writeln!(
@@ -279,16 +314,49 @@ impl ContactReport {
             mpa(self.max_shear_max_pa),
             um(self.max_shear_max_depth_m)
         )?;
-        writeln!(
-            out,
-            "  (maxima at cell centres of DC-FFT layers: quarters of the first cell, then one cell apart to five cells and a fifth of their depth below, refined to a sixteenth of a cell; searched to {:.3} µm{})",
-            um(self.search_depth_m),
-            if self.periodic {
-                "; the tractions repeat with the surface"
-            } else {
-                ""
-            }
-        )?;
+        let repeat = if self.periodic {
+            "; the tractions repeat with the surface"
+        } else {
+            ""
+        };
+        if let Some(c) = &self.coating_places {
+            let place = |p: &crate::study::coated_rough::Place| {
+                format!(
+                    "{:.4} MPa at x = {:.3} µm, y = {:.3} µm, z = {:.4} µm",
+                    mpa(p.value_pa),
+                    um(p.x_m),
+                    um(p.y_m),
+                    um(p.z_m)
+                )
+            };
+            writeln!(
+                out,
+                "  von Mises, coating   {}",
+                place(&c.coating_von_mises)
+            )?;
+            writeln!(
+                out,
+                "  von Mises, substrate {}",
+                place(&c.substrate_von_mises)
+            )?;
+            writeln!(out, "  interface shear      {}", place(&c.interface_shear))?;
+            writeln!(
+                out,
+                "  interface σzz, min   {}",
+                place(&c.interface_normal_min)
+            )?;
+            writeln!(
+                out,
+                "  (maxima at cell centres of planes of the tractions' layered waves: the first cell's quarters, 12 to 48 depths through the coating, both sides of the interface, then cells and a fifth of their depth below it, refined to a sixteenth of a cell; searched to {:.3} µm{repeat})",
+                um(self.search_depth_m),
+            )?;
+        } else {
+            writeln!(
+                out,
+                "  (maxima at cell centres of DC-FFT layers: quarters of the first cell, then one cell apart to five cells and a fifth of their depth below, refined to a sixteenth of a cell; searched to {:.3} µm{repeat})",
+                um(self.search_depth_m),
+            )?;
+        }
         for warning in &self.warnings {
             writeln!(out, "warning: {warning}")?;
         }

@@ -20,7 +20,7 @@ pub enum DrawingInputs {
     Panels(Vec<PanelField>),
     /// A coated body's section ([`super::coated::solve`]).
     Coated(Box<CoatedStudy>),
-    /// A rough contact's sheet: the report's maxima ([`super::rough::subsurface_maxima`]) and
+    /// A rough contact's sheet: the report's maxima ([`super::rough::scene_maxima`]) and
     /// the fields through them ([`super::rough_sheet::sheet_fields`]).
     Rough {
         maxima: StressMaxima,
@@ -54,7 +54,7 @@ pub fn inputs(
     rough: Option<&RoughSolution>,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<DrawingInputs, DrawingError> {
-    if scene.contact.coating.is_some() {
+    if scene.contact.coating.is_some() && scene.contact.kind != ContactKind::Rough {
         return Ok(DrawingInputs::Coated(Box::new(super::coated::solve(
             scene,
         )?)));
@@ -62,12 +62,8 @@ pub fn inputs(
     Ok(match scene.contact.kind {
         ContactKind::Rough => {
             let solution = rough.ok_or(DrawingError::Unsolved)?;
-            let (maxima, _) = super::rough::subsurface_maxima(
-                solution,
-                scene.contact.friction,
-                scene.contact.poisson,
-            )
-            .map_err(|e| FieldError::Numerical(e.to_string()))?;
+            let (maxima, _) = super::rough::scene_maxima(scene, solution)
+                .map_err(|e| FieldError::Numerical(e.to_string()))?;
             rough_inputs(scene, solution, maxima, on_row)?
         }
         ContactKind::Surface => {

@@ -14,6 +14,7 @@
 pub mod admit;
 pub mod assess;
 pub mod coated;
+pub mod coated_rough;
 mod compass;
 pub mod coupled;
 pub mod drawing;

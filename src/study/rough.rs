@@ -32,6 +32,10 @@ pub enum RoughStudyError {
     Contact(#[from] RoughContactError),
     #[error(transparent)]
     Numerical(#[from] NumericalError),
+    #[error(transparent)]
+    Coated(#[from] crate::contact::coated::CoatedContactError),
+    #[error(transparent)]
+    Transform(#[from] crate::operator::transform::TransformError),
 }
 
 /// The contact problem of a rough scene (`None` if it is not one).
@@ -65,7 +69,9 @@ pub fn scene_solves() -> usize {
     SCENE_SOLVES.load(Ordering::Relaxed)
 }
 
-/// Solves the scene's contact; `progress(iteration, residual)` after each iteration.
+/// Solves the scene's contact; `progress(iteration, residual)` after each iteration. A coated
+/// body 1 (`[contact.body1.coating]`) takes the layered influence coefficients
+/// ([`crate::contact::coated`]), periodic or isolated as the scene says.
 pub fn solve(
     scene: &Scene,
     progress: &mut dyn FnMut(usize, f64),
@@ -75,6 +81,14 @@ pub fn solve(
     }
     let problem = problem(scene).ok_or(RoughStudyError::NotRough)?;
     SCENE_SOLVES.fetch_add(1, Ordering::Relaxed);
+    if let Some(coating) = &scene.contact.coating {
+        return Ok(crate::contact::coated::solve(
+            &problem,
+            &coating.layered(),
+            coating.counter_per_pa,
+            progress,
+        )?);
+    }
     Ok(rough::solve(&problem, progress)?)
 }
 
@@ -91,13 +105,22 @@ pub fn area_curve(
 ) -> Result<Vec<(f64, f64)>, RoughStudyError> {
     let problem = problem(scene).ok_or(RoughStudyError::NotRough)?;
     let e_star = problem.e_star_pa;
+    // One operator for every load: a coated body's layered one, built once, or Love's.
+    let mut cache = match &scene.contact.coating {
+        Some(coating) => crate::contact::coated::operator_cache(
+            &problem,
+            &coating.layered(),
+            coating.counter_per_pa,
+        )?,
+        None => rough::OperatorCache::default(),
+    };
     let mut solved = Vec::new();
     for factor in AREA_CURVE_FACTORS {
         let mut scaled = problem.clone();
         scaled.control = rough::Control::MeanPressure {
             pa: factor * solution.mean_pressure_pa,
         };
-        match rough::solve(&scaled, &mut |_, _| {}) {
+        match rough::solve_cached(&scaled, &rough::Warm::default(), &mut cache, &mut |_, _| {}) {
             Ok(s) => solved.push((s.mean_pressure_pa / e_star, s.contact_fraction)),
             Err(
                 RoughContactError::FullContact { .. }
@@ -209,6 +232,9 @@ pub fn subsurface_maxima(
 #[derive(Clone, Debug, PartialEq)]
 pub struct ContactFindings {
     pub maxima: StressMaxima,
+    /// A coated body's maxima in the coating, on the interface and in the substrate
+    /// ([`super::coated_rough::maxima`]; `maxima` is drawn from them).
+    pub coating: Option<super::coated_rough::CoatingMaxima>,
     pub search_depth_m: f64,
     pub plasticity_index: Option<f64>,
     pub warnings: Vec<String>,
@@ -330,12 +356,44 @@ pub fn seam_warning(
     ))
 }
 
-/// The findings under the scene's solved contact ([`subsurface_maxima`]; the plasticity index
-/// of Greenwood & Williamson from the levelled surface's summits, with a hardness).
+/// The report's maxima under the scene's solved contact: [`subsurface_maxima`], or a coated
+/// body's ([`super::coated_rough::maxima`]) with them.
+pub fn scene_maxima(
+    scene: &Scene,
+    solution: &RoughSolution,
+) -> Result<(StressMaxima, Option<super::coated_rough::CoatingMaxima>), RoughStudyError> {
+    match &scene.contact.coating {
+        Some(coating) => {
+            let found = super::coated_rough::maxima(solution, coating, scene.contact.friction)?;
+            Ok((found.stress_maxima(), Some(found)))
+        }
+        None => Ok((
+            subsurface_maxima(solution, scene.contact.friction, scene.contact.poisson)?.0,
+            None,
+        )),
+    }
+}
+
+/// The findings under the scene's solved contact ([`subsurface_maxima`], or a coated body's
+/// [`super::coated_rough::maxima`]; the plasticity index of Greenwood & Williamson from the
+/// levelled surface's summits, with a hardness).
 pub fn findings(
     scene: &Scene,
     solution: &RoughSolution,
-) -> Result<ContactFindings, NumericalError> {
+) -> Result<ContactFindings, RoughStudyError> {
+    if let Some(coating) = &scene.contact.coating {
+        let found = super::coated_rough::maxima(solution, coating, scene.contact.friction)?;
+        let rough = scene.contact.rough;
+        let mut warnings = warnings_of(solution, rough.and_then(|r| r.e_star_pa), None);
+        warnings.extend(scene_seam_warning(scene, solution));
+        return Ok(ContactFindings {
+            maxima: found.stress_maxima(),
+            coating: Some(found),
+            search_depth_m: found.search_depth_m,
+            plasticity_index: None,
+            warnings,
+        });
+    }
     let rough = scene.contact.rough;
     let mut findings = findings_of(
         solution,
@@ -399,6 +457,7 @@ pub fn findings_of(
     };
     Ok(ContactFindings {
         maxima,
+        coating: None,
         search_depth_m,
         plasticity_index,
         warnings: warnings_of(solution, materials.e_star_pa, materials.hardness_pa),

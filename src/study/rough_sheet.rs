@@ -11,6 +11,7 @@
 use ndarray::Array2;
 
 use super::assess::{Extreme, StressMaxima};
+use super::coated_rough;
 use super::map_roll::{self, Roll};
 use super::rough::{self, search_depth_m, RoughStudyError, REFERENCE_LENGTH_M};
 use super::surface::SurfaceStudyError;
@@ -175,10 +176,27 @@ pub fn sheet_fields(
     let surface = scene.surface.as_ref().ok_or(RoughStudyError::NotRough)?;
     let [ny, nx] = surface.heights.shape();
     let [dx, dy] = surface.heights.spacing_m();
-    // The stress field under the solved tractions, in the reference units (1 um, 1 MPa).
+    // The stress field under the solved tractions, in the reference units (1 um, 1 MPa): a
+    // coated body's layered waves, or the homogeneous DC-FFT solution.
     let (friction, poisson) = (scene.contact.friction, scene.contact.poisson);
-    let stresses = rough::stress_solution(solution, friction, poisson)
-        .map_err(|e| FieldError::Numerical(e.to_string()))?;
+    let stresses = match &scene.contact.coating {
+        Some(coating) => {
+            let layers = coated_rough::layered_stress(solution, coating, friction)
+                .map_err(|e| FieldError::Numerical(e.to_string()))?;
+            let reported = ReportedMaximum::of(maxima, scene.figure.quantity);
+            let side = coated_rough::reported_side(
+                &layers,
+                &reported.extreme,
+                reported.quantity,
+                solution.spacing_m,
+            );
+            Stresses::Layered(Box::new(layers), side)
+        }
+        None => Stresses::Homogeneous(
+            rough::stress_solution(solution, friction, poisson)
+                .map_err(|e| FieldError::Numerical(e.to_string()))?,
+        ),
+    };
     let quantity = scene.figure.quantity;
     let reported = ReportedMaximum::of(maxima, quantity);
     let (ax, ay) = (dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M);
@@ -230,10 +248,7 @@ pub fn sheet_fields(
         u: centres_x,
         v: depths,
     };
-    let row_pa = field::evaluate(&stresses, &whole_row, &[quantity], on_row)?
-        .values
-        .index_axis(ndarray::Axis(1), 0)
-        .mapv(|v| v * 1e6);
+    let row_pa = stresses.plane(&whole_row, row, quantity, on_row)?;
     let xz_pa = Array2::from_shape_fn((depths.count, window), |(j, k)| row_pa[[j, columns[k]]]);
     let xz = Plane {
         section: Section::Xz { y },
@@ -261,10 +276,7 @@ pub fn sheet_fields(
         u: centres_x,
         v: Axis::new(0.5 * ay, (ny as f64 - 0.5) * ay, ny),
     };
-    let xy_pa = field::evaluate(&stresses, &xy, &[quantity], on_row)?
-        .values
-        .index_axis(ndarray::Axis(1), 0)
-        .mapv(|v| v * 1e6);
+    let xy_pa = stresses.plane(&xy, row, quantity, on_row)?;
     let (area_curve, characterisation) = match surface.shape {
         Form::None => (
             Some(rough::area_curve(scene, solution)?),
@@ -288,6 +300,61 @@ pub fn sheet_fields(
         area_curve,
         characterisation,
     })
+}
+
+/// The stresses a sheet is drawn from: the homogeneous DC-FFT solution, or a coated body's
+/// layered waves with the side of the interface its report's maximum lies on.
+enum Stresses {
+    Homogeneous(crate::solution::Solution),
+    Layered(
+        Box<crate::coating::stress::LayeredStress>,
+        crate::coating::Side,
+    ),
+}
+
+impl Stresses {
+    /// `quantity` on `plane` (reference units, a section `xz` through map row `row`, or a
+    /// plane `xy` over the cell centres), Pa, `[v, u]`.
+    fn plane(
+        &self,
+        plane: &Plane,
+        row: usize,
+        quantity: Quantity,
+        on_row: &(dyn Fn() + Sync),
+    ) -> Result<Array2<f64>, FieldError> {
+        match self {
+            Stresses::Homogeneous(solution) => {
+                Ok(field::evaluate(solution, plane, &[quantity], on_row)?
+                    .values
+                    .index_axis(ndarray::Axis(1), 0)
+                    .mapv(|v| v * 1e6))
+            }
+            Stresses::Layered(layers, side) => match plane.section {
+                Section::Xz { .. } => {
+                    let depths: Vec<f64> = (0..plane.v.count)
+                        .map(|k| plane.v.value(k) * REFERENCE_LENGTH_M)
+                        .collect();
+                    Ok(coated_rough::row_section(
+                        layers, row, &depths, *side, quantity,
+                    ))
+                }
+                Section::Xy { z } => {
+                    let z_m = z * REFERENCE_LENGTH_M;
+                    let h = layers.layered().thickness_m;
+                    let field = layers
+                        .layer(z_m, coated_rough::side_at(z_m, h, *side))
+                        .map_err(|e| FieldError::Numerical(e.to_string()))?;
+                    let (_, ny, nx) = field.dim();
+                    Ok(Array2::from_shape_fn((ny, nx), |(j, i)| {
+                        quantity.of(&coated_rough::stress_at(&field, j, i))
+                    }))
+                }
+                _ => Err(FieldError::Numerical(
+                    "a coated rough sheet draws xz and xy planes only".into(),
+                )),
+            },
+        }
+    }
 }
 
 /// Planes of a recording's depth timeline below the surface (the first at `z = 0`).
@@ -344,6 +411,12 @@ pub fn depth_layers(
     exact_z: f64,
     on_row: &(dyn Fn() + Sync),
 ) -> Result<Vec<DepthLayer>, RoughSheetError> {
+    if scene.contact.coating.is_some() {
+        return Err(FieldError::Numerical(
+            "contact.body1.coating: a coated rough contact has no depth timeline (its planes would be the homogeneous body's)".into(),
+        )
+        .into());
+    }
     let stresses = rough::stress_solution(solution, scene.contact.friction, scene.contact.poisson)
         .map_err(|e| FieldError::Numerical(e.to_string()))?;
     let [dx, dy] = solution.spacing_m;

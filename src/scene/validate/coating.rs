@@ -43,7 +43,8 @@ impl Validator<'_> {
         Ok(())
     }
 
-    /// The coating of body 1 on a scene of `kind` (line, point, elliptical: gridded gaps),
+    /// The coating of body 1 on a scene of `kind` (line, point, elliptical: gridded gaps;
+    /// rough: the surface's grid),
     /// with body 1's own material under it and the counter-body's compliance.
     pub(super) fn coating(
         &self,
@@ -53,12 +54,15 @@ impl Validator<'_> {
         counter: Option<Material>,
     ) -> Result<CoatingSpec, SceneError> {
         match kind {
-            ContactKind::Line | ContactKind::Point | ContactKind::Elliptical => {}
-            ContactKind::Tractions | ContactKind::Rough | ContactKind::Surface => {
+            ContactKind::Line
+            | ContactKind::Point
+            | ContactKind::Elliptical
+            | ContactKind::Rough => {}
+            ContactKind::Tractions | ContactKind::Surface => {
                 return Err(self.error(
                     "contact.body1.coating",
-                    format!("a coating is computed on line, point and elliptical contacts, not on kind = \"{}\"", kind_key(kind)),
-                    Some("use kind = \"line\", \"point\" or \"elliptical\", or remove the coating"),
+                    format!("a coating is computed on line, point, elliptical and rough contacts, not on kind = \"{}\"", kind_key(kind)),
+                    Some("use kind = \"line\", \"point\", \"elliptical\" or \"rough\", or remove the coating"),
                 ))
             }
         }

@@ -125,11 +125,29 @@ impl Validator<'_> {
             let raw1 = raw.body1.as_ref().unwrap_or(&empty);
             self.coating_placement(raw1, raw.body2.as_ref().unwrap_or(&empty))?;
             if raw1.coating.is_some() {
-                return Err(self.error(
-                    "contact.body1.coating",
-                    "a coating on a rough surface is not computed in this version: coated contacts are solved on the gridded paraboloids of point and elliptical contacts",
-                    Some("use kind = \"point\" or \"elliptical\" with [contact.body1.coating], or remove the coating"),
-                ));
+                if !rough {
+                    return Err(self.error(
+                        "contact.body1.coating",
+                        "a surface scene characterises the surface; it solves no contact, coated or not",
+                        Some("use kind = \"rough\" to press the surface on a coated flat"),
+                    ));
+                }
+                // The pressure cap of a plastic surface is one number for one material; a
+                // coated surface's indentation hardness is a composite of the coating's and
+                // the substrate's that depends on how deep the asperities press relative to
+                // the thickness, which no single cap states.
+                for (key, given) in [
+                    ("contact.hardness", raw.hardness.is_some()),
+                    ("contact.yield_strength", raw.yield_strength.is_some()),
+                ] {
+                    if given {
+                        return Err(self.error(
+                            key,
+                            "a hardness cap on a coated rough surface is not computed: the indentation hardness of a coated surface is a composite of the coating's and the substrate's, set by how deep the asperities press relative to the coating's thickness, which one pressure cap cannot state",
+                            Some(&format!("remove {key}: the coated contact is solved elastic, and its report gives the stresses in the coating, on the interface and in the substrate to compare with each material's strength")),
+                        ));
+                    }
+                }
             }
         }
         let bodies = match (&raw.body1, &raw.body2) {
@@ -166,6 +184,23 @@ impl Validator<'_> {
             }
             None => None,
         };
+        let coating = match (&raw.body1, bodies) {
+            (Some(raw1), Some((substrate, counter))) => match &raw1.coating {
+                Some(raw_coating) => {
+                    if substrate.modulus_pa.is_infinite() {
+                        return Err(self.error(
+                            "contact.body1.material",
+                            "a coated body's substrate must be elastic: the layer is bonded to body 1's own material",
+                            Some("give body 1 an elastic material under the coating (e.g. material = \"steel\"); the counter-body, body 2, may be rigid"),
+                        ));
+                    }
+                    let counter = counter.modulus_pa.is_finite().then_some(counter);
+                    Some(self.coating(kind, raw_coating, substrate, counter)?)
+                }
+                None => None,
+            },
+            _ => None,
+        };
         let yield_strength = self.yield_strength(raw)?;
         let hardness_pa = yield_strength.map(|y| match y.from_hardness {
             Some(number) => number * 9.80665e6,
@@ -180,7 +215,7 @@ impl Validator<'_> {
             yield_strength,
             aspect: 1.0,
             tangential: None,
-            coating: None,
+            coating,
             rough: Some(RoughSpec {
                 control,
                 periodic: raw.periodic.unwrap_or(false),

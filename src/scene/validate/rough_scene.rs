@@ -16,6 +16,9 @@ impl Validator<'_> {
         mut contact: Contact,
     ) -> Result<Scene, SceneError> {
         let surface = self.surface_spec(&raw, contact.kind)?;
+        if let Some(coating) = &contact.coating {
+            self.coated_rough(&raw, coating, &surface.heights)?;
+        }
         if let Some(i) = raw.panels.iter().position(|p| p.section.is_some()) {
             return Err(self.error(
                 &format!("panel[{i}].section"),
@@ -164,6 +167,74 @@ impl Validator<'_> {
     ///
     /// `key` names the load, mean pressure or approach (`contact.load`, or a sweep's
     /// `sweep.values[i]` for each of its loads).
+    /// What a coated rough scene may not have, and the grid its coating needs: cells of at
+    /// most half the coating's thickness ([`crate::coating::kernel::MIN_THICKNESS_CELLS`]).
+    fn coated_rough(
+        &self,
+        raw: &RawScene,
+        coating: &crate::scene::CoatingSpec,
+        heights: &HeightMap,
+    ) -> Result<(), SceneError> {
+        for (key, given, what) in [
+            (
+                "thermal",
+                raw.thermal.is_some(),
+                "frictional heating of a coated body",
+            ),
+            ("wear", raw.wear.is_some(), "wear of a coated surface"),
+            (
+                "series",
+                !raw.series.is_empty(),
+                "a series of a coated surface",
+            ),
+            (
+                "sweep",
+                raw.sweep.is_some(),
+                "a sweep of a coated rough contact",
+            ),
+        ] {
+            if given {
+                return Err(self.error(
+                    key,
+                    format!("{what} is not computed"),
+                    Some("remove the table; `contact` reports the coated rough contact and its stresses, `render` draws its sheet"),
+                ));
+            }
+        }
+        let [dx, dy] = heights.spacing_m();
+        let cell = dx.max(dy);
+        let largest = crate::contact::coated::largest_cell_m(coating.thickness_m);
+        if cell > largest * (1.0 + 1e-12) {
+            let key = if raw.surface.as_ref().is_some_and(|s| s.generate.is_some()) {
+                "surface.generate.spacing"
+            } else {
+                "surface.spacing"
+            };
+            return Err(self.error(
+                "contact.body1.coating.thickness",
+                format!(
+                    "the coating ({} µm) is thinner than two of the surface's cells ({} µm): its layered kernels and the stress samples inside it need cells of at most {} µm",
+                    crate::io::text::approx(coating.thickness_m * 1e6),
+                    crate::io::text::approx(cell * 1e6),
+                    crate::io::text::approx(largest * 1e6)
+                ),
+                Some(&format!("give a coating at least {} µm thick, or a map sampled at most {} µm apart ({key})", crate::io::text::approx(2.0 * cell * 1e6), crate::io::text::approx(largest * 1e6))),
+            ));
+        }
+        let [ny, nx] = heights.shape();
+        if nx.max(ny) > crate::study::coated::MAX_CELLS {
+            return Err(self.error(
+                "contact.body1.coating",
+                format!(
+                    "a coated rough contact takes maps of at most {} samples per side (its layered kernel is built on a grid four times as wide), got {nx} x {ny}",
+                    crate::study::coated::MAX_CELLS
+                ),
+                Some("crop or resample the map, or remove the coating"),
+            ));
+        }
+        Ok(())
+    }
+
     fn rough_control(
         &self,
         rough: &RoughSpec,

@@ -42,7 +42,7 @@ fn check_summary(scene: &Scene) -> String {
             };
             if scene.contact.kind == ContactKind::Rough && scene.thermal.is_none() {
                 // What `contact` will take (issue 41): estimated before anything is computed.
-                let (bytes, seconds) = study::heating_plan::contact_cost([ny, nx]);
+                let (bytes, seconds, _) = study::heating_plan::rough_contact_cost(scene, [ny, nx]);
                 return format!(
                     "{kind}, {nx} x {ny} samples; contact: about {} of CPU and {}",
                     study::heating_plan::duration(seconds),

@@ -91,11 +91,11 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
         }
     }
     // A rough contact: the solve and the subsurface search within the memory allowed
-    // (estimated, [`super::heating_plan::contact_cost`]; issue 41).
+    // (estimated, [`super::heating_plan::rough_contact_cost`], coated or not; issue 41).
     if let (crate::scene::ContactKind::Rough, Some(surface)) = (scene.contact.kind, &scene.surface)
     {
         let shape = surface.heights.shape();
-        let (bytes, seconds) = super::heating_plan::contact_cost(shape);
+        let (bytes, seconds, per_cell) = super::heating_plan::rough_contact_cost(scene, shape);
         let limit = memory_limit_bytes();
         if bytes > limit {
             let key = if surface.generated {
@@ -111,7 +111,7 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
                     shape[0],
                     super::heating_plan::duration(seconds),
                     crate::io::text::bytes(bytes as u64),
-                    super::heating_plan::CONTACT_BYTES_PER_CELL,
+                    per_cell,
                     crate::io::text::bytes(limit as u64)
                 ),
                 "use a coarser map (half the samples a side takes a quarter of the memory)",

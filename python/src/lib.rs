@@ -111,8 +111,8 @@ fn scene_contact(scene: &stressfield::scene::Scene, file: &str) -> Result<(Strin
                 }),
                 &mut |_| {},
             )
-                .context("frictional heating")
-                .with_context(|| format!("scene {}", scene.name))?,
+            .context("frictional heating")
+            .with_context(|| format!("scene {}", scene.name))?,
         )),
         None => None,
     };

@@ -341,9 +341,11 @@ impl HeatedStress {
     }
 
     /// Each quantity's largest value over the layer's cells: `(value, row, column)` (the
-    /// contact's alone are left unsearched when they come from elsewhere). A maximum shear
-    /// is computed (its principal stresses are most of the time) only where the von Mises
-    /// bound `τ <= σvM/√3` could beat the best so far, as `contact`'s search does.
+    /// contact's alone are left unsearched when they come from elsewhere; of equal values the
+    /// first cell in row order). A maximum shear is computed (its principal stresses are most
+    /// of the time) only where the von Mises bound `τ <= σvM/√3` could beat the best so far,
+    /// as `contact`'s search does: the cells are taken in decreasing von Mises stress, so
+    /// that the search stops at the first cell whose bound is below the best.
     pub(crate) fn layer_best(&self, layer: &StressLayer) -> [(f64, usize, usize); QUANTITIES] {
         let contact_too = !self.contact_elsewhere();
         let mut best = [(f64::NEG_INFINITY, 0, 0); QUANTITIES];
@@ -352,7 +354,9 @@ impl HeatedStress {
                 best[k] = (v, row, column);
             }
         }
-        let bound = super::assess::TRESCA_PER_VON_MISES;
+        // The von Mises stress of the total and of the contact at each cell, for the shears.
+        let mut total_cells: Vec<(f64, usize, usize)> = Vec::new();
+        let mut contact_cells: Vec<(f64, usize, usize)> = Vec::new();
         for row in self.rows() {
             for column in 0..self.grid.shape[1] {
                 let (thermal, contact) = self.at(layer, row, column);
@@ -363,24 +367,44 @@ impl HeatedStress {
                     row,
                     column,
                 );
-                let total = thermal + contact;
-                let total_von_mises = total.von_mises();
+                let total_von_mises = (thermal + contact).von_mises();
                 offer(&mut best, TOTAL_VON_MISES, total_von_mises, row, column);
-                if total_von_mises * bound >= best[TOTAL_MAX_SHEAR].0 {
-                    offer(&mut best, TOTAL_MAX_SHEAR, total.max_shear(), row, column);
-                }
+                total_cells.push((total_von_mises, row, column));
                 if contact_too {
                     let contact_von_mises = contact.von_mises();
                     offer(&mut best, CONTACT_VON_MISES, contact_von_mises, row, column);
-                    if contact_von_mises * bound >= best[CONTACT_MAX_SHEAR].0 {
-                        offer(
-                            &mut best,
-                            CONTACT_MAX_SHEAR,
-                            contact.max_shear(),
-                            row,
-                            column,
-                        );
-                    }
+                    contact_cells.push((contact_von_mises, row, column));
+                }
+            }
+        }
+        let bound = super::assess::TRESCA_PER_VON_MISES;
+        for (k, cells) in [
+            (TOTAL_MAX_SHEAR, total_cells),
+            (CONTACT_MAX_SHEAR, contact_cells),
+        ] {
+            // τ >= σvM/2 at every cell (`TRESCA_PER_VON_MISES`), so the largest shear is at
+            // least half the largest von Mises stress: only cells whose bound reaches that
+            // (less a margin for rounding) are candidates.
+            let largest = cells.iter().fold(f64::NEG_INFINITY, |m, c| m.max(c.0));
+            let floor = 0.5 * largest * (1.0 - 1e-9);
+            let mut cells: Vec<(f64, usize, usize)> =
+                cells.into_iter().filter(|c| c.0 * bound >= floor).collect();
+            cells.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
+            for (von_mises, row, column) in cells {
+                if von_mises * bound < best[k].0 {
+                    break;
+                }
+                let (thermal, contact) = self.at(layer, row, column);
+                let shear = if k == TOTAL_MAX_SHEAR {
+                    (thermal + contact).max_shear()
+                } else {
+                    contact.max_shear()
+                };
+                // Of equal shears the first cell in row order, as a scan in that order keeps.
+                if shear > best[k].0
+                    || (shear == best[k].0 && (row, column) < (best[k].1, best[k].2))
+                {
+                    best[k] = (shear, row, column);
                 }
             }
         }

@@ -154,9 +154,20 @@ fn rough_heating(c: &mut Criterion) {
                             .expect("solved");
                         let findings =
                             stressfield::study::rough::findings(scene, &solution).expect("maxima");
+                        // As `stressfield contact` does: the heating reuses the maxima found.
+                        let known = stressfield::study::thermal::ContactMaxima {
+                            maxima: &findings.maxima,
+                            friction: scene.contact.friction,
+                            poisson: scene.contact.poisson,
+                        };
                         let heating = scene.thermal.map(|_| {
-                            stressfield::study::thermal::study(scene, Some(&solution), &mut |_| {})
-                                .expect("heated")
+                            stressfield::study::thermal::study_with(
+                                scene,
+                                Some(&solution),
+                                Some(known),
+                                &mut |_| {},
+                            )
+                            .expect("heated")
                         });
                         (findings, heating)
                     })

@@ -99,10 +99,20 @@ fn scene_contact(scene: &stressfield::scene::Scene, file: &str) -> Result<(Strin
     let findings = study::rough::findings(scene, &solution)?;
     let report = ContactReport::new(scene, &solution, &findings);
     let thermal = match scene.thermal {
+        // The heating reuses the maxima just found (its contact alone's).
         Some(_) => Some(ThermalReport::new(
-            &study::thermal::study(scene, Some(&solution), &mut |_| {})
-                .context("frictional heating")
-                .with_context(|| format!("scene {}", scene.name))?,
+            &study::thermal::study_with(
+                scene,
+                Some(&solution),
+                Some(study::thermal::ContactMaxima {
+                    maxima: &findings.maxima,
+                    friction: scene.contact.friction,
+                    poisson: scene.contact.poisson,
+                }),
+                &mut |_| {},
+            )
+            .context("frictional heating")
+            .with_context(|| format!("scene {}", scene.name))?,
         )),
         None => None,
     };

@@ -60,11 +60,18 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
             (started.elapsed() - solved).as_secs_f64()
         );
     }
-    let report = ContactReport::new(&scene, &solution, &findings?);
-    // Frictional heating on the solved pressure, when the scene asks for it.
+    let findings = findings?;
+    let report = ContactReport::new(&scene, &solution, &findings);
+    // Frictional heating on the solved pressure, when the scene asks for it (with the
+    // subsurface maxima just found, which are its contact alone's).
+    let known = stressfield::study::thermal::ContactMaxima {
+        maxima: &findings.maxima,
+        friction: scene.contact.friction,
+        poisson: scene.contact.poisson,
+    };
     let thermal = match scene.thermal {
         Some(_) => Some(
-            super::thermal::study(&scene, Some(&solution))
+            super::thermal::study(&scene, Some(&solution), Some(known))
                 .with_context(|| format!("scene {}", scene.name))?,
         ),
         None => None,

@@ -15,11 +15,16 @@ use stressfield::study;
 use stressfield::study::gear_heating::GearHeating;
 use stressfield::study::thermal::ThermalStudy;
 
-/// The heating of `scene` (which has `[thermal]`), with a progress bar over the depths.
-pub(crate) fn study(scene: &Scene, rough: Option<&RoughSolution>) -> Result<ThermalStudy> {
+/// The heating of `scene` (which has `[thermal]`), with a progress bar over the depths; `known`:
+/// `contact`'s own maxima of the rough contact, when already found.
+pub(crate) fn study(
+    scene: &Scene,
+    rough: Option<&RoughSolution>,
+    known: Option<study::thermal::ContactMaxima>,
+) -> Result<ThermalStudy> {
     let bar = progress_bar(study::thermal::DEPTHS_OVER_A.len() as u64);
     bar.set_message("thermal stress by depth");
-    let result = study::thermal::study(scene, rough, &mut |progress| match progress {
+    let result = study::thermal::study_with(scene, rough, known, &mut |progress| match progress {
         study::thermal::Progress::Coupled { iteration, change } => bar.set_message(format!(
             "coupled iteration {iteration}: pressure change {change:.1e}"
         )),
@@ -70,7 +75,7 @@ fn heating(scene: &Scene) -> Result<(ThermalReport, ThermalStudy, Option<GearHea
             Some(gear),
         )
     } else {
-        let study = study(scene, None)?;
+        let study = study(scene, None, None)?;
         (ThermalReport::new(&study), study, None)
     })
 }
@@ -188,7 +193,7 @@ fn heating_outputs(
     };
     let (report, study, gear) = match &rough {
         Some(solution) => {
-            let study = study(scene, Some(solution))?;
+            let study = study(scene, Some(solution), None)?;
             (ThermalReport::new(&study), study, None)
         }
         None => heating(scene)?,

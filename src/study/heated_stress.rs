@@ -10,30 +10,19 @@
 //! `contact`, periodic when the contact is, [`super::rough::tractions`]).
 //!
 //! ## The search
-//! The maxima are searched over the cell centres of layers at coarse depths (a Hertz contact:
-//! [`super::thermal::DEPTHS_OVER_A`] times `a`; a rough contact: the depths of `contact`'s
-//! search, [`super::assess::grid_maxima_to_depth`]); each quantity's best layer is then
-//! refined in depth by bisection of its bracket (the maximum over the layer's cells at each
-//! depth), as the rough search does, down to [`DEPTH_TOLERANCE_OVER_A`] of `a` or a sixteenth
-//! of a cell. Where the contact stress is a closed form, the total's maxima are then located
-//! in x between the cell centres by the compass search of [`super::compass`] (Hooke & Jeeves
-//! 1961): the thermal stress between two centres is interpolated along the row by the
-//! Catmull–Rom cubic (exact at the centres), the contact stress evaluated exactly, so that an
-//! edge peak of the contact stress (the trailing edge's tension under high friction) is found
-//! where it is, not half a cell away. Depth and x are good to the tolerance and to about 1e-9
-//! of a cell, y to the cell row (a line contact: y = 0).
+//! The maxima are searched over the cell centres of layers at coarse depths and refined in
+//! depth: [`super::heated_search`].
 //!
 //! ## References
 //! - E. McEwen, *Phil. Mag.* 40 (1949) 454–459; G. M. Hamilton, *Proc. Instn Mech. Engrs*
 //!   197C (1983) 53–59 (the closed forms, [`crate::solution`]).
-//! - R. Hooke, T. A. Jeeves, *J. ACM* 8 (1961) 212–229 (the compass search).
 //! - E. Catmull, R. Rom, in *Computer Aided Geometric Design*, Academic Press (1974)
 //!   317–326 (the interpolating cubic).
 
 use ndarray::{Array2, Array3};
 
 use super::rough::{REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
-use super::thermal::{ContactModel, Maximum, ThermalStudy, ThermalStudyError};
+use super::thermal::{ContactModel, ThermalStudy, ThermalStudyError};
 use crate::scene::ThermalSpec;
 use crate::solution::dcfft::{layer_stress, DcFft, TractionGrid};
 use crate::solution::point_numerical::PointTractions;
@@ -95,8 +84,8 @@ pub(crate) struct HeatedStress {
 /// contact is a closed form, the contact's layer (in its units).
 pub(crate) struct StressLayer {
     pub(crate) depth_m: f64,
-    thermal: Array3<f64>,
-    contact: Option<Array3<f64>>,
+    pub(crate) thermal: Array3<f64>,
+    pub(crate) contact: Option<Array3<f64>>,
 }
 
 /// The quantities searched, in this order.
@@ -105,10 +94,10 @@ pub(crate) const CONTACT_VON_MISES: usize = 1;
 pub(crate) const TOTAL_VON_MISES: usize = 2;
 pub(crate) const CONTACT_MAX_SHEAR: usize = 3;
 pub(crate) const TOTAL_MAX_SHEAR: usize = 4;
-const QUANTITIES: usize = 5;
+pub(crate) const QUANTITIES: usize = 5;
 
 /// The value of quantity `k` from the thermal and the contact stress.
-fn measure(k: usize, thermal: &Stress, contact: &Stress) -> f64 {
+pub(crate) fn measure(k: usize, thermal: &Stress, contact: &Stress) -> f64 {
     match k {
         THERMAL_VON_MISES => thermal.von_mises(),
         CONTACT_VON_MISES => contact.von_mises(),
@@ -256,7 +245,13 @@ impl HeatedStress {
 
     /// The layer at depth `z` (m).
     pub(crate) fn layer(&self, z: f64) -> Result<StressLayer, ThermalStudyError> {
-        let thermal = super::thermal::thermal_stress_layer(
+        let thermal = self.thermal_layer(z)?;
+        self.with_thermal(z, thermal)
+    }
+
+    /// Body 1's thermal stress `[6, ny, nx]` (Pa) at depth `z` (m).
+    pub(crate) fn thermal_layer(&self, z: f64) -> Result<Array3<f64>, ThermalStudyError> {
+        super::thermal::thermal_stress_layer(
             &self.grid,
             self.line,
             z,
@@ -264,7 +259,16 @@ impl HeatedStress {
             self.poisson,
             self.e_alpha_over_k,
             &self.body1_flux,
-        )?;
+        )
+    }
+
+    /// The layer at depth `z` (m) with the thermal stress `thermal` given (computed, or
+    /// interpolated in depth by the search, [`super::heated_search`]) and the contact's own.
+    pub(crate) fn with_thermal(
+        &self,
+        z: f64,
+        thermal: Array3<f64>,
+    ) -> Result<StressLayer, ThermalStudyError> {
         let contact = match &self.contact {
             ContactPart::ClosedForm { .. } => None,
             ContactPart::Layers { fft, length_m, .. } => Some(fft.fft().layer(z / length_m)?),
@@ -303,7 +307,7 @@ impl HeatedStress {
     /// The thermal stress along `row` at `x` (m) between the cell centres, by the
     /// Catmull–Rom cubic through the four nearest (exact at a centre), and the closed-form
     /// contact stress there.
-    fn between(&self, layer: &StressLayer, row: usize, x: f64) -> (Stress, Stress) {
+    pub(crate) fn between(&self, layer: &StressLayer, row: usize, x: f64) -> (Stress, Stress) {
         let nx = self.grid.shape[1];
         let f = ((x - self.origin_m[0]) / self.grid.spacing_m[0]).clamp(0.0, (nx - 1) as f64);
         let j = (f.floor() as usize).min(nx.saturating_sub(2));
@@ -325,7 +329,7 @@ impl HeatedStress {
 
     /// Whether the contact's maxima come from elsewhere: the closed form, or a rough
     /// contact's own search ([`super::thermal::study`]).
-    fn contact_elsewhere(&self) -> bool {
+    pub(crate) fn contact_elsewhere(&self) -> bool {
         self.closed_form()
             || matches!(
                 self.contact,
@@ -337,10 +341,12 @@ impl HeatedStress {
     }
 
     /// Each quantity's largest value over the layer's cells: `(value, row, column)` (the
-    /// contact's alone are left unsearched when they come from elsewhere). A maximum shear
-    /// is computed (its principal stresses are most of the time) only where the von Mises
-    /// bound `τ <= σvM/√3` could beat the best so far, as `contact`'s search does.
-    fn layer_best(&self, layer: &StressLayer) -> [(f64, usize, usize); QUANTITIES] {
+    /// contact's alone are left unsearched when they come from elsewhere; of equal values the
+    /// first cell in row order). A maximum shear is computed (its principal stresses are most
+    /// of the time) only where the von Mises bound `τ <= σvM/√3` could beat the best so far,
+    /// as `contact`'s search does: the cells are taken in decreasing von Mises stress, so
+    /// that the search stops at the first cell whose bound is below the best.
+    pub(crate) fn layer_best(&self, layer: &StressLayer) -> [(f64, usize, usize); QUANTITIES] {
         let contact_too = !self.contact_elsewhere();
         let mut best = [(f64::NEG_INFINITY, 0, 0); QUANTITIES];
         fn offer(best: &mut [(f64, usize, usize)], k: usize, v: f64, row: usize, column: usize) {
@@ -348,7 +354,9 @@ impl HeatedStress {
                 best[k] = (v, row, column);
             }
         }
-        let bound = super::assess::TRESCA_PER_VON_MISES;
+        // The von Mises stress of the total and of the contact at each cell, for the shears.
+        let mut total_cells: Vec<(f64, usize, usize)> = Vec::new();
+        let mut contact_cells: Vec<(f64, usize, usize)> = Vec::new();
         for row in self.rows() {
             for column in 0..self.grid.shape[1] {
                 let (thermal, contact) = self.at(layer, row, column);
@@ -359,139 +367,48 @@ impl HeatedStress {
                     row,
                     column,
                 );
-                let total = thermal + contact;
-                let total_von_mises = total.von_mises();
+                let total_von_mises = (thermal + contact).von_mises();
                 offer(&mut best, TOTAL_VON_MISES, total_von_mises, row, column);
-                if total_von_mises * bound >= best[TOTAL_MAX_SHEAR].0 {
-                    offer(&mut best, TOTAL_MAX_SHEAR, total.max_shear(), row, column);
-                }
+                total_cells.push((total_von_mises, row, column));
                 if contact_too {
                     let contact_von_mises = contact.von_mises();
                     offer(&mut best, CONTACT_VON_MISES, contact_von_mises, row, column);
-                    if contact_von_mises * bound >= best[CONTACT_MAX_SHEAR].0 {
-                        offer(
-                            &mut best,
-                            CONTACT_MAX_SHEAR,
-                            contact.max_shear(),
-                            row,
-                            column,
-                        );
-                    }
+                    contact_cells.push((contact_von_mises, row, column));
+                }
+            }
+        }
+        let bound = super::assess::TRESCA_PER_VON_MISES;
+        for (k, cells) in [
+            (TOTAL_MAX_SHEAR, total_cells),
+            (CONTACT_MAX_SHEAR, contact_cells),
+        ] {
+            // τ >= σvM/2 at every cell (`TRESCA_PER_VON_MISES`), so the largest shear is at
+            // least half the largest von Mises stress: only cells whose bound reaches that
+            // (less a margin for rounding) are candidates.
+            let largest = cells.iter().fold(f64::NEG_INFINITY, |m, c| m.max(c.0));
+            let floor = 0.5 * largest * (1.0 - 1e-9);
+            let mut cells: Vec<(f64, usize, usize)> =
+                cells.into_iter().filter(|c| c.0 * bound >= floor).collect();
+            cells.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
+            for (von_mises, row, column) in cells {
+                if von_mises * bound < best[k].0 {
+                    break;
+                }
+                let (thermal, contact) = self.at(layer, row, column);
+                let shear = if k == TOTAL_MAX_SHEAR {
+                    (thermal + contact).max_shear()
+                } else {
+                    contact.max_shear()
+                };
+                // Of equal shears the first cell in row order, as a scan in that order keeps.
+                if shear > best[k].0
+                    || (shear == best[k].0 && (row, column) < (best[k].1, best[k].2))
+                {
+                    best[k] = (shear, row, column);
                 }
             }
         }
         best
-    }
-
-    /// The maxima of the thermal, contact and total von Mises stress and of the contact and
-    /// total maximum shear `(σ1 − σ3)/2`, searched at `coarse` depths (m, increasing from 0)
-    /// and refined (see the module's docs) to `tolerance_m`; `progress(done)` after each
-    /// coarse depth.
-    pub(crate) fn maxima(
-        &self,
-        coarse: &[f64],
-        tolerance_m: f64,
-        progress: &mut dyn FnMut(usize),
-    ) -> Result<[Maximum; QUANTITIES], ThermalStudyError> {
-        let mut found: Vec<DepthBest> = Vec::new();
-        for (done, &z) in coarse.iter().enumerate() {
-            let layer = self.layer(z)?;
-            found.push((z, self.layer_best(&layer)));
-            progress(done + 1);
-        }
-        let value = |found: &[DepthBest], z: f64, k: usize| {
-            found
-                .iter()
-                .find(|(d, _)| *d == z)
-                .map_or(f64::NEG_INFINITY, |(_, b)| b[k].0)
-        };
-        // The contact's maxima come from the closed form when there is one, and a rough
-        // contact's from `contact`'s own search ([`super::thermal::study`]): neither is refined
-        // here (each refined depth is a whole layer of the thermal stress).
-        let contact_elsewhere = self.contact_elsewhere();
-        let searched: Vec<usize> = (0..QUANTITIES)
-            .filter(|&k| !(contact_elsewhere && (k == CONTACT_VON_MISES || k == CONTACT_MAX_SHEAR)))
-            .collect();
-        for &k in &searched {
-            let best = (0..coarse.len())
-                .max_by(|&i, &j| found[i].1[k].0.total_cmp(&found[j].1[k].0))
-                .unwrap_or(0);
-            let (mut above, mut middle, mut below) = (
-                coarse[best.saturating_sub(1)],
-                coarse[best],
-                coarse[(best + 1).min(coarse.len() - 1)],
-            );
-            while middle - above > tolerance_m || below - middle > tolerance_m {
-                for z in [0.5 * (above + middle), 0.5 * (middle + below)] {
-                    if value(&found, z, k) == f64::NEG_INFINITY {
-                        let layer = self.layer(z)?;
-                        found.push((z, self.layer_best(&layer)));
-                    }
-                }
-                let (up, down) = (0.5 * (above + middle), 0.5 * (middle + below));
-                let (vu, vm, vd) = (
-                    value(&found, up, k),
-                    value(&found, middle, k),
-                    value(&found, down, k),
-                );
-                (above, middle, below) = if vu > vm && vu >= vd {
-                    (above, up, middle)
-                } else if vd > vm {
-                    (middle, down, below)
-                } else {
-                    (up, middle, down)
-                };
-            }
-        }
-        let mut maxima = [Maximum::NONE; QUANTITIES];
-        for &k in &searched {
-            let (z, b) = found
-                .iter()
-                .max_by(|a, b| a.1[k].0.total_cmp(&b.1[k].0))
-                .map(|(z, b)| (*z, b[k]))
-                .unwrap_or((0.0, (f64::NEG_INFINITY, 0, 0)));
-            let (v, row, column) = b;
-            maxima[k] = Maximum {
-                value_pa: v,
-                x_m: self.x_m(column),
-                y_m: self.y_m(row),
-                depth_m: z,
-            };
-        }
-        if self.closed_form() {
-            for k in [TOTAL_VON_MISES, TOTAL_MAX_SHEAR] {
-                maxima[k] = self.refine_in_x(k, maxima[k])?;
-            }
-        }
-        Ok(maxima)
-    }
-
-    /// Quantity `k`'s maximum moved along its row, between the cell centres either side of
-    /// it, to where the interpolated thermal plus the exact contact stress is largest (never
-    /// lower than at the centre).
-    fn refine_in_x(&self, k: usize, at: Maximum) -> Result<Maximum, ThermalStudyError> {
-        let layer = self.layer(at.depth_m)?;
-        let row = self.row_of(at.y_m);
-        let dx = self.grid.spacing_m[0];
-        let (lo, hi) = (self.x_m(0), self.x_m(self.grid.shape[1].saturating_sub(1)));
-        let bounds = ((at.x_m - dx).max(lo), (at.x_m + dx).min(hi));
-        // In units of a cell, so that the search's 1e-9 is of a cell.
-        let value = |[s]: [f64; 1]| {
-            let (thermal, contact) = self.between(&layer, row, at.x_m + s * dx);
-            measure(k, &thermal, &contact)
-        };
-        let ([s], best) = super::compass::compass_maximum(
-            value,
-            [0.0],
-            at.value_pa,
-            [0.5],
-            [((bounds.0 - at.x_m) / dx, (bounds.1 - at.x_m) / dx)],
-        );
-        Ok(Maximum {
-            value_pa: best,
-            x_m: at.x_m + s * dx,
-            ..at
-        })
     }
 
     /// The five quantities at every cell centre of `row` in `layer`:
@@ -518,4 +435,4 @@ impl HeatedStress {
 
 /// A searched depth (m) and, per quantity, its largest value there with its cell `(value,
 /// row, column)`.
-type DepthBest = (f64, [(f64, usize, usize); QUANTITIES]);
+pub(crate) type DepthBest = (f64, [(f64, usize, usize); QUANTITIES]);

@@ -20,6 +20,7 @@ pub mod coupled;
 pub mod drawing;
 pub mod gear_heating;
 mod grid;
+mod heated_search;
 pub(crate) mod heated_stress;
 pub mod heating_plan;
 pub mod map_roll;

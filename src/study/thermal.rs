@@ -542,11 +542,33 @@ pub fn hertz_flash(
     Ok((gridded.half_width_m, heated.body1, heated.body2))
 }
 
+/// A rough contact's own subsurface maxima, as `contact` found them
+/// ([`crate::study::rough::subsurface_maxima`]: reference units), with the friction (on body
+/// 1, in +x when positive) and Poisson ratio they were found for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ContactMaxima<'a> {
+    pub maxima: &'a crate::study::assess::StressMaxima,
+    pub friction: f64,
+    pub poisson: f64,
+}
+
 /// Computes the heating of `scene` (with `[thermal]`); `rough` is the solved contact of a
 /// rough scene. `progress(done, total)` after each depth of the stress search.
 pub fn study(
     scene: &Scene,
     rough: Option<&RoughSolution>,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<ThermalStudy, ThermalStudyError> {
+    study_with(scene, rough, None, progress)
+}
+
+/// [`study`], given `contact`'s own maxima of the rough contact `rough` (its findings, so
+/// that they are not searched again): used when they were found for the heating's friction
+/// and Poisson ratio on the same (not a coupled, heated) pressure; otherwise searched.
+pub fn study_with(
+    scene: &Scene,
+    rough: Option<&RoughSolution>,
+    known: Option<ContactMaxima>,
     progress: &mut dyn FnMut(Progress),
 ) -> Result<ThermalStudy, ThermalStudyError> {
     let spec = scene.thermal.ok_or(ThermalStudyError::NoThermal)?;
@@ -681,11 +703,22 @@ pub fn study(
             maxima[CONTACT_MAX_SHEAR] = to_max(found.max_shear);
         }
         (ContactModel::Rough { .. }, Some(solution)) => {
-            let tractions = crate::study::rough::tractions(solution, signed_friction, poisson)
-                .map_err(|e| ThermalStudyError::Contact(e.to_string()))?;
             let reference = crate::study::rough::REFERENCE_LENGTH_M;
-            let found =
-                crate::study::assess::grid_maxima_to_depth(&tractions, search_depth_m / reference)?;
+            let reusable = known.filter(|k| {
+                coupled.is_none() && k.friction == signed_friction && k.poisson == poisson
+            });
+            let found = match reusable {
+                Some(k) => *k.maxima,
+                None => {
+                    let tractions =
+                        crate::study::rough::tractions(solution, signed_friction, poisson)
+                            .map_err(|e| ThermalStudyError::Contact(e.to_string()))?;
+                    crate::study::assess::grid_maxima_to_depth(
+                        &tractions,
+                        search_depth_m / reference,
+                    )?
+                }
+            };
             let [dx, dy] = gridded.spacing_m;
             let to_max = |e: crate::study::assess::Extreme| Maximum {
                 value_pa: e.value_over_p0 * crate::study::rough::REFERENCE_PRESSURE_PA,

@@ -191,26 +191,33 @@ pub fn influence_lattice(grid: &CellGrid, u: f64) -> Array2<f64> {
         }
         C64::new(re, im) / d_xi
     };
-    add_smooth(&mut out, grid, ALIASES, OVERSAMPLING, [1.0], &|xi, eta| {
-        if xi.abs() < 3.5 * d_xi && eta.abs() < eta_cusp {
-            if eta == 0.0 {
-                // The whole cell about k = 0, halves in η (the cusp closes at η = 0).
-                let half = 0.5 * d_eta;
-                let (nodes, weights) = gauss_legendre(12);
-                let mut sum = C64::new(0.0, 0.0);
-                for (t, w) in nodes.iter().zip(&weights) {
-                    // Graded towards η = 0: η = half s², s in (0, 1).
-                    let s = 0.5 * (t + 1.0);
-                    let e = half * s * s;
-                    let jacobian = half * 2.0 * s * 0.5;
-                    sum += (mean_in_xi(xi, e) + mean_in_xi(xi, -e)) * (w * jacobian);
+    add_smooth(
+        &mut out,
+        grid,
+        ALIASES,
+        OVERSAMPLING,
+        [1.0],
+        &|xi, eta, _| {
+            if xi.abs() < 3.5 * d_xi && eta.abs() < eta_cusp {
+                if eta == 0.0 {
+                    // The whole cell about k = 0, halves in η (the cusp closes at η = 0).
+                    let half = 0.5 * d_eta;
+                    let (nodes, weights) = gauss_legendre(12);
+                    let mut sum = C64::new(0.0, 0.0);
+                    for (t, w) in nodes.iter().zip(&weights) {
+                        // Graded towards η = 0: η = half s², s in (0, 1).
+                        let s = 0.5 * (t + 1.0);
+                        let e = half * s * s;
+                        let jacobian = half * 2.0 * s * 0.5;
+                        sum += (mean_in_xi(xi, e) + mean_in_xi(xi, -e)) * (w * jacobian);
+                    }
+                    return [sum / d_eta];
                 }
-                return [sum / d_eta];
+                return [mean_in_xi(xi, eta)];
             }
-            return [mean_in_xi(xi, eta)];
-        }
-        [smooth(xi, eta)]
-    });
+            [smooth(xi, eta)]
+        },
+    );
     out.index_axis_move(Axis(0), 0)
 }
 

@@ -137,28 +137,56 @@ fn smooth_aliases(z: f64, u: f64, dx: f64, dy: f64) -> i64 {
     }
 }
 
-/// `(e^w - 1) / w`, accurate near `w = 0`.
-fn phi1(w: C64) -> C64 {
+/// `(e^w - 1) / w` from `e^w` (given), accurate near `w = 0` (its Taylor series there).
+fn phi1(w: C64, exp_w: C64) -> C64 {
     if w.norm() < 1e-3 {
         C64::new(1.0, 0.0) + w * (0.5 + w * (1.0 / 6.0 + w / 24.0))
     } else {
-        (w.exp() - 1.0) / w
+        (exp_w - 1.0) / w
     }
+}
+
+/// The principal square root of `re + i im` with `re > 0` (so `Re > 0`), without the polar
+/// form (no arc tangent, sine or cosine): `s + i im / (2s)` with `s = √((|w| + re)/2)`, whose
+/// square is `s² − im²/(4s²) + i im = re + i im` since `4s²(s² − re) = im²` (derived here).
+fn principal_sqrt(re: f64, im: f64) -> C64 {
+    let modulus = (re * re + im * im).sqrt();
+    let real = (0.5 * (modulus + re)).sqrt();
+    C64::new(real, 0.5 * im / real)
 }
 
 /// `H(ξ, η; z)` of the six stresses per unit flux, `K = 1`, per `E α` (module doc); `two_u` is
 /// `V / κ` (1/m). `k` must be positive.
 pub fn response(xi: f64, eta: f64, z: f64, two_u: f64, nu: f64) -> [C64; COMPONENTS] {
-    // (No overflow: wavenumbers are far below 1e150.)
     let k = (xi * xi + eta * eta).sqrt();
-    let gamma = C64::new(k * k, -two_u * xi).sqrt();
+    response_with(xi, eta, k, (-k * z).exp(), z, two_u, nu)
+}
+
+/// [`response`] given `k = √(ξ² + η²)` and `e^(-kz)`: `e^(-γz) = e^(-kz) e^(-δz)`, and
+/// `φ1(-δz)` from the same exponential.
+fn response_with(
+    xi: f64,
+    eta: f64,
+    k: f64,
+    ez: f64,
+    z: f64,
+    two_u: f64,
+    nu: f64,
+) -> [C64; COMPONENTS] {
+    // (No overflow: wavenumbers are far below 1e150.)
+    let gamma = principal_sqrt(k * k, -two_u * xi);
     let b = 1.0 / (gamma + k);
     let delta = C64::new(0.0, -two_u * xi) * b;
-    let ez = (-k * z).exp();
-    let p = phi1(-delta * z);
+    let w = -delta * z;
+    let exp_w = if z == 0.0 {
+        C64::new(1.0, 0.0)
+    } else {
+        w.exp()
+    };
+    let p = phi1(w, exp_w);
     let e = -z * ez * p * b;
     let e_prime = (gamma * z * p - 1.0) * ez * b;
-    let eg = ez * (-delta * z).exp();
+    let eg = ez * exp_w;
     let i = C64::new(0.0, 1.0);
     let shear = e_prime + (1.0 - k * z) * ez * b;
     let zz = k * k * e + z * k * k * ez * b;
@@ -182,17 +210,24 @@ pub fn response(xi: f64, eta: f64, z: f64, two_u: f64, nu: f64) -> [C64; COMPONE
 /// The stationary part `H_s` of [`response`] (zero for zz, yz, xz).
 pub fn stationary_response(xi: f64, eta: f64, z: f64) -> [f64; COMPONENTS] {
     let k = (xi * xi + eta * eta).sqrt();
-    let c = (-k * z).exp() / (k * k * k);
+    stationary_with(xi, eta, k, (-k * z).exp())
+}
+
+/// [`stationary_response`] given `k` and `e^(-kz)`.
+fn stationary_with(xi: f64, eta: f64, k: f64, ez: f64) -> [f64; COMPONENTS] {
+    let c = ez / (k * k * k);
     [-eta * eta * c, -xi * xi * c, 0.0, 0.0, 0.0, xi * eta * c]
 }
 
 /// `H - H_s`, the moving part.
 fn remainder(xi: f64, eta: f64, z: f64, two_u: f64, nu: f64) -> [C64; COMPONENTS] {
-    let mut h = response(xi, eta, z, two_u, nu);
     if two_u == 0.0 {
         return [C64::new(0.0, 0.0); COMPONENTS];
     }
-    for (value, s) in h.iter_mut().zip(stationary_response(xi, eta, z)) {
+    let k = (xi * xi + eta * eta).sqrt();
+    let ez = (-k * z).exp();
+    let mut h = response_with(xi, eta, k, ez, z, two_u, nu);
+    for (value, s) in h.iter_mut().zip(stationary_with(xi, eta, k, ez)) {
         *value -= s;
     }
     h
@@ -356,7 +391,15 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     }
     let two_u = 2.0 * u;
     let kw = window_wavenumber(grid.shape, grid.spacing_m);
-    let window = |k: f64| (-(k / kw).powi(2)).exp();
+    // Beyond `k = 6.1 kw`, `W < 2^-53`: `1 - W` is 1 and `W` times a value is below its last
+    // digit, so it is not evaluated there.
+    let window = |k: f64| {
+        if k > 6.1 * kw {
+            0.0
+        } else {
+            (-(k / kw).powi(2)).exp()
+        }
+    };
     let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
     add_band(&mut out, grid, kw * 5.0, PARITY, &|xi, eta| {
         let mut h = remainder(xi, eta, z, two_u, nu);
@@ -368,18 +411,25 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
     });
     let aliases = smooth_aliases(z, u, dx, dy);
     let oversampling = smooth_oversampling(u, kw);
-    add_smooth(&mut out, grid, aliases, oversampling, PARITY, &|xi, eta| {
-        let k = (xi * xi + eta * eta).sqrt();
-        if k == 0.0 {
-            return [C64::new(0.0, 0.0); COMPONENTS];
-        }
-        let mut h = remainder(xi, eta, z, two_u, nu);
-        let s = (1.0 - window(k)) * cell(xi, eta);
-        for v in h.iter_mut() {
-            *v *= s;
-        }
-        h
-    });
+    add_smooth(
+        &mut out,
+        grid,
+        aliases,
+        oversampling,
+        PARITY,
+        &|xi, eta, form| {
+            let k = (xi * xi + eta * eta).sqrt();
+            if k == 0.0 {
+                return [C64::new(0.0, 0.0); COMPONENTS];
+            }
+            let mut h = remainder(xi, eta, z, two_u, nu);
+            let s = (1.0 - window(k)) * form;
+            for v in h.iter_mut() {
+                *v *= s;
+            }
+            h
+        },
+    );
     out
 }
 
@@ -525,14 +575,16 @@ pub(super) fn add_band<const N: usize>(
 
 /// Adds the lattice samples of the inverse transform of `F` (free of a singularity at `k = 0`)
 /// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way;
-/// component `c` has the parity `parity[c]` in `η`, so only `η >= 0` is evaluated.
+/// component `c` has the parity `parity[c]` in `η`, so only `η >= 0` is evaluated. `F` is
+/// given `(ξ, η)` and the cell's form factor there, `dx dy sinc(ξ dx/2) sinc(η dy/2)`, whose
+/// two sines are computed once a column and a row.
 pub(super) fn add_smooth<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
     aliases: i64,
     over: usize,
     parity: [f64; N],
-    f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
+    f: &(dyn Fn(f64, f64, f64) -> [C64; N] + Sync),
 ) {
     let [ny, nx] = grid.shape;
     let [dx, dy] = grid.spacing_m;
@@ -544,19 +596,30 @@ pub(super) fn add_smooth<const N: usize>(
     // Each column's values for 0 <= ky <= my/2; the rows my/2 < ky < my (η < 0) are
     // `parity` times those of my - ky (the aliases of -η0 are those of η0 mirrored).
     let half_rows = my / 2 + 1;
+    // Each wavenumber with its aliases, `(value, sinc(value d/2))`.
+    let with_aliases = |base: f64, d: f64| -> Vec<(f64, f64)> {
+        (-aliases..=aliases)
+            .map(|a| {
+                let value = base + 2.0 * PI * a as f64 / d;
+                (value, sinc(0.5 * value * d))
+            })
+            .collect()
+    };
+    let etas: Vec<Vec<(f64, f64)>> = (0..half_rows)
+        .map(|ky| with_aliases(2.0 * PI * signed_index(ky, my) as f64 / py, dy))
+        .collect();
     let columns: Vec<Vec<[C64; N]>> = (0..kxs)
         .into_par_iter()
         .map(|kx| {
-            let xi0 = 2.0 * PI * kx as f64 / px;
-            (0..half_rows)
-                .map(|ky| {
-                    let eta0 = 2.0 * PI * signed_index(ky, my) as f64 / py;
+            let xis = with_aliases(2.0 * PI * kx as f64 / px, dx);
+            etas.iter()
+                .map(|eta_aliases| {
                     let mut sum = [C64::new(0.0, 0.0); N];
-                    for a in -aliases..=aliases {
-                        for b in -aliases..=aliases {
-                            let xi = xi0 + 2.0 * PI * a as f64 / dx;
-                            let eta = eta0 + 2.0 * PI * b as f64 / dy;
-                            for (s, v) in sum.iter_mut().zip(f(xi, eta)) {
+                    for &(xi, sinc_xi) in &xis {
+                        for &(eta, sinc_eta) in eta_aliases {
+                            for (s, v) in
+                                sum.iter_mut().zip(f(xi, eta, dx * dy * sinc_xi * sinc_eta))
+                            {
                                 *s += v;
                             }
                         }

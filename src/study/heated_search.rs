@@ -143,13 +143,15 @@ impl HeatedStress {
             found.push((z, self.layer_best(&layer)));
             kept.layers.insert(done, layer.thermal.mapv(|v| v as f32));
             // Keep the layers an interpolation around a best so far can need, and the last
-            // two (a later best needs them).
+            // two, `done - 1` and `done`: a later best `b > done` needs the coarse layers from
+            // `b - 2` on ([`needed`]), and those after `done` are still to come. (A layer not
+            // kept is computed exactly where needed, so this bounds memory, not correctness.)
             let wanted: Vec<Range<usize>> = searched
                 .iter()
                 .map(|&k| needed(points, best_index(&found, k)))
                 .collect();
             kept.layers
-                .retain(|&j, _| j + 2 >= done || wanted.iter().any(|r| r.contains(&j)));
+                .retain(|&j, _| j + 1 >= done || wanted.iter().any(|r| r.contains(&j)));
             progress(done + 1);
         }
         let coarse_found = found.len();

@@ -53,7 +53,6 @@ pub mod contact;
 pub mod field;
 pub mod figure;
 pub mod io;
-pub mod limits;
 pub mod operator;
 #[cfg(feature = "rerun")]
 pub mod record;

@@ -125,7 +125,7 @@ impl Precision for f32 {
     }
 }
 
-pub use crate::limits::MAX_FIELD_BYTES;
+pub use crate::io::input::MAX_FIELD_BYTES;
 
 /// The largest grid this machine should hold: [`MAX_FIELD_BYTES`], or three quarters of the
 /// memory available now (`MemAvailable` of `/proc/meminfo` on Linux) when that is smaller.

@@ -56,9 +56,16 @@ pub fn read_to_string(path: &Path, limit: u64) -> Result<String, InputError> {
     read_all_with_capacity(file, limit, capacity)
 }
 
+/// Largest grid (in bytes of stored values) that [`crate::field::evaluate`] accepts on any
+/// machine; less when the machine has less memory available (see
+/// [`crate::field::memory_limit_bytes`]). It lives here, at the bottom of the pipeline, so
+/// that the input readers and the field evaluation (which re-exports it) see one number
+/// without either reaching up to the other.
+pub const MAX_FIELD_BYTES: usize = 4 << 30;
+
 /// The largest reference file of a regression run (`render --compare`: a PNG or a field
 /// archive): a quarter of the memory a figure may use, so the largest figure's field fits.
-pub const REFERENCE_FILE_LIMIT: u64 = (crate::limits::MAX_FIELD_BYTES / 4) as u64;
+pub const REFERENCE_FILE_LIMIT: u64 = (MAX_FIELD_BYTES / 4) as u64;
 
 /// Reads the whole of `path` as bytes, failing as soon as more than `limit` bytes come.
 pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, InputError> {

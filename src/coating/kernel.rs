@@ -86,8 +86,9 @@ fn sinc(x: f64) -> f64 {
     }
 }
 
-/// The remainder `R(k)` of the module doc, m/Pa per m² (`k` in 1/m), with `c = h`.
-fn remainder(layered: &Layered, k: f64) -> f64 {
+/// The remainder `R(k)` of the module doc, m/Pa per m² (`k` in 1/m), with `c = h`; the
+/// line contact's kernel ([`super::line`]) takes the same function of `k` (its module doc).
+pub(super) fn remainder(layered: &Layered, k: f64) -> f64 {
     let h = layered.thickness_m;
     let (e1, e2) = (
         plane_strain_modulus(&layered.coating),

@@ -58,6 +58,7 @@ use ndarray::Array2;
 use realfft::RealFftPlanner;
 use rustfft::num_complex::Complex;
 
+use super::kernel::remainder;
 use super::response::{plane_strain_modulus, Layered, Side, WaveResponse};
 use crate::operator::transform::TransformError;
 
@@ -88,29 +89,6 @@ fn log_strip(t: f64) -> f64 {
 /// `H(t) = t ln(t² + c²) - 2t + 2c atan(t/c)` (module doc), `c > 0`.
 fn smoothed_log_strip(t: f64, c: f64) -> f64 {
     t * (t * t + c * c).ln() - 2.0 * t + 2.0 * c * (t / c).atan()
-}
-
-/// The remainder `R(k)` of the module doc, m/Pa per m (`k` in 1/m).
-fn remainder(layered: &Layered, k: f64) -> f64 {
-    let h = layered.thickness_m;
-    let (e1, e2) = (
-        plane_strain_modulus(&layered.coating),
-        plane_strain_modulus(&layered.substrate),
-    );
-    let at = |k: f64| {
-        (layered.normal_compliance_times_k(k * h)
-            - 2.0 / e1
-            - 2.0 * (1.0 / e2 - 1.0 / e1) * (-k * h).exp())
-            / k
-    };
-    if k * h < 1e-3 {
-        // Finite at k = 0: linear extrapolation from two small wavenumbers.
-        let k1 = 1e-3 / h;
-        let (r1, r2) = (at(k1), at(2.0 * k1));
-        r1 + (r1 - r2) * (k1 - k) / k1
-    } else {
-        at(k)
-    }
 }
 
 /// The influence coefficients (m/Pa) of a coated body (and the counter-body of compliance

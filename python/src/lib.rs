@@ -18,6 +18,7 @@ use numpy::{IntoPyArray, PyArray2, PyArray4, PyReadonlyArray1, PyReadonlyArray2}
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use rayon::prelude::*;
 
 use stressfield::contact::rough::{self as rough_contact, Control, RoughContactProblem};
 use stressfield::operator::elastic::Periodicity;
@@ -547,7 +548,6 @@ fn stress<'py>(
 /// The DC-FFT layers at `depths_m`, in parallel over the depths, `[depth, row, column,
 /// component]` in Pa.
 fn layers_of(fft: &DcFft, depths_m: ArrayView1<f64>) -> Result<Array4<f64>> {
-    use rayon::prelude::*;
     let [ny, nx] = fft.shape();
     let depths: Vec<f64> = depths_m.iter().copied().collect();
     let mut out = Array4::<f64>::zeros((depths.len(), ny, nx, 6));
@@ -593,23 +593,9 @@ fn line_stress<'py>(
     poisson: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let (x, z) = (x.as_array(), z.as_array());
-    let out = py
-        .detach(|| -> Result<Array2<f64>> {
-            closed_form_parameters(friction, poisson)?;
-            check_depths(z.iter())?;
-            let mut out = Array2::zeros((x.len(), 6));
-            ndarray::Zip::from(out.rows_mut())
-                .and(&x)
-                .and(&z)
-                .par_for_each(|mut row, &x, &z| {
-                    let s =
-                        stressfield::solution::line_hertz::stress_over_p0(x, z, friction, poisson);
-                    row.assign(&ndarray::arr1(&[s.xx, s.yy, s.zz, s.yz, s.xz, s.xy]));
-                });
-            Ok(out)
-        })
-        .map_err(raise)?;
-    Ok(out.into_pyarray(py))
+    closed_form_rows(py, friction, poisson, z, |i| {
+        stressfield::solution::line_hertz::stress_over_p0(x[i], z[i], friction, poisson)
+    })
 }
 
 /// Depths of the closed forms: z >= 0 (into the body), finite.
@@ -623,6 +609,35 @@ fn check_depths<'a>(mut z: impl Iterator<Item = &'a f64>) -> Result<()> {
     Ok(())
 }
 
+/// A closed form's stresses at the points `0..z.len()` (the Python side broadcast the
+/// coordinates to one length), in parallel and without the GIL: `[point, component]`, the
+/// components in `Stress` order (xx, yy, zz, yz, xz, xy), after the parameters and depths
+/// are checked.
+fn closed_form_rows<'py>(
+    py: Python<'py>,
+    friction: f64,
+    poisson: f64,
+    z: ArrayView1<'_, f64>,
+    stress: impl Fn(usize) -> stressfield::stress::Stress + Sync,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let out = py
+        .detach(|| -> Result<Array2<f64>> {
+            closed_form_parameters(friction, poisson)?;
+            check_depths(z.iter())?;
+            let mut out = Array2::zeros((z.len(), 6));
+            out.axis_iter_mut(Axis(0))
+                .into_par_iter()
+                .enumerate()
+                .for_each(|(i, mut row)| {
+                    let s = stress(i);
+                    row.assign(&ndarray::arr1(&[s.xx, s.yy, s.zz, s.yz, s.xz, s.xy]));
+                });
+            Ok(out)
+        })
+        .map_err(raise)?;
+    Ok(out.into_pyarray(py))
+}
+
 /// `stressfield.sphere_stress` on flat arrays of points: `[point, component]` over p0.
 #[pyfunction]
 fn sphere_stress<'py>(
@@ -634,25 +649,9 @@ fn sphere_stress<'py>(
     poisson: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let (x, y, z) = (x.as_array(), y.as_array(), z.as_array());
-    let out = py
-        .detach(|| -> Result<Array2<f64>> {
-            closed_form_parameters(friction, poisson)?;
-            check_depths(z.iter())?;
-            let mut out = Array2::zeros((x.len(), 6));
-            ndarray::Zip::from(out.rows_mut())
-                .and(&x)
-                .and(&y)
-                .and(&z)
-                .par_for_each(|mut row, &x, &y, &z| {
-                    let s = stressfield::solution::sphere_hertz::stress_over_p0(
-                        x, y, z, friction, poisson,
-                    );
-                    row.assign(&ndarray::arr1(&[s.xx, s.yy, s.zz, s.yz, s.xz, s.xy]));
-                });
-            Ok(out)
-        })
-        .map_err(raise)?;
-    Ok(out.into_pyarray(py))
+    closed_form_rows(py, friction, poisson, z, |i| {
+        stressfield::solution::sphere_hertz::stress_over_p0(x[i], y[i], z[i], friction, poisson)
+    })
 }
 
 /// A length unit's size in m (`height_unit`, `length_unit`), with the command line's list.

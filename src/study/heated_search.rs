@@ -176,7 +176,7 @@ impl HeatedStress {
             }
             let ready = |d: f64| {
                 let below = exact_coarse.partition_point(|&e| e <= d);
-                below + 1 <= index || index + 1 == computed_points
+                below < index || index + 1 == computed_points
             };
             let (now, later): (Vec<f64>, Vec<f64>) = pending.iter().partition(|&&d| ready(d));
             pending = later;

@@ -120,7 +120,7 @@ impl Kept {
 /// Whether coarse depth `index` of `points` has its thermal layer computed: the first
 /// `dense`, then every other one, and the last; the others are interpolated in depth.
 fn computed(index: usize, dense: usize, points: usize) -> bool {
-    index < dense || (index - dense) % 2 == 0 || index + 1 == points
+    index < dense || (index - dense).is_multiple_of(2) || index + 1 == points
 }
 
 /// The coarse depth where quantity `k` is largest.

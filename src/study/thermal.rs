@@ -40,6 +40,10 @@ pub const DEPTHS_OVER_A: [f64; 16] = [
     0.0, 0.005, 0.01, 0.02, 0.04, 0.07, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.3,
 ];
 
+/// The depth, in cells, to which a rough contact's search computes the thermal layer at
+/// every coarse depth (beyond it, at every other one: [`crate::study::heated_search`]).
+pub const DENSE_CELLS: f64 = 5.0;
+
 /// The most cells a Hertz contact's thermal grid takes along x.
 pub const MAX_CELLS: usize = 640;
 
@@ -668,24 +672,28 @@ pub fn study_with(
     )?;
     // The depths: a Hertz contact's [`DEPTHS_OVER_A`], a rough contact's those of
     // `contact`'s search ([`crate::study::rough::search_depth_m`]).
-    let (coarse, tolerance_m, search_depth_m) = match heated_rough {
+    // A rough contact's thermal layers are computed at every depth to `DENSE_CELLS` cells,
+    // then at every other one ([`crate::study::heated_search`]).
+    let (coarse, dense, tolerance_m, search_depth_m) = match heated_rough {
         Some(solution) => {
             let depth = crate::study::rough::search_depth_m(solution);
             let dz = gridded.spacing_m[0].min(gridded.spacing_m[1]);
-            (
-                crate::study::assess::search_depths(dz, depth),
-                dz / 16.0,
-                depth,
-            )
+            let coarse = crate::study::assess::search_depths(dz, depth);
+            let dense = coarse
+                .iter()
+                .filter(|&&z| z <= DENSE_CELLS * dz * (1.0 + 1e-9))
+                .count();
+            (coarse, dense, dz / 16.0, depth)
         }
         None => (
             DEPTHS_OVER_A.iter().map(|d| d * a).collect::<Vec<f64>>(),
+            DEPTHS_OVER_A.len(),
             DEPTH_TOLERANCE_OVER_A * a,
             DEPTHS_OVER_A[DEPTHS_OVER_A.len() - 1] * a,
         ),
     };
     let total = coarse.len();
-    let mut maxima = stress.maxima(&coarse, tolerance_m, &mut |done| {
+    let mut maxima = stress.maxima(&coarse, dense, tolerance_m, &mut |done| {
         progress(Progress::Depth { done, total })
     })?;
     // The contact alone: `hertz`'s closed-form maxima, or `contact`'s search of a rough

@@ -439,6 +439,13 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
 /// lattice in `y`: only `η > 0` is evaluated (`e^(iηy) ± e^(-iηy)` is `2 cos ηy` or
 /// `2i sin ηy`), the rows `y >= 0` are summed and the rows `y < 0` mirrored, and each sum over
 /// `ξ` serves `x` and `-x` (its cosine and sine parts): a quarter of the direct sum's work.
+///
+/// The product rule's sums are matrix products (ndarray's `dot`, the cache-blocked kernels
+/// of `matrixmultiply`): with `A` the weighted values `[ξ, η]` of a component, `C_η` its
+/// cosines (or sines) `[η, row]` and `C_ξ`, `S_ξ` the cosines and sines `[ξ, column]`, the
+/// sums over `η` are `R = A C_η` (`[ξ, row]`) and the lattice at `±x` is
+/// `Re(R)ᵀ C_ξ ∓ Im(R)ᵀ S_ξ` (`[row, column]`): the product rule's double sum, ordered
+/// (derived here).
 pub(super) fn add_band<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
@@ -454,35 +461,21 @@ pub(super) fn add_band<const N: usize>(
     // and -nx mirrored from +ny and +nx).
     let rows = ny + 1;
     let columns = nx + 1;
-    // cos ηy and sin ηy for every η > 0 and row (`[η][row]`).
-    let mut eta_cos = vec![0.0; m * rows];
-    let mut eta_sin = vec![0.0; m * rows];
-    for (index, &eta) in half.iter().enumerate() {
-        for j in 0..rows {
-            let (s, c) = (eta * j as f64 * dy).sin_cos();
-            eta_cos[index * rows + j] = c;
-            eta_sin[index * rows + j] = s;
-        }
-    }
-    // cos ξx and sin ξx for every ξ > 0 and column.
-    let stride = columns;
-    let mut xi_cos = vec![0.0; m * stride];
-    let mut xi_sin = vec![0.0; m * stride];
-    for (n, &xi) in half.iter().enumerate() {
-        for i in 0..columns {
-            let (s, c) = (xi * i as f64 * dx).sin_cos();
-            xi_cos[n * stride + i] = c;
-            xi_sin[n * stride + i] = s;
-        }
-    }
-    // partial[n][component] = (re, im) over the rows: w_n Σ_η w F(ξn, η) e^(iηy_j) over
-    // both signs of η (sums along the rows, which vectorise).
-    let partial: Vec<Vec<[Vec<f64>; 2]>> = half
+    // cos ηy and sin ηy for every η > 0 and row (`[η, row]`), cos ξx and sin ξx for every
+    // ξ > 0 and column (`[ξ, column]`).
+    let trig = |step: f64, count: usize| {
+        let cosines = Array2::from_shape_fn((m, count), |(n, i)| (half[n] * i as f64 * step).cos());
+        let sines = Array2::from_shape_fn((m, count), |(n, i)| (half[n] * i as f64 * step).sin());
+        (cosines, sines)
+    };
+    let (eta_cos, eta_sin) = trig(dy, rows);
+    let (xi_cos, xi_sin) = trig(dx, columns);
+    // The weighted values `2 w_ξ w_η F(ξ, η)`, `[ξ][η]`.
+    let values: Vec<Vec<[C64; N]>> = half
         .par_iter()
         .zip(&half_weights)
         .map(|(&xi, &w_xi)| {
-            let values: Vec<[C64; N]> = half
-                .iter()
+            half.iter()
                 .zip(&half_weights)
                 .map(|(&eta, &w)| {
                     let mut v = f(xi, eta);
@@ -491,82 +484,48 @@ pub(super) fn add_band<const N: usize>(
                     }
                     v
                 })
-                .collect();
-            (0..N)
-                .map(|component| {
-                    let even = parity[component] > 0.0;
-                    let table = if even { &eta_cos } else { &eta_sin };
-                    let (mut re, mut im) = (vec![0.0; rows], vec![0.0; rows]);
-                    for (index, v) in values.iter().enumerate() {
-                        let trig = &table[index * rows..][..rows];
-                        let (a, b) = (v[component].re, v[component].im);
-                        for ((r, i), &t) in re.iter_mut().zip(im.iter_mut()).zip(trig) {
-                            *r += a * t;
-                            *i += b * t;
-                        }
-                    }
-                    // The odd part's 2i sin ηy.
-                    if even {
-                        [re, im]
-                    } else {
-                        [im.iter().map(|v| -v).collect(), re]
-                    }
-                })
                 .collect()
         })
         .collect();
     let scale = 2.0 / (4.0 * PI * PI);
-    // One row of every component: `[component][column]`, x >= 0 then x < 0, from
-    // P = Σ a.re cos ξx and Q = Σ a.im sin ξx: (P - Q) at x, (P + Q) at -x.
-    let row_values = |j: usize| -> Vec<Vec<f64>> {
-        // P and Q of each component along the columns x >= 0 (long sums, which vectorise).
-        let mut p = vec![vec![0.0f64; stride]; N];
-        let mut q = vec![vec![0.0f64; stride]; N];
-        for (n, sums) in partial.iter().enumerate() {
-            let cosines = &xi_cos[n * stride..][..stride];
-            let sines = &xi_sin[n * stride..][..stride];
-            for component in 0..N {
-                let (re, im) = (sums[component][0][j], sums[component][1][j]);
-                for (slot, &c) in p[component].iter_mut().zip(cosines) {
-                    *slot += re * c;
-                }
-                for (slot, &s) in q[component].iter_mut().zip(sines) {
-                    *slot += im * s;
+    for component in 0..N {
+        let even = parity[component] > 0.0;
+        let real = Array2::from_shape_fn((m, m), |(n, e)| values[n][e][component].re);
+        let imaginary = Array2::from_shape_fn((m, m), |(n, e)| values[n][e][component].im);
+        let table = if even { &eta_cos } else { &eta_sin };
+        // Over η: `[ξ, row]`; the odd part's `2i sin ηy` turns (re, im) into (-im, re).
+        let (row_re, row_im) = rayon::join(|| real.dot(table), || imaginary.dot(table));
+        let (row_re, row_im) = if even {
+            (row_re, row_im)
+        } else {
+            (row_im.mapv(|v| -v), row_re)
+        };
+        // Over ξ: P = Σ re cos ξx and Q = Σ im sin ξx, `[row, column]` for x >= 0: (P - Q) at
+        // x, (P + Q) at -x.
+        let (p, q) = rayon::join(|| row_re.t().dot(&xi_cos), || row_im.t().dot(&xi_sin));
+        let sign = parity[component];
+        let mut layer = out.index_axis_mut(Axis(0), component);
+        for j in 0..rows {
+            let (p_row, q_row) = (p.row(j), q.row(j));
+            let value = |column: usize| {
+                let i = signed(column, 2 * nx);
+                let at = i.unsigned_abs() as usize;
+                scale
+                    * if i >= 0 {
+                        p_row[at] - q_row[at]
+                    } else {
+                        p_row[at] + q_row[at]
+                    }
+            };
+            // Row +j (j < ny), and -j (1 <= j <= ny) at lattice row 2ny - j.
+            if j < ny {
+                for (column, slot) in layer.row_mut(j).iter_mut().enumerate() {
+                    *slot += value(column);
                 }
             }
-        }
-        (0..N)
-            .map(|component| {
-                (0..2 * nx)
-                    .map(|column| {
-                        let i = signed(column, 2 * nx);
-                        let at = i.unsigned_abs() as usize;
-                        let (pp, qq) = (p[component][at], q[component][at]);
-                        scale * if i >= 0 { pp - qq } else { pp + qq }
-                    })
-                    .collect()
-            })
-            .collect()
-    };
-    // Rows in chunks, so that the buffer stays small.
-    const CHUNK: usize = 64;
-    for start in (0..rows).step_by(CHUNK) {
-        let end = (start + CHUNK).min(rows);
-        let values: Vec<Vec<Vec<f64>>> = (start..end).into_par_iter().map(row_values).collect();
-        for (j, row) in (start..end).zip(values) {
-            for (component, line) in row.iter().enumerate() {
-                let mut layer = out.index_axis_mut(Axis(0), component);
-                // Row +j (j < ny), and -j (1 <= j <= ny) at lattice row 2ny - j.
-                if j < ny {
-                    for (slot, &v) in layer.row_mut(j).iter_mut().zip(line) {
-                        *slot += v;
-                    }
-                }
-                if j >= 1 {
-                    let sign = parity[component];
-                    for (slot, &v) in layer.row_mut(2 * ny - j).iter_mut().zip(line) {
-                        *slot += sign * v;
-                    }
+            if j >= 1 {
+                for (column, slot) in layer.row_mut(2 * ny - j).iter_mut().enumerate() {
+                    *slot += sign * value(column);
                 }
             }
         }

@@ -17,35 +17,82 @@ const PARALLEL_LAYERS_BYTES: usize = 1 << 30;
 /// otherwise, or where those working sets together would exceed [`PARALLEL_LAYERS_BYTES`]
 /// (isolated grids, whose layers are all cell-based), layer after layer, each layer's
 /// influence coefficients split over the threads ([`DcFft::influence_in_parallel`]) and then
-/// its six components, which run in parallel. Either way a layer is the same to the last
-/// bit.
+/// its six components, which run in parallel. A periodic batch with fewer cell-based layers
+/// than threads runs those layer after layer and its spectral layers over the depths. Either
+/// way a layer is the same to the last bit.
 pub fn for_each_dcfft_layer<F>(fft: &DcFft, depths: &[f64], take: F) -> Result<(), DcFftError>
 where
     F: Fn(usize, f64, ndarray::ArrayView3<f64>) + Sync,
 {
-    let [ny, nx] = fft.shape();
     let threads = rayon::current_num_threads();
-    let fits = fft.periodicity() == crate::operator::elastic::Periodicity::Periodic
-        || fft.worker_bytes().saturating_mul(threads) <= PARALLEL_LAYERS_BYTES;
-    if depths.len() >= threads && fits {
-        return depths
-            .par_iter()
-            .enumerate()
-            .map_init(
-                || (fft.workspace(), Array3::zeros((6, ny, nx))),
-                |(workspace, layer), (index, &z)| {
-                    fft.layer_into(z, workspace, layer.view_mut())?;
-                    take(index, z, layer.view());
-                    Ok(())
-                },
-            )
-            .collect();
+    let periodic = fft.periodicity() == crate::operator::elastic::Periodicity::Periodic;
+    let fits = periodic || fft.worker_bytes().saturating_mul(threads) <= PARALLEL_LAYERS_BYTES;
+    let all: Vec<usize> = (0..depths.len()).collect();
+    if depths.len() < threads || !fits {
+        return one_by_one(fft, depths, &all, &take, threads);
     }
+    // A periodic batch with fewer cell-based layers than threads among spectral ones (a
+    // refinement round near the surface): a cell-based layer costs several spectral ones, so
+    // it is split over the threads first and its spectral companions run over the depths
+    // after, instead of one worker computing it alone while the others wait.
+    let (cell_based, spectral): (Vec<usize>, Vec<usize>) =
+        all.iter().partition(|&&i| !fft.is_spectral(depths[i]));
+    if periodic && !cell_based.is_empty() && cell_based.len() < threads {
+        one_by_one(fft, depths, &cell_based, &take, threads)?;
+        return if spectral.len() >= threads {
+            over_depths(fft, depths, &spectral, &take)
+        } else {
+            one_by_one(fft, depths, &spectral, &take, threads)
+        };
+    }
+    over_depths(fft, depths, &all, &take)
+}
+
+/// The layers `depths[i]` for `i` in `indices` in parallel over the depths, each worker
+/// holding one layer's working set.
+fn over_depths<F>(
+    fft: &DcFft,
+    depths: &[f64],
+    indices: &[usize],
+    take: &F,
+) -> Result<(), DcFftError>
+where
+    F: Fn(usize, f64, ndarray::ArrayView3<f64>) + Sync,
+{
+    let [ny, nx] = fft.shape();
+    indices
+        .par_iter()
+        .map_init(
+            || (fft.workspace(), Array3::zeros((6, ny, nx))),
+            |(workspace, layer), &index| {
+                let z = depths[index];
+                fft.layer_into(z, workspace, layer.view_mut())?;
+                take(index, z, layer.view());
+                Ok(())
+            },
+        )
+        .collect()
+}
+
+/// The layers `depths[i]` for `i` in `indices` one after another, a cell-based layer split
+/// over the threads, a spectral one on this thread.
+fn one_by_one<F>(
+    fft: &DcFft,
+    depths: &[f64],
+    indices: &[usize],
+    take: &F,
+    threads: usize,
+) -> Result<(), DcFftError>
+where
+    F: Fn(usize, f64, ndarray::ArrayView3<f64>) + Sync,
+{
+    let [ny, nx] = fft.shape();
     let mut quadrant = Vec::new();
     let mut layer = Array3::zeros((6, ny, nx));
     let mut spectral = None;
     let mut workspaces = None;
-    for (index, &z) in depths.iter().enumerate() {
+    for &index in indices {
+        let z = depths[index];
         // A spectral layer (on this thread: a few milliseconds per 256² layer).
         if fft.is_spectral(z) {
             let workspace = spectral.get_or_insert_with(|| fft.workspace());

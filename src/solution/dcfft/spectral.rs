@@ -38,6 +38,14 @@
 //! coefficients instead ([`super::DcFft`]). For the Nyquist wavenumbers of an even grid the
 //! set of aliases is taken symmetric (`m = -M - 1 ..= M`), so that their transforms stay real.
 //!
+//! ## Symmetries of the sums
+//! Only the wavenumbers `kx >= 0` are stored (the real transform's half spectrum), and only the
+//! rows `ky >= 0` are summed: those of `-ky` follow by the parity in y. On a square grid of
+//! square cells under pressure alone, the kernel of `(kx, ky)` with `ky < kx` is that of
+//! `(ky, kx)` turned about the plane `x = y` (σxx and σyy exchanged, τxz and τyz), so only the
+//! sums with `kx <= ky` are formed: the same terms in another order, equal to rounding. An alias
+//! column along x whose factor alone is beyond the reach is skipped whole.
+//!
 //! ## The mean traction
 //! As for the cell-based layers (module doc of [`super`]): the mean traction stresses the
 //! half-space uniformly, `σzz = -p̄`, `τxz = -q̄x`, `τyz = -q̄y`.
@@ -179,6 +187,12 @@ impl SpectralLayers {
         let (limit_x, limit_y) = (PI / dx, PI / dy);
         // The alias sums of the unit kernels, per load present: [load][component].
         let mut kernels = vec![[0.0; 6]; loads.len()];
+        let pressure_only = matches!(loads.as_slice(), [(Load::Pressure, _)]);
+        // On a square grid of square cells the aliases along x and y are the same sets, so
+        // the pressure's kernel above the diagonal (kx < ky, both >= 0) is kept for the
+        // wavenumbers below it.
+        let mut turn =
+            (pressure_only && nx == ny && dx == dy).then(|| vec![[0.0; 6]; width * width]);
         for (ix, x_aliases) in along_x.iter().enumerate() {
             // Only the rows of ky >= 0 are summed; those of -ky are their mirror images
             // (`mirror_index`), whose kernels differ by the parity in y ([`y_parity`]).
@@ -186,14 +200,32 @@ impl SpectralLayers {
                 for kernel in kernels.iter_mut() {
                     *kernel = [0.0; 6];
                 }
-                if ix != 0 || iy != 0 {
+                // A square grid's pressure: the kernel of (kx, ky) below the diagonal is that
+                // of (ky, kx), computed before, turned ([`turned_pressure_kernel`]).
+                let turned = turn
+                    .as_ref()
+                    .filter(|_| iy < ix)
+                    .map(|kept| kept[iy * width + ix]);
+                if let (Some(kernel), [only]) = (turned, kernels.as_mut_slice()) {
+                    *only = turned_pressure_kernel(kernel);
+                } else if ix != 0 || iy != 0 {
                     for &(kx, form_x, log_x) in x_aliases {
+                        let own_x = kx.abs() <= limit_x;
+                        // An alias along x beyond the reach by itself leaves out every alias
+                        // of its column (|k| >= |kx| and ln |sinc_y| <= 0): skipped whole,
+                        // the same terms as tested one by one below.
+                        let reach_x = reach + log_x;
+                        let kx_squared = kx * kx;
+                        if !own_x && (reach_x <= 0.0 || kx_squared * z_squared > reach_x * reach_x)
+                        {
+                            continue;
+                        }
                         for &(ky, form_y, log_y) in &along_y[iy] {
-                            let k_squared = kx * kx + ky * ky;
+                            let k_squared = kx_squared + ky * ky;
                             // The grid's own wavenumber always counts; an alias only where
                             // its form factor times exp(-|k| z) can reach the tolerance.
-                            let own = kx.abs() <= limit_x && ky.abs() <= limit_y;
-                            let alias_reach = reach + log_x + log_y;
+                            let own = own_x && ky.abs() <= limit_y;
+                            let alias_reach = reach_x + log_y;
                             if !own
                                 && (alias_reach <= 0.0
                                     || k_squared * z_squared > alias_reach * alias_reach)
@@ -201,6 +233,22 @@ impl SpectralLayers {
                                 continue;
                             }
                             let form = form_x * form_y;
+                            if let [kernel] = kernels.as_mut_slice() {
+                                if pressure_only {
+                                    // The common case (no friction), with the load known.
+                                    let unit = unit_kernel(
+                                        Load::Pressure,
+                                        [kx, ky],
+                                        k_squared.sqrt(),
+                                        z,
+                                        nu,
+                                    );
+                                    for (total, value) in kernel.iter_mut().zip(unit) {
+                                        *total += form * value;
+                                    }
+                                    continue;
+                                }
+                            }
                             for ((load, _), kernel) in loads.iter().zip(kernels.iter_mut()) {
                                 let unit = unit_kernel(*load, [kx, ky], k_squared.sqrt(), z, nu);
                                 for (total, value) in kernel.iter_mut().zip(unit) {
@@ -208,6 +256,11 @@ impl SpectralLayers {
                                 }
                             }
                         }
+                    }
+                }
+                if let (Some(kept), [only]) = (turn.as_mut(), kernels.as_slice()) {
+                    if ix < iy {
+                        kept[ix * width + iy] = *only;
                     }
                 }
                 let mirror = mirror_index(iy, ny);
@@ -291,7 +344,9 @@ fn imaginary(load: Load, c: usize) -> bool {
 /// length `magnitude`), each component's real amplitude: the stress is that amplitude, times
 /// `i` where [`imaginary`] says so. The formulas of the module doc with `p = 1` or
 /// `q_s = n·e_q`, `q_t = t·e_q` for the unit shear along `e_q`, rotated to x and y; written
-/// out in real arithmetic, since this runs once per alias and wavenumber.
+/// out in real arithmetic, since this runs once per alias and wavenumber (inlined, so that a
+/// call with a constant `load` keeps only its branch).
+#[inline(always)]
 fn unit_kernel(load: Load, k: [f64; 2], magnitude: f64, z: f64, nu: f64) -> [f64; 6] {
     let n = [k[0] / magnitude, k[1] / magnitude];
     let kz = magnitude * z;
@@ -337,6 +392,19 @@ fn rotated(n: [f64; 2], ss: f64, tt: f64, st: f64, zz: f64, sz: f64, tz: f64) ->
         ny * sz + nx * tz,
         nx * sz - ny * tz,
         nx * ny * (ss - tt) + (nx * nx - ny * ny) * st,
+    ]
+}
+
+/// The pressure kernel of the wavevector `(ky, kx)` from that of `(kx, ky)`: the half-space
+/// turned about the plane `x = y` exchanges x and y, so `σxx` and `σyy` exchange, and `τyz`
+/// and `τxz`; `σzz` and `τxy` stay ([`unit_kernel`] with `n` turned: its in-plane stresses
+/// depend on `n` through `n_x²`, `n_y²` and `n_x n_y`, its shears `τyz = n_y σsz` and `τxz =
+/// n_x σsz`; the aliases' form factors are a product of the two axes' and so symmetric). The
+/// sums of the two kernels run over the same terms in another order, so they agree to
+/// rounding.
+fn turned_pressure_kernel(kernel: [f64; 6]) -> [f64; 6] {
+    [
+        kernel[1], kernel[0], kernel[2], kernel[4], kernel[3], kernel[5],
     ]
 }
 
@@ -428,6 +496,26 @@ mod tests {
                             "{load:?}, k = {k:?}, z = {z}, c = {c}: parity"
                         );
                     }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_turned_pressure_kernel_is_that_of_the_exchanged_wavevector() {
+        for k in [[1.0, 0.0], [0.3, 2.0], [-1.7, 0.4], [2.0, -2.5]] {
+            let magnitude: f64 = f64::hypot(k[0], k[1]);
+            for z in [0.0, 0.1, 0.8, 2.5] {
+                let turned =
+                    turned_pressure_kernel(unit_kernel(Load::Pressure, k, magnitude, z, 0.3));
+                let direct = unit_kernel(Load::Pressure, [k[1], k[0]], magnitude, z, 0.3);
+                for c in 0..6 {
+                    assert!(
+                        (turned[c] - direct[c]).abs() <= 1e-15,
+                        "k = {k:?}, z = {z}, c = {c}: {} vs {}",
+                        turned[c],
+                        direct[c]
+                    );
                 }
             }
         }

@@ -300,9 +300,9 @@ pub fn warnings_of(
         let limit_pa = IDEAL_STRENGTH_OVER_E_STAR * e_star_pa;
         if solution.max_pressure_pa > limit_pa {
             warnings.push(format!(
-                "the peak pressure {:.0} GPa is beyond any material: above E*/10 = {:.0} GPa, the order of a perfect crystal's ideal strength; give contact.hardness (e.g. \"300 HV\") to cap the asperities' pressure",
-                solution.max_pressure_pa * 1e-9,
-                limit_pa * 1e-9
+                "the peak pressure {} GPa is beyond any material: above E*/10 = {} GPa, the order of a perfect crystal's ideal strength; give contact.hardness (e.g. \"300 HV\") to cap the asperities' pressure",
+                crate::io::text::significant(solution.max_pressure_pa * 1e-9, 3, 1e6, true),
+                crate::io::text::significant(limit_pa * 1e-9, 3, 1e6, true)
             ));
         }
     }
@@ -462,4 +462,51 @@ pub fn findings_of(
         plasticity_index,
         warnings: warnings_of(solution, materials.e_star_pa, materials.hardness_pa),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::rough::{Control, DEFAULT_TOLERANCE};
+
+    /// The ideal-strength warning prints both pressures to three significant digits: a soft
+    /// E* of 1 GPa gives "E*/10 = 0.1 GPa", not a rounded "0 GPa".
+    #[test]
+    fn the_ideal_strength_warning_prints_small_pressures_readably() {
+        let n = 16;
+        let d = 1e-6;
+        let heights = ndarray::Array2::from_shape_fn((n, n), |(i, j)| {
+            let (y, x) = ((i as f64 - 7.5) * d, (j as f64 - 7.5) * d);
+            -(x * x + y * y) / (2.0 * 1e-5)
+        });
+        let problem = RoughContactProblem {
+            heights_m: heights.view(),
+            spacing_m: [d, d],
+            e_star_pa: 1e9,
+            periodicity: Periodicity::NonPeriodic,
+            control: Control::Load { newtons: 1e-3 },
+            hardness_pa: None,
+            tolerance: DEFAULT_TOLERANCE,
+            max_iterations: rough::DEFAULT_MAX_ITERATIONS,
+            memory_limit_bytes: 1 << 30,
+        };
+        let solution = rough::solve(&problem, &mut |_, _| {}).expect("solves");
+        assert!(
+            solution.max_pressure_pa > 1e8,
+            "{}",
+            solution.max_pressure_pa
+        );
+        let warnings = warnings_of(&solution, Some(1e9), None);
+        let warning = warnings
+            .iter()
+            .find(|w| w.contains("beyond any material"))
+            .expect("the ideal-strength warning");
+        assert!(warning.contains("E*/10 = 0.1 GPa"), "{warning}");
+        let peak = crate::io::text::significant(solution.max_pressure_pa * 1e-9, 3, 1e6, true);
+        assert!(peak != "0", "{warning}");
+        assert!(
+            warning.contains(&format!("peak pressure {peak} GPa")),
+            "{warning}"
+        );
+    }
 }

@@ -33,10 +33,11 @@
 //!   refined with the speed (cells of `1/u` below `a/20`), so this bounds the Péclet number
 //!   (about 148 for a sphere).
 //! - A rough map's heating of at most [`ROUGH_MAX_CELLS`] cells (2048 x 2048), the grid being
-//!   the map's, within the same memory as its contact (issue 41): measured (`/usr/bin/time -v`,
-//!   2026-11-28, issue 41's rough ball) 65 MB at 256² and 222 MB at 512² against 40 and 126 MB
-//!   for `contact`, so [`ROUGH_HEATING_BYTES_PER_CELL`] and [`CONTACT_BYTES_PER_CELL`]
-//!   ([`contact_cost`], which `check` states for a rough scene without heating too).
+//!   the map's, within the same memory limit as its contact (issue 41): measured
+//!   (`/usr/bin/time -v`, 2026-11-28, issue 41's scenes) 2.0 to 2.4 times `contact`'s peak from
+//!   256² to 2048² (2048² periodic: 3483 MiB against 1585 MiB), so
+//!   [`ROUGH_HEATING_BYTES_PER_CELL`] and [`CONTACT_BYTES_PER_CELL`] ([`contact_cost`], which
+//!   `check` states for a rough scene without heating too).
 //! - Memory within [`crate::field::memory_limit_bytes`].
 //! - The cell Péclet number `u dx` within [`MAX_CELL_PECLET`] (a Hertz grid of at most 640
 //!   cells across `4a`; a rough map as sampled; gears at every point of the path).
@@ -65,9 +66,11 @@ pub const MAX_CELLS: usize = 1 << 18;
 /// memory allowed (issue 41).
 pub const ROUGH_MAX_CELLS: usize = 1 << 22;
 /// Peak memory of `thermal` of a rough map a cell, besides [`ROUGH_BASE_BYTES`], for a source
-/// slow on the map's scale (the smooth part's lattice not oversampled): measured 65 MB at 256²
-/// and 222 MB at 512² (issue 41's ball, `/usr/bin/time -v`), 800 bytes a cell.
-pub const ROUGH_HEATING_BYTES_PER_CELL: usize = 800;
+/// slow on the map's scale (the smooth part's lattice not oversampled): measured on issue 41's
+/// scenes (`/usr/bin/time -v`, 2026-11-28, after the third part of the speed round), isolated
+/// and periodic, 84 and 79 MiB at 256², 299 and 286 MiB at 512², 927 and 1044 MiB at 1024², and
+/// 3483 MiB periodic at 2048²: 950 bytes a cell is within 16 % of each.
+pub const ROUGH_HEATING_BYTES_PER_CELL: usize = 950;
 /// Peak memory of `contact` of a rough map a cell (the solve and the subsurface search):
 /// measured (issue 41's rough ball, isolated) 40, 126, 472 and 1218 MB at 256², 512², 1024²
 /// and 2048² (periodic 36, 117 and 433 MB to 1024²): 360 bytes a cell is within 22 % of each
@@ -80,9 +83,16 @@ pub const ROUGH_BASE_BYTES: usize = 12 << 20;
 /// `log2(cells) / 16` (measured while other builds ran: 14, 19, 24 and 40 µs a cell at 256²,
 /// 512², 1024² and 2048²: more iterations and longer transforms on finer maps).
 pub const CONTACT_CPU_SECONDS_PER_CELL: f64 = 2e-5;
-/// CPU time of the heating of a rough map a cell, s (measured while other builds ran: 105 µs
-/// at 256², 119 µs at 512², the contact included).
-pub const ROUGH_CPU_SECONDS_PER_CELL: f64 = 1.2e-4;
+/// CPU time of the heating of a rough map a cell at 256², s, the contact included, growing as
+/// [`CONTACT_CPU_SECONDS_PER_CELL`] does (measured on issue 41's scenes, the machine loaded:
+/// 3.4 to 4.3 s at 256², 14 to 18 s at 512², 72 to 90 s at 1024², 508 s periodic at 2048²).
+pub const ROUGH_CPU_SECONDS_PER_CELL: f64 = 6e-5;
+
+/// How the CPU time a cell of a rough map grows with the map: `(log2(cells) / 16)²`, at least
+/// 1 (more iterations and longer transforms on finer maps).
+fn cpu_growth(cells: usize) -> f64 {
+    ((cells.max(1) as f64).log2() / 16.0).powi(2).max(1.0)
+}
 
 /// The smooth part's extra memory a cell when its lattice is oversampled `over` times in x
 /// ([`crate::thermal::stress`]): its samples of six components (96 bytes a value of half the
@@ -96,9 +106,7 @@ pub fn contact_cost(shape: [usize; 2]) -> (usize, f64) {
     let cells = shape[0] * shape[1];
     (
         ROUGH_BASE_BYTES + CONTACT_BYTES_PER_CELL.saturating_mul(cells),
-        CONTACT_CPU_SECONDS_PER_CELL
-            * cells as f64
-            * ((cells.max(1) as f64).log2() / 16.0).powi(2).max(1.0),
+        CONTACT_CPU_SECONDS_PER_CELL * cells as f64 * cpu_growth(cells),
     )
 }
 
@@ -357,9 +365,10 @@ fn rough(scene: &Scene, spec: &ThermalSpec) -> Result<HeatingPlan, Refusal> {
         shape: [ny, nx],
         line: false,
         bytes: heating_bytes.max(contact_bytes),
-        cpu_seconds: (ROUGH_CPU_SECONDS_PER_CELL * cells as f64).max(contact_seconds),
+        cpu_seconds: (ROUGH_CPU_SECONDS_PER_CELL * cells as f64 * cpu_growth(cells))
+            .max(contact_seconds),
         // The sheet's 25 depths against the search's (about 37): about as long again.
-        sheet_cpu_seconds: ROUGH_CPU_SECONDS_PER_CELL * cells as f64,
+        sheet_cpu_seconds: ROUGH_CPU_SECONDS_PER_CELL * cells as f64 * cpu_growth(cells),
     };
     if cells > ROUGH_MAX_CELLS || plan.bytes > memory_limit_bytes() {
         let key = if surface.generated {

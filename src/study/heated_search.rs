@@ -379,10 +379,7 @@ mod tests {
                 .expect("layer")
         };
         let coarse = crate::study::assess::search_depths(dz, 30.0 * dz);
-        let dense = coarse
-            .iter()
-            .filter(|&&z| z <= super::super::thermal::DENSE_CELLS * dz * (1.0 + 1e-9))
-            .count();
+        let dense = super::super::thermal::dense_depths(&coarse, dz);
         let points = coarse.len();
         let depths: Vec<f64> = (0..points)
             .filter(|&i| computed(i, dense, points))

@@ -44,6 +44,15 @@ pub const DEPTHS_OVER_A: [f64; 16] = [
 /// every coarse depth (beyond it, at every other one: [`crate::study::heated_search`]).
 pub const DENSE_CELLS: f64 = 5.0;
 
+/// How many of the increasing `coarse` depths lie within [`DENSE_CELLS`] cells of `dz`: those
+/// whose thermal layers a rough contact's search computes every one.
+pub(crate) fn dense_depths(coarse: &[f64], dz: f64) -> usize {
+    coarse
+        .iter()
+        .filter(|&&z| z <= DENSE_CELLS * dz * (1.0 + 1e-9))
+        .count()
+}
+
 /// The most cells a Hertz contact's thermal grid takes along x.
 pub const MAX_CELLS: usize = 640;
 
@@ -679,10 +688,7 @@ pub fn study_with(
             let depth = crate::study::rough::search_depth_m(solution);
             let dz = gridded.spacing_m[0].min(gridded.spacing_m[1]);
             let coarse = crate::study::assess::search_depths(dz, depth);
-            let dense = coarse
-                .iter()
-                .filter(|&&z| z <= DENSE_CELLS * dz * (1.0 + 1e-9))
-                .count();
+            let dense = dense_depths(&coarse, dz);
             (coarse, dense, dz / 16.0, depth)
         }
         None => (

@@ -1,5 +1,7 @@
 //! Where and how large the extreme stresses are, and what that means for yield.
 
+use rayon::prelude::*;
+
 use crate::field;
 use crate::solution::dcfft::{layer_stress, DcFftError};
 use crate::solution::point_numerical::PointTractions;
@@ -27,24 +29,89 @@ pub struct Extreme {
 /// point contact) is followed by a compass search that halves its step down to 1e-9 a, so
 /// locations are accurate to about 1e-8 a for smooth maxima.
 pub fn maximum(solution: &Solution, quantity: Quantity, surface_only: bool) -> Extreme {
-    let value = |p: [f64; 3]| quantity.of(&solution.stress_over_p0(p[0], p[1], p[2]));
+    let [found] = coarse_scan(solution, [(quantity, surface_only)]);
+    refine(solution, quantity, surface_only, found)
+}
+
+/// The coarse scan of [`maximum`] for several `(quantity, surface_only)` at once: the stress
+/// is computed once a point for all of them (a maximum shear's principal stresses only where
+/// its von Mises bound could beat the best so far). Each gets its largest value and the first point
+/// holding it in the scan's order (z, then y, then x), as a scan of its own would: the planes
+/// of constant z are scanned in parallel and their bests taken in z order, a later plane's
+/// only where strictly larger.
+fn coarse_scan<const K: usize>(
+    solution: &Solution,
+    wanted: [(Quantity, bool); K],
+) -> [([f64; 3], f64); K] {
     let three_d = solution.is_three_dimensional();
-    let step: f64 = if three_d { 0.05 } else { 0.025 };
+    let step = scan_step(three_d);
     let n = (3.0 / step).round() as usize;
     let ny = if three_d { n + 1 } else { 1 };
-    let nz = if surface_only { 1 } else { n + 1 };
-    let (mut best_at, mut best) = ([0.0; 3], f64::NEG_INFINITY);
-    for iz in 0..nz {
-        for iy in 0..ny {
-            for ix in 0..=2 * n {
-                let p = [-3.0 + step * ix as f64, step * iy as f64, step * iz as f64];
-                let v = value(p);
-                if v > best {
-                    (best_at, best) = (p, v);
+    let nz = if wanted.iter().all(|&(_, surface_only)| surface_only) {
+        1
+    } else {
+        n + 1
+    };
+    let planes: Vec<[([f64; 3], f64); K]> = (0..nz)
+        .into_par_iter()
+        .map(|iz| {
+            let mut best = [([0.0; 3], f64::NEG_INFINITY); K];
+            for iy in 0..ny {
+                for ix in 0..=2 * n {
+                    let p = [-3.0 + step * ix as f64, step * iy as f64, step * iz as f64];
+                    let stress = solution.stress_over_p0(p[0], p[1], p[2]);
+                    for (b, &(quantity, surface_only)) in best.iter_mut().zip(&wanted) {
+                        if surface_only && iz > 0 {
+                            continue;
+                        }
+                        // The Tresca shear needs the principal stresses, but never exceeds
+                        // σvM/√3 ([`TRESCA_PER_VON_MISES`]): below the best so far, skipped.
+                        if quantity == Quantity::MaxShear
+                            && stress.von_mises() * TRESCA_PER_VON_MISES < b.1
+                        {
+                            continue;
+                        }
+                        let v = quantity.of(&stress);
+                        if v > b.1 {
+                            *b = (p, v);
+                        }
+                    }
                 }
+            }
+            best
+        })
+        .collect();
+    let mut best = [([0.0; 3], f64::NEG_INFINITY); K];
+    for plane in planes {
+        for (b, found) in best.iter_mut().zip(plane) {
+            if found.1 > b.1 {
+                *b = found;
             }
         }
     }
+    best
+}
+
+/// The coarse scan's step: 0.05a in the volume of a point contact, 0.025a in the xz plane of
+/// a line contact.
+fn scan_step(three_d: bool) -> f64 {
+    if three_d {
+        0.05
+    } else {
+        0.025
+    }
+}
+
+/// [`maximum`]'s compass search from the coarse scan's best `(at, value)`.
+fn refine(
+    solution: &Solution,
+    quantity: Quantity,
+    surface_only: bool,
+    (best_at, best): ([f64; 3], f64),
+) -> Extreme {
+    let value = |p: [f64; 3]| quantity.of(&solution.stress_over_p0(p[0], p[1], p[2]));
+    let three_d = solution.is_three_dimensional();
+    let step = scan_step(three_d);
     // Directions the search may move in: x always, y for point contacts, z unless on the
     // surface; y and z stay at or above 0.
     let free = |moves: bool| if moves { step } else { 0.0 };
@@ -418,11 +485,20 @@ pub struct StressMaxima {
 }
 
 impl StressMaxima {
+    /// The three [`maximum`]s, their coarse scans in one pass (the same points and values).
     pub fn of(solution: &Solution) -> Self {
+        let wanted = [
+            (Quantity::VonMises, false),
+            (Quantity::MaxShear, false),
+            (Quantity::VonMises, true),
+        ];
+        let found = coarse_scan(solution, wanted);
+        let [von_mises, max_shear, von_mises_surface] =
+            std::array::from_fn(|k| refine(solution, wanted[k].0, wanted[k].1, found[k]));
         Self {
-            von_mises: maximum(solution, Quantity::VonMises, false),
-            max_shear: maximum(solution, Quantity::MaxShear, false),
-            von_mises_surface: maximum(solution, Quantity::VonMises, true),
+            von_mises,
+            max_shear,
+            von_mises_surface,
         }
     }
 
@@ -545,6 +621,57 @@ mod tests {
         let every = every.into_inner().expect("no panic");
         for (index, (found, _)) in pruned.iter().enumerate() {
             assert_eq!(*found, every[index], "depth {}", depths[index]);
+        }
+    }
+
+    #[test]
+    fn the_shared_parallel_scan_finds_what_one_plain_scan_per_quantity_finds() {
+        // The plain scan in z, y, x order, every point, strictly larger replaces (what
+        // `maximum` did before its scans were shared, parallel and bounded).
+        fn plain(solution: &Solution, quantity: Quantity, surface_only: bool) -> ([f64; 3], f64) {
+            let three_d = solution.is_three_dimensional();
+            let step = scan_step(three_d);
+            let n = (3.0 / step).round() as usize;
+            let ny = if three_d { n + 1 } else { 1 };
+            let nz = if surface_only { 1 } else { n + 1 };
+            let mut best = ([0.0; 3], f64::NEG_INFINITY);
+            for iz in 0..nz {
+                for iy in 0..ny {
+                    for ix in 0..=2 * n {
+                        let p = [-3.0 + step * ix as f64, step * iy as f64, step * iz as f64];
+                        let v = quantity.of(&solution.stress_over_p0(p[0], p[1], p[2]));
+                        if v > best.1 {
+                            best = (p, v);
+                        }
+                    }
+                }
+            }
+            best
+        }
+        let wanted = [
+            (Quantity::VonMises, false),
+            (Quantity::MaxShear, false),
+            (Quantity::VonMises, true),
+            (Quantity::MaxShear, true),
+        ];
+        for solution in [
+            Solution::LineHertz {
+                friction: 0.3,
+                poisson: 0.3,
+            },
+            Solution::SphereHertz {
+                friction: 0.25,
+                poisson: 0.3,
+            },
+        ] {
+            let shared = coarse_scan(&solution, wanted);
+            for (k, &(quantity, surface_only)) in wanted.iter().enumerate() {
+                assert_eq!(
+                    shared[k],
+                    plain(&solution, quantity, surface_only),
+                    "{quantity:?} surface {surface_only}"
+                );
+            }
         }
     }
 

@@ -20,6 +20,7 @@
 //!   317–326 (the interpolating cubic).
 
 use ndarray::{Array2, Array3};
+use rayon::prelude::*;
 
 use super::rough::{REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
 use super::thermal::{ContactModel, ThermalStudy, ThermalStudyError};
@@ -29,6 +30,13 @@ use crate::solution::point_numerical::PointTractions;
 use crate::solution::Solution;
 use crate::stress::Stress;
 use crate::thermal::kernel::CellGrid;
+
+/// One row's part of [`HeatedStress::layer_best`]'s scan: its von Mises bests and cells.
+struct RowScan {
+    best: [(f64, usize, usize); QUANTITIES],
+    total_cells: Vec<(f64, usize, usize)>,
+    contact_cells: Vec<(f64, usize, usize)>,
+}
 
 /// The depth tolerance of the refined maxima of a Hertz contact, in units of `a`.
 pub const DEPTH_TOLERANCE_OVER_A: f64 = 1.0 / 400.0;
@@ -354,28 +362,60 @@ impl HeatedStress {
                 best[k] = (v, row, column);
             }
         }
-        // The von Mises stress of the total and of the contact at each cell, for the shears.
+        // The von Mises stress of the total and of the contact at each cell, for the shears:
+        // the rows in parallel, their bests and cells then taken in row order (a later row's
+        // best only where strictly larger), as one scan in row order finds them.
+        let per_row: Vec<RowScan> = self
+            .rows()
+            .into_par_iter()
+            .map(|row| {
+                let mut scan = RowScan {
+                    best: [(f64::NEG_INFINITY, 0, 0); QUANTITIES],
+                    total_cells: Vec::with_capacity(self.grid.shape[1]),
+                    contact_cells: Vec::new(),
+                };
+                for column in 0..self.grid.shape[1] {
+                    let (thermal, contact) = self.at(layer, row, column);
+                    offer(
+                        &mut scan.best,
+                        THERMAL_VON_MISES,
+                        thermal.von_mises(),
+                        row,
+                        column,
+                    );
+                    let total_von_mises = (thermal + contact).von_mises();
+                    offer(
+                        &mut scan.best,
+                        TOTAL_VON_MISES,
+                        total_von_mises,
+                        row,
+                        column,
+                    );
+                    scan.total_cells.push((total_von_mises, row, column));
+                    if contact_too {
+                        let contact_von_mises = contact.von_mises();
+                        offer(
+                            &mut scan.best,
+                            CONTACT_VON_MISES,
+                            contact_von_mises,
+                            row,
+                            column,
+                        );
+                        scan.contact_cells.push((contact_von_mises, row, column));
+                    }
+                }
+                scan
+            })
+            .collect();
         let mut total_cells: Vec<(f64, usize, usize)> = Vec::new();
         let mut contact_cells: Vec<(f64, usize, usize)> = Vec::new();
-        for row in self.rows() {
-            for column in 0..self.grid.shape[1] {
-                let (thermal, contact) = self.at(layer, row, column);
-                offer(
-                    &mut best,
-                    THERMAL_VON_MISES,
-                    thermal.von_mises(),
-                    row,
-                    column,
-                );
-                let total_von_mises = (thermal + contact).von_mises();
-                offer(&mut best, TOTAL_VON_MISES, total_von_mises, row, column);
-                total_cells.push((total_von_mises, row, column));
-                if contact_too {
-                    let contact_von_mises = contact.von_mises();
-                    offer(&mut best, CONTACT_VON_MISES, contact_von_mises, row, column);
-                    contact_cells.push((contact_von_mises, row, column));
-                }
+        for scan in per_row {
+            for k in [THERMAL_VON_MISES, TOTAL_VON_MISES, CONTACT_VON_MISES] {
+                let (v, row, column) = scan.best[k];
+                offer(&mut best, k, v, row, column);
             }
+            total_cells.extend(scan.total_cells);
+            contact_cells.extend(scan.contact_cells);
         }
         let bound = super::assess::TRESCA_PER_VON_MISES;
         for (k, cells) in [

@@ -165,8 +165,21 @@ impl HeatedStress {
         // cubic takes (two either side) are there.
         let mut pending: Vec<f64> = Vec::new();
         let mut done = 0;
+        // A closed-form contact's layers (a Hertz grid, small) are computed two depths at a
+        // time: each layer's transforms and sums are split over the threads too, but too
+        // finely to keep both busy alone.
+        let mut next_layer: Option<StressLayer> = None;
         for (index, &z) in exact_coarse.iter().enumerate() {
-            let layer = self.layer(z)?;
+            let layer = match next_layer.take() {
+                Some(layer) => layer,
+                None if self.closed_form() && index + 1 < computed_points => {
+                    let (this, next) =
+                        rayon::join(|| self.layer(z), || self.layer(exact_coarse[index + 1]));
+                    next_layer = Some(next?);
+                    this?
+                }
+                None => self.layer(z)?,
+            };
             found.push((z, self.layer_best(&layer)));
             kept.layers.insert(index, layer.thermal.mapv(|v| v as f32));
             done += 1;

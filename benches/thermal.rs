@@ -8,12 +8,17 @@
 //! rms slope 1) scaled to Sq 0.05 um on a steel ball of radius 2 mm (the `rough_ball_on_flat`
 //! scene's kind, cells of 0.5 um at 256²; 0.25 um at 512²) on a steel flat under 0.5 N,
 //! μ = 0.1 at 1 m/s, all heat into the flat.
+//!
+//! Also: the rough scene of issue 41 by `contact` with and without `[thermal]`, and `thermal`
+//! of each shipped Hertz scene with `[thermal]` (run from the repository's root, as `cargo
+//! bench` does).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use ndarray::Array2;
 use stressfield::contact::material::Material;
 use stressfield::contact::rough::{self, Control, RoughContactProblem, DEFAULT_TOLERANCE};
 use stressfield::operator::elastic::Periodicity;
+use stressfield::report::thermal::ThermalReport;
 use stressfield::scene::{ThermalBody, ThermalSpec, TractionDirection};
 use stressfield::study::coupled;
 use stressfield::surface::generate::{generate, Amplitude, Form, Generator, Spectrum};
@@ -178,5 +183,42 @@ fn rough_heating(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, temperature, coupled_solve, rough_heating);
+/// `stressfield thermal` of each shipped Hertz scene with `[thermal]` (issue 41's target: under
+/// one second each): the heating study and its report, as the command computes them (the
+/// gears along their path of contact), reading the scene included; printing left out.
+fn hertz_scenes(c: &mut Criterion) {
+    let mut group = c.benchmark_group("thermal_hertz_scenes");
+    group.sample_size(10);
+    for name in [
+        "thermal_sliding_sphere",
+        "thermal_ball_on_disc",
+        "gear_pitch_point",
+        "record_thermal_speed_sweep",
+    ] {
+        let path = std::path::PathBuf::from(format!("scenes/{name}.toml"));
+        group.bench_function(name, |b| {
+            b.iter(|| {
+                let scene = stressfield::study::load_scene(&path).expect("a shipped scene");
+                if scene.thermal.and_then(|t| t.gear).is_some() {
+                    let gear = stressfield::study::gear_heating::gear_heating(&scene, &mut |_| {})
+                        .expect("heated");
+                    ThermalReport::for_gears(&gear)
+                } else {
+                    let study = stressfield::study::thermal::study(&scene, None, &mut |_| {})
+                        .expect("heated");
+                    ThermalReport::new(&study)
+                }
+            })
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    temperature,
+    coupled_solve,
+    rough_heating,
+    hertz_scenes
+);
 criterion_main!(benches);

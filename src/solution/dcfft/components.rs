@@ -20,11 +20,23 @@ impl DcFft {
     /// The bytes one worker of [`DcFft::layer_into`] holds for a cell-based layer: the
     /// influence coefficients (six arrays per load present, `48 L nx ny` for `L` loads), a
     /// component's row spectra (`16 nx ny`: one array with friction along x, else one per
-    /// load) and the layer (`48 nx ny`).
+    /// load) and the layer (`48 nx ny`); on a periodic square grid, while the coefficients are
+    /// filled, those of each turned shear that is not a load (`24 nx ny`,
+    /// [`DcFft::periodic_turns_about_diagonal`]).
     pub fn worker_bytes(&self) -> usize {
         let [ny, nx] = self.shape;
         let loads = self.tractions.len();
+        let unpaired = if self.periodic_turns_about_diagonal() {
+            let present: Vec<Load> = self.tractions.iter().map(|(load, _)| *load).collect();
+            present
+                .iter()
+                .filter(|load| !present.contains(&load.turned()))
+                .count()
+        } else {
+            0
+        };
         (48 * loads + 16 * self.row_spectra_per_component() + 48) * nx * ny
+            + 48 * unpaired * (ny / 2 + 1) * nx
     }
 
     /// Fresh working memory for [`DcFft::component_into`].

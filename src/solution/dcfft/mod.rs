@@ -34,6 +34,7 @@
 mod components;
 mod grid;
 mod images;
+mod periodic_turned;
 mod plans;
 pub mod spectral;
 mod turned;
@@ -69,13 +70,15 @@ use crate::operator::elastic::Periodicity;
 /// odd in x and in y about the loaded cell); the mirrored rows' transforms are the transformed
 /// rows times the parity. On an isolated square grid of square cells only the half `a >= b` of
 /// the quadrant is evaluated, the rest turned about the diagonal
-/// ([`DcFft::fill_turned_influence`]). The tractions' spectra are computed once, in
-/// [`DcFft::new`]; each layer then costs one forward transform per load and component (one for
-/// the pressure and the shear along x together, `Packed` in `components.rs`) and one inverse
-/// per component, real-to-complex along rows (`realfft`) and complex along columns
-/// (`rustfft`) ([`DcFft::component_into`]). The column pass runs on a few columns at a time,
-/// from gathering through the products to the inverse transform, so that it works in cache,
-/// and writes the result's row spectra over the coefficients' columns it has read.
+/// ([`DcFft::fill_turned_influence`]); on a periodic one only `b <= a <= n/2` is summed over
+/// the images ([`DcFft::fill_periodic_turned_influence`]). The tractions' spectra are computed
+/// once, in [`DcFft::new`]; each layer then costs one forward transform per load and
+/// component (one for the pressure and the shear along x together, `Packed` in
+/// `components.rs`) and one inverse per component, real-to-complex along rows (`realfft`) and
+/// complex along columns (`rustfft`) ([`DcFft::component_into`]). The column pass runs on a
+/// few columns at a time, from gathering through the products to the inverse transform, so
+/// that it works in cache, and writes the result's row spectra over the coefficients' columns
+/// it has read.
 ///
 /// The result equals direct summation ([`TractionGrid::direct_layer`]) up to rounding (the
 /// tests ask 1e-9 of the largest traction); its accuracy as an approximation of smooth
@@ -230,6 +233,10 @@ impl DcFft {
             self.fill_turned_influence(z, quadrant, 1);
             return;
         }
+        if self.periodic_turns_about_diagonal() {
+            self.fill_periodic_turned_influence(z, quadrant, 1);
+            return;
+        }
         for block in self.influence_blocks(quadrant, 1) {
             self.fill_influence(z, block);
         }
@@ -238,12 +245,18 @@ impl DcFft {
     /// [`DcFft::influence_into`] split over `threads` threads of the rayon pool (for one layer
     /// at a time): the same coefficients to the last bit. A grid that [turns about its
     /// diagonal](DcFft::turns_about_diagonal) is filled band by band, its rows in parallel and
-    /// then their turned values; others in blocks of rows, a few per thread, so that uneven
-    /// blocks still balance.
+    /// then their turned values; a periodic one that
+    /// [does](DcFft::periodic_turns_about_diagonal) in blocks of rows of equal work, then
+    /// turned; others in blocks of rows, a few per thread, so that uneven blocks still
+    /// balance.
     pub fn influence_in_parallel(&self, z: f64, quadrant: &mut Vec<f64>, threads: usize) {
         use rayon::prelude::*;
         if self.turns_about_diagonal() {
             self.fill_turned_influence(z, quadrant, threads.max(1));
+            return;
+        }
+        if self.periodic_turns_about_diagonal() {
+            self.fill_periodic_turned_influence(z, quadrant, threads.max(1));
             return;
         }
         self.influence_blocks(quadrant, 4 * threads.max(1))

@@ -152,6 +152,86 @@ fn periodic_fft_equals_periodic_direct_summation() {
     }
 }
 
+/// A periodic square grid of square cells sums the offsets `b <= a <= n/2` only, and turns
+/// and mirrors them for the others (`fill_periodic_turned_influence`): its coefficients equal
+/// those summed image by image at every offset (the blocks of `fill_influence`) to rounding,
+/// with every combination of loads (the shears exchange under the turn, and one without the
+/// other needs the other's sums), on even and odd grids, at the surface and within the first
+/// cell; the same bits on one thread or several; and its layers equal direct summation.
+#[test]
+fn periodic_square_cells_turned_about_the_diagonal_equal_every_offset_summed() {
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(3)
+        .build()
+        .expect("a thread pool");
+    let mut worst = 0.0f64;
+    for n in [8, 7] {
+        for loads in [
+            [true, false, false],
+            [true, true, false],
+            [true, false, true],
+            [false, true, false],
+            [false, false, true],
+            [false, true, true],
+            [true, true, true],
+        ] {
+            let grid = grid_of_cells([n, n], [0.1, 0.1], loads);
+            let fft = DcFft::periodic(&grid, 0.3).expect("planned");
+            assert!(fft.periodic_turns_about_diagonal());
+            for z in [0.0, 0.025, 0.04375] {
+                let mut turned = Vec::new();
+                fft.influence_into(z, &mut turned);
+                let mut summed = Vec::new();
+                for block in fft.influence_blocks(&mut summed, 1) {
+                    fft.fill_influence(z, block);
+                }
+                // The rows b <= n/2 are the coefficients (the others are their mirror).
+                let rows = (n / 2 + 1) * n;
+                for (t, s) in turned.chunks_exact(n * n).zip(summed.chunks_exact(n * n)) {
+                    let largest = s[..rows].iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                    let difference = t[..rows]
+                        .iter()
+                        .zip(&s[..rows])
+                        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+                    worst = worst.max(difference / largest);
+                    assert!(
+                        difference <= 1e-14 * largest,
+                        "{n}², {loads:?}, z = {z}: {difference:e} of {largest:e}"
+                    );
+                }
+                for threads in [2, 3] {
+                    let mut split = Vec::new();
+                    pool.install(|| fft.influence_in_parallel(z, &mut split, threads));
+                    assert!(
+                        turned
+                            .iter()
+                            .zip(&split)
+                            .all(|(a, b)| a.to_bits() == b.to_bits()),
+                        "{n}², {loads:?}, z = {z}, {threads} threads: not the same bits"
+                    );
+                }
+            }
+        }
+    }
+    eprintln!("periodic turned vs every offset summed: at most {worst:.1e} of the largest");
+    let grid = grid_of_cells([6, 6], [0.1, 0.1], [true, true, false]);
+    let fft = DcFft::periodic_by_cells(&grid, 0.3).expect("planned");
+    for z in [0.0, 0.04] {
+        let difference = max_difference(
+            &fft.layer(z).expect("transformed"),
+            &grid.periodic_direct_layer(z, 0.3),
+        );
+        assert!(difference < 1e-9, "6², z = {z}: {difference:e}");
+    }
+    // The turn needs both: a square grid of oblong cells, an oblong grid of square cells.
+    for (shape, cell) in [([6, 6], [0.1, 0.07]), ([6, 7], [0.1, 0.1])] {
+        let grid = grid_of_cells(shape, cell, [true; 3]);
+        assert!(!DcFft::periodic(&grid, 0.3)
+            .expect("planned")
+            .periodic_turns_about_diagonal());
+    }
+}
+
 #[test]
 fn periodic_images_beyond_the_window_are_negligible() {
     // Zero-mean tractions carry no net force: with the far images spread over the plane,

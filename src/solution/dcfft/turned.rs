@@ -9,7 +9,7 @@ use crate::solution::patch::RowSums;
 
 /// The component with x and y exchanged, in the order of [`COMPONENTS`]: `xx <-> yy`,
 /// `yz <-> xz`.
-const EXCHANGED: [usize; 6] = [1, 0, 2, 4, 3, 5];
+pub(super) const EXCHANGED: [usize; 6] = [1, 0, 2, 4, 3, 5];
 
 /// Rows of influence coefficients whose turned values are held before they are written as
 /// columns, on one thread: eight values of a column fill a cache line.

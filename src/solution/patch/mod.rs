@@ -233,6 +233,28 @@ pub(crate) fn offset_sums(
     nx: usize,
     rows: std::ops::Range<usize>,
     diagonal: bool,
+    f: impl FnMut(usize, &RowSums),
+) {
+    // The first column of row b (and of the corners below and above it).
+    let first = move |b: usize| if diagonal { b.min(nx) } else { 0 };
+    // One range of cells a row.
+    let cells = |b: usize| std::iter::once(first(b)..nx).collect();
+    offset_sums_in(cell, z, nx, rows, false, cells, f);
+}
+
+/// [`offset_sums`] over chosen cells of each row: calls `f(b, sums)` for each row `b` of
+/// `rows`, rising or (with `falling`) falling, with the sums of the cells `a` in the ranges
+/// `cells(b)` (disjoint, increasing, within `0..nx`; [`RowSums::cells`]). The row of corners
+/// that a row shares with the next one is evaluated once, for the cells of the first: the
+/// cells of each row must lie among those of the row before it. Each cell's sums are those
+/// of [`offset_sums`] to the last bit, whichever cells are taken with it.
+pub(crate) fn offset_sums_in(
+    cell: [f64; 2],
+    z: f64,
+    nx: usize,
+    rows: std::ops::Range<usize>,
+    falling: bool,
+    mut cells: impl FnMut(usize) -> Vec<std::ops::Range<usize>>,
     mut f: impl FnMut(usize, &RowSums),
 ) {
     let z = z + 0.0;
@@ -240,53 +262,74 @@ pub(crate) fn offset_sums(
     let columns: Vec<Edge> = (0..=nx)
         .map(|k| Edge::new((k as f64 - 0.5) * dx, z))
         .collect();
-    // The first column of row b (and of the corners below and above it).
-    let first = |b: usize| if diagonal { b.min(nx) } else { 0 };
+    // The row of corners k, between the rows of cells k - 1 and k.
+    let corner_row = |k: usize| Edge::new((k as f64 - 0.5) * dy, z);
     let mut terms: [Vec<f64>; CORNER_TERMS] = std::array::from_fn(|_| vec![0.0; nx + 1]);
-    let (mut below, mut above) = (CornerRow::new(nx), CornerRow::new(nx));
+    // `shared`: the row of corners the previous row of cells shares with this one.
+    let (mut shared, mut next) = (CornerRow::new(nx), CornerRow::new(nx));
     let mut sums = RowSums::new(nx);
     let mut ln_y = vec![0.0; nx + 1];
-    let mut row_below = Edge::new((rows.start as f64 - 0.5) * dy, z);
-    below.evaluate(first(rows.start), &columns, row_below, z, &mut terms);
-    for b in rows {
-        let from = first(b);
-        let row_above = Edge::new((b as f64 + 0.5) * dy, z);
-        above.evaluate(from, &columns, row_above, z, &mut terms);
-        sums.from = from;
-        for (sum, (up, down)) in sums.terms[..CORNER_TERMS]
-            .iter_mut()
-            .zip(above.steps.iter().zip(&below.steps))
-        {
-            for (s, (u, d)) in sum[from..]
+    let order: Box<dyn Iterator<Item = usize>> = if falling {
+        Box::new(rows.clone().rev())
+    } else {
+        Box::new(rows.clone())
+    };
+    let mut shared_row = None;
+    for b in order {
+        sums.cells = cells(b);
+        let (near, far) = if falling { (b + 1, b) } else { (b, b + 1) };
+        let near_row = match shared_row {
+            Some(row) => row,
+            None => {
+                let row = corner_row(near);
+                shared.evaluate(&sums.cells, &columns, row, z, &mut terms);
+                row
+            }
+        };
+        let far_row = corner_row(far);
+        next.evaluate(&sums.cells, &columns, far_row, z, &mut terms);
+        let ((above, row_above), (below, row_below)) = if falling {
+            ((&shared, near_row), (&next, far_row))
+        } else {
+            ((&next, far_row), (&shared, near_row))
+        };
+        for range in &sums.cells {
+            let (from, to) = (range.start, range.end);
+            for (sum, (up, down)) in sums.terms[..CORNER_TERMS]
                 .iter_mut()
-                .zip(up[from..].iter().zip(&down[from..]))
+                .zip(above.steps.iter().zip(&below.steps))
+            {
+                for (s, (u, d)) in sum[from..to]
+                    .iter_mut()
+                    .zip(up[from..to].iter().zip(&down[from..to]))
+                {
+                    *s = u - d;
+                }
+            }
+            // Σ ln(R + X) = E(Y_(b+1)) - E(Y_b), with E(Y) = ln(R + X_(a+1)) - ln(R + X_a).
+            for (s, (u, d)) in sums.terms[LX][from..to]
+                .iter_mut()
+                .zip(above.ln_x[from..to].iter().zip(&below.ln_x[from..to]))
             {
                 *s = u - d;
             }
-        }
-        // Σ ln(R + X) = E(Y_(b+1)) - E(Y_b), with E(Y) = ln(R + X_(a+1)) - ln(R + X_a).
-        for (s, (u, d)) in sums.terms[LX][from..]
-            .iter_mut()
-            .zip(above.ln_x[from..].iter().zip(&below.ln_x[from..]))
-        {
-            *s = u - d;
-        }
-        // Σ ln(R + Y) = D(X_(a+1)) - D(X_a), with D(X) = ln(R + Y_(b+1)) - ln(R + Y_b) along
-        // each column of corners.
-        for k in from..=nx {
-            ln_y[k] = log_difference(
-                [row_above, row_below],
-                columns[k].rho,
-                above.r[k],
-                below.r[k],
-            );
-        }
-        for a in from..nx {
-            sums.terms[LY][a] = ln_y[a + 1] - ln_y[a];
+            // Σ ln(R + Y) = D(X_(a+1)) - D(X_a), with D(X) = ln(R + Y_(b+1)) - ln(R + Y_b)
+            // along each column of corners.
+            for k in from..=to {
+                ln_y[k] = log_difference(
+                    [row_above, row_below],
+                    columns[k].rho,
+                    above.r[k],
+                    below.r[k],
+                );
+            }
+            for a in from..to {
+                sums.terms[LY][a] = ln_y[a + 1] - ln_y[a];
+            }
         }
         f(b, &sums);
-        std::mem::swap(&mut below, &mut above);
-        row_below = row_above;
+        std::mem::swap(&mut shared, &mut next);
+        shared_row = Some(far_row);
     }
 }
 
@@ -329,37 +372,40 @@ impl CornerRow {
         }
     }
 
-    /// Evaluates the corners `(X_k, Y)` of the row `row`, `from <= k <= nx`, holding their
-    /// terms in `terms` before they are differenced.
+    /// Evaluates the corners `(X_k, Y)` of the row `row` at both ends of the cells `a` in
+    /// `cells` (`start <= k <= end` for each range), holding their terms in `terms` before
+    /// they are differenced.
     fn evaluate(
         &mut self,
-        from: usize,
+        cells: &[std::ops::Range<usize>],
         columns: &[Edge],
         row: Edge,
         z: f64,
         terms: &mut [Vec<f64>; CORNER_TERMS],
     ) {
-        let nx = columns.len() - 1;
-        for (k, &column) in columns.iter().enumerate().skip(from) {
-            let (corner, [x, y]) = Corner::before_arc_tangents(column, row, z);
-            self.r[k] = corner.r;
-            for (term, value) in terms.iter_mut().zip(corner.terms) {
-                term[k] = value;
+        for range in cells {
+            let (from, to) = (range.start, range.end);
+            for (k, &column) in columns.iter().enumerate().take(to + 1).skip(from) {
+                let (corner, [x, y]) = Corner::before_arc_tangents(column, row, z);
+                self.r[k] = corner.r;
+                for (term, value) in terms.iter_mut().zip(corner.terms) {
+                    term[k] = value;
+                }
+                self.denominators[0][k] = x;
+                self.denominators[1][k] = y;
             }
-            self.denominators[0][k] = x;
-            self.denominators[1][k] = y;
-        }
-        let [x, y] = &self.denominators;
-        atan2_right_in_place(&mut terms[TX][from..], &x[from..]);
-        atan2_right_in_place(&mut terms[TY][from..], &y[from..]);
-        for (steps, terms) in self.steps.iter_mut().zip(terms.iter()) {
-            for k in from..nx {
-                steps[k] = terms[k + 1] - terms[k];
+            let [x, y] = &self.denominators;
+            atan2_right_in_place(&mut terms[TX][from..=to], &x[from..=to]);
+            atan2_right_in_place(&mut terms[TY][from..=to], &y[from..=to]);
+            for (steps, terms) in self.steps.iter_mut().zip(terms.iter()) {
+                for k in from..to {
+                    steps[k] = terms[k + 1] - terms[k];
+                }
             }
-        }
-        for k in from..nx {
-            let pair = [columns[k + 1], columns[k]];
-            self.ln_x[k] = log_difference(pair, row.rho, self.r[k + 1], self.r[k]);
+            for k in from..to {
+                let pair = [columns[k + 1], columns[k]];
+                self.ln_x[k] = log_difference(pair, row.rho, self.r[k + 1], self.r[k]);
+            }
         }
     }
 }
@@ -367,21 +413,26 @@ impl CornerRow {
 /// The corner sums of one row of cells `b` ([`offset_sums`]): `terms[t][a]` for the cells `a`
 /// in [`RowSums::columns`].
 pub(crate) struct RowSums {
-    from: usize,
+    cells: Vec<std::ops::Range<usize>>,
     terms: [Vec<f64>; TERMS],
 }
 
 impl RowSums {
     fn new(nx: usize) -> Self {
         Self {
-            from: 0,
+            cells: Vec::new(),
             terms: std::array::from_fn(|_| vec![0.0; nx + 1]),
         }
     }
 
-    /// The cells `a` of the row.
+    /// The cells `a` of the row, of [`offset_sums`] (one range).
     pub(crate) fn columns(&self) -> std::ops::Range<usize> {
-        self.from..self.terms[0].len() - 1
+        self.cells[0].clone()
+    }
+
+    /// The ranges of cells `a` of the row, of [`offset_sums_in`].
+    pub(crate) fn cells(&self) -> &[std::ops::Range<usize>] {
+        &self.cells
     }
 
     /// The sums of cell `a`.
@@ -392,8 +443,20 @@ impl RowSums {
     /// Component `c` (in the order `xx, yy, zz, yz, xz, xy`) of the stresses of `load` along
     /// the row: `out[i]` for the cell `a = columns().start + i`.
     pub(crate) fn component(&self, load: Load, c: usize, nu: f64, out: &mut [f64]) {
+        self.component_in(load, c, nu, self.columns(), out);
+    }
+
+    /// [`RowSums::component`] of the cells `a` in `range` (one of [`RowSums::cells`] or
+    /// part of one): `out[i]` for the cell `a = range.start + i`.
+    pub(crate) fn component_in(
+        &self,
+        load: Load,
+        c: usize,
+        nu: f64,
+        range: std::ops::Range<usize>,
+        out: &mut [f64],
+    ) {
         let [(t0, k0), (t1, k1), (t2, k2), (t3, k3)] = formula(load, c, nu);
-        let range = self.columns();
         let term = |t: usize| &self.terms[t][range.clone()];
         // The terms used come first; the rest have coefficient 0 on the finite `Tx`, so
         // leaving them out changes nothing but the sign of a zero. Counted at a Poisson

@@ -38,7 +38,8 @@
 //!   the map's, within the same memory limit as its contact (issue 41): measured
 //!   (`/usr/bin/time -v`, 2026-11-28, issue 41's scenes) 2.0 to 2.4 times `contact`'s peak from
 //!   256² to 2048² (2048² periodic: 3483 MiB against 1585 MiB), 1.75 to 2.13 times from 256² to
-//!   1024² since the thermal stress operator holds one lattice at a time, so
+//!   2048² since the thermal stress operator holds one lattice at a time (2048² periodic:
+//!   3024 MiB), so
 //!   [`ROUGH_HEATING_BYTES_PER_CELL`] and [`CONTACT_BYTES_PER_CELL`] ([`contact_cost`], which
 //!   `check` states for a rough scene without heating too).
 //! - Memory within [`crate::field::memory_limit_bytes`].
@@ -74,7 +75,8 @@ pub const ROUGH_MAX_CELLS: usize = 1 << 22;
 /// and periodic, 84 and 79 MiB at 256², 299 and 286 MiB at 512², 927 and 1044 MiB at 1024², and
 /// 3483 MiB periodic at 2048²: 950 bytes a cell is within 16 % of each. Since the thermal stress
 /// operator holds one lattice at a time (issue 41's memory round, the machine loaded), 74 and
-/// 70 MiB at 256², 269 and 248 MiB at 512², 814 and 876 MiB at 1024²: within 18 % of each.
+/// 70 MiB at 256², 269 and 248 MiB at 512², 814 and 876 MiB at 1024², 3024 MiB periodic at
+/// 2048²: within 26 % of each (over at 2048²).
 pub const ROUGH_HEATING_BYTES_PER_CELL: usize = 950;
 /// Peak memory of `contact` of a rough map a cell (the solve and the subsurface search):
 /// measured (issue 41's rough ball, isolated) 40, 126, 472 and 1218 MB at 256², 512², 1024²

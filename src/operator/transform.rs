@@ -60,10 +60,14 @@ struct BlockScratch {
     line: Vec<f64>,
     real_scratch: Vec<Complex<f64>>,
     column_scratch: Vec<Complex<f64>>,
+    /// The row spectra of one tile of output rows (`[TILE, nx / 2 + 1]`), for the inverse.
+    tile: Vec<Complex<f64>>,
 }
 
-/// The working memory of [`RealFft2`] transforms: the row spectra `[ny, nx / 2 + 1]` and one
-/// scratch per block. Make one per plan (and per thread that runs transforms concurrently).
+/// The working memory of [`RealFft2`] transforms: the row spectra `[ny, nx / 2 + 1]` of the
+/// forward transform (allocated by the first one: an inverse needs only a tile of rows a
+/// block) and one scratch per block. Make one per plan (and per thread that runs transforms
+/// concurrently).
 pub struct Fft2Work {
     rows: Vec<Complex<f64>>,
     blocks: Vec<BlockScratch>,
@@ -124,13 +128,15 @@ impl RealFft2 {
             .get_inplace_scratch_len()
             .max(self.column_inverse.get_inplace_scratch_len());
         let zero = Complex::new(0.0, 0.0);
+        let tile = TILE.min(ny) * (nx / 2 + 1);
         Fft2Work {
-            rows: vec![zero; ny * (nx / 2 + 1)],
+            rows: Vec::new(),
             blocks: (0..self.blocks)
                 .map(|_| BlockScratch {
                     line: vec![0.0; nx],
                     real_scratch: vec![zero; real_scratch],
                     column_scratch: vec![zero; column_scratch],
+                    tile: vec![zero; tile],
                 })
                 .collect(),
         }
@@ -161,6 +167,9 @@ impl RealFft2 {
         assert_eq!(spectrum.dim(), (nx / 2 + 1, ny), "spectrum shape");
         let width = nx / 2 + 1;
         let block = self.block_len(ny);
+        if work.rows.len() != ny * width {
+            work.rows = vec![Complex::new(0.0, 0.0); ny * width];
+        }
         // Rows: real-to-complex, one block of rows per thread.
         let rows_done: Result<(), TransformError> = work
             .rows
@@ -226,8 +235,50 @@ impl RealFft2 {
     pub fn inverse(
         &self,
         spectrum: &mut Array2<Complex<f64>>,
+        output: ArrayViewMut2<f64>,
+        work: &mut Fft2Work,
+    ) -> Result<(), TransformError> {
+        self.inverse_with(spectrum, output, work, |mut row, line, scale| {
+            for (target, value) in row.iter_mut().zip(line) {
+                *target = scale * value;
+            }
+        })
+    }
+
+    /// As [`RealFft2::inverse`], adding to each `output` column `j` the grid's column
+    /// `columns[j]` (each `< nx`; `output` has `columns.len()` columns and at most `ny`
+    /// rows): the lattice of a longer periodic grid cropped to its offsets, without the
+    /// periodic grid itself.
+    ///
+    /// # Panics
+    /// As [`RealFft2::inverse`], or if `columns` does not match `output` or exceeds the plan.
+    pub fn inverse_add_columns(
+        &self,
+        spectrum: &mut Array2<Complex<f64>>,
+        output: ArrayViewMut2<f64>,
+        columns: &[usize],
+        work: &mut Fft2Work,
+    ) -> Result<(), TransformError> {
+        assert_eq!(output.ncols(), columns.len(), "output columns");
+        assert!(
+            columns.iter().all(|&c| c < self.shape[1]),
+            "a column exceeds the plan"
+        );
+        self.inverse_with(spectrum, output, work, |mut row, line, scale| {
+            for (target, &column) in row.iter_mut().zip(columns) {
+                *target += scale * line[column];
+            }
+        })
+    }
+
+    /// The inverse transform, each output row written by `emit(row, grid_row, 1 / (nx ny))`
+    /// from the grid's row (unscaled).
+    fn inverse_with(
+        &self,
+        spectrum: &mut Array2<Complex<f64>>,
         mut output: ArrayViewMut2<f64>,
         work: &mut Fft2Work,
+        emit: impl Fn(ndarray::ArrayViewMut1<f64>, &[f64], f64) + Sync,
     ) -> Result<(), TransformError> {
         let [ny, nx] = self.shape;
         let (oy, ox) = output.dim();
@@ -257,10 +308,9 @@ impl RealFft2 {
         output
             .axis_chunks_iter_mut(Axis(0), block)
             .into_par_iter()
-            .zip(work.rows.par_chunks_mut(block * width))
             .zip(work.blocks.par_iter_mut())
             .enumerate()
-            .try_for_each(|(b, ((mut out_rows, row_spectra), scratch))| {
+            .try_for_each(|(b, (mut out_rows, scratch))| {
                 let rows_here = out_rows.nrows();
                 // Gather a tile of rows at a time, so that each column is read in runs of
                 // TILE.
@@ -270,11 +320,11 @@ impl RealFft2 {
                     for kx in 0..width {
                         let start = kx * ny + r0;
                         for (t, value) in spectrum[start..start + count].iter().enumerate() {
-                            row_spectra[(t0 + t) * width + kx] = *value;
+                            scratch.tile[t * width + kx] = *value;
                         }
                     }
-                    for t in t0..t0 + count {
-                        let row = &mut row_spectra[t * width..(t + 1) * width];
+                    for t in 0..count {
+                        let row = &mut scratch.tile[t * width..(t + 1) * width];
                         // The spectrum of a real row has real values at kx = 0 (and nx / 2);
                         // the real inverse transform requires them exactly real.
                         row[0].im = 0.0;
@@ -286,9 +336,7 @@ impl RealFft2 {
                             &mut scratch.line,
                             &mut scratch.real_scratch,
                         )?;
-                        for (target, value) in out_rows.row_mut(t).iter_mut().zip(&scratch.line) {
-                            *target = scale * value;
-                        }
+                        emit(out_rows.row_mut(t0 + t), &scratch.line, scale);
                     }
                 }
                 Ok::<(), TransformError>(())
@@ -379,6 +427,41 @@ mod tests {
                 for (a, b) in input.iter().zip(&output) {
                     assert!((a - b).abs() < 1e-12, "{shape:?}: {a} vs {b}");
                 }
+            }
+        });
+    }
+
+    /// The cropped inverse adds, to the bit, what the whole inverse writes in those columns
+    /// (the smooth part of the thermal stress lattices relies on it).
+    #[test]
+    fn inverse_add_columns_adds_the_whole_inverse_columns_to_the_bit() {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(3)
+            .build()
+            .expect("pool");
+        pool.install(|| {
+            let shape = [34, 40];
+            let plan = RealFft2::new(shape);
+            let mut work = plan.work();
+            let mut spectrum = plan.new_spectrum();
+            plan.forward(grid(34, 40).view(), &mut spectrum, &mut work)
+                .expect("forward");
+            let mut copy = spectrum.clone();
+            let mut whole = Array2::zeros((34, 40));
+            plan.inverse(&mut copy, whole.view_mut(), &mut work)
+                .expect("inverse");
+            let columns = [0, 1, 2, 3, 36, 37, 38, 39, 17];
+            let start = Array2::from_shape_fn((34, columns.len()), |(j, i)| 0.1 * (j + i) as f64);
+            let mut added = start.clone();
+            // A fresh work: the inverse needs no row spectra of a forward transform.
+            plan.inverse_add_columns(&mut spectrum, added.view_mut(), &columns, &mut plan.work())
+                .expect("inverse");
+            for ((j, i), value) in added.indexed_iter() {
+                assert_eq!(
+                    value.to_bits(),
+                    (start[[j, i]] + whole[[j, columns[i]]]).to_bits(),
+                    "({j}, {i})"
+                );
             }
         });
     }

@@ -182,6 +182,8 @@ impl HeatedStress {
             };
             found.push((z, self.layer_best(&layer)));
             kept.layers.insert(index, layer.thermal.mapv(|v| v as f32));
+            // Released before the interpolated depths take their own layers.
+            drop(layer);
             done += 1;
             progress(done);
             if let Some(&next) = exact_coarse.get(index + 1) {

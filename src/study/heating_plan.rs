@@ -5,9 +5,11 @@
 //! scene's map, the pinion's speed of running gears (issue 42, classes 2 and 4).
 //!
 //! ## The cost, measured
-//! A 3-D heating study keeps the thermal stress operator of one depth at a time: six
-//! influence-coefficient lattices of `2ny x 2nx`, their spectra and the oversampled lattice of
-//! their smooth part (four times longer in x), besides the contact's DC-FFT layers. Measured with
+//! A 3-D heating study keeps the thermal stress operator of one depth at a time: what its six
+//! influence-coefficient lattices of `2ny x 2nx` are built from (the smooth part's samples, on a
+//! lattice up to four times longer in x), one lattice and its spectrum at a time (issue 41),
+//! besides the contact's DC-FFT layers and the thermal layers kept for the interpolation in
+//! depth. Measured with
 //! `/usr/bin/time -v` on `stressfield thermal` (release build, 2026-11-27, two cores shared with
 //! another build: CPU time is the sum over threads):
 //!
@@ -35,7 +37,9 @@
 //! - A rough map's heating of at most [`ROUGH_MAX_CELLS`] cells (2048 x 2048), the grid being
 //!   the map's, within the same memory limit as its contact (issue 41): measured
 //!   (`/usr/bin/time -v`, 2026-11-28, issue 41's scenes) 2.0 to 2.4 times `contact`'s peak from
-//!   256² to 2048² (2048² periodic: 3483 MiB against 1585 MiB), so
+//!   256² to 2048² (2048² periodic: 3483 MiB against 1585 MiB), 1.75 to 2.13 times from 256² to
+//!   2048² since the thermal stress operator holds one lattice at a time (2048² periodic:
+//!   3024 MiB), so
 //!   [`ROUGH_HEATING_BYTES_PER_CELL`] and [`CONTACT_BYTES_PER_CELL`] ([`contact_cost`], which
 //!   `check` states for a rough scene without heating too).
 //! - Memory within [`crate::field::memory_limit_bytes`].
@@ -69,7 +73,10 @@ pub const ROUGH_MAX_CELLS: usize = 1 << 22;
 /// slow on the map's scale (the smooth part's lattice not oversampled): measured on issue 41's
 /// scenes (`/usr/bin/time -v`, 2026-11-28, after the third part of the speed round), isolated
 /// and periodic, 84 and 79 MiB at 256², 299 and 286 MiB at 512², 927 and 1044 MiB at 1024², and
-/// 3483 MiB periodic at 2048²: 950 bytes a cell is within 16 % of each.
+/// 3483 MiB periodic at 2048²: 950 bytes a cell is within 16 % of each. Since the thermal stress
+/// operator holds one lattice at a time (issue 41's memory round, the machine loaded), 74 and
+/// 70 MiB at 256², 269 and 248 MiB at 512², 814 and 876 MiB at 1024², 3024 MiB periodic at
+/// 2048²: within 26 % of each (over at 2048²).
 pub const ROUGH_HEATING_BYTES_PER_CELL: usize = 950;
 /// Peak memory of `contact` of a rough map a cell (the solve and the subsurface search):
 /// measured (issue 41's rough ball, isolated) 40, 126, 472 and 1218 MB at 256², 512², 1024²
@@ -95,10 +102,11 @@ fn cpu_growth(cells: usize) -> f64 {
 }
 
 /// The smooth part's extra memory a cell when its lattice is oversampled `over` times in x
-/// ([`crate::thermal::stress`]): its samples of six components (96 bytes a value of half the
-/// lattice), one spectrum and the periodic lattice.
+/// ([`crate::thermal::stress::ThermalStressOperator::memory_bytes`]): its samples of six
+/// components (96 bytes a value of half the lattice's spectrum) and one component's spectrum
+/// (32 bytes a cell), each `over` times the unoversampled one's.
 fn smooth_bytes_per_cell(over: usize) -> usize {
-    (over - 1) * (2 * 96 + 2 * 16 + 4 * 8)
+    (over - 1) * (96 + 2 * 16)
 }
 
 /// What `contact` of a rough map of `shape` takes: `(bytes, CPU seconds)`.

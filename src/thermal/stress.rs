@@ -64,7 +64,7 @@
 
 use std::f64::consts::PI;
 
-use ndarray::{Array2, Array3, ArrayView2, Axis};
+use ndarray::{Array2, Array3, ArrayView2, ArrayViewMut2, Axis};
 use rayon::prelude::*;
 use rustfft::num_complex::Complex;
 
@@ -339,29 +339,24 @@ pub(super) fn band_rule(cut: f64) -> (Vec<f64>, Vec<f64>) {
     (xs, ws)
 }
 
-/// The six influence-coefficient lattices (`[6, 2 ny, 2 nx]`, wrap-around order) of the
-/// thermal stress per `E α / K` at depth `z` for `u = V / (2κ)` (module doc).
-pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f64> {
-    let [ny, nx] = grid.shape;
-    let [dx, dy] = grid.spacing_m;
-    let mut out = Array3::zeros((COMPONENTS, 2 * ny, 2 * nx));
-    // Stationary part: the corner sums of the cells, each corner's three values computed once.
-    let corners = StationaryCorners::new(grid, z);
-    // Each lattice column's two corners (offset + n and the next), folded.
-    let column_corners: Vec<[(usize, f64); 2]> = (0..2 * nx)
-        .map(|column| {
-            let i = (signed(column, 2 * nx) + nx as i64) as usize;
-            [
-                StationaryCorners::fold(i, nx),
-                StationaryCorners::fold(i + 1, nx),
-            ]
-        })
-        .collect();
-    for (slot, &component) in [0usize, 1, 5].iter().enumerate() {
+impl StationaryCorners {
+    /// Writes the stationary lattice of `slot` (0, 1, 2: xx, yy, xy) into `out` (`[2 ny, 2 nx]`,
+    /// wrap-around order): each cell's corner sum.
+    fn lattice_into(&self, grid: &CellGrid, slot: usize, mut out: ArrayViewMut2<f64>) {
+        let [ny, nx] = grid.shape;
+        // Each lattice column's two corners (offset + n and the next), folded.
+        let column_corners: Vec<[(usize, f64); 2]> = (0..2 * nx)
+            .map(|column| {
+                let i = (signed(column, 2 * nx) + nx as i64) as usize;
+                [
+                    StationaryCorners::fold(i, nx),
+                    StationaryCorners::fold(i + 1, nx),
+                ]
+            })
+            .collect();
         // Fxx and Fyy are odd in x and y, Fxy even.
         let odd = slot < 2;
-        out.index_axis_mut(Axis(0), component)
-            .axis_iter_mut(Axis(0))
+        out.axis_iter_mut(Axis(0))
             .into_par_iter()
             .enumerate()
             .for_each(|(row, mut line)| {
@@ -372,7 +367,7 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
                     StationaryCorners::fold(j + 1, ny),
                 ];
                 let value = |(l, sy): (usize, f64), (m, sx): (usize, f64)| {
-                    let v = corners.values[l * (nx + 1) + m][slot];
+                    let v = self.values[l * (nx + 1) + m][slot];
                     if odd {
                         sx * sy * v
                     } else {
@@ -386,38 +381,59 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
                 }
             });
     }
-    if u == 0.0 {
-        return out;
-    }
-    let two_u = 2.0 * u;
-    let kw = window_wavenumber(grid.shape, grid.spacing_m);
-    // Beyond `k = 6.1 kw`, `W < 2^-53`: `1 - W` is 1 and `W` times a value is below its last
-    // digit, so it is not evaluated there.
-    let window = |k: f64| {
-        if k > 6.1 * kw {
-            0.0
-        } else {
-            (-(k / kw).powi(2)).exp()
+}
+
+/// The components with a stationary part, in the order of [`StationaryCorners`]' values.
+const STATIONARY: [usize; 3] = [0, 1, 5];
+
+/// What the six influence-coefficient lattices of the thermal stress per `E α / K` at one
+/// depth are built from (module doc): the stationary part's corner values and, for a moving
+/// source, the band's weighted values and the smooth part's spectrum, each computed once for
+/// the six components. [`InfluenceParts::lattice`] builds one component's lattice at a time,
+/// so that the six need not be held together.
+pub struct InfluenceParts {
+    grid: CellGrid,
+    corners: StationaryCorners,
+    moving: Option<(Band<COMPONENTS>, Smooth<COMPONENTS>)>,
+}
+
+impl InfluenceParts {
+    /// At depth `z` for `u = V / (2κ)` and Poisson's ratio `nu`.
+    pub fn new(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Self {
+        let [dx, dy] = grid.spacing_m;
+        // Stationary part: the corner sums of the cells, each corner's three values computed
+        // once.
+        let corners = StationaryCorners::new(grid, z);
+        if u == 0.0 {
+            return Self {
+                grid: *grid,
+                corners,
+                moving: None,
+            };
         }
-    };
-    let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
-    add_band(&mut out, grid, kw * 5.0, PARITY, &|xi, eta| {
-        let mut h = remainder(xi, eta, z, two_u, nu);
-        let s = window((xi * xi + eta * eta).sqrt()) * cell(xi, eta);
-        for v in h.iter_mut() {
-            *v *= s;
-        }
-        h
-    });
-    let aliases = smooth_aliases(z, u, dx, dy);
-    let oversampling = smooth_oversampling(u, kw);
-    add_smooth(
-        &mut out,
-        grid,
-        aliases,
-        oversampling,
-        PARITY,
-        &|xi, eta, form| {
+        let two_u = 2.0 * u;
+        let kw = window_wavenumber(grid.shape, grid.spacing_m);
+        // Beyond `k = 6.1 kw`, `W < 2^-53`: `1 - W` is 1 and `W` times a value is below its
+        // last digit, so it is not evaluated there.
+        let window = |k: f64| {
+            if k > 6.1 * kw {
+                0.0
+            } else {
+                (-(k / kw).powi(2)).exp()
+            }
+        };
+        let cell = |xi: f64, eta: f64| dx * dy * sinc(0.5 * xi * dx) * sinc(0.5 * eta * dy);
+        let band = Band::new(grid, kw * 5.0, &|xi, eta| {
+            let mut h = remainder(xi, eta, z, two_u, nu);
+            let s = window((xi * xi + eta * eta).sqrt()) * cell(xi, eta);
+            for v in h.iter_mut() {
+                *v *= s;
+            }
+            h
+        });
+        let aliases = smooth_aliases(z, u, dx, dy);
+        let oversampling = smooth_oversampling(u, kw);
+        let smooth = Smooth::new(grid, aliases, oversampling, &|xi, eta, form| {
             let k = (xi * xi + eta * eta).sqrt();
             if k == 0.0 {
                 return [C64::new(0.0, 0.0); COMPONENTS];
@@ -428,24 +444,51 @@ pub fn influence_lattices(grid: &CellGrid, z: f64, u: f64, nu: f64) -> Array3<f6
                 *v *= s;
             }
             h
-        },
-    );
-    out
+        });
+        Self {
+            grid: *grid,
+            corners,
+            moving: Some((band, smooth)),
+        }
+    }
+
+    /// The influence-coefficient lattice (`[2 ny, 2 nx]`, wrap-around order) of `component`
+    /// ([`COMPONENTS`] order): its stationary part, plus the band's, plus the smooth part's.
+    pub fn lattice(&self, component: usize) -> Result<Array2<f64>, TransformError> {
+        let [ny, nx] = self.grid.shape;
+        let mut out = Array2::zeros((2 * ny, 2 * nx));
+        if let Some(slot) = STATIONARY.iter().position(|&c| c == component) {
+            self.corners.lattice_into(&self.grid, slot, out.view_mut());
+        }
+        if let Some((band, smooth)) = &self.moving {
+            band.add_to(component, PARITY[component], out.view_mut());
+            smooth.add_to(component, PARITY[component], out.view_mut())?;
+        }
+        Ok(out)
+    }
+}
+
+/// The six influence-coefficient lattices (`[6, 2 ny, 2 nx]`, wrap-around order) of the
+/// thermal stress per `E α / K` at depth `z` for `u = V / (2κ)` (module doc): the six
+/// [`InfluenceParts::lattice`]s.
+pub fn influence_lattices(
+    grid: &CellGrid,
+    z: f64,
+    u: f64,
+    nu: f64,
+) -> Result<Array3<f64>, TransformError> {
+    let [ny, nx] = grid.shape;
+    let parts = InfluenceParts::new(grid, z, u, nu);
+    let mut out = Array3::zeros((COMPONENTS, 2 * ny, 2 * nx));
+    for component in 0..COMPONENTS {
+        out.index_axis_mut(Axis(0), component)
+            .assign(&parts.lattice(component)?);
+    }
+    Ok(out)
 }
 
 /// Adds `(1/4π²) ∫∫ F e^(i(ξx + ηy))` over `|ξ|, |η| <= cut` at every lattice offset, for a
-/// Hermitian `F` (`F(-ξ, -η) = conj F(ξ, η)`): twice the real part of the `ξ > 0` half.
-/// Component `c` of `F` has the parity `parity[c]` (`+1` even, `-1` odd) in `η`, and so its
-/// lattice in `y`: only `η > 0` is evaluated (`e^(iηy) ± e^(-iηy)` is `2 cos ηy` or
-/// `2i sin ηy`), the rows `y >= 0` are summed and the rows `y < 0` mirrored, and each sum over
-/// `ξ` serves `x` and `-x` (its cosine and sine parts): a quarter of the direct sum's work.
-///
-/// The product rule's sums are matrix products (ndarray's `dot`, the cache-blocked kernels
-/// of `matrixmultiply`): with `A` the weighted values `[ξ, η]` of a component, `C_η` its
-/// cosines (or sines) `[η, row]` and `C_ξ`, `S_ξ` the cosines and sines `[ξ, column]`, the
-/// sums over `η` are `R = A C_η` (`[ξ, row]`) and the lattice at `±x` is
-/// `Re(R)ᵀ C_ξ ∓ Im(R)ᵀ S_ξ` (`[row, column]`): the product rule's double sum, ordered
-/// (derived here).
+/// Hermitian `F` (`F(-ξ, -η) = conj F(ξ, η)`): [`Band`] for each component.
 pub(super) fn add_band<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
@@ -453,46 +496,98 @@ pub(super) fn add_band<const N: usize>(
     parity: [f64; N],
     f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
 ) {
-    let [ny, nx] = grid.shape;
-    let [dx, dy] = grid.spacing_m;
-    let (half, half_weights) = band_rule(cut);
-    let m = half.len();
-    // Rows y = j dy and columns x = i dx for 0 <= j <= ny, 0 <= i <= nx (the lattice's -ny
-    // and -nx mirrored from +ny and +nx).
-    let rows = ny + 1;
-    let columns = nx + 1;
-    // cos ηy and sin ηy for every η > 0 and row (`[η, row]`), cos ξx and sin ξx for every
-    // ξ > 0 and column (`[ξ, column]`).
-    let trig = |step: f64, count: usize| {
-        let cosines = Array2::from_shape_fn((m, count), |(n, i)| (half[n] * i as f64 * step).cos());
-        let sines = Array2::from_shape_fn((m, count), |(n, i)| (half[n] * i as f64 * step).sin());
-        (cosines, sines)
-    };
-    let (eta_cos, eta_sin) = trig(dy, rows);
-    let (xi_cos, xi_sin) = trig(dx, columns);
-    // The weighted values `2 w_ξ w_η F(ξ, η)`, `[ξ][η]`.
-    let values: Vec<Vec<[C64; N]>> = half
-        .par_iter()
-        .zip(&half_weights)
-        .map(|(&xi, &w_xi)| {
-            half.iter()
-                .zip(&half_weights)
-                .map(|(&eta, &w)| {
-                    let mut v = f(xi, eta);
-                    for c in v.iter_mut() {
-                        *c *= 2.0 * w * w_xi;
-                    }
-                    v
-                })
-                .collect()
-        })
-        .collect();
-    let scale = 2.0 / (4.0 * PI * PI);
-    for component in 0..N {
-        let even = parity[component] > 0.0;
+    let band = Band::new(grid, cut, f);
+    for (component, &sign) in parity.iter().enumerate() {
+        band.add_to(component, sign, out.index_axis_mut(Axis(0), component));
+    }
+}
+
+/// `(1/4π²) ∫∫ F e^(i(ξx + ηy))` over `|ξ|, |η| <= cut` at every lattice offset, for a
+/// Hermitian `F` (`F(-ξ, -η) = conj F(ξ, η)`): twice the real part of the `ξ > 0` half.
+/// Component `c` of `F` has a parity (`+1` even, `-1` odd) in `η`, and so its lattice in `y`:
+/// only `η > 0` is evaluated (`e^(iηy) ± e^(-iηy)` is `2 cos ηy` or `2i sin ηy`), the rows
+/// `y >= 0` are summed and the rows `y < 0` mirrored, and each sum over `ξ` serves `x` and
+/// `-x` (its cosine and sine parts): a quarter of the direct sum's work. `F` is evaluated once
+/// for all components ([`Band::new`]), each component's lattice summed when asked
+/// ([`Band::add_to`]).
+///
+/// The product rule's sums are matrix products (ndarray's `dot`, the cache-blocked kernels
+/// of `matrixmultiply`): with `A` the weighted values `[ξ, η]` of a component, `C_η` its
+/// cosines (or sines) `[η, row]` and `C_ξ`, `S_ξ` the cosines and sines `[ξ, column]`, the
+/// sums over `η` are `R = A C_η` (`[ξ, row]`) and the lattice at `±x` is
+/// `Re(R)ᵀ C_ξ ∓ Im(R)ᵀ S_ξ` (`[row, column]`): the product rule's double sum, ordered
+/// (derived here).
+pub(super) struct Band<const N: usize> {
+    shape: [usize; 2],
+    /// cos ηy and sin ηy for every η > 0 and row (`[η, row]`).
+    eta_cos: Array2<f64>,
+    eta_sin: Array2<f64>,
+    /// cos ξx and sin ξx for every ξ > 0 and column (`[ξ, column]`).
+    xi_cos: Array2<f64>,
+    xi_sin: Array2<f64>,
+    /// The weighted values `2 w_ξ w_η F(ξ, η)`, `[ξ][η]`.
+    values: Vec<Vec<[C64; N]>>,
+}
+
+impl<const N: usize> Band<N> {
+    pub(super) fn new(
+        grid: &CellGrid,
+        cut: f64,
+        f: &(dyn Fn(f64, f64) -> [C64; N] + Sync),
+    ) -> Self {
+        let [ny, nx] = grid.shape;
+        let [dx, dy] = grid.spacing_m;
+        let (half, half_weights) = band_rule(cut);
+        let m = half.len();
+        // Rows y = j dy and columns x = i dx for 0 <= j <= ny, 0 <= i <= nx (the lattice's -ny
+        // and -nx mirrored from +ny and +nx).
+        let trig = |step: f64, count: usize| {
+            let cosines =
+                Array2::from_shape_fn((m, count), |(n, i)| (half[n] * i as f64 * step).cos());
+            let sines =
+                Array2::from_shape_fn((m, count), |(n, i)| (half[n] * i as f64 * step).sin());
+            (cosines, sines)
+        };
+        let (eta_cos, eta_sin) = trig(dy, ny + 1);
+        let (xi_cos, xi_sin) = trig(dx, nx + 1);
+        let values: Vec<Vec<[C64; N]>> = half
+            .par_iter()
+            .zip(&half_weights)
+            .map(|(&xi, &w_xi)| {
+                half.iter()
+                    .zip(&half_weights)
+                    .map(|(&eta, &w)| {
+                        let mut v = f(xi, eta);
+                        for c in v.iter_mut() {
+                            *c *= 2.0 * w * w_xi;
+                        }
+                        v
+                    })
+                    .collect()
+            })
+            .collect();
+        Self {
+            shape: grid.shape,
+            eta_cos,
+            eta_sin,
+            xi_cos,
+            xi_sin,
+            values,
+        }
+    }
+
+    /// Adds the sum of `component`, of parity `parity` in `η`, to its lattice `layer`
+    /// (`[2 ny, 2 nx]`, wrap-around order).
+    pub(super) fn add_to(&self, component: usize, parity: f64, mut layer: ArrayViewMut2<f64>) {
+        let [ny, nx] = self.shape;
+        let m = self.values.len();
+        let rows = ny + 1;
+        let scale = 2.0 / (4.0 * PI * PI);
+        let values = &self.values;
+        let even = parity > 0.0;
         let real = Array2::from_shape_fn((m, m), |(n, e)| values[n][e][component].re);
         let imaginary = Array2::from_shape_fn((m, m), |(n, e)| values[n][e][component].im);
-        let table = if even { &eta_cos } else { &eta_sin };
+        let table = if even { &self.eta_cos } else { &self.eta_sin };
         // Over η: `[ξ, row]`; the odd part's `2i sin ηy` turns (re, im) into (-im, re).
         let (row_re, row_im) = rayon::join(|| real.dot(table), || imaginary.dot(table));
         let (row_re, row_im) = if even {
@@ -502,9 +597,10 @@ pub(super) fn add_band<const N: usize>(
         };
         // Over ξ: P = Σ re cos ξx and Q = Σ im sin ξx, `[row, column]` for x >= 0: (P - Q) at
         // x, (P + Q) at -x.
-        let (p, q) = rayon::join(|| row_re.t().dot(&xi_cos), || row_im.t().dot(&xi_sin));
-        let sign = parity[component];
-        let mut layer = out.index_axis_mut(Axis(0), component);
+        let (p, q) = rayon::join(
+            || row_re.t().dot(&self.xi_cos),
+            || row_im.t().dot(&self.xi_sin),
+        );
         for j in 0..rows {
             let (p_row, q_row) = (p.row(j), q.row(j));
             let value = |column: usize| {
@@ -525,7 +621,7 @@ pub(super) fn add_band<const N: usize>(
             }
             if j >= 1 {
                 for (column, slot) in layer.row_mut(2 * ny - j).iter_mut().enumerate() {
-                    *slot += sign * value(column);
+                    *slot += parity * value(column);
                 }
             }
         }
@@ -533,10 +629,9 @@ pub(super) fn add_band<const N: usize>(
 }
 
 /// Adds the lattice samples of the inverse transform of `F` (free of a singularity at `k = 0`)
-/// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way;
-/// component `c` has the parity `parity[c]` in `η`, so only `η >= 0` is evaluated. `F` is
-/// given `(ξ, η)` and the cell's form factor there, `dx dy sinc(ξ dx/2) sinc(η dy/2)`, whose
-/// two sines are computed once a column and a row.
+/// from its values at the lattice's discrete wavenumbers and `aliases` aliases each way:
+/// [`Smooth`] for each component. (A failure of the transform is a planning bug; the lattice
+/// then keeps its other parts.)
 pub(super) fn add_smooth<const N: usize>(
     out: &mut Array3<f64>,
     grid: &CellGrid,
@@ -545,89 +640,139 @@ pub(super) fn add_smooth<const N: usize>(
     parity: [f64; N],
     f: &(dyn Fn(f64, f64, f64) -> [C64; N] + Sync),
 ) {
-    let [ny, nx] = grid.shape;
-    let [dx, dy] = grid.spacing_m;
-    // The periodic lattice is `over` times longer in x than the kernel's (images farther).
-    let (mx, my) = (2 * nx * over, 2 * ny);
-    let plan = RealFft2::new([my, mx]);
-    let [kxs, _] = plan.spectrum_shape();
-    let (px, py) = (mx as f64 * dx, my as f64 * dy);
-    // Each column's values for 0 <= ky <= my/2; the rows my/2 < ky < my (η < 0) are
-    // `parity` times those of my - ky (the aliases of -η0 are those of η0 mirrored).
-    let half_rows = my / 2 + 1;
-    // Each wavenumber with its aliases, `(value, sinc(value d/2))`.
-    let with_aliases = |base: f64, d: f64| -> Vec<(f64, f64)> {
-        (-aliases..=aliases)
-            .map(|a| {
-                let value = base + 2.0 * PI * a as f64 / d;
-                (value, sinc(0.5 * value * d))
-            })
-            .collect()
-    };
-    let etas: Vec<Vec<(f64, f64)>> = (0..half_rows)
-        .map(|ky| with_aliases(2.0 * PI * signed_index(ky, my) as f64 / py, dy))
-        .collect();
-    let columns: Vec<Vec<[C64; N]>> = (0..kxs)
-        .into_par_iter()
-        .map(|kx| {
-            let xis = with_aliases(2.0 * PI * kx as f64 / px, dx);
-            etas.iter()
-                .map(|eta_aliases| {
-                    let mut sum = [C64::new(0.0, 0.0); N];
-                    for &(xi, sinc_xi) in &xis {
-                        for &(eta, sinc_eta) in eta_aliases {
-                            for (s, v) in
-                                sum.iter_mut().zip(f(xi, eta, dx * dy * sinc_xi * sinc_eta))
-                            {
-                                *s += v;
-                            }
-                        }
-                    }
-                    sum
-                })
-                .collect()
-        })
-        .collect();
-    let value = |kx: usize, ky: usize, component: usize| {
-        if ky < half_rows {
-            columns[kx][ky][component]
-        } else {
-            columns[kx][my - ky][component] * parity[component]
-        }
-    };
-    let mut work = plan.work();
-    let mut periodic = Array2::zeros((my, mx));
-    for component in 0..N {
-        let mut spectrum = plan.new_spectrum();
-        for ((kx, ky), slot) in spectrum.indexed_iter_mut() {
-            *slot = value(kx, ky, component) / (dx * dy);
-        }
-        // A failure here is a planning bug; the lattice then keeps its other parts.
-        if plan
-            .inverse(&mut spectrum, periodic.view_mut(), &mut work)
-            .is_ok()
+    let smooth = Smooth::new(grid, aliases, over, f);
+    for (component, &sign) in parity.iter().enumerate() {
+        if smooth
+            .add_to(component, sign, out.index_axis_mut(Axis(0), component))
+            .is_err()
         {
-            let mut layer = out.index_axis_mut(Axis(0), component);
-            for ((row, column), slot) in layer.indexed_iter_mut() {
-                let i = signed(column, 2 * nx);
-                let source = if i >= 0 {
-                    i as usize
-                } else {
-                    (mx as i64 + i) as usize
-                };
-                *slot += periodic[[row, source]];
-            }
+            break;
         }
     }
 }
 
+/// The lattice samples of the inverse transform of `F` (free of a singularity at `k = 0`)
+/// from its values at the discrete wavenumbers of a periodic lattice `over` times longer in x
+/// than the kernel's (images farther) and `aliases` aliases each way. `F` is given `(ξ, η)`
+/// and the cell's form factor there, `dx dy sinc(ξ dx/2) sinc(η dy/2)`, whose two sines are
+/// computed once a column and a row; it is evaluated once for all components
+/// ([`Smooth::new`]: 16 bytes a component a value of half the periodic lattice's spectrum),
+/// each component transformed when asked ([`Smooth::add_to`]). A component with the parity
+/// `±1` in `η` has its values at `η < 0` from those at `-η`, so only `η >= 0` is evaluated.
+pub(super) struct Smooth<const N: usize> {
+    shape: [usize; 2],
+    spacing_m: [f64; 2],
+    /// The periodic lattice's transforms, `[2 ny, 2 nx over]`.
+    plan: RealFft2,
+    /// Each column's values for `0 <= ky <= my/2` (`η >= 0`).
+    columns: Vec<Vec<[C64; N]>>,
+}
+
+impl<const N: usize> Smooth<N> {
+    pub(super) fn new(
+        grid: &CellGrid,
+        aliases: i64,
+        over: usize,
+        f: &(dyn Fn(f64, f64, f64) -> [C64; N] + Sync),
+    ) -> Self {
+        let [ny, nx] = grid.shape;
+        let [dx, dy] = grid.spacing_m;
+        let (mx, my) = (2 * nx * over, 2 * ny);
+        let plan = RealFft2::new([my, mx]);
+        let [kxs, _] = plan.spectrum_shape();
+        let (px, py) = (mx as f64 * dx, my as f64 * dy);
+        let half_rows = my / 2 + 1;
+        // Each wavenumber with its aliases, `(value, sinc(value d/2))`.
+        let with_aliases = |base: f64, d: f64| -> Vec<(f64, f64)> {
+            (-aliases..=aliases)
+                .map(|a| {
+                    let value = base + 2.0 * PI * a as f64 / d;
+                    (value, sinc(0.5 * value * d))
+                })
+                .collect()
+        };
+        let etas: Vec<Vec<(f64, f64)>> = (0..half_rows)
+            .map(|ky| with_aliases(2.0 * PI * signed_index(ky, my) as f64 / py, dy))
+            .collect();
+        let columns: Vec<Vec<[C64; N]>> = (0..kxs)
+            .into_par_iter()
+            .map(|kx| {
+                let xis = with_aliases(2.0 * PI * kx as f64 / px, dx);
+                etas.iter()
+                    .map(|eta_aliases| {
+                        let mut sum = [C64::new(0.0, 0.0); N];
+                        for &(xi, sinc_xi) in &xis {
+                            for &(eta, sinc_eta) in eta_aliases {
+                                for (s, v) in
+                                    sum.iter_mut().zip(f(xi, eta, dx * dy * sinc_xi * sinc_eta))
+                                {
+                                    *s += v;
+                                }
+                            }
+                        }
+                        sum
+                    })
+                    .collect()
+            })
+            .collect();
+        Self {
+            shape: grid.shape,
+            spacing_m: grid.spacing_m,
+            plan,
+            columns,
+        }
+    }
+
+    /// Adds the samples of `component`, of parity `parity` in `η` (the rows `my/2 < ky < my`,
+    /// `η < 0`, are `parity` times those of `my - ky`: the aliases of `-η0` are those of `η0`
+    /// mirrored), to its lattice `layer` (`[2 ny, 2 nx]`, wrap-around order): the periodic
+    /// lattice's offsets `-nx <= i < nx`, transformed straight into it.
+    pub(super) fn add_to(
+        &self,
+        component: usize,
+        parity: f64,
+        layer: ArrayViewMut2<f64>,
+    ) -> Result<(), TransformError> {
+        let nx = self.shape[1];
+        let [dx, dy] = self.spacing_m;
+        let [my, mx] = self.plan.shape();
+        let half_rows = my / 2 + 1;
+        let value = |kx: usize, ky: usize| {
+            if ky < half_rows {
+                self.columns[kx][ky][component]
+            } else {
+                self.columns[kx][my - ky][component] * parity
+            }
+        };
+        let mut spectrum = self.plan.new_spectrum();
+        for ((kx, ky), slot) in spectrum.indexed_iter_mut() {
+            *slot = value(kx, ky) / (dx * dy);
+        }
+        // The periodic lattice's column of each lattice column.
+        let sources: Vec<usize> = (0..2 * nx)
+            .map(|column| {
+                let i = signed(column, 2 * nx);
+                if i >= 0 {
+                    i as usize
+                } else {
+                    (mx as i64 + i) as usize
+                }
+            })
+            .collect();
+        let mut work = self.plan.work();
+        self.plan
+            .inverse_add_columns(&mut spectrum, layer, &sources, &mut work)
+    }
+}
+
 /// The thermal stress (Pa) of body 1 at one depth under a gridded flux: six DC-FFT
-/// convolutions. It keeps the six lattices, not their spectra: each lattice is transformed
-/// when applied, into one buffer (a layer is applied once; its spectra would double the
-/// memory, and six more buffers of the same size treble it).
+/// convolutions. It keeps what the six lattices are built from ([`InfluenceParts`]), not the
+/// lattices: each lattice is built when applied, transformed and dropped, one at a time (a
+/// layer is applied once; the six lattices held at once took 192 bytes a cell, their spectra
+/// as much again).
 pub struct ThermalStressOperator {
     shape: [usize; 2],
-    lattices: Array3<f64>,
+    parts: InfluenceParts,
     scale: f64,
 }
 
@@ -640,33 +785,49 @@ impl ThermalStressOperator {
         nu: f64,
         modulus_expansion_over_conductivity: f64,
     ) -> Result<Self, TransformError> {
+        let parts = InfluenceParts::new(grid, z, u, nu);
         Ok(Self {
             shape: grid.shape,
-            lattices: influence_lattices(grid, z, u, nu),
+            parts,
             scale: modulus_expansion_over_conductivity,
         })
     }
 
-    /// Bytes held while a layer of `shape` is computed: the six lattices of `[2 ny, 2 nx]`
-    /// (8 bytes a value), the flux's spectrum and one kernel's (16 bytes a value of
-    /// `[nx + 1, 2 ny]`), and the layer `[6, ny, nx]`.
-    pub fn memory_bytes(shape: [usize; 2]) -> usize {
+    /// Bytes held while a layer of `shape` is computed with the smooth part's lattice
+    /// oversampled `over` times in x ([`smooth_oversampling`], 0 for a stationary source): the
+    /// stationary part's corners (24 bytes a corner), the smooth part's values (96 bytes a
+    /// value of `[nx over + 1, ny + 1]`), one lattice `[2 ny, 2 nx]` (8 bytes a value) and the
+    /// larger of its smooth part's spectrum (16 bytes a value of `[nx over + 1, 2 ny]`) and its
+    /// own with the transform's rows (twice 16 bytes a value of `[nx + 1, 2 ny]`), the flux's
+    /// spectrum and the layer `[6, ny, nx]` (8 bytes a value).
+    pub fn memory_bytes(shape: [usize; 2], over: usize) -> usize {
         let [ny, nx] = shape;
-        COMPONENTS * 4 * ny * nx * 8 + 2 * (nx + 1) * 2 * ny * 16 + COMPONENTS * ny * nx * 8
+        let spectrum = (nx + 1) * 2 * ny * 16;
+        let smooth_spectrum = (nx * over + 1) * 2 * ny * 16;
+        (ny + 1) * (nx + 1) * 24
+            + (nx * over + 1) * (ny + 1) * 96
+            + 4 * ny * nx * 8
+            + smooth_spectrum.max(2 * spectrum)
+            + spectrum
+            + COMPONENTS * ny * nx * 8
     }
 
     /// `[6, ny, nx]`: xx, yy, zz, yz, xz, xy (Pa) under `flux` (W/m²).
     pub fn apply(&mut self, flux: ArrayView2<f64>) -> Result<Array3<f64>, TransformError> {
         let [ny, nx] = self.shape;
         let plan = RealFft2::new([2 * ny, 2 * nx]);
-        let mut work = plan.work();
         let mut out = Array3::zeros((COMPONENTS, ny, nx));
         // One transform of the flux for the six kernels.
         let mut flux_spectrum = plan.new_spectrum();
-        plan.forward(flux, &mut flux_spectrum, &mut work)?;
-        let mut spectrum = plan.new_spectrum();
-        for (component, lattice) in self.lattices.axis_iter(Axis(0)).enumerate() {
-            plan.forward(lattice, &mut spectrum, &mut work)?;
+        plan.forward(flux, &mut flux_spectrum, &mut plan.work())?;
+        for component in 0..COMPONENTS {
+            // The lattice first, then the buffers of its transform: the smooth part's
+            // transform and this one are never held together.
+            let lattice = self.parts.lattice(component)?;
+            let mut work = plan.work();
+            let mut spectrum = plan.new_spectrum();
+            plan.forward(lattice.view(), &mut spectrum, &mut work)?;
+            drop(lattice);
             spectrum.zip_mut_with(&flux_spectrum, |value, &q| *value *= q);
             let mut layer = out.index_axis_mut(Axis(0), component);
             plan.inverse(&mut spectrum, layer.view_mut(), &mut work)?;

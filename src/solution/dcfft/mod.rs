@@ -415,15 +415,36 @@ impl DcFft {
                 },
             );
         }
-        // The images beyond the window, seen from the cell's nearest image.
+        self.add_far_images(z, rows, &mut arrays, loads, |_| 0..nx);
+    }
+
+    /// Adds to the periodic coefficients of the block's `rows` (rows of `nx` values, six
+    /// arrays a load of `loads`) the images beyond the window, seen from the cell's nearest
+    /// image, at the columns `columns(b)` of each row `b`.
+    fn add_far_images(
+        &self,
+        z: f64,
+        rows: std::ops::Range<usize>,
+        arrays: &mut [&mut [f64]],
+        loads: &[Load],
+        columns: impl Fn(usize) -> std::ops::Range<usize>,
+    ) {
+        let [ny, nx] = self.shape;
         let [dx, dy] = self.cell;
         let periods = [nx as f64 * dx, ny as f64 * dy];
         for b in rows.clone() {
-            for a in 0..nx {
+            for a in columns(b) {
                 let index = (b - rows.start) * nx + a;
                 for (sy, wy) in centred_offsets(b as f64 * dy, periods[1]) {
                     for (sx, wx) in centred_offsets(a as f64 * dx, periods[0]) {
-                        let far = far_images([sx, sy], z, self.cell, periods, images, self.poisson);
+                        let far = far_images(
+                            [sx, sy],
+                            z,
+                            self.cell,
+                            periods,
+                            PERIODIC_IMAGES,
+                            self.poisson,
+                        );
                         for (slot, &load) in loads.iter().enumerate() {
                             let stress = load.stress(&far);
                             for c in 0..6 {

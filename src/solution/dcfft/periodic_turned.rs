@@ -194,25 +194,8 @@ impl DcFft {
                 },
             );
         }
-        // The images beyond the window, seen from the cell's nearest image.
-        let [dx, dy] = self.cell;
-        let periods = [n as f64 * dx, n as f64 * dy];
-        for b in rows.clone() {
-            for a in b..=half {
-                let index = (b - rows.start) * n + a;
-                for (sy, wy) in centred_offsets(b as f64 * dy, periods[1]) {
-                    for (sx, wx) in centred_offsets(a as f64 * dx, periods[0]) {
-                        let far = far_images([sx, sy], z, self.cell, periods, images, self.poisson);
-                        for (slot, &load) in summed.iter().enumerate() {
-                            let stress = load.stress(&far);
-                            for c in 0..6 {
-                                arrays[6 * slot + c][index] += wx * wy * component(stress, c);
-                            }
-                        }
-                    }
-                }
-            }
-        }
+        // The images beyond the window, on `b <= a <= n/2` only.
+        self.add_far_images(z, rows, &mut arrays, summed, |b| b..half + 1);
     }
 
     /// The columns `a < b` of the rows `b <= n/2`, turned from row `a`, column `b`; then the

@@ -428,13 +428,17 @@ impl<'p> Evolution<'p> {
             return Ok(None);
         }
         let (step, distance_m, _) = self.next_step();
+        // At step 0 nothing is worn: a contact at the edge is the unworn contact's own, with its
+        // own hint (a larger map or a periodic solve), not a shorter sliding distance.
         let contact_error = |source| match source {
-            RoughContactError::PressureAtEdge { row, column } => WearError::ScarAtEdge {
-                step,
-                distance_m,
-                row,
-                column,
-            },
+            RoughContactError::PressureAtEdge { row, column } if step > 0 => {
+                WearError::ScarAtEdge {
+                    step,
+                    distance_m,
+                    row,
+                    column,
+                }
+            }
             source => WearError::Contact {
                 step,
                 distance_m,

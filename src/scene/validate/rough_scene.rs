@@ -15,7 +15,8 @@ impl Validator<'_> {
         name: &str,
         mut contact: Contact,
     ) -> Result<Scene, SceneError> {
-        let surface = self.surface_spec(&raw, contact.kind)?;
+        let periodic = contact.rough.is_some_and(|r| r.periodic);
+        let surface = self.surface_spec(&raw, contact.kind, periodic)?;
         if let Some(coating) = &contact.coating {
             self.coated_rough(&raw, coating, &surface.heights)?;
         }

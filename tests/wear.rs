@@ -579,3 +579,54 @@ fn an_unworn_contact_at_the_edge_gets_the_contact_s_hint() {
     assert!(message.contains("enlarge the domain"), "{message}");
     assert!(!message.contains("wear.distance"), "{message}");
 }
+
+/// A series map that grew (material added, nothing worn: a 0.2 µm bump beside a ball's
+/// contact) reports no wear and no scar, and says that the map stands higher (issue 50: each
+/// map levelled by its own plane made the bump a tilt, 6 nm of wear and a scar 15 times the
+/// contact).
+#[test]
+fn a_series_map_that_grew_shows_no_wear_and_says_it_stands_higher() {
+    let n = 48;
+    let ball = |j: usize, i: usize| {
+        let (x, y) = ((i as f64 - 24.0) * 2e-6, (j as f64 - 24.0) * 2e-6);
+        -(x * x + y * y) / (2.0 * 3e-3)
+            + 0.01e-6 * ((0.7 * i as f64).sin() + (1.3 * j as f64 + 0.5).cos())
+    };
+    let first = npy(n, n, ball);
+    let grown = npy(n, n, |j, i| {
+        ball(j, i)
+            + 0.2e-6 * (-((i as f64 - 12.0).powi(2) + (j as f64 - 36.0).powi(2)) / 20.0).exp()
+    });
+    let dir = tempfile::tempdir().expect("temp");
+    std::fs::write(dir.path().join("a.npy"), &first).expect("a");
+    std::fs::write(dir.path().join("b.npy"), &grown).expect("b");
+    let scene = write(
+        dir.path(),
+        "grown.toml",
+        "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.2 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface]\nspacing = \"2 um\"\n[[series]]\nfile = \"a.npy\"\ndistance = \"0 m\"\n[[series]]\nfile = \"b.npy\"\ndistance = \"1 m\"\n",
+    );
+    let output = run(&["wear", scene.to_str().expect("utf8"), "--json"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let report = json(&output);
+    let last = &steps(&report)[1];
+    assert_eq!(last["worn_volume_m3"].as_f64(), Some(0.0), "{last:?}");
+    assert_eq!(last["scar_area_m2"].as_f64(), Some(0.0), "{last:?}");
+    let warnings = report["warnings"].as_array().expect("warnings");
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    let text = warnings[0].as_str().expect("text");
+    assert!(
+        text.contains("series[1] (b.npy) stands up to 0.2"),
+        "{text}"
+    );
+    // The first map against itself: nothing to say.
+    let same = write(
+        dir.path(),
+        "same.toml",
+        &std::fs::read_to_string(&scene)
+            .expect("scene")
+            .replace("b.npy", "a.npy"),
+    );
+    let output = run(&["wear", same.to_str().expect("utf8"), "--json"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(json(&output)["warnings"].as_array().map(Vec::len), Some(0));
+}

@@ -6,8 +6,9 @@ Not run by the tests (they never need Python); run it by hand:
 
     python tamaas_periodic_map.py STRESSFIELD_BINARY N [N ...] [--level plane]
 
-Each N gives an N x N map of 1 um cells (Hurst 0.8, wavenumbers 4, 16 and N/4 periods over
-the map, rms slope 0.1, Tamaas's own generator, seed 7), written as .npy and read by a scene
+Each N gives an N x N map of 1 um cells (Hurst 0.8, self-affine from the longest wavelength
+(q0 = q1 = 1 period over the map) to N/4 periods, rms slope 0.1, Tamaas's own generator,
+seed 7), written as .npy and read by a scene
 with `[surface] file` and `contact.periodic = true`, pressed on a rigid flat to a mean
 pressure of 0.5 % of E* (steel, E* = 230.8 GPa); `--level plane` asks for the plane that
 the default removed before issue 50. The two codes' kernels differ (Tamaas's
@@ -32,7 +33,7 @@ SPACING = 1e-6
 
 def heights_of(n):
     spectrum = tm.Isopowerlaw2D()
-    spectrum.q0, spectrum.q1, spectrum.q2 = 4, 16, n // 4
+    spectrum.q0, spectrum.q1, spectrum.q2 = 1, 1, n // 4
     spectrum.hurst = 0.8
     generator = tm.SurfaceGeneratorFilter2D([n, n])
     generator.spectrum = spectrum

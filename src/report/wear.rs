@@ -13,7 +13,9 @@
 //! `max_shear_max_pa` and `max_shear_max_depth_m` (Tresca, (σ1 − σ3)/2), `scar_area_m2` (the
 //! area worn so far: wear depth above a thousandth of the deepest), `file` (a series'
 //! map); and at the top `kind` (`"archard"` or `"series"`), `distance_m`, `scheme`,
-//! `e_star_pa`, `friction`, `poisson`, `periodic`, `rows`, `columns`, `spacing_m`, `coupled`.
+//! `e_star_pa`, `friction`, `poisson`, `periodic`, `rows`, `columns`, `spacing_m`, `coupled`,
+//! `warnings` (an array of sentences, empty when there is nothing to say: a series' map that
+//! stands higher than the first, which is not wear).
 
 use std::fmt::Write as _;
 
@@ -94,6 +96,8 @@ pub struct WearReport {
     pub spacing_m: [f64; 2],
     pub coupled: bool,
     pub steps: Vec<StepReport>,
+    /// Sentences the reader should be told (a series' map standing higher than the first).
+    pub warnings: Vec<String>,
 }
 
 impl WearReport {
@@ -136,6 +140,7 @@ impl WearReport {
             spacing_m: first.map_or([0.0; 2], |s| s.solution.spacing_m),
             coupled: study.coupled,
             steps: study.steps.iter().map(StepReport::of).collect(),
+            warnings: study.warnings.clone(),
         }
     }
 
@@ -242,6 +247,9 @@ impl WearReport {
             out,
             "(area: the real contact area; scar: the area worn so far; p mean: the load over the real contact area; worn: the worn volume so far, Archard's k W s for simulated wear; depth: the deepest wear so far; maxima of DC-FFT layers under each step, as `contact` searches them)"
         )?;
+        for warning in &self.warnings {
+            writeln!(out, "warning: {warning}")?;
+        }
         Ok(())
     }
 }

@@ -116,15 +116,14 @@ impl Signals {
 
     /// Signals for a call made by `py`'s current thread.
     fn new(py: Python<'_>) -> Self {
-        let main_thread = (|| -> PyResult<bool> {
+        fn on_main_thread(py: Python<'_>) -> PyResult<bool> {
             let threading = py.import("threading")?;
             let main = threading.call_method0("main_thread")?;
             let current = threading.call_method0("current_thread")?;
             Ok(main.is(&current))
-        })()
-        .unwrap_or(false);
+        }
         Self {
-            main_thread,
+            main_thread: on_main_thread(py).unwrap_or(false),
             last: Instant::now(),
             raised: None,
         }
@@ -596,8 +595,9 @@ fn check_range(name: &str, value: f64, low: f64, high: f64, unit: &str) -> Resul
 /// a traction may pull or push), named by their argument and cell.
 fn check_traction(name: &str, array: ArrayView2<f64>) -> Result<()> {
     let bound = stressfield::scene::STRESS_BOUNDS;
-    if let Some(((row, column), &value)) =
-        array.indexed_iter().find(|(_, t)| !(t.abs() <= bound.hi))
+    if let Some(((row, column), &value)) = array
+        .indexed_iter()
+        .find(|(_, t)| !(t.is_finite() && t.abs() <= bound.hi))
     {
         bail!(
             "{name}[{row}, {column}] is {} Pa: a traction must be finite and at most {} Pa in size\nhint: {}",

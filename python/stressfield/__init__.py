@@ -1,9 +1,12 @@
 """stressfield from Python: elastic stress fields under loaded contacts.
 
 The same physics, checks and messages as the ``stressfield`` command line (the same Rust
-library underneath). SI units; NumPy float64 arrays in (C or Fortran order) and out; the GIL
-is released while computing; errors raise :class:`StressfieldError` (a ``ValueError``) with
-the command line's message; nothing is printed.
+library and the same studies underneath). SI units; NumPy float64 arrays in (C or Fortran
+order) and out; every argument is checked against the bounds the command line keeps for the
+same quantity, and arrays of text, complex numbers or booleans, and masked arrays with masked
+points, are refused; the GIL is released while computing, and Ctrl-C stops a rough contact
+between two solver iterations; errors raise :class:`StressfieldError` (a ``ValueError``) with
+the command line's message, naming the argument; nothing is printed.
 
 Stress components are always in the order ``sxx, syy, szz, syz, sxz, sxy`` (last axis of 6);
 z points into the body; compression is negative; the tangential traction ``q = friction * p``

@@ -56,7 +56,7 @@ pub(crate) fn heating_png(scene: &Scene) -> Result<Vec<u8>> {
     let heating = study::commands::thermal(scene, &mut |p| bars.show(p));
     bars.finish(None);
     let heating = heating.map_err(|e| match e {
-        CommandError::Heating { error, .. } => anyhow::Error::new(error),
+        CommandError::Heating { error, .. } => anyhow::Error::new(*error),
         other => anyhow::Error::new(other),
     })?;
     let sheet = heating_sheet(scene, heating.study(), heating.gears())?;

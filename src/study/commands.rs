@@ -42,30 +42,30 @@ pub enum CommandError {
     Coated {
         scene: String,
         #[source]
-        error: CoatedStudyError,
+        error: Box<CoatedStudyError>,
     },
     /// The rough contact's solve.
     #[error("scene {scene}")]
     Solve {
         scene: String,
         #[source]
-        error: RoughStudyError,
+        error: Box<RoughStudyError>,
     },
     /// The rough contact's findings (subsurface maxima, plasticity index).
     #[error(transparent)]
-    Findings(RoughStudyError),
+    Findings(Box<RoughStudyError>),
     #[error("scene {scene}")]
     Heating {
         scene: String,
         #[source]
-        error: HeatingError,
+        error: Box<HeatingError>,
     },
     /// A surface scene's characterisation (`surface` names its source).
     #[error("characterising {surface}")]
     Surface {
         surface: String,
         #[source]
-        error: SurfaceStudyError,
+        error: Box<SurfaceStudyError>,
     },
     /// The progress asked to stop before `next` began.
     #[error("scene {scene}: interrupted before {next}: no result")]
@@ -76,16 +76,16 @@ impl CommandError {
     /// Whether the study stopped because its progress asked it to (here, or in the rough
     /// contact's solver).
     pub fn is_interrupted(&self) -> bool {
-        matches!(
-            self,
-            CommandError::Interrupted { .. }
-                | CommandError::Solve {
-                    error: RoughStudyError::Contact(
-                        crate::contact::rough::RoughContactError::Interrupted { .. }
-                    ),
-                    ..
-                }
-        )
+        match self {
+            CommandError::Interrupted { .. } => true,
+            CommandError::Solve { error, .. } => matches!(
+                **error,
+                RoughStudyError::Contact(
+                    crate::contact::rough::RoughContactError::Interrupted { .. }
+                )
+            ),
+            _ => false,
+        }
     }
 }
 
@@ -159,7 +159,7 @@ pub fn hertz(
     if scene.contact.coating.is_some() && scene.contact.kind != ContactKind::Rough {
         let study = crate::study::coated::solve(scene).map_err(|error| CommandError::Coated {
             scene: scene.name.clone(),
-            error,
+            error: Box::new(error),
         })?;
         return Ok(HertzStudy::Coated(Box::new(study)));
     }
@@ -172,7 +172,7 @@ pub fn hertz(
                         .surface
                         .as_ref()
                         .map_or_else(|| scene.name.clone(), |s| s.source.clone()),
-                    error,
+                    error: Box::new(error),
                 }
             })?;
             Ok(HertzStudy::Surface(Box::new(characterisation)))
@@ -201,8 +201,8 @@ pub fn contact(
     if progress(Progress::Maxima { depth_m }).is_break() {
         return Err(interrupted(scene, "the subsurface maxima"));
     }
-    let findings =
-        crate::study::rough::findings(scene, &solution).map_err(CommandError::Findings)?;
+    let findings = crate::study::rough::findings(scene, &solution)
+        .map_err(|error| CommandError::Findings(Box::new(error)))?;
     let heating = match scene.thermal {
         Some(_) => {
             let known = ContactMaxima {
@@ -252,7 +252,7 @@ pub fn hertz_heating(
         })
         .map_err(|error| CommandError::Heating {
             scene: scene.name.clone(),
-            error: HeatingError::Gears(error),
+            error: Box::new(HeatingError::Gears(error)),
         })?;
         if stop {
             return Err(interrupted(scene, "the report"));
@@ -278,7 +278,7 @@ fn solve(
     })
     .map_err(|error| CommandError::Solve {
         scene: scene.name.clone(),
-        error,
+        error: Box::new(error),
     })
 }
 
@@ -297,7 +297,7 @@ fn heated(
     })
     .map_err(|error| CommandError::Heating {
         scene: scene.name.clone(),
-        error: HeatingError::Contact(error),
+        error: Box::new(HeatingError::Contact(error)),
     })?;
     if stop {
         return Err(interrupted(scene, "the report"));

@@ -1175,3 +1175,86 @@ fn outputs_are_checked_first_and_a_rigid_body_has_no_constants() {
         "{message}"
     );
 }
+
+/// A coated ball of `thickness` on a flat (a = 53.7 µm under 5 N), with `extra` keys in
+/// `[contact]` and a `[numerical]` table.
+fn coated_ball(thickness: &str, contact: &str, numerical: &str) -> String {
+    format!("format = 1\n[contact]\nkind = \"point\"\nload = \"5 N\"\n{contact}[contact.body1]\nradius = \"flat\"\nmaterial = \"steel\"\n[contact.body1.coating]\nthickness = \"{thickness}\"\nmaterial = \"boron_carbide\"\n[contact.body2]\nradius = \"6.35 mm\"\nmaterial = \"steel\"\n[numerical]\n{numerical}\n")
+}
+
+/// Issue 50 §3: `check` refuses what `hertz` of a coated scene refuses (a grid too coarse for
+/// the coating, more cells or strips than allowed), states the time and memory of the coated
+/// solve, and a coated scene refuses one yield strength for its two materials.
+#[test]
+fn check_refuses_what_a_coated_hertz_refuses() {
+    let dir = tempfile::tempdir().expect("temp");
+    let refused_by_both = |text: &str, needle: &str| {
+        let path = dir.path().join("coated.toml");
+        std::fs::write(&path, text).expect("scene");
+        let path = path.to_str().expect("utf8");
+        let mut messages = Vec::new();
+        for command in ["check", "hertz"] {
+            let output = run(&[command, path]);
+            let message = stderr(&output);
+            assert!(!output.status.success(), "{command} passed:\n{text}");
+            assert!(message.contains(needle), "{command}: {message}");
+            messages.push(message);
+        }
+        messages.remove(0)
+    };
+    // 2 µm over ±2 a needs cells of 1 µm: 215 cells; 64 are too coarse.
+    let message = refused_by_both(&coated_ball("2 um", "", "cells = 64"), "numerical.cells");
+    assert!(message.contains("at least 215"), "{message}");
+    // Cells within the file format's range (2048) but beyond a coated solve's (1024).
+    let message = refused_by_both(&coated_ball("10 um", "", "cells = 2048"), "at most 1024");
+    assert!(message.contains("got 2048"), "{message}");
+    // A coating needing more cells than allowed: the hint never says to raise the load.
+    let message = refused_by_both(
+        &coated_ball("0.1 um", "", "cells = 255"),
+        "more than the 1024",
+    );
+    assert!(!message.contains("raise the load"), "{message}");
+    assert!(message.contains("numerical.extent"), "{message}");
+    // A line contact of 4097 strips.
+    let line = coated_ball("10 um", "", "cells = 4097")
+        .replace("kind = \"point\"", "kind = \"line\"")
+        .replace("load = \"5 N\"", "load = \"100 N/mm\"")
+        .replace("radius = \"6.35 mm\"", "radius = \"10 mm\"");
+    refused_by_both(&line, "at most 4096 strips");
+    // One yield strength for two materials.
+    for key in ["yield_strength = \"1 GPa\"\n", "hardness = \"700 HV\"\n"] {
+        let text = coated_ball("10 um", key, "cells = 255");
+        let name = key.split(' ').next().expect("key");
+        refused_by_both(&text, &format!("contact.{name}"));
+    }
+    // A valid coated scene: check states what the solve will take.
+    let path = dir.path().join("fine.toml");
+    std::fs::write(&path, coated_ball("10 um", "", "cells = 255")).expect("scene");
+    let output = run(&["check", path.to_str().expect("utf8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = String::from_utf8_lossy(&output.stdout).to_string();
+    assert!(
+        text.contains("coated contact, 255 x 255 cells; about"),
+        "{text}"
+    );
+}
+
+/// Issue 50 §3: a coated contact wider than its window names `numerical.extent`, not "solve it
+/// as a periodic surface" (a map's advice): a hard coating as thick as the contact on a soft
+/// substrate spreads the pressure beyond ±1.05 a.
+#[test]
+fn a_coated_contact_beyond_its_window_names_the_extent() {
+    let dir = tempfile::tempdir().expect("temp");
+    let text = coated_ball("50 um", "", "cells = 48\nextent = 1.05").replace(
+        "material = \"steel\"\n[contact.body1.coating]",
+        "material = \"aluminium\"\n[contact.body1.coating]",
+    );
+    let path = dir.path().join("narrow.toml");
+    std::fs::write(&path, text).expect("scene");
+    let output = run(&["hertz", path.to_str().expect("utf8")]);
+    assert!(!output.status.success());
+    let message = stderr(&output);
+    assert!(message.contains("numerical.extent"), "{message}");
+    assert!(message.contains("raise numerical.extent"), "{message}");
+    assert!(!message.contains("periodic"), "{message}");
+}

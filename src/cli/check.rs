@@ -60,6 +60,24 @@ fn check_summary(scene: &Scene) -> String {
             }
             format!("{kind}, {nx} x {ny} samples")
         }
+        (None, _) if scene.contact.coating.is_some() => {
+            // What `hertz` of a coated scene will take (issue 50), the grid already admitted.
+            let line = scene.contact.kind == ContactKind::Line;
+            let cells = scene.numerical.cells;
+            match study::coated::admit_grid(scene) {
+                Ok(Some((bytes, seconds))) => format!(
+                    "coated contact, {}; about {} of CPU and {}",
+                    if line {
+                        format!("{cells} strips")
+                    } else {
+                        format!("{cells} x {cells} cells")
+                    },
+                    study::heating_plan::duration(seconds),
+                    stressfield::io::text::bytes(bytes as u64)
+                ),
+                _ => "coated contact".into(),
+            }
+        }
         (None, Some(_)) => {
             let sizes: Vec<(usize, usize)> = scene
                 .panels

@@ -110,6 +110,25 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             ));
         }
     }
+    // A coated line, point or elliptical contact: its grid carries the coating, within the
+    // cells allowed and the memory (issue 50: `check` passed what `hertz` refused).
+    match super::coated::admit_grid(scene) {
+        Err(refusal) => return Err(error(refusal.key, refusal.message, &refusal.hint)),
+        Ok(Some((bytes, seconds))) if bytes > memory_limit_bytes() => {
+            return Err(error(
+                "numerical.cells",
+                format!(
+                    "the coated contact on {} cells a side needs about {} of CPU and {}, more than the {} this machine allows",
+                    scene.numerical.cells,
+                    super::heating_plan::duration(seconds),
+                    crate::io::text::bytes(bytes as u64),
+                    crate::io::text::bytes(memory_limit_bytes() as u64)
+                ),
+                "lower numerical.cells (half the cells a side take a quarter of the memory), keeping cells of at most half the coating's thickness",
+            ))
+        }
+        Ok(_) => {}
+    }
     // The heating: its grid resolves the speeds, and its memory and time are within the
     // limits (issue 42, classes 2 and 4), refused under the key the scene wrote.
     if let Err(refusal) = super::heating_plan::plan(scene) {

@@ -26,6 +26,7 @@ use crate::coating::line::LineStress;
 use crate::coating::stress::LayeredStress;
 use crate::coating::{Layered, Side};
 use crate::contact::coated::{self, CoatedContactError, LineSolution};
+use crate::contact::rough::RoughContactError;
 use crate::contact::rough::{self, Control, RoughContactProblem, RoughSolution};
 use crate::operator::elastic::Periodicity;
 use crate::scene::{CoatingSpec, Hertz};
@@ -43,21 +44,12 @@ pub const MAX_LINE_CELLS: usize = 4096;
 /// Why a coated scene cannot be computed.
 #[derive(Debug, thiserror::Error)]
 pub enum CoatedStudyError {
-    #[error("numerical.cells: the coating ({thickness_um} µm) needs cells of at most {needed_um} µm (half its thickness), the grid of {cells} cells over ±{extent} semi-axes has {cell_um} µm\nhint: set numerical.cells to at least {cells_needed} (or numerical.extent lower, or a thicker contact.body1.coating.thickness)")]
-    GridTooCoarse {
-        thickness_um: String,
-        needed_um: String,
-        cell_um: String,
-        cells: usize,
-        extent: String,
-        cells_needed: usize,
-    },
-    #[error("numerical.cells: a coated scene takes at most {max_cells} cells (per side), and this coating needs {cells_needed} over ±{extent} semi-axes\nhint: lower numerical.extent (the contact must stay inside it), or raise the load: the coating must be at least {max_cells}th of the grid's width / 2")]
-    TooManyCells {
-        max_cells: usize,
-        cells_needed: usize,
-        extent: String,
-    },
+    /// The scene's grid cannot carry this coating ([`admit_grid`]).
+    #[error("{0}")]
+    Grid(GridRefusal),
+    /// The pressure reaches the grid's edge: the window `numerical.extent` is too narrow.
+    #[error("numerical.extent: the coated contact's pressure reaches the edge of its grid (±{extent} semi-axes of the coating's Hertz contact), at {place}: the contact must lie inside the grid\nhint: raise numerical.extent (a hard coating on a soft substrate spreads the contact up to (E_coating'/E_substrate')^(1/3) times the coating's Hertz radius), and numerical.cells in proportion to keep the cells' size")]
+    ExtentTooSmall { extent: String, place: String },
     #[error("a coated scene needs a line, point or elliptical contact with bodies and a load")]
     NotDimensional,
     #[error(transparent)]
@@ -192,15 +184,48 @@ pub struct CoatedStudy {
     pub stress_seconds: f64,
 }
 
+/// Why a coated scene's grid is refused: the key to change, what is wrong, and how to fix it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct GridRefusal {
+    pub key: &'static str,
+    pub message: String,
+    pub hint: String,
+}
+
+impl std::fmt::Display for GridRefusal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}\nhint: {}", self.key, self.message, self.hint)
+    }
+}
+
 /// The grid of a coated scene: `cells` over ±`extent` semi-axes `semi_axis_m` (the larger),
-/// refused when coarser than the coating allows (module doc).
+/// refused beyond `max_cells` or when coarser than the coating allows (module doc). Returns
+/// the cell's side, m.
 fn check_grid(
     spec: &CoatingSpec,
     cells: usize,
     extent: f64,
     semi_axis_m: f64,
     max_cells: usize,
-) -> Result<f64, CoatedStudyError> {
+    line: bool,
+) -> Result<f64, GridRefusal> {
+    let unit = if line { "strips" } else { "cells a side" };
+    let what = if line {
+        "a coated line contact"
+    } else {
+        "a coated point or elliptical contact"
+    };
+    if cells > max_cells {
+        return Err(GridRefusal {
+            key: "numerical.cells",
+            message: format!("{what} takes at most {max_cells} {unit}, got {cells}"),
+            hint: if line {
+                format!("set numerical.cells to {max_cells} or fewer (the active set solves a dense system over the strips in contact)")
+            } else {
+                format!("set numerical.cells to {max_cells} or fewer (the layered kernel lives on a grid four times as wide: {max_cells} cells take about {} already)", crate::io::text::bytes(cost(false, max_cells).0 as u64))
+            },
+        });
+    }
     let spacing = 2.0 * extent * semi_axis_m / cells as f64;
     let h = spec.thickness_m;
     let largest = coated::largest_cell_m(h);
@@ -208,22 +233,115 @@ fn check_grid(
     if spacing > largest * (1.0 + 1e-12) {
         let needed = (2.0 * extent * semi_axis_m / largest).ceil() as usize;
         if needed > max_cells {
-            return Err(CoatedStudyError::TooManyCells {
-                max_cells,
-                cells_needed: needed,
-                extent: crate::io::text::approx(extent),
+            // A larger load widens the contact and needs more cells, not fewer.
+            return Err(GridRefusal {
+                key: "numerical.cells",
+                message: format!(
+                    "the coating ({} µm) needs cells of at most {} µm (half its thickness): over ±{} semi-axes of {} µm that is {needed} {unit}, more than the {max_cells} {what} takes",
+                    um(h),
+                    um(largest),
+                    crate::io::text::approx(extent),
+                    um(semi_axis_m),
+                ),
+                hint: {
+                    // The extent that fits, if the contact (about ±1.1 a) still fits in it;
+                    // otherwise the load that does (cells ∝ a ∝ W^(1/3) for a point, W^(1/2)
+                    // for a line).
+                    let fit = extent * max_cells as f64 / needed as f64;
+                    let tail = format!(
+                        "at h/a = {} the coating barely changes the contact: the uncoated scene gives its pressure",
+                        crate::io::text::significant(h / semi_axis_m, 2, 1e6, true)
+                    );
+                    if fit >= 1.25 {
+                        format!("set numerical.extent to {} or less (the contact must stay inside the grid); {tail}", crate::io::text::significant((fit * 20.0).floor() / 20.0, 3, 1e6, true))
+                    } else {
+                        let ratio = 1.25 / fit;
+                        let load = if line { ratio.powi(-2) } else { ratio.powi(-3) };
+                        format!("even at numerical.extent = 1.25 it needs {} {unit}: the load would have to be below {} % of this one (a smaller contact needs fewer {unit}); {tail}", (needed as f64 * 1.25 / extent).ceil(), crate::io::text::significant(100.0 * load, 2, 1e6, true))
+                    }
+                },
             });
         }
-        return Err(CoatedStudyError::GridTooCoarse {
-            thickness_um: um(h),
-            needed_um: um(largest),
-            cell_um: um(spacing),
-            cells,
-            extent: crate::io::text::approx(extent),
-            cells_needed: needed,
+        return Err(GridRefusal {
+            key: "numerical.cells",
+            message: format!(
+                "the coating ({} µm) needs cells of at most {} µm (half its thickness), the grid of {cells} {unit} over ±{} semi-axes has {} µm",
+                um(h),
+                um(largest),
+                crate::io::text::approx(extent),
+                um(spacing)
+            ),
+            hint: format!(
+                "set numerical.cells to at least {needed} (or numerical.extent lower, or a thicker contact.body1.coating.thickness)"
+            ),
         });
     }
     Ok(spacing)
+}
+
+/// The coated scene's grid refused, or its estimated cost: `(bytes, cpu_seconds)` of the
+/// largest step (a thickness sweep checks every step's grid). Run by [`super::admit`] before
+/// anything is computed, so `check` refuses what `hertz` would.
+pub fn admit_grid(scene: &Scene) -> Result<Option<(usize, f64)>, GridRefusal> {
+    let (Some(_), Some(_)) = (scene.contact.coating, scene.contact.dimensional) else {
+        return Ok(None);
+    };
+    if scene.contact.kind == ContactKind::Rough {
+        return Ok(None);
+    }
+    let steps = scene.sweep.as_ref().map_or(1, |s| s.values.len());
+    let line = scene.contact.kind == ContactKind::Line;
+    for k in 0..steps {
+        let Ok(stepped) = super::at_step(scene, k) else {
+            continue;
+        };
+        let (Some(spec), Some(dimensional)) =
+            (stepped.contact.coating, stepped.contact.dimensional)
+        else {
+            continue;
+        };
+        let semi_axis = match dimensional.hertz {
+            Hertz::Point(point) => point.radius_m,
+            Hertz::Elliptical(e) => e.semi_axis_x_m.max(e.semi_axis_y_m),
+            Hertz::Line(line) => line.half_width_m,
+        };
+        let max = if line { MAX_LINE_CELLS } else { MAX_CELLS };
+        check_grid(
+            &spec,
+            stepped.numerical.cells,
+            stepped.numerical.extent_over_a,
+            semi_axis,
+            max,
+            line,
+        )
+        .map_err(|mut refusal| {
+            if steps > 1 {
+                refusal.message = format!("sweep step {}: {}", k + 1, refusal.message);
+            }
+            refusal
+        })?;
+    }
+    let (bytes, seconds) = cost(line, scene.numerical.cells);
+    Ok(Some((bytes, seconds * steps as f64)))
+}
+
+/// The estimated peak memory (bytes) and CPU time (s) of one coated solve and its stresses on
+/// `cells` cells a side (a line contact: strips), fitted to the runs measured with
+/// `/usr/bin/time` in `docs/coatings.md` ("What `check` estimates"): a point contact's
+/// within 30 % from 64² to 512², a line's within a factor of two (its active set takes a
+/// number of dense solves that varies with the grid).
+pub fn cost(line: bool, cells: usize) -> (usize, f64) {
+    let n = cells as f64;
+    if line {
+        // The strips in contact (about half) solve dense systems of their count squared.
+        let bytes = 12.0 * 1024.0 * 1024.0 + 12.0e3 * n;
+        let seconds = 0.05 + 1.6e-13 * n.powi(4);
+        return (bytes as usize, seconds);
+    }
+    // The layered kernel on a grid four times as wide, the solver's transforms.
+    let bytes = 11.3e6 + 472.0 * n * n;
+    let seconds = 0.05 + 4.0e-6 * n * n * n.log2();
+    (bytes as usize, seconds)
 }
 
 /// What the contact solve hands the stresses: the solution, the section's cell centres, the
@@ -261,7 +379,8 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
     let solve_started = std::time::Instant::now();
     let (solved, depths, mut stress_seconds) = match dimensional.hertz {
         Hertz::Line(line) => {
-            let d = check_grid(&spec, cells, extent, semi_axes[0], MAX_LINE_CELLS)?;
+            let d = check_grid(&spec, cells, extent, semi_axes[0], MAX_LINE_CELLS, true)
+                .map_err(CoatedStudyError::Grid)?;
             let origin = -extent * semi_axes[0] + 0.5 * d;
             let x_m: Vec<f64> = (0..cells).map(|i| origin + i as f64 * d).collect();
             let gap: Vec<f64> = x_m
@@ -314,7 +433,9 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
                 extent,
                 semi_axes[0].max(semi_axes[1]),
                 MAX_CELLS,
-            )?;
+                false,
+            )
+            .map_err(CoatedStudyError::Grid)?;
             let spacing = semi_axes.map(|s| 2.0 * extent * s / cells as f64);
             let shape = [cells, cells];
             let origin = [
@@ -336,7 +457,21 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
                 max_iterations: rough::DEFAULT_MAX_ITERATIONS,
                 memory_limit_bytes: crate::field::memory_limit_bytes(),
             };
-            let solution = coated::solve(&problem, &layered, spec.counter_per_pa, &mut |_, _| {})?;
+            let solution = coated::solve(&problem, &layered, spec.counter_per_pa, &mut |_, _| {})
+                .map_err(|e| match e {
+                // The grid is the scene's window, not a map: name its extent.
+                CoatedContactError::Contact(RoughContactError::PressureAtEdge { row, column }) => {
+                    CoatedStudyError::ExtentTooSmall {
+                        extent: crate::io::text::approx(extent),
+                        place: format!(
+                            "x = {} µm, y = {} µm",
+                            crate::io::text::approx((origin[0] + column as f64 * spacing[0]) * 1e6),
+                            crate::io::text::approx((origin[1] + row as f64 * spacing[1]) * 1e6)
+                        ),
+                    }
+                }
+                other => other.into(),
+            })?;
             let started = std::time::Instant::now();
             let pressure = &solution.pressure_pa;
             let shear = pressure.mapv(|p| friction * p);

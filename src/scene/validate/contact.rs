@@ -238,6 +238,20 @@ impl Validator<'_> {
         };
         let coating = match &raw1.coating {
             Some(raw_coating) => {
+                // One yield strength cannot assess two materials: the coated study gives the
+                // coating's and the substrate's maxima apart (issue 50: it was ignored).
+                for (key, given) in [
+                    ("contact.hardness", raw.hardness.is_some()),
+                    ("contact.yield_strength", raw.yield_strength.is_some()),
+                ] {
+                    if given {
+                        return Err(self.error(
+                            key,
+                            "a coated body is two materials, and one yield strength cannot assess both: the coating's and the substrate's stresses peak in different places",
+                            Some(&format!("remove {key}: `stressfield hertz` of a coated scene reports the largest von Mises and Tresca stresses in the coating, on the interface and in the substrate, with their places, to compare with each material's strength")),
+                        ));
+                    }
+                }
                 let spec = self.coating(
                     kind,
                     raw_coating,

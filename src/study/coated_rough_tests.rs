@@ -357,3 +357,34 @@ fn a_coated_rough_scene_reports_its_coating_and_refuses_what_it_cannot_compute()
         .unwrap_or_default();
     assert!(message.contains("surface.generate.spacing"), "{message}");
 }
+
+/// Issue 50 §2: a coated rough solve hears a stop between iterations (Ctrl-C in Python), as
+/// the uncoated one does: a break before convergence is `Interrupted`, never a result, and a
+/// progress that always goes on gives [`crate::study::rough::solve`]'s solution bit for bit.
+#[test]
+fn a_coated_rough_solve_stops_when_asked() {
+    let text = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.05 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body1.coating]\nthickness = \"2 um\"\nmaterial = \"boron_carbide\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 64\nspacing = \"0.5 um\"\nhurst = 0.8\nrolloff = \"8 um\"\nrms_height = \"0.05 um\"\nsphere_radius = \"2 mm\"\nseed = 3\n";
+    let scene = Scene::parse(text, "test", "test.toml").expect("valid");
+    let mut heard = 0;
+    let stopped = crate::study::rough::solve_interruptible(&scene, &mut |_, _| {
+        heard += 1;
+        std::ops::ControlFlow::Break(())
+    });
+    assert_eq!(heard, 1);
+    assert!(
+        matches!(
+            stopped,
+            Err(crate::study::rough::RoughStudyError::Contact(
+                rough::RoughContactError::Interrupted { iterations: 1, .. }
+            ))
+        ),
+        "{stopped:?}"
+    );
+    let went_on = crate::study::rough::solve_interruptible(&scene, &mut |_, _| {
+        std::ops::ControlFlow::Continue(())
+    })
+    .expect("solved");
+    let plain = crate::study::rough::solve(&scene, &mut |_, _| {}).expect("solved");
+    assert_eq!(went_on.pressure_pa, plain.pressure_pa);
+    assert_eq!(went_on.iterations, plain.iterations);
+}

@@ -97,20 +97,19 @@ pub fn solve_interruptible(
     }
     let problem = problem(scene).ok_or(RoughStudyError::NotRough)?;
     SCENE_SOLVES.fetch_add(1, Ordering::Relaxed);
-    if let Some(coating) = &scene.contact.coating {
-        return Ok(crate::contact::coated::solve(
+    // A coated body's layered operator, built once, or Love's: either solve hears the stop.
+    let mut cache = match &scene.contact.coating {
+        Some(coating) => crate::contact::coated::operator_cache(
             &problem,
             &coating.layered(),
             coating.counter_per_pa,
-            &mut |iteration, residual| {
-                let _ = progress(iteration, residual);
-            },
-        )?);
-    }
+        )?,
+        None => rough::OperatorCache::default(),
+    };
     Ok(rough::solve_interruptible(
         &problem,
         &rough::Warm::default(),
-        &mut rough::OperatorCache::default(),
+        &mut cache,
         progress,
     )?)
 }

@@ -19,8 +19,8 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, bail, Context};
-use ndarray::{Array2, Array4, ArrayView1, ArrayView2, Axis};
-use numpy::{IntoPyArray, PyArray2, PyArray4, PyReadonlyArray1, PyReadonlyArray2};
+use ndarray::{Array2, Array3, Array4, ArrayView1, ArrayView2, Axis};
+use numpy::{IntoPyArray, PyArray2, PyArray3, PyArray4, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -320,20 +320,60 @@ impl Scene {
         Ok((json, temperature.into_pyarray(py)))
     }
 
-    /// `wear SCENE --json` as text: the steps of a scene with `[wear]` or `[[series]]`.
-    fn wear_json(&self, py: Python<'_>) -> PyResult<String> {
-        py.detach(|| -> Result<String> {
-            if self.scene.wear.is_none() {
-                bail!(
-                    "{} has no [wear] or [[series]]\nhint: add [wear] with coefficient = \"2e-6 mm^3/(N m)\", distance = \"20 m\" and steps = 40 to a rough scene (contact.kind = \"rough\"); see docs/wear.md",
-                    self.file
-                );
-            }
-            let study = study::wear::study(&self.scene, &mut |_| {})
-                .with_context(|| format!("scene {}", self.scene.name))?;
-            Ok(stressfield::report::wear::WearReport::new(&study).json())
-        })
-        .map_err(raise)
+    /// `wear SCENE --json` as text: the steps of a scene with `[wear]` or `[[series]]`; with
+    /// `arrays`, each step's worn heights (m), pressure (Pa) and wear depth (m), stacked
+    /// `(steps, ny, nx)`, the unworn contact first.
+    #[allow(clippy::type_complexity)]
+    fn wear<'py>(
+        &self,
+        py: Python<'py>,
+        arrays: bool,
+    ) -> PyResult<(String, Option<[Bound<'py, PyArray3<f64>>; 3]>)> {
+        let (json, stacks) = py
+            .detach(|| -> Result<(String, Option<[Array3<f64>; 3]>)> {
+                if self.scene.wear.is_none() {
+                    bail!(
+                        "{} has no [wear] or [[series]]\nhint: add [wear] with coefficient = \"2e-6 mm^3/(N m)\", distance = \"20 m\" and steps = 40 to a rough scene (contact.kind = \"rough\"); see docs/wear.md",
+                        self.file
+                    );
+                }
+                let study = study::wear::study(&self.scene, &mut |_| {})
+                    .with_context(|| format!("scene {}", self.scene.name))?;
+                let json = stressfield::report::wear::WearReport::new(&study).json();
+                if !arrays {
+                    return Ok((json, None));
+                }
+                let (ny, nx) = study.steps[0].solution.pressure_pa.dim();
+                let count = study.steps.len();
+                let mut stacks = [
+                    Array3::zeros((count, ny, nx)),
+                    Array3::zeros((count, ny, nx)),
+                    Array3::zeros((count, ny, nx)),
+                ];
+                for (k, step) in study.steps.iter().enumerate() {
+                    let sources = [
+                        step.heights_m.as_ref(),
+                        &step.solution.pressure_pa,
+                        &step.wear_depth_m,
+                    ];
+                    for (stack, source) in stacks.iter_mut().zip(sources) {
+                        if source.dim() != (ny, nx) {
+                            bail!(
+                                "scene {}: step {k}'s arrays are {:?}, not the first step's {:?}",
+                                self.scene.name,
+                                source.dim(),
+                                (ny, nx)
+                            );
+                        }
+                        for ((j, i), &value) in source.indexed_iter() {
+                            stack[[k, j, i]] = value;
+                        }
+                    }
+                }
+                Ok((json, Some(stacks)))
+            })
+            .map_err(raise)?;
+        Ok((json, stacks.map(|s| s.map(|a| a.into_pyarray(py)))))
     }
 
     /// Draws the scene's figure to `path` (PNG, or SVG by the extension).

@@ -229,10 +229,16 @@ class Scene:
         values["temperature"] = temperature
         return values
 
-    def wear(self) -> dict:
+    def wear(self, arrays: bool = False) -> dict:
         """The steps of a wear scene (``[wear]`` or ``[[series]]``), the dict of ``stressfield
-        wear SCENE --json``."""
-        return _json.loads(self._scene.wear_json())
+        wear SCENE --json``; with ``arrays=True`` also ``"heights"`` (each step's worn surface,
+        m, out of body 1), ``"pressure"`` (Pa) and ``"wear_depth"`` (m), float64 arrays of
+        shape ``(steps, ny, nx)``, the unworn contact first (the order of ``"steps"``)."""
+        text, stacks = self._scene.wear(bool(arrays))
+        out = _json.loads(text)
+        if stacks is not None:
+            out["heights"], out["pressure"], out["wear_depth"] = stacks
+        return out
 
     def render(self, path) -> None:
         """Draws the scene's figure (or sheet) to ``path``, PNG or SVG by the extension, as
@@ -447,8 +453,9 @@ def _task_label(task):
     return type(task).__name__
 
 
-def _run_task(task) -> dict:
-    """One batch task: a scene path, TOML text or Scene -> the dict of ``hertz --json``."""
+def _run_task(task, command="hertz") -> dict:
+    """One batch task: a scene path, TOML text or Scene -> the dict of ``hertz --json`` (or
+    of ``wear --json`` with ``command="wear"``)."""
     if isinstance(task, Scene):
         scene = task
     elif isinstance(task, _os.PathLike) or (
@@ -461,24 +468,25 @@ def _run_task(task) -> dict:
         raise StressfieldError(
             f"a batch task is a scene path, TOML text or Scene, got {type(task).__name__}"
         )
-    return scene.hertz()
+    return scene.wear() if command == "wear" else scene.hertz()
 
 
-def _run_task_caught(task):
+def _run_task_caught(task, command="hertz"):
     """``_run_task`` with its StressfieldError returned as its message, so that one task's
     failure does not lose the others' results (other exceptions, such as KeyboardInterrupt,
     propagate)."""
     try:
-        return True, _run_task(task)
+        return True, _run_task(task, command)
     except StressfieldError as error:
         return False, str(error)
 
 
-def batch(tasks, client=None, *, errors="raise") -> list:
+def batch(tasks, client=None, *, command="hertz", errors="raise") -> list:
     """Runs a list of scenes (paths, TOML texts or :class:`Scene` objects) and returns one
     dict per task, in order: each scene's ``stressfield hertz SCENE --json`` (for a rough
     scene that of ``contact --json``, for a coated one the coated contact with its
-    ``coating``).
+    ``coating``), or with ``command="wear"`` its ``stressfield wear SCENE --json`` (wear
+    scenes: ``[wear]`` or ``[[series]]``).
 
     client: a ``dask.distributed.Client``: the tasks are mapped over its cluster (a
     LocalCluster, or one from dask-jobqueue on Slurm/PBS); None runs them here, one after the
@@ -492,9 +500,11 @@ def batch(tasks, client=None, *, errors="raise") -> list:
     """
     if errors not in ("raise", "return"):
         raise StressfieldError(f'errors must be "raise" or "return", got {errors!r}')
+    if command not in ("hertz", "wear"):
+        raise StressfieldError(f'command must be "hertz" or "wear", got {command!r}')
     tasks = list(tasks)
     if client is None:
-        outcomes = [_run_task_caught(task) for task in tasks]
+        outcomes = [_run_task_caught(task, command) for task in tasks]
     else:
         portable = []
         for task in tasks:
@@ -507,7 +517,7 @@ def batch(tasks, client=None, *, errors="raise") -> list:
                 portable.append(task.file)
             else:
                 portable.append(_os.fspath(task) if isinstance(task, _os.PathLike) else task)
-        futures = client.map(_run_task_caught, portable, pure=False)
+        futures = client.map(_run_task_caught, portable, command=command, pure=False)
         outcomes = client.gather(futures)
     results, failed = [], {}
     for index, (task, (ok, value)) in enumerate(zip(tasks, outcomes)):

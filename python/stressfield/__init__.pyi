@@ -77,8 +77,9 @@ class Scene:
     def contact(self) -> ContactResult: ...
     def thermal(self) -> dict[str, Any]:
         """The keys of `thermal SCENE --json` and "temperature" (K, float64 2-D)."""
-    def wear(self) -> dict[str, Any]:
-        """The keys of `wear SCENE --json`."""
+    def wear(self, arrays: bool = False) -> dict[str, Any]:
+        """The keys of `wear SCENE --json`; with arrays=True also "heights", "pressure" and
+        "wear_depth" (float64, (steps, ny, nx))."""
     def render(self, path: PathLike) -> None: ...
     def record(self, path: PathLike) -> None: ...
 
@@ -143,7 +144,11 @@ def surface_stats(
     """The keys of `surface --json`."""
 
 def batch(
-    tasks: Sequence[Union[PathLike, str, Scene]], client: Any = None, *, errors: str = "raise"
+    tasks: Sequence[Union[PathLike, str, Scene]],
+    client: Any = None,
+    *,
+    command: str = "hertz",
+    errors: str = "raise",
 ) -> list[Any]:
     """One `hertz --json` dict per task, in order; with a dask.distributed Client, on its
     cluster. errors="raise": BatchError if any task failed (with the others' results);

@@ -255,3 +255,69 @@ def test_scene_render_is_the_command_line_s_figure(name, tmp_path):
     cli("render", path, "--out-dir", tmp_path / "cli")
     sf.load_scene(path).render(tmp_path / "py.png")
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli" / f"{name}.png").read_bytes()
+
+
+SMALL_WEAR = """format = 1
+[contact]
+kind = "rough"
+load = "0.5 N"
+[contact.body1]
+material = "steel"
+[contact.body2]
+material = "steel"
+[surface.generate]
+samples = 48
+spacing = "4 um"
+hurst = 0.8
+rolloff = "24 um"
+cutoff = "8 um"
+rms_height = "0.1 um"
+sphere_radius = "10 mm"
+seed = 2
+[wear]
+coefficient = "2e-6 mm^3/(N m)"
+distance = "1 m"
+steps = 3
+"""
+
+
+def test_scene_wear_arrays_are_the_steps_of_wear_json(tmp_path):
+    """Issue 54: Scene.wear(arrays=True) is `wear --json` plus each step's worn heights,
+    pressure and wear depth; the heights are those `wear --heights-out` writes, bit for bit,
+    the pressure carries the load and the wear depth holds the worn volume reported."""
+    path = tmp_path / "small_wear.toml"
+    path.write_text(SMALL_WEAR)
+    expected = cli_json("wear", path, "--json")
+    got = sf.load_scene(path).wear(arrays=True)
+    heights, pressure, depth = got.pop("heights"), got.pop("pressure"), got.pop("wear_depth")
+    assert got == expected
+    steps = expected["steps"]
+    assert heights.shape == pressure.shape == depth.shape == (len(steps), 48, 48)
+    assert heights.dtype == pressure.dtype == depth.dtype == np.float64
+    out = tmp_path / "heights"
+    out.mkdir()
+    cli("wear", path, "--heights-out", out)
+    written = sorted(out.glob("*.npy"))
+    assert len(written) == len(steps), written
+    for k, file in enumerate(written):
+        np.testing.assert_array_equal(heights[k], np.load(file))
+    dx, dy = 4e-6, 4e-6
+    for k, step in enumerate(steps):
+        # Equilibrium to the solver's tolerance; the worn volume is the depth's integral.
+        assert abs(pressure[k].sum() * dx * dy - 0.5) < 1e-6 * 0.5
+        volume = depth[k].sum() * dx * dy
+        assert abs(volume - step["worn_volume_m3"]) <= 1e-9 * max(step["worn_volume_m3"], 1e-30)
+        assert depth[k].max() == pytest.approx(step["max_wear_depth_m"], rel=1e-12, abs=1e-30)
+    assert depth[0].max() == 0.0
+    assert sf.load_scene(path).wear() == expected
+
+
+def test_batch_runs_wear_scenes(tmp_path):
+    """Issue 54: batch(command="wear") gives each scene's `wear --json`."""
+    path = tmp_path / "small_wear.toml"
+    path.write_text(SMALL_WEAR)
+    expected = cli_json("wear", path, "--json")
+    assert sf.batch([path, SMALL_WEAR], command="wear") == [expected, expected]
+    with pytest.raises(sf.StressfieldError) as caught:
+        sf.batch([path], command="contact")
+    assert "command must be" in str(caught.value)

@@ -3,3 +3,4 @@
 //! Pure: no I/O; threads only through the shared transform driver.
 
 pub mod column;
+pub mod halfspace;

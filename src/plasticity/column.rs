@@ -363,14 +363,39 @@ impl Column {
         surface: &mut [C64; 3],
         work: &mut ColumnWork,
     ) {
+        assert_eq!(stress.len(), cells.count(), "one stress per cell");
+        self.solve(k, cells, strain, Some(stress), surface, work);
+    }
+
+    /// As [`Column::apply`], the surface displacement alone (the sweep upwards only).
+    pub fn surface(
+        &self,
+        k: [f64; 2],
+        cells: &DepthCells,
+        strain: &[[C64; 6]],
+        surface: &mut [C64; 3],
+        work: &mut ColumnWork,
+    ) {
+        self.solve(k, cells, strain, None, surface, work);
+    }
+
+    fn solve(
+        &self,
+        k: [f64; 2],
+        cells: &DepthCells,
+        strain: &[[C64; 6]],
+        stress: Option<&mut [[C64; 6]]>,
+        surface: &mut [C64; 3],
+        work: &mut ColumnWork,
+    ) {
         let count = cells.count();
         assert_eq!(strain.len(), count, "one strain per cell");
-        assert_eq!(stress.len(), count, "one stress per cell");
         let magnitude = k[0].hypot(k[1]);
         if magnitude == 0.0 {
             self.mean(cells, strain, stress, surface);
             return;
         }
+        let with_stress = stress.is_some();
         let (l, m) = (self.l, self.m);
         let mu = self.shear_modulus_pa;
         let n = [k[0] / magnitude, k[1] / magnitude];
@@ -410,7 +435,7 @@ impl Column {
         work.down_a.clear();
         let mut acc = [ZERO; 4];
         let mut acc_a = [ZERO; 2];
-        for j in 0..count {
+        for j in (0..count).filter(|_| with_stress) {
             let half = 0.5 * magnitude * cells.thickness_m(j);
             let decay = work.half_decay[j];
             if j > 0 {
@@ -439,10 +464,12 @@ impl Column {
         }
 
         // Up: the cells below each centre, then the whole column at the surface.
-        work.state.clear();
-        work.state.resize(count, [ZERO; 4]);
-        work.state_a.clear();
-        work.state_a.resize(count, [ZERO; 2]);
+        if with_stress {
+            work.state.clear();
+            work.state.resize(count, [ZERO; 4]);
+            work.state_a.clear();
+            work.state_a.resize(count, [ZERO; 2]);
+        }
         let mut acc = [ZERO; 4];
         let mut acc_a = [ZERO; 2];
         for j in (0..count).rev() {
@@ -451,30 +478,11 @@ impl Column {
             // `acc` is the field at the lower face of j from the cells below it.
             let below = self.up_by(&acc, half, decay);
             let below_a = [acc_a[0] * decay, acc_a[1] * decay];
-            // The cell's own halves at its centre.
-            let (e0h, e1h) = (
-                zeroth_moment(half, decay),
-                first_moment(half, decay),
-            );
+            if with_stress {
+                self.keep_centre(j, half, decay, &below, &below_a, work);
+            }
             let f = &work.source[j];
-            let mut own = apply(&self.own_p, f);
-            for (o, v) in own.iter_mut().zip(apply(&self.own_n, f)) {
-                *o = *o * e0h + v * e1h;
-            }
             let fa = &work.source_a[j];
-            // Anti-plane own: (P+ - P-) fa e0h = [[0, -1], [-1, 0]] fa e0h.
-            let own_a = [-fa[1] * e0h, -fa[0] * e0h];
-            let down = &work.down[j];
-            let down_a = &work.down_a[j];
-            let mut state = [ZERO; 4];
-            for r in 0..4 {
-                state[r] = down[r] + below[r] + own[r];
-            }
-            work.state[j] = state;
-            work.state_a[j] = [
-                down_a[0] + below_a[0] + own_a[0],
-                down_a[1] + below_a[1] + own_a[1],
-            ];
             // On to the upper face of j, adding cell j: -(P- e0 - N- e1) f.
             acc = self.up_by(&below, half, decay);
             acc_a = [below_a[0] * decay, below_a[1] * decay];
@@ -506,6 +514,7 @@ impl Column {
         surface[0] = u_s * nx - u_t * ny;
         surface[1] = u_s * ny + u_t * nx;
         surface[2] = surface_state[1] / magnitude;
+        let Some(stress) = stress else { return };
 
         let mut decay_to_top = 1.0;
         for j in 0..count {
@@ -540,6 +549,40 @@ impl Column {
         }
     }
 
+    /// The full space's field at the centre of cell `j`: the cells above (`work.down`), those
+    /// below (`below`, `below_a`) and the cell's own halves, into `work.state`.
+    #[inline(always)]
+    fn keep_centre(
+        &self,
+        j: usize,
+        half: f64,
+        decay: f64,
+        below: &Vec4,
+        below_a: &Vec2,
+        work: &mut ColumnWork,
+    ) {
+        let (e0h, e1h) = (zeroth_moment(half, decay), first_moment(half, decay));
+        let f = &work.source[j];
+        let mut own = apply(&self.own_p, f);
+        for (o, v) in own.iter_mut().zip(apply(&self.own_n, f)) {
+            *o = *o * e0h + v * e1h;
+        }
+        let fa = &work.source_a[j];
+        // Anti-plane own: (P+ - P-) fa e0h = [[0, -1], [-1, 0]] fa e0h.
+        let own_a = [-fa[1] * e0h, -fa[0] * e0h];
+        let down = &work.down[j];
+        let down_a = &work.down_a[j];
+        let mut state = [ZERO; 4];
+        for r in 0..4 {
+            state[r] = down[r] + below[r] + own[r];
+        }
+        work.state[j] = state;
+        work.state_a[j] = [
+            down_a[0] + below_a[0] + own_a[0],
+            down_a[1] + below_a[1] + own_a[1],
+        ];
+    }
+
     /// `e^(-kd)(I + kd N+) v` with `kd = x`, `e^(-kd) = decay`.
     #[inline(always)]
     fn down_by(&self, v: &Vec4, x: f64, decay: f64) -> Vec4 {
@@ -567,19 +610,20 @@ impl Column {
         &self,
         cells: &DepthCells,
         strain: &[[C64; 6]],
-        stress: &mut [[C64; 6]],
+        mut stress: Option<&mut [[C64; 6]]>,
         surface: &mut [C64; 3],
     ) {
         let (l, m, mu) = (self.l, self.m, self.shear_modulus_pa);
         *surface = [ZERO; 3];
-        for (j, (cell_strain, out)) in strain.iter().zip(stress.iter_mut()).enumerate() {
+        for (j, cell_strain) in strain.iter().enumerate() {
             let s = eigenstress_over_mu(cell_strain, l);
             let ezz = s[ZZ] / m;
             let h = cells.thickness_m(j);
             surface[0] -= cell_strain[XZ] * (2.0 * h);
             surface[1] -= cell_strain[YZ] * (2.0 * h);
             surface[2] -= ezz * h;
-            *out = [
+            let Some(stress) = stress.as_deref_mut() else { continue };
+            stress[j] = [
                 (ezz * l - s[XX]) * mu,
                 (ezz * l - s[YY]) * mu,
                 ZERO,

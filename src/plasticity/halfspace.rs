@@ -123,6 +123,8 @@ pub struct HalfSpace {
     /// `6 nz` stress spectra, then the surface displacement's, then the tractions'.
     spectra: Vec<Array2<C64>>,
     kernels: Option<TractionKernels>,
+    /// Whether `spectra` hold a strain (set by `set_strain`, consumed by `stress`).
+    strain_kept: bool,
 }
 
 impl HalfSpace {
@@ -146,6 +148,7 @@ impl HalfSpace {
             spectra,
             grid,
             kernels: None,
+            strain_kept: false,
         }
     }
 
@@ -173,52 +176,102 @@ impl HalfSpace {
     /// The stress at the cell centres (`[nz, 6, ny, nx]`, Pa) and the normal surface
     /// displacement (`[ny, nx]`, m, into the body) of the plastic strain `strain`
     /// (`[nz, 6, ny, nx]`), plus, when `tractions` are given, the contact's stress of the
-    /// pressure (Pa, `[ny, nx]`) and the shear along x (`shear_per_pressure` times it).
+    /// pressure (Pa, `[ny, nx]`) and the shear along x (`shear_per_pressure` times it):
+    /// [`HalfSpace::set_strain`] then [`HalfSpace::stress`].
     ///
     /// # Panics
-    /// If a shape does not match the grid, or tractions are given to an operator built
-    /// without [`HalfSpace::with_contact`] (or a shear to one without its shear).
+    /// As those two.
     pub fn apply(
         &mut self,
         strain: ArrayView4<f64>,
         tractions: Option<(ArrayView2<f64>, f64)>,
-        mut stress: ArrayViewMut4<f64>,
+        stress: ArrayViewMut4<f64>,
+        surface: ArrayViewMut2<f64>,
+    ) -> Result<(), HalfSpaceError> {
+        self.set_strain(strain, surface)?;
+        self.stress(tractions, stress)
+    }
+
+    /// Transforms and keeps the plastic strain `strain` (`[nz, 6, ny, nx]`) and writes the
+    /// normal surface displacement it causes (`[ny, nx]`, m, into the body).
+    ///
+    /// # Panics
+    /// If a shape does not match the grid.
+    pub fn set_strain(
+        &mut self,
+        strain: ArrayView4<f64>,
         surface: ArrayViewMut2<f64>,
     ) -> Result<(), HalfSpaceError> {
         let [nz, ny, nx] = self.grid.dims();
         assert_eq!(strain.shape(), [nz, 6, ny, nx], "strain shape");
-        assert_eq!(stress.shape(), [nz, 6, ny, nx], "stress shape");
         assert_eq!(surface.dim(), (ny, nx), "surface shape");
         let count = 6 * nz;
-        let zero_layer = Array2::<f64>::zeros((1, 1));
-        let mut inputs: Vec<ArrayView2<f64>> = Vec::with_capacity(count + 2);
+        let mut inputs: Vec<ArrayView2<f64>> = Vec::with_capacity(count);
         for l in 0..nz {
             for c in 0..6 {
                 inputs.push(strain.view().index_axis_move(Axis(0), l).index_axis_move(Axis(0), c));
             }
         }
-        // The surface displacement's spectrum is an output only; the tractions an input.
-        inputs.push(zero_layer.view());
+        self.stack.forward(&inputs, &mut self.spectra[..count])?;
+        self.pass(false, None)?;
+        self.stack.inverse(&mut self.spectra[count..count + 1], vec![surface])?;
+        self.strain_kept = true;
+        Ok(())
+    }
+
+    /// The stress (`[nz, 6, ny, nx]`, Pa) at the cell centres of the plastic strain kept by
+    /// [`HalfSpace::set_strain`] (which this consumes), plus, when `tractions` are given,
+    /// the contact's stress of the pressure (Pa, `[ny, nx]`) and the shear along x
+    /// (`shear_per_pressure` times it).
+    ///
+    /// # Panics
+    /// If no strain is kept, a shape does not match the grid, or tractions are given to an
+    /// operator built without [`HalfSpace::with_contact`] (or a shear to one without its
+    /// shear).
+    pub fn stress(
+        &mut self,
+        tractions: Option<(ArrayView2<f64>, f64)>,
+        mut stress: ArrayViewMut4<f64>,
+    ) -> Result<(), HalfSpaceError> {
+        let [nz, ny, nx] = self.grid.dims();
+        assert!(self.strain_kept, "HalfSpace::stress needs HalfSpace::set_strain first");
+        assert_eq!(stress.shape(), [nz, 6, ny, nx], "stress shape");
+        let count = 6 * nz;
         let shear = tractions.as_ref().map_or(0.0, |t| t.1);
-        match &tractions {
-            Some((pressure, _)) => {
-                assert_eq!(pressure.dim(), (ny, nx), "pressure shape");
-                inputs.push(pressure.view());
-            }
-            None => inputs.push(zero_layer.view()),
-        }
-        self.stack.forward(&inputs, &mut self.spectra)?;
-        let kernels = match (&tractions, &self.kernels) {
-            (Some(_), Some(kernels)) => {
-                assert!(
+        if let Some((pressure, _)) = &tractions {
+            assert_eq!(pressure.dim(), (ny, nx), "pressure shape");
+            match &self.kernels {
+                Some(kernels) => assert!(
                     shear == 0.0 || kernels.shear_x.is_some(),
                     "a shear needs the shear's coefficients"
-                );
-                Some(kernels)
+                ),
+                None => panic!("tractions need HalfSpace::with_contact"),
             }
-            (Some(_), None) => panic!("tractions need HalfSpace::with_contact"),
-            (None, _) => None,
+            self.stack
+                .forward(&[pressure.view()], &mut self.spectra[count + 1..count + 2])?;
+        }
+        self.pass(true, tractions.map(|t| t.1))?;
+        self.strain_kept = false;
+        let mut flat = stress
+            .view_mut()
+            .into_shape_with_order((count, ny, nx))
+            .map_err(|e| TransformError::new(&format!("the stress is not contiguous: {e}")))?;
+        let outputs: Vec<ArrayViewMut2<f64>> = flat.axis_iter_mut(Axis(0)).collect();
+        self.stack.inverse(&mut self.spectra[..count], outputs)?;
+        Ok(())
+    }
+
+    /// One pass over the waves: the surface displacement of the kept strain (the strain's
+    /// spectra are left as they are), or with `with_stress` its stresses in their place,
+    /// plus the tractions' when given (`Some(shear per pressure)`).
+    fn pass(&mut self, with_stress: bool, tractions: Option<f64>) -> Result<(), HalfSpaceError> {
+        let nz = self.grid.depth.count();
+        let count = 6 * nz;
+        let kernels = match tractions {
+            Some(_) => self.kernels.as_ref(),
+            None => None,
         };
+        let shear = tractions.unwrap_or(0.0);
         let [plan_y, plan_x] = self.grid.plan_shape();
         let [dx, dy] = self.grid.spacing_m;
         let (period_x, period_y) = (plan_x as f64 * dx, plan_y as f64 * dy);
@@ -241,7 +294,7 @@ impl HalfSpace {
                             *value = columns[6 * l + c][ky_index];
                         }
                     }
-                    let mut total = [ZERO; 3];
+                    let mut displacement = ZERO;
                     for cell in buffers.sum.iter_mut() {
                         *cell = [ZERO; 6];
                     }
@@ -249,21 +302,35 @@ impl HalfSpace {
                     for &kx in xs {
                         for &ky in ys {
                             let mut surface = [ZERO; 3];
-                            column.apply(
-                                [kx, ky],
-                                depth,
-                                &buffers.strain,
-                                &mut buffers.stress,
-                                &mut surface,
-                                &mut buffers.work,
-                            );
-                            for (sum, cell) in buffers.sum.iter_mut().zip(&buffers.stress) {
-                                for (s, v) in sum.iter_mut().zip(cell) {
-                                    *s += *v * weight;
+                            if with_stress {
+                                column.apply(
+                                    [kx, ky],
+                                    depth,
+                                    &buffers.strain,
+                                    &mut buffers.stress,
+                                    &mut surface,
+                                    &mut buffers.work,
+                                );
+                                for (sum, cell) in buffers.sum.iter_mut().zip(&buffers.stress) {
+                                    for (s, v) in sum.iter_mut().zip(cell) {
+                                        *s += *v * weight;
+                                    }
                                 }
+                            } else {
+                                column.surface(
+                                    [kx, ky],
+                                    depth,
+                                    &buffers.strain,
+                                    &mut surface,
+                                    &mut buffers.work,
+                                );
                             }
-                            total[2] += surface[2] * weight;
+                            displacement += surface[2] * weight;
                         }
+                    }
+                    columns[count][ky_index] = displacement;
+                    if !with_stress {
+                        continue;
                     }
                     let traction = columns[count + 1][ky_index];
                     for (l, cell) in buffers.sum.iter().enumerate() {
@@ -280,19 +347,9 @@ impl HalfSpace {
                             columns[6 * l + c][ky_index] = v;
                         }
                     }
-                    columns[count][ky_index] = total[2];
                 }
             },
         )?;
-        let mut flat = stress
-            .view_mut()
-            .into_shape_with_order((count, ny, nx))
-            .map_err(|e| TransformError::new(&format!("the stress is not contiguous: {e}")))?;
-        let outputs: Vec<ArrayViewMut2<f64>> = flat.axis_iter_mut(Axis(0)).collect();
-        // The transforms of the stresses and of the surface displacement.
-        let (stress_spectra, rest) = self.spectra.split_at_mut(count);
-        self.stack.inverse(stress_spectra, outputs)?;
-        self.stack.inverse(&mut rest[..1], vec![surface])?;
         Ok(())
     }
 }

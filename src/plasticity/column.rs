@@ -137,13 +137,6 @@ fn apply(m: &Mat4, v: &Vec4) -> Vec4 {
     out
 }
 
-#[inline(always)]
-fn axpy(y: &mut Vec4, a: f64, x: &Vec4) {
-    for (t, v) in y.iter_mut().zip(x) {
-        *t += *v * a;
-    }
-}
-
 /// `1 - e^(-x)(1 + x)` from `e^(-x)`, by its series where it would cancel.
 #[inline]
 fn first_moment(x: f64, decay: f64) -> f64 {
@@ -260,26 +253,43 @@ pub struct Column {
     p_plus: Mat4,
     p_minus: Mat4,
     n_plus: Mat4,
-    n_minus: Mat4,
-    /// `P+ - P-` and `N+ + N-`: a cell's own contribution at its centre.
-    own_p: Mat4,
-    own_n: Mat4,
     /// `K = D (T D)⁻¹ T`: the surface correction `c = -K Z(0)`.
     correction: Mat4,
+    /// `N± = v± ℓ±ᵀ` (each of rank one: one Jordan block of size two).
+    v_plus: [f64; 4],
+    l_plus: [f64; 4],
+    v_minus: [f64; 4],
+    l_minus: [f64; 4],
+}
+
+/// What a cell of a column contributes, in the frame of the wave.
+#[derive(Clone, Debug)]
+struct CellTerms {
+    /// `P+ f`, `P- f`, `ℓ+·f`, `ℓ-·f` of the plane-strain source `f`.
+    p_plus: Vec4,
+    p_minus: Vec4,
+    n_plus: C64,
+    n_minus: C64,
+    /// The anti-plane source.
+    antiplane: Vec2,
+    /// `σ*_ss, σ*_tt, σ*_zz, σ̃*_st` in units of μ.
+    eigenstress: [C64; 4],
+    /// `k h / 2` and `e^(-k h / 2)`.
+    half_x: f64,
+    half_decay: f64,
+    /// The moments of the cell and of its half.
+    e0: f64,
+    e1: f64,
+    e0_half: f64,
+    e1_half: f64,
 }
 
 /// The working memory of [`Column::apply`] for one column of cells (one per thread).
 #[derive(Clone, Debug, Default)]
 pub struct ColumnWork {
-    source: Vec<Vec4>,
-    source_a: Vec<Vec2>,
-    /// `e^(-k h_j / 2)` of each cell.
-    half_decay: Vec<f64>,
-    down: Vec<Vec4>,
-    down_a: Vec<Vec2>,
-    state: Vec<Vec4>,
-    state_a: Vec<Vec2>,
-    eigenstress: Vec<[C64; 6]>,
+    cells: Vec<CellTerms>,
+    down: Vec<(Vec4, Vec2)>,
+    state: Vec<(Vec4, Vec2)>,
 }
 
 /// The eigenstress `C : ε*` in units of μ, from tensor components (order [`XX`]...).
@@ -326,19 +336,20 @@ impl Column {
         );
         let n_plus = mat_mul(&a_plus, &p_plus);
         let n_minus = mat_mul(&a_minus, &p_minus);
-        let own_p = mat_add(&p_plus, &p_minus, -1.0);
-        let own_n = mat_add(&n_plus, &n_minus, 1.0);
         let correction = surface_correction(&p_plus);
+        let (v_plus, l_plus) = rank_one(&n_plus);
+        let (v_minus, l_minus) = rank_one(&n_minus);
         Self {
+            v_plus,
+            l_plus,
+            v_minus,
+            l_minus,
             shear_modulus_pa,
             l,
             m,
             p_plus,
             p_minus,
             n_plus,
-            n_minus,
-            own_p,
-            own_n,
             correction,
         }
     }
@@ -402,12 +413,11 @@ impl Column {
         let (nx, ny) = (n[0], n[1]);
         let i = C64::new(0.0, 1.0);
         let minus_i = C64::new(0.0, -1.0);
+        let (v_plus, l_plus) = (&self.v_plus, &self.l_plus);
+        let (v_minus, l_minus) = (&self.v_minus, &self.l_minus);
 
-        // The sources of each cell, in the frame of the wave.
-        work.source.clear();
-        work.source_a.clear();
-        work.eigenstress.clear();
-        work.half_decay.clear();
+        // The sources of each cell, in the frame of the wave, and their projections.
+        work.cells.clear();
         for (j, cell_strain) in strain.iter().enumerate() {
             let s = eigenstress_over_mu(cell_strain, l);
             let ss = s[XX] * (nx * nx) + s[XY] * (2.0 * nx * ny) + s[YY] * (ny * ny);
@@ -419,92 +429,119 @@ impl Column {
             // The real-phase forms of the odd components: σ*_sz = i σ̃*_sz, σ*_st = i σ̃*_st.
             let sz_tilde = sz * minus_i;
             let st_tilde = st * minus_i;
-            work.source
-                .push([sz_tilde, zz / m, ss - zz * (l / m), ZERO]);
-            work.source_a.push([tz, -st_tilde]);
-            // Kept for the local stresses: σ*_ss, σ*_tt, σ*_zz, σ̃*_st (units of μ).
-            work.eigenstress
-                .push([ss, tt, zz, st_tilde, ZERO, ZERO]);
-            work.half_decay
-                .push((-0.5 * magnitude * cells.thickness_m(j)).exp());
+            let f = [sz_tilde, zz / m, ss - zz * (l / m)];
+            // P+ f (the source has no fourth component), P- f = f - P+ f, N± f = v± (ℓ±·f).
+            let mut p_plus = [ZERO; 4];
+            for (r, row) in self.p_plus.iter().enumerate() {
+                p_plus[r] = f[0] * row[0] + f[1] * row[1] + f[2] * row[2];
+            }
+            let p_minus = [
+                f[0] - p_plus[0],
+                f[1] - p_plus[1],
+                f[2] - p_plus[2],
+                -p_plus[3],
+            ];
+            let n_plus = f[0] * l_plus[0] + f[1] * l_plus[1] + f[2] * l_plus[2];
+            let n_minus = f[0] * l_minus[0] + f[1] * l_minus[1] + f[2] * l_minus[2];
+            let x = magnitude * cells.thickness_m(j);
+            let half_decay = (-0.5 * x).exp();
+            let full = half_decay * half_decay;
+            work.cells.push(CellTerms {
+                p_plus,
+                p_minus,
+                n_plus,
+                n_minus,
+                antiplane: [tz, -st_tilde],
+                eigenstress: [ss, tt, zz, st_tilde],
+                half_x: 0.5 * x,
+                half_decay,
+                e0: zeroth_moment(x, full),
+                e1: first_moment(x, full),
+                e0_half: zeroth_moment(0.5 * x, half_decay),
+                e1_half: first_moment(0.5 * x, half_decay),
+            });
         }
 
         // Down: the cells above each centre. `acc` is the field at the lower face of the
         // last cell added.
         work.down.clear();
-        work.down_a.clear();
         let mut acc = [ZERO; 4];
         let mut acc_a = [ZERO; 2];
-        for j in (0..count).filter(|_| with_stress) {
-            let half = 0.5 * magnitude * cells.thickness_m(j);
-            let decay = work.half_decay[j];
+        for (j, cell) in work.cells.iter().enumerate().filter(|_| with_stress) {
+            let (half, decay) = (cell.half_x, cell.half_decay);
             if j > 0 {
                 // From the lower face of cell j - 1 (the upper face of j) to the centre of j.
-                acc = self.down_by(&acc, half, decay);
+                down_by(&mut acc, v_plus, l_plus, half, decay);
                 acc_a = [acc_a[0] * decay, acc_a[1] * decay];
             }
-            work.down.push(acc);
-            work.down_a.push(acc_a);
-            // Then on to the lower face of j, adding cell j itself.
-            acc = self.down_by(&acc, half, decay);
+            work.down.push((acc, acc_a));
+            // Then on to the lower face of j, adding cell j: (P+ e0 + N+ e1) f.
+            down_by(&mut acc, v_plus, l_plus, half, decay);
             acc_a = [acc_a[0] * decay, acc_a[1] * decay];
-            let x = 2.0 * half;
-            let full = decay * decay;
-            let (e0, e1) = (zeroth_moment(x, full), first_moment(x, full));
-            let f = &work.source[j];
-            let pf = apply(&self.p_plus, f);
-            let nf = apply(&self.n_plus, f);
-            axpy(&mut acc, e0, &pf);
-            axpy(&mut acc, e1, &nf);
-            let fa = &work.source_a[j];
+            let nf = cell.n_plus * cell.e1;
+            for r in 0..4 {
+                acc[r] += cell.p_plus[r] * cell.e0 + nf * v_plus[r];
+            }
             // Anti-plane: P+ = [[1, -1], [-1, 1]] / 2, no nilpotent part.
-            let half_diff = (fa[0] - fa[1]) * 0.5;
-            acc_a[0] += half_diff * e0;
-            acc_a[1] -= half_diff * e0;
+            let fa = &cell.antiplane;
+            let half_diff = (fa[0] - fa[1]) * (0.5 * cell.e0);
+            acc_a[0] += half_diff;
+            acc_a[1] -= half_diff;
         }
 
         // Up: the cells below each centre, then the whole column at the surface.
         if with_stress {
             work.state.clear();
-            work.state.resize(count, [ZERO; 4]);
-            work.state_a.clear();
-            work.state_a.resize(count, [ZERO; 2]);
+            work.state.resize(count, ([ZERO; 4], [ZERO; 2]));
         }
         let mut acc = [ZERO; 4];
         let mut acc_a = [ZERO; 2];
-        for j in (0..count).rev() {
-            let half = 0.5 * magnitude * cells.thickness_m(j);
-            let decay = work.half_decay[j];
-            // `acc` is the field at the lower face of j from the cells below it.
-            let below = self.up_by(&acc, half, decay);
-            let below_a = [acc_a[0] * decay, acc_a[1] * decay];
+        for (j, cell) in work.cells.iter().enumerate().rev() {
+            let (half, decay) = (cell.half_x, cell.half_decay);
+            // `acc` is the field at the lower face of j from the cells below it: at the centre,
+            up_by(&mut acc, v_minus, l_minus, half, decay);
+            acc_a = [acc_a[0] * decay, acc_a[1] * decay];
             if with_stress {
-                self.keep_centre(j, half, decay, &below, &below_a, work);
+                // plus the cells above and the cell's own halves,
+                // (P+ - P-) f e0h + (N+ + N-) f e1h.
+                let (down, down_a) = &work.down[j];
+                let (a, b) = (cell.n_plus * cell.e1_half, cell.n_minus * cell.e1_half);
+                let mut state = [ZERO; 4];
+                for r in 0..4 {
+                    state[r] = down[r]
+                        + acc[r]
+                        + (cell.p_plus[r] - cell.p_minus[r]) * cell.e0_half
+                        + a * v_plus[r]
+                        + b * v_minus[r];
+                }
+                // Anti-plane own: (P+ - P-) fa e0h = [[0, -1], [-1, 0]] fa e0h.
+                let fa = &cell.antiplane;
+                let state_a = [
+                    down_a[0] + acc_a[0] - fa[1] * cell.e0_half,
+                    down_a[1] + acc_a[1] - fa[0] * cell.e0_half,
+                ];
+                work.state[j] = (state, state_a);
             }
-            let f = &work.source[j];
-            let fa = &work.source_a[j];
             // On to the upper face of j, adding cell j: -(P- e0 - N- e1) f.
-            acc = self.up_by(&below, half, decay);
-            acc_a = [below_a[0] * decay, below_a[1] * decay];
-            let x = 2.0 * half;
-            let full = decay * decay;
-            let (e0, e1) = (zeroth_moment(x, full), first_moment(x, full));
-            let pf = apply(&self.p_minus, f);
-            let nf = apply(&self.n_minus, f);
-            axpy(&mut acc, -e0, &pf);
-            axpy(&mut acc, e1, &nf);
+            up_by(&mut acc, v_minus, l_minus, half, decay);
+            acc_a = [acc_a[0] * decay, acc_a[1] * decay];
+            let nf = cell.n_minus * cell.e1;
+            for r in 0..4 {
+                acc[r] += -cell.p_minus[r] * cell.e0 + nf * v_minus[r];
+            }
             // Anti-plane: P- = [[1, 1], [1, 1]] / 2.
-            let half_sum = (fa[0] + fa[1]) * 0.5;
-            acc_a[0] -= half_sum * e0;
-            acc_a[1] -= half_sum * e0;
+            let fa = &cell.antiplane;
+            let half_sum = (fa[0] + fa[1]) * (0.5 * cell.e0);
+            acc_a[0] -= half_sum;
+            acc_a[1] -= half_sum;
         }
         // The full space's field at the surface is `acc`; the half-space cancels its
-        // tractions with a decaying solution.
-        let mut c = apply(&self.correction, &acc);
-        for v in c.iter_mut() {
-            *v = -*v;
+        // tractions with a decaying solution c = -K acc (K has columns 2 and 3 only).
+        let mut c = [ZERO; 4];
+        for (r, row) in self.correction.iter().enumerate() {
+            c[r] = -(acc[2] * row[2] + acc[3] * row[3]);
         }
-        let nc = apply(&self.n_plus, &c);
+        let lc = c[0] * l_plus[0] + c[1] * l_plus[1] + c[2] * l_plus[2] + c[3] * l_plus[3];
         // Anti-plane: c = (Zt, -Zt).
         let c_a = [acc_a[1], -acc_a[1]];
         let surface_state = [acc[0] + c[0], acc[1] + c[1]];
@@ -517,21 +554,21 @@ impl Column {
         let Some(stress) = stress else { return };
 
         let mut decay_to_top = 1.0;
-        for j in 0..count {
-            let decay = work.half_decay[j];
-            let z = cells.centre_m(j);
+        for ((j, cell), out) in work.cells.iter().enumerate().zip(stress.iter_mut()) {
+            let decay = cell.half_decay;
             let at_centre = decay_to_top * decay;
             decay_to_top = at_centre * decay;
-            let kz = magnitude * z;
-            let mut state = work.state[j];
+            let kz = magnitude * cells.centre_m(j);
+            let (mut state, state_a) = work.state[j];
+            let nc = lc * kz;
             for r in 0..4 {
-                state[r] += (c[r] + nc[r] * kz) * at_centre;
+                state[r] += (c[r] + nc * v_plus[r]) * at_centre;
             }
             let state_a = [
-                work.state_a[j][0] + c_a[0] * at_centre,
-                work.state_a[j][1] + c_a[1] * at_centre,
+                state_a[0] + c_a[0] * at_centre,
+                state_a[1] + c_a[1] * at_centre,
             ];
-            let [ss_star, tt_star, zz_star, st_star, _, _] = work.eigenstress[j];
+            let [ss_star, tt_star, zz_star, st_star] = cell.eigenstress;
             let dw = (state[0] * l + state[3] + zz_star) / m;
             let ss = dw * l - state[0] * m - ss_star;
             let tt = (dw - state[0]) * l - tt_star;
@@ -539,7 +576,6 @@ impl Column {
             let sz = state[2] * i;
             let tz = state_a[1];
             let st = (state_a[0] - st_star) * i;
-            let out = &mut stress[j];
             out[XX] = (ss * (nx * nx) + tt * (ny * ny) - st * (2.0 * nx * ny)) * mu;
             out[YY] = (ss * (ny * ny) + tt * (nx * nx) + st * (2.0 * nx * ny)) * mu;
             out[ZZ] = zz * mu;
@@ -547,62 +583,6 @@ impl Column {
             out[XZ] = (sz * nx - tz * ny) * mu;
             out[XY] = ((ss - tt) * (nx * ny) + st * (nx * nx - ny * ny)) * mu;
         }
-    }
-
-    /// The full space's field at the centre of cell `j`: the cells above (`work.down`), those
-    /// below (`below`, `below_a`) and the cell's own halves, into `work.state`.
-    #[inline(always)]
-    fn keep_centre(
-        &self,
-        j: usize,
-        half: f64,
-        decay: f64,
-        below: &Vec4,
-        below_a: &Vec2,
-        work: &mut ColumnWork,
-    ) {
-        let (e0h, e1h) = (zeroth_moment(half, decay), first_moment(half, decay));
-        let f = &work.source[j];
-        let mut own = apply(&self.own_p, f);
-        for (o, v) in own.iter_mut().zip(apply(&self.own_n, f)) {
-            *o = *o * e0h + v * e1h;
-        }
-        let fa = &work.source_a[j];
-        // Anti-plane own: (P+ - P-) fa e0h = [[0, -1], [-1, 0]] fa e0h.
-        let own_a = [-fa[1] * e0h, -fa[0] * e0h];
-        let down = &work.down[j];
-        let down_a = &work.down_a[j];
-        let mut state = [ZERO; 4];
-        for r in 0..4 {
-            state[r] = down[r] + below[r] + own[r];
-        }
-        work.state[j] = state;
-        work.state_a[j] = [
-            down_a[0] + below_a[0] + own_a[0],
-            down_a[1] + below_a[1] + own_a[1],
-        ];
-    }
-
-    /// `e^(-kd)(I + kd N+) v` with `kd = x`, `e^(-kd) = decay`.
-    #[inline(always)]
-    fn down_by(&self, v: &Vec4, x: f64, decay: f64) -> Vec4 {
-        let nv = apply(&self.n_plus, v);
-        let mut out = [ZERO; 4];
-        for r in 0..4 {
-            out[r] = (v[r] + nv[r] * x) * decay;
-        }
-        out
-    }
-
-    /// `e^(-kd)(I - kd N-) v`.
-    #[inline(always)]
-    fn up_by(&self, v: &Vec4, x: f64, decay: f64) -> Vec4 {
-        let nv = apply(&self.n_minus, v);
-        let mut out = [ZERO; 4];
-        for r in 0..4 {
-            out[r] = (v[r] - nv[r] * x) * decay;
-        }
-        out
     }
 
     /// The mean of each layer (`k = 0`): the module doc's uniform layers.
@@ -633,6 +613,40 @@ impl Column {
             ];
         }
     }
+}
+
+/// `v <- e^(-kd)(I + kd N+) v` with `kd = x`, `e^(-kd) = decay`, `N+ = v+ ℓ+ᵀ`.
+#[inline(always)]
+fn down_by(v: &mut Vec4, v_plus: &[f64; 4], l_plus: &[f64; 4], x: f64, decay: f64) {
+    let dot = (v[0] * l_plus[0] + v[1] * l_plus[1] + v[2] * l_plus[2] + v[3] * l_plus[3]) * x;
+    for r in 0..4 {
+        v[r] = (v[r] + dot * v_plus[r]) * decay;
+    }
+}
+
+/// `v <- e^(-kd)(I - kd N-) v`, `N- = v- ℓ-ᵀ`.
+#[inline(always)]
+fn up_by(v: &mut Vec4, v_minus: &[f64; 4], l_minus: &[f64; 4], x: f64, decay: f64) {
+    let dot = (v[0] * l_minus[0] + v[1] * l_minus[1] + v[2] * l_minus[2] + v[3] * l_minus[3]) * x;
+    for r in 0..4 {
+        v[r] = (v[r] - dot * v_minus[r]) * decay;
+    }
+}
+
+/// `N = v ℓᵀ` of a matrix of rank one.
+fn rank_one(n: &Mat4) -> ([f64; 4], [f64; 4]) {
+    let mut best = (0.0, 0, 0);
+    for (r, row) in n.iter().enumerate() {
+        for (c, value) in row.iter().enumerate() {
+            if value.abs() > best.0 {
+                best = (value.abs(), r, c);
+            }
+        }
+    }
+    let (_, r0, c0) = best;
+    let l = n[r0];
+    let v = std::array::from_fn(|r| n[r][c0] / n[r0][c0]);
+    (v, l)
 }
 
 /// `K = D (T D)⁻¹ T` for the range of `p_plus` (module doc): the two columns of `P+` whose

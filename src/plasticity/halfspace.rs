@@ -123,7 +123,8 @@ pub struct HalfSpace {
     /// `6 nz` stress spectra, then the surface displacement's, then the tractions'.
     spectra: Vec<Array2<C64>>,
     kernels: Option<TractionKernels>,
-    /// Whether `spectra` hold a strain (set by `set_strain`, consumed by `stress`).
+    /// Whether `spectra` hold a strain's residual stress (set by `set_strain`, consumed by
+    /// `stress`).
     strain_kept: bool,
 }
 
@@ -192,8 +193,9 @@ impl HalfSpace {
         self.stress(tractions, stress)
     }
 
-    /// Transforms and keeps the plastic strain `strain` (`[nz, 6, ny, nx]`) and writes the
-    /// normal surface displacement it causes (`[ny, nx]`, m, into the body).
+    /// Transforms the plastic strain `strain` (`[nz, 6, ny, nx]`), writes the normal surface
+    /// displacement it causes (`[ny, nx]`, m, into the body) and keeps the transforms of its
+    /// residual stress for [`HalfSpace::stress`].
     ///
     /// # Panics
     /// If a shape does not match the grid.
@@ -213,16 +215,16 @@ impl HalfSpace {
             }
         }
         self.stack.forward(&inputs, &mut self.spectra[..count])?;
-        self.pass(false, None)?;
+        self.pass()?;
         self.stack.inverse(&mut self.spectra[count..count + 1], vec![surface])?;
         self.strain_kept = true;
         Ok(())
     }
 
-    /// The stress (`[nz, 6, ny, nx]`, Pa) at the cell centres of the plastic strain kept by
-    /// [`HalfSpace::set_strain`] (which this consumes), plus, when `tractions` are given,
-    /// the contact's stress of the pressure (Pa, `[ny, nx]`) and the shear along x
-    /// (`shear_per_pressure` times it).
+    /// The stress (`[nz, 6, ny, nx]`, Pa) at the cell centres: the residual stress of the
+    /// plastic strain given to [`HalfSpace::set_strain`] (whose transforms this consumes),
+    /// plus, when `tractions` are given, the contact's stress of the pressure (Pa,
+    /// `[ny, nx]`) and of the shear along x (`shear_per_pressure` times it).
     ///
     /// # Panics
     /// If no strain is kept, a shape does not match the grid, or tractions are given to an
@@ -237,20 +239,28 @@ impl HalfSpace {
         assert!(self.strain_kept, "HalfSpace::stress needs HalfSpace::set_strain first");
         assert_eq!(stress.shape(), [nz, 6, ny, nx], "stress shape");
         let count = 6 * nz;
-        let shear = tractions.as_ref().map_or(0.0, |t| t.1);
-        if let Some((pressure, _)) = &tractions {
+        if let Some((pressure, shear)) = &tractions {
             assert_eq!(pressure.dim(), (ny, nx), "pressure shape");
-            match &self.kernels {
-                Some(kernels) => assert!(
-                    shear == 0.0 || kernels.shear_x.is_some(),
-                    "a shear needs the shear's coefficients"
-                ),
-                None => panic!("tractions need HalfSpace::with_contact"),
+            let Some(kernels) = &self.kernels else {
+                panic!("tractions need HalfSpace::with_contact")
+            };
+            assert!(
+                *shear == 0.0 || kernels.shear_x.is_some(),
+                "a shear needs the shear's coefficients"
+            );
+            let (stresses, rest) = self.spectra.split_at_mut(count);
+            let traction = &mut rest[1];
+            self.stack.forward(&[pressure.view()], std::slice::from_mut(traction))?;
+            let traction = &*traction;
+            // Each layer's components plus the kernels times the pressure's transform.
+            for (index, spectrum) in stresses.iter_mut().enumerate() {
+                let (l, c) = (index / 6, index % 6);
+                add_kernel(spectrum, &kernels.pressure[l][c], c, 1.0, traction, 1.0);
+                if let (Some(shear_kernels), true) = (&kernels.shear_x, *shear != 0.0) {
+                    add_kernel(spectrum, &shear_kernels[l][c], c, -1.0, traction, *shear);
+                }
             }
-            self.stack
-                .forward(&[pressure.view()], &mut self.spectra[count + 1..count + 2])?;
         }
-        self.pass(true, tractions.map(|t| t.1))?;
         self.strain_kept = false;
         let mut flat = stress
             .view_mut()
@@ -261,17 +271,11 @@ impl HalfSpace {
         Ok(())
     }
 
-    /// One pass over the waves: the surface displacement of the kept strain (the strain's
-    /// spectra are left as they are), or with `with_stress` its stresses in their place,
-    /// plus the tractions' when given (`Some(shear per pressure)`).
-    fn pass(&mut self, with_stress: bool, tractions: Option<f64>) -> Result<(), HalfSpaceError> {
+    /// One pass over the waves: the residual stresses of the strain's transforms in their
+    /// place, and the surface displacement's transform.
+    fn pass(&mut self) -> Result<(), HalfSpaceError> {
         let nz = self.grid.depth.count();
         let count = 6 * nz;
-        let kernels = match tractions {
-            Some(_) => self.kernels.as_ref(),
-            None => None,
-        };
-        let shear = tractions.unwrap_or(0.0);
         let [plan_y, plan_x] = self.grid.plan_shape();
         let [dx, dy] = self.grid.spacing_m;
         let (period_x, period_y) = (plan_x as f64 * dx, plan_y as f64 * dy);
@@ -285,68 +289,60 @@ impl HalfSpace {
             |buffers, kx_index, columns| {
                 let kx = 2.0 * std::f64::consts::PI * kx_index as f64 / period_x;
                 let xs: &[f64] = if Some(kx_index) == nyquist_x { &[kx, -kx] } else { &[kx] };
-                for ky_index in 0..plan_y {
-                    let ky = 2.0 * std::f64::consts::PI * signed_index(ky_index, plan_y) as f64
-                        / period_y;
-                    let ys: &[f64] = if Some(ky_index) == nyquist_y { &[ky, -ky] } else { &[ky] };
-                    for (l, cell) in buffers.strain.iter_mut().enumerate() {
-                        for (c, value) in cell.iter_mut().enumerate() {
-                            *value = columns[6 * l + c][ky_index];
+                // A chunk of wavevectors at a time: each spectrum's values of the chunk are
+                // read (and written) in one run, the chunk's columns of cells stay in cache.
+                for first in (0..plan_y).step_by(CHUNK) {
+                    let size = CHUNK.min(plan_y - first);
+                    for (index, spectrum) in columns[..count].iter().enumerate() {
+                        let (l, c) = (index / 6, index % 6);
+                        for (w, value) in spectrum[first..first + size].iter().enumerate() {
+                            buffers.strain[w * nz + l][c] = *value;
                         }
                     }
-                    let mut displacement = ZERO;
-                    for cell in buffers.sum.iter_mut() {
-                        *cell = [ZERO; 6];
-                    }
-                    let weight = 1.0 / (xs.len() * ys.len()) as f64;
-                    for &kx in xs {
-                        for &ky in ys {
+                    for w in 0..size {
+                        let ky_index = first + w;
+                        let ky = 2.0 * std::f64::consts::PI * signed_index(ky_index, plan_y) as f64
+                            / period_y;
+                        let ys: &[f64] = if Some(ky_index) == nyquist_y { &[ky, -ky] } else { &[ky] };
+                        let strain = &buffers.strain[w * nz..(w + 1) * nz];
+                        let out = &mut buffers.sum[w * nz..(w + 1) * nz];
+                        if xs.len() * ys.len() == 1 {
                             let mut surface = [ZERO; 3];
-                            if with_stress {
+                            column.apply([kx, ys[0]], depth, strain, out, &mut surface, &mut buffers.work);
+                            buffers.surface[w] = surface[2];
+                            continue;
+                        }
+                        out.fill([ZERO; 6]);
+                        let mut displacement = ZERO;
+                        let weight = 1.0 / (xs.len() * ys.len()) as f64;
+                        for &kx in xs {
+                            for &ky in ys {
+                                let mut surface = [ZERO; 3];
                                 column.apply(
                                     [kx, ky],
                                     depth,
-                                    &buffers.strain,
+                                    strain,
                                     &mut buffers.stress,
                                     &mut surface,
                                     &mut buffers.work,
                                 );
-                                for (sum, cell) in buffers.sum.iter_mut().zip(&buffers.stress) {
+                                for (sum, cell) in out.iter_mut().zip(&buffers.stress) {
                                     for (s, v) in sum.iter_mut().zip(cell) {
                                         *s += *v * weight;
                                     }
                                 }
-                            } else {
-                                column.surface(
-                                    [kx, ky],
-                                    depth,
-                                    &buffers.strain,
-                                    &mut surface,
-                                    &mut buffers.work,
-                                );
+                                displacement += surface[2] * weight;
                             }
-                            displacement += surface[2] * weight;
+                        }
+                        buffers.surface[w] = displacement;
+                    }
+                    for (index, spectrum) in columns[..count].iter_mut().enumerate() {
+                        let (l, c) = (index / 6, index % 6);
+                        for (w, value) in spectrum[first..first + size].iter_mut().enumerate() {
+                            *value = buffers.sum[w * nz + l][c];
                         }
                     }
-                    columns[count][ky_index] = displacement;
-                    if !with_stress {
-                        continue;
-                    }
-                    let traction = columns[count + 1][ky_index];
-                    for (l, cell) in buffers.sum.iter().enumerate() {
-                        for (c, value) in cell.iter().enumerate() {
-                            let mut v = *value;
-                            if let Some(kernels) = kernels {
-                                v += kernel_value(&kernels.pressure[l][c], c, 1.0, kx_index, ky_index)
-                                    * traction;
-                                if let Some(shear_kernels) = &kernels.shear_x {
-                                    v += kernel_value(&shear_kernels[l][c], c, -1.0, kx_index, ky_index)
-                                        * (traction * shear);
-                                }
-                            }
-                            columns[6 * l + c][ky_index] = v;
-                        }
-                    }
+                    columns[count][first..first + size].copy_from_slice(&buffers.surface[..size]);
                 }
             },
         )?;
@@ -354,36 +350,55 @@ impl HalfSpace {
     }
 }
 
-/// The working memory of one thread's columns.
+/// Wavevectors of a column handled together by [`HalfSpace::pass`].
+const CHUNK: usize = 16;
+
+/// The working memory of one thread's columns: a chunk of wavevectors' columns of cells.
 struct Buffers {
     strain: Vec<[C64; 6]>,
     stress: Vec<[C64; 6]>,
     sum: Vec<[C64; 6]>,
+    surface: Vec<C64>,
     work: ColumnWork,
 }
 
 impl Buffers {
     fn new(nz: usize) -> Self {
         Self {
-            strain: vec![[ZERO; 6]; nz],
+            strain: vec![[ZERO; 6]; CHUNK * nz],
             stress: vec![[ZERO; 6]; nz],
-            sum: vec![[ZERO; 6]; nz],
+            sum: vec![[ZERO; 6]; CHUNK * nz],
+            surface: vec![ZERO; CHUNK],
             work: ColumnWork::default(),
         }
     }
 }
 
-/// The kernel value of component `c` at `(kx, ky)`: real, or imaginary when the component's
-/// parity (times `x_sign` for a shear along x, which reverses it in x) is odd.
-#[inline]
-fn kernel_value(kernel: &Array2<f64>, c: usize, x_sign: f64, kx: usize, ky: usize) -> C64 {
+/// `spectrum += factor kernel traction`, the kernel of component `c` real, or imaginary when
+/// the component's parity (times `x_sign` for a shear along x, which reverses it in x) is
+/// odd.
+fn add_kernel(
+    spectrum: &mut Array2<C64>,
+    kernel: &Array2<f64>,
+    c: usize,
+    x_sign: f64,
+    traction: &Array2<C64>,
+    factor: f64,
+) {
     let (px, py) = PRESSURE_PARITY[c];
-    let value = kernel[[kx, ky]];
-    if px * py * x_sign > 0.0 {
-        C64::new(value, 0.0)
-    } else {
-        C64::new(0.0, value)
-    }
+    let real = px * py * x_sign > 0.0;
+    ndarray::Zip::from(spectrum)
+        .and(kernel)
+        .and(traction)
+        .for_each(|value, &k, &t| {
+            let k = k * factor;
+            if real {
+                *value += t * k;
+            } else {
+                // i k t
+                *value += C64::new(-t.im * k, t.re * k);
+            }
+        });
 }
 
 /// A unit traction on one cell.

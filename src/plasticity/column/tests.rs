@@ -227,6 +227,9 @@ fn projectors_are_complementary_and_nilpotent_parts_square_to_zero() {
         for c in 0..4 {
             assert!((sum[r][c] - id[r][c]).abs() < 1e-13);
             assert!(square[r][c].abs() < 1e-13);
+            // N+ = v+ ℓ+ᵀ: rank one.
+            let outer = column.v_plus[r] * column.l_plus[c];
+            assert!((outer - column.n_plus[r][c]).abs() < 1e-13);
         }
     }
 }

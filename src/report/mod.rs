@@ -6,6 +6,7 @@
 pub mod coated;
 pub mod commands;
 pub mod hertz;
+pub mod plastic;
 pub mod probe;
 pub mod rough;
 pub mod surface;

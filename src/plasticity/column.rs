@@ -128,7 +128,8 @@ fn scaled(a: &Mat4, factor: f64) -> Mat4 {
     a.map(|row| row.map(|v| v * factor))
 }
 
-#[inline(always)]
+/// `m v` (the tests' check of the projectors and the surface correction).
+#[cfg(test)]
 fn apply(m: &Mat4, v: &Vec4) -> Vec4 {
     let mut out = [ZERO; 4];
     for (o, row) in out.iter_mut().zip(m) {
@@ -251,7 +252,12 @@ pub struct Column {
     /// `(λ + 2μ)/μ`.
     m: f64,
     p_plus: Mat4,
+    /// The projector of the decaying waves (`1 - P+`): the sweeps use its rows per cell; the
+    /// tests check it against `P+`.
+    #[cfg_attr(not(test), allow(dead_code))]
     p_minus: Mat4,
+    /// `N+ = A+ P+`, kept as its rank-one factors below; the tests check the product.
+    #[cfg_attr(not(test), allow(dead_code))]
     n_plus: Mat4,
     /// `K = D (T D)⁻¹ T`: the surface correction `c = -K Z(0)`.
     correction: Mat4,

@@ -2,6 +2,8 @@
 //! states each tolerance with the measured error).
 
 use super::*;
+use crate::plasticity::halfspace::HalfSpace;
+use ndarray::{Array4, Axis};
 use crate::contact::material::Material;
 use crate::contact::rough::{self, Control, RoughContactProblem};
 
@@ -116,39 +118,130 @@ fn the_residual_field_is_self_equilibrated_and_free_at_the_surface() {
     let study = study_point(&spec, &hertz(2.5), 0.0, &mut |_| {}).expect("solves");
     assert!(study.converged);
     let state = study.unloaded_snapshot().expect("unloaded");
-    let stress = &state.stress_pa;
-    let (nz, _, ny, nx) = stress.dim();
     let scale = study.unloaded.as_ref().expect("unloaded").residual_von_mises_max_pa;
     assert!(scale > 0.1 * YIELD, "a residual stress: {scale:e}");
-    // Force balance of the body above each plane z = const: the plane's net normal and shear
-    // forces vanish (no load on the surface), relative to the plane's largest stress.
-    let mut worst: f64 = 0.0;
-    for l in 0..nz {
-        for c in [2, 3, 4] {
-            let (mut sum, mut largest_value) = (0.0, 0.0f64);
+    // The residual stress of the final plastic strain on a grid four times as wide (the field
+    // decays as r^-3 beyond the plastic zone, so a plane's integral needs room), with the top
+    // layer split at a hundredth of its thickness: the thin cell's centre, z = dz/200, reads
+    // the surface traction (splitting a cell changes nothing, column's tests).
+    let strain = &state.plastic_strain;
+    let (nz, _, ny, nx) = strain.dim();
+    let wide = 4 * nx;
+    let offset = (wide - nx) / 2;
+    let dz = study.grid.depth.thickness_m(0);
+    let mut faces = vec![0.0, 0.01 * dz];
+    faces.extend(study.grid.depth.faces_m()[1..].iter().copied());
+    let grid = VolumeGrid {
+        shape: [wide, wide],
+        spacing_m: study.grid.spacing_m,
+        depth: DepthCells::new(faces).expect("faces"),
+        periodicity: Periodicity::NonPeriodic,
+    };
+    let mut wide_strain = Array4::<f64>::zeros((nz + 1, 6, wide, wide));
+    for l in 0..=nz {
+        let from = l.saturating_sub(1);
+        for c in 0..6 {
             for j in 0..ny {
                 for i in 0..nx {
-                    let value = stress[[l, c, j, i]];
-                    sum += value;
-                    largest_value = largest_value.max(value.abs());
+                    wide_strain[[l, c, j + offset, i + offset]] = strain[[from, c, j, i]];
                 }
             }
-            worst = worst.max(sum.abs() / (largest_value * (nx * ny) as f64));
         }
     }
-    assert!(worst < 1e-3, "net force over a plane: {worst:e} of its largest stress x area");
-    // Traction-free: the top layer's σzz, σxz, σyz (at a/21 depth) are small beside the
-    // residual stress.
-    let top = (0..ny)
-        .flat_map(|j| (0..nx).map(move |i| (j, i)))
-        .map(|(j, i)| {
-            [2, 3, 4]
-                .iter()
-                .map(|&c| stress[[0, c, j, i]].abs())
-                .fold(0.0, f64::max)
-        })
-        .fold(0.0, f64::max);
-    assert!(top < 0.1 * scale, "traction at the top layer: {:.3} of the residual", top / scale);
+    let mu = MODULUS / (2.0 * (1.0 + POISSON));
+    let mut operator = HalfSpace::new(grid, mu, POISSON);
+    let mut surface = Array2::<f64>::zeros((wide, wide));
+    operator
+        .set_strain(wide_strain.view(), surface.view_mut())
+        .expect("strain");
+    let mut stress = Array4::<f64>::zeros((nz + 1, 6, wide, wide));
+    operator.stress(None, stress.view_mut()).expect("stress");
+    // The same field in the study's window at the second layer's centres (the isolation of
+    // the study's grid by zero padding).
+    let mut window: f64 = 0.0;
+    for c in 0..6 {
+        for j in 0..ny {
+            for i in 0..nx {
+                let d = stress[[2, c, j + offset, i + offset]] - state.stress_pa[[1, c, j, i]];
+                window = window.max(d.abs());
+            }
+        }
+    }
+    // Force balance of the body above each plane z = const: the plane's net normal and shear
+    // forces vanish (no load on the surface), relative to the plane's sum of |stress|.
+    let mut worst: f64 = 0.0;
+    for l in 0..=nz {
+        for c in [2, 3, 4] {
+            let (mut sum, mut magnitude) = (0.0, 0.0);
+            for value in stress.index_axis(Axis(0), l).index_axis(Axis(0), c).iter() {
+                sum += value;
+                magnitude += value.abs();
+            }
+            if magnitude > 0.0 {
+                worst = worst.max(sum.abs() / magnitude);
+            }
+        }
+    }
+    // Traction-free: σzz, σyz, σxz at z = dz/200 against the residual von Mises maximum.
+    let mut top: f64 = 0.0;
+    for c in [2, 3, 4] {
+        for value in stress.index_axis(Axis(0), 0).index_axis(Axis(0), c).iter() {
+            top = top.max(value.abs());
+        }
+    }
+    eprintln!(
+        "window {:.3e}, net force {worst:.3e}, surface traction {:.3e} of the residual maximum",
+        window / scale,
+        top / scale
+    );
+    // The residual stress is spectral on a grid padded to twice its size: periodic images
+    // at twice the extent (here 6 a) perturb it (measured 1.7 % of its maximum at ±1.5 a).
+    assert!(window < 0.03 * scale, "the window: {:e}", window / scale);
+    // The net force is the part of the field beyond the wide grid (r^-3: about 1/R of it).
+    assert!(worst < 0.1, "net force over a plane: {worst:e} of its sum of |stress|");
+    assert!(top < 0.05 * scale, "traction at the surface: {:.3e} of the residual", top / scale);
     // A dent, and plastic strain left where it flowed.
     assert!(study.unloaded.as_ref().expect("unloaded").residual_depth_m > 0.0);
+}
+
+/// Grid and step refinement at 2.5 Y and 4 Y (docs/plasticity.md's table):
+/// `cargo test --release --lib refinement_probe -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn refinement_probe() {
+    let cases: [(f64, usize, usize, usize, f64); 6] = [
+        (2.5, 48, 24, 8, 2.0),
+        (2.5, 64, 32, 8, 2.0),
+        (2.5, 96, 48, 8, 2.0),
+        (2.5, 64, 32, 4, 2.0),
+        (2.5, 64, 32, 16, 2.0),
+        (4.0, 80, 40, 8, 2.5),
+    ];
+    for (p0, cells, layers, steps, extent) in cases {
+        let mut spec = spec(steps, steps / 2, cells, layers);
+        spec.extent_over_a = extent;
+        spec.depth_over_a = extent;
+        spec.tolerance = 1e-6;
+        let hertz = hertz(p0);
+        let started = std::time::Instant::now();
+        let study = study_point(&spec, &hertz, 0.0, &mut |_| {}).expect("solves");
+        let (l, u) = (&study.loaded, study.unloaded.as_ref().expect("unloaded"));
+        let a = hertz.radius_m;
+        eprintln!(
+            "p0 {p0} Y, {cells}x{cells}x{layers}, {steps} steps: pmax/Y {:.4} pm/Y {:.4} c/a {:.4} delta/dH {:.4} kmax {:.4e} at z/a {:.3} zone z/a {:.3} dent/a {:.4e} resVM/Y {:.4} at z/a {:.3} r/a {:.3}; {} it, {:.1} s",
+            l.max_pressure_pa / YIELD,
+            l.mean_pressure_pa / YIELD,
+            l.contact_radius_m / a,
+            l.approach_m / hertz.approach_m,
+            l.max_plastic_strain,
+            l.max_plastic_strain_depth_m / a,
+            l.plastic_zone_depth_m / a,
+            u.residual_depth_m / a,
+            u.residual_von_mises_max_pa / YIELD,
+            u.residual_von_mises_max_depth_m / a,
+            u.residual_von_mises_max_r_m / a,
+            study.iterations,
+            started.elapsed().as_secs_f64()
+        );
+    }
 }

@@ -65,6 +65,8 @@ def main():
     for k in range(1, steps // 2 + 1):
         epic.solve(max(load * (1 - k / (steps // 2)), 1e-9 * load) / period**2)
     unload_time = time.perf_counter() - started
+    # The surface displacement of the plastic strain (the dent at zero load).
+    residual.computeResidualDisplacement(np.array(model["plastic_strain"]))
     displacement = np.array(model.displacement)[0, ..., 2]
     dent = float(displacement[n // 2, n // 2] - displacement[0, 0])
     print(json.dumps({

@@ -33,7 +33,9 @@ pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<(
     }
     // The output reserved before anything is computed: a path that takes no file fails now.
     let mut staged = Staged::new();
-    let reserved = fields.map(|path| Reserved::new(&mut staged, path)).transpose()?;
+    let reserved = fields
+        .map(|path| Reserved::new(&mut staged, path))
+        .transpose()?;
     let total = spec.steps + if spec.unload { spec.unload_steps } else { 0 };
     let bar = progress_bar(total as u64);
     let result = plastic::study(&scene, &mut |progress| {
@@ -77,8 +79,11 @@ fn fields_npz(study: &PlasticStudy) -> Result<Vec<u8>> {
         let (nz, _, ny, nx) = stress.dim();
         Array4::from_shape_fn((nz, ny, nx, 6), |(l, j, i, c)| stress[[l, c, j, i]])
     };
-    npz.add_array("stress", &components_last(&study.loaded_snapshot().stress_pa))
-        .map_err(error)?;
+    npz.add_array(
+        "stress",
+        &components_last(&study.loaded_snapshot().stress_pa),
+    )
+    .map_err(error)?;
     if let Some(state) = study.unloaded_snapshot() {
         npz.add_array("residual_stress", &components_last(&state.stress_pa))
             .map_err(error)?;

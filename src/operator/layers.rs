@@ -128,18 +128,26 @@ mod tests {
         let mut spectra = stack.spectra(5);
         stack.forward(&views, &mut spectra).expect("forward");
         // Doubling every value through the columns doubles the layers.
-        stack.for_each_column(&mut spectra, || (), |_, _, columns| {
-            assert_eq!(columns.len(), 5);
-            for column in columns.iter_mut() {
-                for value in column.iter_mut() {
-                    *value *= 2.0;
-                }
-            }
-        })
-        .expect("columns");
+        stack
+            .for_each_column(
+                &mut spectra,
+                || (),
+                |_, _, columns| {
+                    assert_eq!(columns.len(), 5);
+                    for column in columns.iter_mut() {
+                        for value in column.iter_mut() {
+                            *value *= 2.0;
+                        }
+                    }
+                },
+            )
+            .expect("columns");
         let mut outputs: Vec<Array2<f64>> = (0..5).map(|_| Array2::zeros((4, 7))).collect();
         stack
-            .inverse(&mut spectra, outputs.iter_mut().map(|o| o.view_mut()).collect())
+            .inverse(
+                &mut spectra,
+                outputs.iter_mut().map(|o| o.view_mut()).collect(),
+            )
             .expect("inverse");
         for (input, output) in layers.iter().zip(&outputs) {
             for (a, b) in input.iter().zip(output) {

@@ -608,7 +608,9 @@ impl Column {
             surface[0] -= cell_strain[XZ] * (2.0 * h);
             surface[1] -= cell_strain[YZ] * (2.0 * h);
             surface[2] -= ezz * h;
-            let Some(stress) = stress.as_deref_mut() else { continue };
+            let Some(stress) = stress.as_deref_mut() else {
+                continue;
+            };
             stress[j] = [
                 (ezz * l - s[XX]) * mu,
                 (ezz * l - s[YY]) * mu,

@@ -211,12 +211,18 @@ impl HalfSpace {
         let mut inputs: Vec<ArrayView2<f64>> = Vec::with_capacity(count);
         for l in 0..nz {
             for c in 0..6 {
-                inputs.push(strain.view().index_axis_move(Axis(0), l).index_axis_move(Axis(0), c));
+                inputs.push(
+                    strain
+                        .view()
+                        .index_axis_move(Axis(0), l)
+                        .index_axis_move(Axis(0), c),
+                );
             }
         }
         self.stack.forward(&inputs, &mut self.spectra[..count])?;
         self.pass()?;
-        self.stack.inverse(&mut self.spectra[count..count + 1], vec![surface])?;
+        self.stack
+            .inverse(&mut self.spectra[count..count + 1], vec![surface])?;
         self.strain_kept = true;
         Ok(())
     }
@@ -236,7 +242,10 @@ impl HalfSpace {
         mut stress: ArrayViewMut4<f64>,
     ) -> Result<(), HalfSpaceError> {
         let [nz, ny, nx] = self.grid.dims();
-        assert!(self.strain_kept, "HalfSpace::stress needs HalfSpace::set_strain first");
+        assert!(
+            self.strain_kept,
+            "HalfSpace::stress needs HalfSpace::set_strain first"
+        );
         assert_eq!(stress.shape(), [nz, 6, ny, nx], "stress shape");
         let count = 6 * nz;
         if let Some((pressure, shear)) = &tractions {
@@ -250,7 +259,8 @@ impl HalfSpace {
             );
             let (stresses, rest) = self.spectra.split_at_mut(count);
             let traction = &mut rest[1];
-            self.stack.forward(&[pressure.view()], std::slice::from_mut(traction))?;
+            self.stack
+                .forward(&[pressure.view()], std::slice::from_mut(traction))?;
             let traction = &*traction;
             // Each layer's components plus the kernels times the pressure's transform.
             for (index, spectrum) in stresses.iter_mut().enumerate() {
@@ -288,7 +298,11 @@ impl HalfSpace {
             || Buffers::new(nz),
             |buffers, kx_index, columns| {
                 let kx = 2.0 * std::f64::consts::PI * kx_index as f64 / period_x;
-                let xs: &[f64] = if Some(kx_index) == nyquist_x { &[kx, -kx] } else { &[kx] };
+                let xs: &[f64] = if Some(kx_index) == nyquist_x {
+                    &[kx, -kx]
+                } else {
+                    &[kx]
+                };
                 // A chunk of wavevectors at a time: each spectrum's values of the chunk are
                 // read (and written) in one run, the chunk's columns of cells stay in cache.
                 for first in (0..plan_y).step_by(CHUNK) {
@@ -303,12 +317,23 @@ impl HalfSpace {
                         let ky_index = first + w;
                         let ky = 2.0 * std::f64::consts::PI * signed_index(ky_index, plan_y) as f64
                             / period_y;
-                        let ys: &[f64] = if Some(ky_index) == nyquist_y { &[ky, -ky] } else { &[ky] };
+                        let ys: &[f64] = if Some(ky_index) == nyquist_y {
+                            &[ky, -ky]
+                        } else {
+                            &[ky]
+                        };
                         let strain = &buffers.strain[w * nz..(w + 1) * nz];
                         let out = &mut buffers.sum[w * nz..(w + 1) * nz];
                         if xs.len() * ys.len() == 1 {
                             let mut surface = [ZERO; 3];
-                            column.apply([kx, ys[0]], depth, strain, out, &mut surface, &mut buffers.work);
+                            column.apply(
+                                [kx, ys[0]],
+                                depth,
+                                strain,
+                                out,
+                                &mut surface,
+                                &mut buffers.work,
+                            );
                             buffers.surface[w] = surface[2];
                             continue;
                         }
@@ -443,7 +468,8 @@ fn traction_kernels(
             let mut parts: Vec<Array2<f64>> = Vec::with_capacity(6);
             for c in 0..6 {
                 let coefficients = layer.index_axis(Axis(0), c);
-                let grid_of = wrap_around(coefficients, grid.periodicity, PRESSURE_PARITY[c], x_sign);
+                let grid_of =
+                    wrap_around(coefficients, grid.periodicity, PRESSURE_PARITY[c], x_sign);
                 plan.forward(grid_of.view(), &mut spectrum, &mut work)?;
                 let (px, py) = PRESSURE_PARITY[c];
                 let real = px * py * x_sign > 0.0;
@@ -466,7 +492,9 @@ fn traction_kernels(
         .map(|slot| match slot {
             Some(Ok(array)) => Ok(array),
             Some(Err(e)) => Err(HalfSpaceError::Transform(e)),
-            None => Err(HalfSpaceError::Coefficients("a layer was not computed".into())),
+            None => Err(HalfSpaceError::Coefficients(
+                "a layer was not computed".into(),
+            )),
         })
         .collect()
 }

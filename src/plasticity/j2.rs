@@ -46,7 +46,9 @@ impl Hardening {
 pub fn von_mises(stress: &[f64; 6]) -> f64 {
     let mean = (stress[0] + stress[1] + stress[2]) / 3.0;
     let (a, b, c) = (stress[0] - mean, stress[1] - mean, stress[2] - mean);
-    let contracted = a * a + b * b + c * c
+    let contracted = a * a
+        + b * b
+        + c * c
         + 2.0 * (stress[3] * stress[3] + stress[4] * stress[4] + stress[5] * stress[5]);
     (1.5 * contracted).sqrt()
 }

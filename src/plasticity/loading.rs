@@ -44,8 +44,8 @@
 
 use ndarray::{Array2, Array3, Array4, ArrayView2, Zip};
 
-use super::halfspace::{HalfSpace, HalfSpaceError, VolumeGrid};
 use super::anderson::Anderson;
+use super::halfspace::{HalfSpace, HalfSpaceError, VolumeGrid};
 use super::j2::{equivalent_strain, radial_return, von_mises, Hardening};
 use crate::contact::rough::{
     solve_cached, Control, OperatorCache, RoughContactError, RoughContactProblem, Warm,
@@ -274,12 +274,13 @@ pub fn solve(
                     pressure_pa: (previous.sum() > 0.0).then(|| previous.view()),
                     local_compliance_m_per_pa: 0.0,
                 };
-                let solution = solve_cached(&contact, &warm, &mut cache, &mut |_, _| {})
-                    .map_err(|source| PlasticContactError::Contact {
+                let solution = solve_cached(&contact, &warm, &mut cache, &mut |_, _| {}).map_err(
+                    |source| PlasticContactError::Contact {
                         step,
                         load_n: load,
                         source,
-                    })?;
+                    },
+                )?;
                 let shifted = heights.iter().fold(f64::NEG_INFINITY, |m, &h| m.max(h));
                 approach = Some(solution.approach_m + top - shifted);
                 contact_cells = solution.pressure_pa.iter().filter(|&&p| p > 0.0).count();
@@ -329,7 +330,11 @@ pub fn solve(
                 0.0
             };
             // The first iteration of a loaded step compares with the previous step's pressure.
-            residual = strain_residual.max(if iterations > 1 { pressure_residual } else { 1.0 });
+            residual = strain_residual.max(if iterations > 1 {
+                pressure_residual
+            } else {
+                1.0
+            });
             if iterations == 1 && load == 0.0 {
                 residual = strain_residual;
             }
@@ -413,7 +418,9 @@ fn gather(strain: &Array4<f64>, cells: &[usize], out: &mut Vec<f64>) {
     let (_, _, ny, nx) = strain.dim();
     let layer = ny * nx;
     out.clear();
-    let Some(values) = strain.as_slice() else { return };
+    let Some(values) = strain.as_slice() else {
+        return;
+    };
     for &cell in cells {
         let (l, at) = (cell / layer, cell % layer);
         for c in 0..6 {
@@ -426,7 +433,9 @@ fn gather(strain: &Array4<f64>, cells: &[usize], out: &mut Vec<f64>) {
 fn scatter(strain: &mut Array4<f64>, cells: &[usize], values: &[f64]) {
     let (_, _, ny, nx) = strain.dim();
     let layer = ny * nx;
-    let Some(target) = strain.as_slice_mut() else { return };
+    let Some(target) = strain.as_slice_mut() else {
+        return;
+    };
     for (&cell, chunk) in cells.iter().zip(values.chunks_exact(6)) {
         let (l, at) = (cell / layer, cell % layer);
         for (c, value) in chunk.iter().enumerate() {

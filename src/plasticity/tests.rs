@@ -22,16 +22,26 @@ pub(super) struct Sphere {
     pub axis: [usize; 2],
 }
 
-pub(super) fn sphere(p0_over_y: f64, cells: usize, depth_cells: usize, extent: f64, depth: f64) -> Sphere {
+pub(super) fn sphere(
+    p0_over_y: f64,
+    cells: usize,
+    depth_cells: usize,
+    extent: f64,
+    depth: f64,
+) -> Sphere {
     let e_star = MODULUS / (1.0 - POISSON * POISSON);
     let p0 = p0_over_y * YIELD;
-    let load = p0.powi(3) * std::f64::consts::PI.powi(3) * RADIUS * RADIUS / (6.0 * e_star * e_star);
+    let load =
+        p0.powi(3) * std::f64::consts::PI.powi(3) * RADIUS * RADIUS / (6.0 * e_star * e_star);
     let hertz = PointContact::from_effective(load, e_star, RADIUS);
     let a = hertz.radius_m;
     let dx = 2.0 * extent * a / cells as f64;
     let centre = cells / 2;
     let heights = Array2::from_shape_fn((cells, cells), |(j, i)| {
-        let (x, y) = ((i as f64 - centre as f64) * dx, (j as f64 - centre as f64) * dx);
+        let (x, y) = (
+            (i as f64 - centre as f64) * dx,
+            (j as f64 - centre as f64) * dx,
+        );
         -(x * x + y * y) / (2.0 * RADIUS)
     });
     let grid = VolumeGrid {
@@ -48,12 +58,20 @@ pub(super) fn sphere(p0_over_y: f64, cells: usize, depth_cells: usize, extent: f
     }
 }
 
-pub(super) fn run(sphere: &Sphere, loads: Vec<f64>, hardening_pa: f64, tolerance: f64) -> PlasticContactSolution {
+pub(super) fn run(
+    sphere: &Sphere,
+    loads: Vec<f64>,
+    hardening_pa: f64,
+    tolerance: f64,
+) -> PlasticContactSolution {
     let last = loads.len() - 1;
     let loaded = loads
         .iter()
         .enumerate()
-        .fold((0, 0.0), |best, (i, &w)| if w > best.1 { (i, w) } else { best })
+        .fold(
+            (0, 0.0),
+            |best, (i, &w)| if w > best.1 { (i, w) } else { best },
+        )
         .0;
     let problem = PlasticContactProblem {
         heights_m: sphere.heights.view(),
@@ -87,12 +105,19 @@ fn ramp(load: f64, up: usize, down: usize) -> Vec<f64> {
 #[test]
 #[ignore]
 fn probe_sphere() {
-    let cases: Vec<(f64, usize)> = match std::env::var("PROBE").as_deref() { Ok("quick") => vec![(2.5, 3)], _ => vec![(2.5, 8), (4.0, 8)] };
+    let cases: Vec<(f64, usize)> = match std::env::var("PROBE").as_deref() {
+        Ok("quick") => vec![(2.5, 3)],
+        _ => vec![(2.5, 8), (4.0, 8)],
+    };
     for (p0, steps) in cases {
         let s = sphere(p0, 64, 32, 2.0, 2.0);
         let started = std::time::Instant::now();
         let solution = run(&s, ramp(s.hertz.load_n, steps, 4), 0.0, 1e-6);
-        eprintln!("p0 = {p0} Y, a = {:.4e}, took {:?}", s.hertz.radius_m, started.elapsed());
+        eprintln!(
+            "p0 = {p0} Y, a = {:.4e}, took {:?}",
+            s.hertz.radius_m,
+            started.elapsed()
+        );
         for step in &solution.steps {
             eprintln!(
                 "  W {:.4e} it {} res {:.2e} pmax/Y {:.4} cells {} kmax {:.4e} dent {:.4e} delta {:?}",

@@ -114,7 +114,10 @@ impl PlasticReport {
         let mpa = |v: f64| v / 1e6;
         let um = |v: f64| v * 1e6;
         let [nz, ny, nx] = study.grid.dims();
-        writeln!(out, "elastic-plastic point contact (J2, linear hardening; SAM, docs/plasticity.md)")?;
+        writeln!(
+            out,
+            "elastic-plastic point contact (J2, linear hardening; SAM, docs/plasticity.md)"
+        )?;
         writeln!(
             out,
             "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; Hertz: p0 = {:.0} MPa = {:.3} Y, a = {:.2} µm",
@@ -173,7 +176,11 @@ impl PlasticReport {
         )?;
         if let Some(u) = &self.unloaded {
             writeln!(out, "unloaded")?;
-            writeln!(out, "  dent              {:>10.4} µm", um(u.residual_depth_m))?;
+            writeln!(
+                out,
+                "  dent              {:>10.4} µm",
+                um(u.residual_depth_m)
+            )?;
             writeln!(
                 out,
                 "  residual von Mises{:>10.1} MPa at z = {:.3} µm, r = {:.3} µm ({:.3} a)",

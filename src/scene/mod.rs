@@ -31,9 +31,9 @@ use raw::RawScene;
 
 pub use spec::{
     CoatingSpec, Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit,
-    Levelling, Method, Numerical, PanelSpec, PlasticitySpec, RoughSpec, Scale, SectionKind, SeriesDatum,
-    SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection, WearSpec,
-    YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    Levelling, Method, Numerical, PanelSpec, PlasticitySpec, RoughSpec, Scale, SectionKind,
+    SeriesDatum, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection,
+    WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};

@@ -44,7 +44,9 @@ fn reciprocal_surface(k: [f64; 2], cells: &DepthCells, strain: &[[C64; 6]]) -> [
         let i1 = ((1.0 + q * za) * (-q * za).exp() - (1.0 + q * zb) * (-q * zb).exp()) / q;
         let (ss, tt, zz, st, sz, tz) = rotate_in(s, n);
         uz += -ss * (i0 - i1) - tt * (2.0 * NU * i0) - zz * (i0 + i1) - sz * i * (2.0 * i1);
-        us += -(ss * i) * (2.0 * i0 - i1) - tt * i * (2.0 * NU * i0) - zz * i * i1
+        us += -(ss * i) * (2.0 * i0 - i1)
+            - tt * i * (2.0 * NU * i0)
+            - zz * i * i1
             - sz * (2.0 * (i0 - i1));
         ut += -(st * i) * (2.0 * i0) - tz * (2.0 * i0);
     }
@@ -57,7 +59,13 @@ fn surface_displacement_equals_reciprocity_with_boussinesq_and_cerruti() {
     let cells = DepthCells::new(vec![0.0, 0.3e-6, 1.0e-6, 1.2e-6, 2.5e-6, 4.0e-6]).expect("cells");
     let strain = random_strains(cells.count(), 3);
     let mut work = ColumnWork::default();
-    for k in [[1e6, 0.0], [0.0, 2e6], [3e5, -4e5], [-2.5e6, 1.5e6], [4e4, 1e4]] {
+    for k in [
+        [1e6, 0.0],
+        [0.0, 2e6],
+        [3e5, -4e5],
+        [-2.5e6, 1.5e6],
+        [4e4, 1e4],
+    ] {
         let mut stress = vec![[ZERO; 6]; cells.count()];
         let mut surface = [ZERO; 3];
         column.apply(k, &cells, &strain, &mut stress, &mut surface, &mut work);
@@ -110,7 +118,10 @@ fn splitting_cells_changes_nothing_at_common_centres() {
         for j in 0..cells.count() {
             for c in 0..6 {
                 let (a, b) = (coarse[j][c], fine[3 * j + 1][c]);
-                assert!((a - b).norm() < 1e-11 * scale, "k {k:?} cell {j} c {c}: {a} {b}");
+                assert!(
+                    (a - b).norm() < 1e-11 * scale,
+                    "k {k:?} cell {j} c {c}: {a} {b}"
+                );
             }
         }
         for c in 0..3 {
@@ -142,7 +153,11 @@ fn stresses_are_in_equilibrium_compatible_and_free_at_the_surface() {
         let mut stress = vec![[ZERO; 6]; count];
         let mut surface = [ZERO; 3];
         column.apply(k, &cells, &strain, &mut stress, &mut surface, &mut work);
-        let scale = stress.iter().flatten().map(|v| v.norm()).fold(0.0, f64::max);
+        let scale = stress
+            .iter()
+            .flatten()
+            .map(|v| v.norm())
+            .fold(0.0, f64::max);
         // Equilibrium at interior centres (central differences).
         let mut worst: f64 = 0.0;
         for j in (10..count - 10).step_by(37) {
@@ -199,7 +214,10 @@ fn the_surface_correction_is_boussinesq_s_pressure_wave() {
         *v = -*v;
     }
     // Tractions cancelled at the surface.
-    assert!((c[2]).norm() < 1e-14 && (c[3] + 1.0).norm() < 1e-14, "{c:?}");
+    assert!(
+        (c[2]).norm() < 1e-14 && (c[3] + 1.0).norm() < 1e-14,
+        "{c:?}"
+    );
     let nc = apply(&column.n_plus, &c);
     for kz in [0.0f64, 0.3, 1.0, 2.5] {
         let decay = (-kz).exp();
@@ -208,7 +226,10 @@ fn the_surface_correction_is_boussinesq_s_pressure_wave() {
         let dw = (z[0] * l + z[3]) / m;
         let ss = dw * l - z[0] * m;
         // p = 1 in units of μ.
-        assert!((z[3] + (1.0 + kz) * decay).norm() < 1e-13, "σzz at kz = {kz}");
+        assert!(
+            (z[3] + (1.0 + kz) * decay).norm() < 1e-13,
+            "σzz at kz = {kz}"
+        );
         assert!((ss + (1.0 - kz) * decay).norm() < 1e-13, "σss at kz = {kz}");
         // σ_sz = i μ Zs: i kz e^(-kz).
         assert!((z[2] - kz * decay).norm() < 1e-13, "σsz at kz = {kz}");
@@ -250,11 +271,22 @@ fn the_mean_is_the_constrained_layer() {
     strain[XZ] = C64::new(0.5 * e, 0.0);
     let mut stress = vec![[ZERO; 6]];
     let mut surface = [ZERO; 3];
-    column.apply([0.0, 0.0], &cells, &[strain], &mut stress, &mut surface, &mut ColumnWork::default());
+    column.apply(
+        [0.0, 0.0],
+        &cells,
+        &[strain],
+        &mut stress,
+        &mut surface,
+        &mut ColumnWork::default(),
+    );
     let young = 2.0 * MU * (1.0 + NU);
     let biaxial = -young * e / (1.0 - NU);
     for c in [XX, YY] {
-        assert!((stress[0][c].re / biaxial - 1.0).abs() < 1e-13, "{c}: {}", stress[0][c]);
+        assert!(
+            (stress[0][c].re / biaxial - 1.0).abs() < 1e-13,
+            "{c}: {}",
+            stress[0][c]
+        );
     }
     for c in [ZZ, YZ, XZ, XY] {
         assert!(stress[0][c].norm() < 1e-13 * young * e);

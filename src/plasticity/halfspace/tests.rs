@@ -24,7 +24,11 @@ fn ball(dims: [usize; 3], centre: [f64; 3], radius: f64, e: f64) -> (Array4<f64>
     for l in 0..nz {
         for j in 0..ny {
             for i in 0..nx {
-                let d = [i as f64 + 0.5 - centre[0], j as f64 + 0.5 - centre[1], l as f64 + 0.5 - centre[2]];
+                let d = [
+                    i as f64 + 0.5 - centre[0],
+                    j as f64 + 0.5 - centre[1],
+                    l as f64 + 0.5 - centre[2],
+                ];
                 if d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= radius * radius {
                     for c in [XX, YY, ZZ] {
                         strain[[l, c, j, i]] = e;
@@ -59,13 +63,20 @@ fn a_spherical_inclusion_lifts_the_surface_as_mindlin_and_cheng_s() {
     let mut worst: f64 = 0.0;
     let peak = (1.0 + NU) * e * volume / (std::f64::consts::PI * c * c);
     for (j, i) in [(24, 24), (24, 30), (20, 33), (24, 40), (10, 12)] {
-        let (x, y) = ((i as f64 + 0.5 - centre[0]) * h, (j as f64 + 0.5 - centre[1]) * h);
+        let (x, y) = (
+            (i as f64 + 0.5 - centre[0]) * h,
+            (j as f64 + 0.5 - centre[1]) * h,
+        );
         let r2 = x * x + y * y;
-        let expected = -(1.0 + NU) * e * volume * c / (std::f64::consts::PI * (r2 + c * c).powf(1.5));
+        let expected =
+            -(1.0 + NU) * e * volume * c / (std::f64::consts::PI * (r2 + c * c).powf(1.5));
         let got = surface[[j, i]];
         worst = worst.max((got - expected).abs() / peak);
     }
-    assert!(worst < 0.01, "surface displacement off by {worst:.2e} of its peak");
+    assert!(
+        worst < 0.01,
+        "surface displacement off by {worst:.2e} of its peak"
+    );
     // Eshelby's uniform pressure inside, deep below the surface: the half-space's image
     // stresses the inclusion by about (a/c)³ of it (7 % in σzz at c = 2a), so the inclusion
     // is put at c = 3.5a, where they are 1.1 %. The staircase ball leaves shears inside that
@@ -82,11 +93,18 @@ fn a_spherical_inclusion_lifts_the_surface_as_mindlin_and_cheng_s() {
     let eshelby = -4.0 * MU * (1.0 + NU) * e / (3.0 * (1.0 - NU));
     for comp in [XX, YY, ZZ] {
         let value = stress[[24, comp, 32, 32]];
-        assert!((value / eshelby - 1.0).abs() < 0.02, "component {comp}: {value:e} vs {eshelby:e}");
+        assert!(
+            (value / eshelby - 1.0).abs() < 0.02,
+            "component {comp}: {value:e} vs {eshelby:e}"
+        );
     }
     for comp in [XY, XZ, YZ] {
         let value = stress[[24, comp, 32, 32]];
-        assert!(value.abs() < 0.01 * eshelby.abs(), "{comp}: {:e}", value / eshelby);
+        assert!(
+            value.abs() < 0.01 * eshelby.abs(),
+            "{comp}: {:e}",
+            value / eshelby
+        );
     }
 }
 
@@ -100,7 +118,10 @@ fn a_uniform_layer_is_the_constrained_film() {
     let mut strain = Array4::zeros((nz, 6, n, n));
     for l in 1..3 {
         for c in [XX, YY] {
-            strain.index_axis_mut(Axis(0), l).index_axis_mut(Axis(0), c).fill(e);
+            strain
+                .index_axis_mut(Axis(0), l)
+                .index_axis_mut(Axis(0), c)
+                .fill(e);
         }
     }
     let mut op = HalfSpace::new(vol, MU, NU);
@@ -115,7 +136,10 @@ fn a_uniform_layer_is_the_constrained_film() {
         } else {
             0.0
         };
-        assert!((value - expected).abs() < 1e-9 * young * e, "({l}, {c}): {value:e}");
+        assert!(
+            (value - expected).abs() < 1e-9 * young * e,
+            "({l}, {c}): {value:e}"
+        );
     }
     let lift = -2.0 * NU * e * 2.0 * h / (1.0 - NU);
     for &u in surface.iter() {
@@ -230,7 +254,6 @@ fn a_quarter_turn_turns_the_stress() {
     }
 }
 
-
 /// The images of an isolated grid (its layers padded to twice the grid) against a grid twice
 /// as wide (padded to four times): a deviatoric zone (a Gaussian of 2 cells) in the middle of
 /// 32 cells changes by the images by 2.0e-3 of the largest stress and 3.6e-3 of the largest
@@ -244,7 +267,11 @@ fn the_images_of_an_isolated_grid_are_small() {
         for l in 0..nz {
             for j in 0..n {
                 for i in 0..n {
-                    let (x, y, z) = (i as f64 + 0.5 - centre, j as f64 + 0.5 - centre, l as f64 + 0.5 - 5.0);
+                    let (x, y, z) = (
+                        i as f64 + 0.5 - centre,
+                        j as f64 + 0.5 - centre,
+                        l as f64 + 0.5 - 5.0,
+                    );
                     let g = 1e-3 * (-(x * x + y * y + z * z) / 8.0).exp();
                     strain[[l, XX, j, i]] = 0.5 * g;
                     strain[[l, YY, j, i]] = 0.5 * g;
@@ -285,6 +312,12 @@ fn the_images_of_an_isolated_grid_are_small() {
         }
     }
     eprintln!("images: stress {stress_error:.2e}, surface {surface_error:.2e} of their largest");
-    assert!(stress_error < 3e-3, "stress changed by {stress_error:e} of its largest");
-    assert!(surface_error < 6e-3, "surface changed by {surface_error:e} of its largest");
+    assert!(
+        stress_error < 3e-3,
+        "stress changed by {stress_error:e} of its largest"
+    );
+    assert!(
+        surface_error < 6e-3,
+        "surface changed by {surface_error:e} of its largest"
+    );
 }

@@ -20,14 +20,13 @@ mod wear;
 use std::path::Path;
 
 use super::raw::{
-    self, CountOrList, NumberOrText, RawBody, RawContact, RawFigure, RawGenerate, RawScene,
-    RawPlasticity, RawSurface, RawSweep, RawVolume, RawWear, TextOrList,
+    self, CountOrList, NumberOrText, RawBody, RawContact, RawFigure, RawGenerate, RawPlasticity,
+    RawScene, RawSurface, RawSweep, RawVolume, RawWear, TextOrList,
 };
 use super::spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
-    PlasticitySpec,
-    RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec, WearSpec, YieldStrength,
-    ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    PlasticitySpec, RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec, WearSpec,
+    YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};

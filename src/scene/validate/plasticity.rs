@@ -31,7 +31,11 @@ impl Validator<'_> {
             ("wear", raw.wear.is_some(), "wear"),
             ("sweep", raw.sweep.is_some(), "a sweep"),
             ("volume", raw.volume.is_some(), "a volume recording"),
-            ("tractions", raw.tractions.is_some(), "tractions from a file"),
+            (
+                "tractions",
+                raw.tractions.is_some(),
+                "tractions from a file",
+            ),
         ] {
             if given {
                 return Err(self.error(
@@ -193,8 +197,20 @@ impl Validator<'_> {
             }
             Ok(value)
         };
-        let extent_over_a = ratio("plasticity.extent_over_a", table.extent_over_a, 2.0, 1.2, 20.0)?;
-        let depth_over_a = ratio("plasticity.depth_over_a", table.depth_over_a, 2.0, 0.5, 20.0)?;
+        let extent_over_a = ratio(
+            "plasticity.extent_over_a",
+            table.extent_over_a,
+            2.0,
+            1.2,
+            20.0,
+        )?;
+        let depth_over_a = ratio(
+            "plasticity.depth_over_a",
+            table.depth_over_a,
+            2.0,
+            0.5,
+            20.0,
+        )?;
         let tolerance = ratio("plasticity.tolerance", table.tolerance, 1e-6, 1e-12, 1e-2)?;
         let cells_per_radius = grid_cells as f64 / (2.0 * extent_over_a);
         if cells_per_radius < MIN_CELLS_PER_RADIUS {

@@ -2,10 +2,10 @@
 //! states each tolerance with the measured error).
 
 use super::*;
-use crate::plasticity::halfspace::HalfSpace;
-use ndarray::{Array4, Axis};
 use crate::contact::material::Material;
 use crate::contact::rough::{self, Control, RoughContactProblem};
+use crate::plasticity::halfspace::HalfSpace;
+use ndarray::{Array4, Axis};
 
 const MODULUS: f64 = 210e9;
 const POISSON: f64 = 0.3;
@@ -44,7 +44,10 @@ fn hertz(p0_over_y: f64) -> PointContact {
 /// (Hamilton 1983) sampled every 1e-4 a.
 fn closed_form_axis_maximum(nu: f64) -> f64 {
     (1..20_000)
-        .map(|k| crate::solution::sphere_hertz::stress_over_p0(0.0, 0.0, k as f64 * 1e-4, 0.0, nu).von_mises())
+        .map(|k| {
+            crate::solution::sphere_hertz::stress_over_p0(0.0, 0.0, k as f64 * 1e-4, 0.0, nu)
+                .von_mises()
+        })
         .fold(0.0, f64::max)
 }
 
@@ -79,17 +82,25 @@ fn below_first_yield_the_contact_is_elastic_and_unloading_leaves_nothing() {
     .expect("elastic");
     let elastic_max = elastic.pressure_pa.iter().fold(0.0f64, |m, &p| m.max(p));
     let relative = (study.loaded.max_pressure_pa / elastic_max - 1.0).abs();
-    assert!(relative < 1e-9, "peak pressure against the contact solver: {relative:e}");
+    assert!(
+        relative < 1e-9,
+        "peak pressure against the contact solver: {relative:e}"
+    );
     assert!((study.loaded.approach_m / elastic.approach_m - 1.0).abs() < 1e-9);
     // And Hertz's, to the grid's discretisation (16 cells across the diameter's half).
     let hertz_error = (study.loaded.max_pressure_pa / hertz.p0_pa - 1.0).abs();
     assert!(hertz_error < 0.02, "against Hertz: {hertz_error:e}");
     let approach_error = (study.loaded.approach_m / hertz.approach_m - 1.0).abs();
-    assert!(approach_error < 0.02, "approach against Hertz: {approach_error:e}");
+    assert!(
+        approach_error < 0.02,
+        "approach against Hertz: {approach_error:e}"
+    );
     // Unloaded: no dent, no residual stress.
     let unloaded = study.unloaded.as_ref().expect("unloaded");
     assert_eq!(unloaded.residual_depth_m, 0.0);
     assert_eq!(unloaded.residual_von_mises_max_pa, 0.0);
+    assert_eq!(unloaded.residual_von_mises_max_depth_m, 0.0);
+    assert_eq!(unloaded.residual_von_mises_max_r_m, 0.0);
 }
 
 #[test]
@@ -97,7 +108,10 @@ fn first_yield_is_at_the_closed_form_load() {
     // Johnson (1985) §6.2: von Mises first yield at p0 = Y / 0.620 for ν = 0.3 (checked here
     // against the closed form to its three digits).
     let ratio = closed_form_axis_maximum(POISSON);
-    assert!((ratio / 0.620 - 1.0).abs() < 0.5e-2 / 3.0, "closed form: {ratio}");
+    assert!(
+        (ratio / 0.620 - 1.0).abs() < 0.5e-2 / 3.0,
+        "closed form: {ratio}"
+    );
     // The grid: cells of a/20 across, layers of a/20 from the surface (the maximum's depth,
     // 0.48 a, is a cell's centre within a/40).
     let mut below = spec(1, 0, 48, 18);
@@ -105,10 +119,14 @@ fn first_yield_is_at_the_closed_form_load() {
     below.depth_over_a = 0.9;
     let first_yield = 1.0 / ratio;
     for (factor, plastic) in [(0.995, false), (1.005, true)] {
-        let study = study_point(&below, &hertz(factor * first_yield), 0.0, &mut |_| {})
-            .expect("solves");
+        let study =
+            study_point(&below, &hertz(factor * first_yield), 0.0, &mut |_| {}).expect("solves");
         let strain = largest(&study.loaded_snapshot().equivalent_plastic_strain).0;
-        assert_eq!(strain > 0.0, plastic, "at {factor} of the first yield: {strain:e}");
+        assert_eq!(
+            strain > 0.0,
+            plastic,
+            "at {factor} of the first yield: {strain:e}"
+        );
     }
 }
 
@@ -118,7 +136,11 @@ fn the_residual_field_is_self_equilibrated_and_free_at_the_surface() {
     let study = study_point(&spec, &hertz(2.5), 0.0, &mut |_| {}).expect("solves");
     assert!(study.converged);
     let state = study.unloaded_snapshot().expect("unloaded");
-    let scale = study.unloaded.as_ref().expect("unloaded").residual_von_mises_max_pa;
+    let scale = study
+        .unloaded
+        .as_ref()
+        .expect("unloaded")
+        .residual_von_mises_max_pa;
     assert!(scale > 0.1 * YIELD, "a residual stress: {scale:e}");
     // The residual stress of the final plastic strain on a grid four times as wide (the field
     // decays as r^-3 beyond the plastic zone, so a plane's integral needs room), with the top
@@ -198,8 +220,15 @@ fn the_residual_field_is_self_equilibrated_and_free_at_the_surface() {
     // at twice the extent (here 6 a) perturb it (measured 1.7 % of its maximum at ±1.5 a).
     assert!(window < 0.03 * scale, "the window: {:e}", window / scale);
     // The net force is the part of the field beyond the wide grid (r^-3: about 1/R of it).
-    assert!(worst < 0.1, "net force over a plane: {worst:e} of its sum of |stress|");
-    assert!(top < 0.05 * scale, "traction at the surface: {:.3e} of the residual", top / scale);
+    assert!(
+        worst < 0.1,
+        "net force over a plane: {worst:e} of its sum of |stress|"
+    );
+    assert!(
+        top < 0.05 * scale,
+        "traction at the surface: {:.3e} of the residual",
+        top / scale
+    );
     // A dent, and plastic strain left where it flowed.
     assert!(study.unloaded.as_ref().expect("unloaded").residual_depth_m > 0.0);
 }

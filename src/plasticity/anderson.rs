@@ -119,12 +119,14 @@ fn solve(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
         }
         a.swap(k, pivot);
         b.swap(k, pivot);
-        for i in k + 1..n {
-            let factor = a[i][k] / a[k][k];
-            for j in k..n {
-                a[i][j] -= factor * a[k][j];
+        let (upper, lower) = a.split_at_mut(k + 1);
+        let pivot_row = &upper[k];
+        for (offset, row) in lower.iter_mut().enumerate() {
+            let factor = row[k] / pivot_row[k];
+            for (value, p) in row.iter_mut().zip(pivot_row).skip(k) {
+                *value -= factor * p;
             }
-            b[i] -= factor * b[k];
+            b[k + 1 + offset] -= factor * b[k];
         }
     }
     let mut x = vec![0.0; n];

@@ -426,6 +426,9 @@ fn add_kernel(
         });
 }
 
+/// One layer's six kernels, or why its transform failed.
+type LayerKernels = Result<[Array2<f64>; 6], TransformError>;
+
 /// A unit traction on one cell.
 #[derive(Clone, Copy, PartialEq)]
 enum Unit {
@@ -459,19 +462,18 @@ fn traction_kernels(
         Unit::Pressure => 1.0,
         Unit::ShearX => -1.0,
     };
-    let kept: Mutex<Vec<Option<Result<[Array2<f64>; 6], TransformError>>>> =
+    let kept: Mutex<Vec<Option<LayerKernels>>> =
         Mutex::new((0..depths.len()).map(|_| None).collect());
     crate::field::for_each_dcfft_layer(&fft, &depths, |index, _, layer| {
         let mut work = plan.work();
         let mut spectrum = plan.new_spectrum();
         let result = (|| {
             let mut parts: Vec<Array2<f64>> = Vec::with_capacity(6);
-            for c in 0..6 {
+            for (c, &parity) in PRESSURE_PARITY.iter().enumerate() {
                 let coefficients = layer.index_axis(Axis(0), c);
-                let grid_of =
-                    wrap_around(coefficients, grid.periodicity, PRESSURE_PARITY[c], x_sign);
+                let grid_of = wrap_around(coefficients, grid.periodicity, parity, x_sign);
                 plan.forward(grid_of.view(), &mut spectrum, &mut work)?;
-                let (px, py) = PRESSURE_PARITY[c];
+                let (px, py) = parity;
                 let real = px * py * x_sign > 0.0;
                 parts.push(spectrum.mapv(|v| if real { v.re } else { v.im }));
             }

@@ -92,7 +92,7 @@ impl Validator<'_> {
             (Some(text), None) => {
                 let value = units::parse(text, Dimension::Pressure)
                     .map_err(|m| self.error("plasticity.yield_strength", m, None))?;
-                if !(value > 0.0) {
+                if value.is_nan() || value <= 0.0 {
                     return Err(self.error(
                         "plasticity.yield_strength",
                         format!("the yield strength must be positive, got `{}`", text.trim()),
@@ -121,7 +121,7 @@ impl Validator<'_> {
             Some(text) => {
                 let value = units::parse(text, Dimension::Pressure)
                     .map_err(|m| self.error("plasticity.hardening_modulus", m, None))?;
-                if !(value >= 0.0 && value <= MODULUS_BOUNDS.hi) {
+                if !(0.0..=MODULUS_BOUNDS.hi).contains(&value) {
                     return Err(self.error(
                         "plasticity.hardening_modulus",
                         format!(

@@ -54,6 +54,7 @@ pub mod field;
 pub mod figure;
 pub mod io;
 pub mod operator;
+pub mod plasticity;
 #[cfg(feature = "rerun")]
 pub mod record;
 pub mod regression;

@@ -10,6 +10,7 @@ mod inputs;
 mod line_contact;
 mod mutations;
 mod patch;
+mod plastic;
 mod point_contact;
 #[cfg(feature = "rerun")]
 mod record;

@@ -121,6 +121,19 @@ pub enum Command {
         #[arg(long, value_name = "DIR")]
         heights_out: Option<PathBuf>,
     },
+    /// The elastic-plastic contact of a scene with [plasticity] (body 1 J2-plastic): loaded
+    /// step by step, then unloaded; the pressure, the plastic zone, the stresses beyond yield
+    /// and the residual stress and dent (docs/plasticity.md).
+    Plastic {
+        scene: PathBuf,
+        /// Print one JSON object (SI units) instead of the report.
+        #[arg(long)]
+        json: bool,
+        /// Also write the fields (plastic strain, residual stress, pressure, x, y, z; SI) as a
+        /// NumPy .npz archive.
+        #[arg(long, value_name = "FILE.npz")]
+        fields: Option<PathBuf>,
+    },
 }
 
 /// Options of `render`.

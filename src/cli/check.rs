@@ -103,6 +103,23 @@ fn check_summary(scene: &Scene) -> String {
 /// What the heating of a scene with `[thermal]` will take (`; heating: 129 x 97 cells, about
 /// 8 s of CPU ...`), or nothing.
 fn heating_summary(scene: &Scene) -> String {
+    if let (Some(spec), Some(stressfield::scene::Hertz::Point(hertz))) = (
+        &scene.plasticity,
+        scene.contact.dimensional.map(|d| d.hertz),
+    ) {
+        let bytes =
+            study::plastic::memory_bytes(spec, hertz.radius_m, scene.contact.friction != 0.0);
+        let seconds = study::plastic::cpu_seconds(spec);
+        return format!(
+            "; plastic: {} x {} x {} cells, {} steps, about {} of CPU and {}",
+            spec.grid_cells,
+            spec.grid_cells,
+            spec.depth_cells,
+            spec.steps + if spec.unload { spec.unload_steps } else { 0 },
+            study::heating_plan::duration(seconds),
+            stressfield::io::text::bytes(bytes as u64)
+        );
+    }
     if let Some(spec) = &scene.wear {
         // A wear scene heats each step's contact: its flash temperature only (and the coupled
         // contact, with coupled = true), not the heating study's stresses.

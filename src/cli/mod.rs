@@ -7,6 +7,7 @@ mod check;
 mod compare;
 pub mod console;
 mod npy;
+mod plastic;
 mod probe;
 mod record;
 mod render;
@@ -146,6 +147,11 @@ pub fn run(command: Command) -> Result<()> {
             json,
             heights_out,
         } => wear::wear(&scene, json, heights_out.as_deref()),
+        Command::Plastic {
+            scene,
+            json,
+            fields,
+        } => plastic::plastic(&scene, json, fields.as_deref()),
     }
 }
 

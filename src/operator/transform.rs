@@ -39,6 +39,13 @@ const TILE: usize = 16;
 #[error("2-D FFT failed: {0}")]
 pub struct TransformError(String);
 
+impl TransformError {
+    /// An error with this message (a misuse of the transforms' buffers).
+    pub fn new(message: &str) -> Self {
+        Self(message.to_string())
+    }
+}
+
 impl From<realfft::FftError> for TransformError {
     fn from(error: realfft::FftError) -> Self {
         Self(error.to_string())

@@ -6,6 +6,7 @@
 pub mod coated;
 pub mod commands;
 pub mod hertz;
+pub mod plastic;
 pub mod probe;
 pub mod rough;
 pub mod surface;
@@ -241,6 +242,11 @@ fn write_report(out: &mut String, scene: &Scene, maxima: &SceneMaxima) -> std::f
                 } else {
                     mm(body.radius_m)
                 };
+                if body.material.modulus_pa.is_infinite() {
+                    // A rigid indenter ([plasticity] scenes): nothing of it enters E*.
+                    writeln!(out, "{name}: radius {radius}, rigid")?;
+                    continue;
+                }
                 writeln!(
                     out,
                     "{name}: radius {radius}, E = {} GPa, ν = {}",

@@ -31,9 +31,9 @@ use raw::RawScene;
 
 pub use spec::{
     CoatingSpec, Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit,
-    Levelling, Method, Numerical, PanelSpec, RoughSpec, Scale, SectionKind, SeriesDatum,
-    SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection, WearSpec,
-    YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    Levelling, Method, Numerical, PanelSpec, PlasticitySpec, RoughSpec, Scale, SectionKind,
+    SeriesDatum, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection,
+    WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
@@ -117,6 +117,8 @@ pub struct Scene {
     pub thermal: Option<ThermalSpec>,
     /// A rough scene's evolution with sliding distance (`[wear]` or `[[series]]`).
     pub wear: Option<WearSpec>,
+    /// Body 1 elastic-plastic (`[plasticity]`, `stressfield plastic`).
+    pub plasticity: Option<PlasticitySpec>,
 }
 
 impl Scene {
@@ -157,7 +159,11 @@ impl Scene {
             let key = (path != "." && !path.is_empty()).then_some(path);
             toml_error(text, file, key, e.inner())
         })?;
-        validate::Validator { file }.scene(raw, name)
+        validate::Validator {
+            file,
+            rigid_counter: raw.plasticity.is_some(),
+        }
+        .scene(raw, name)
     }
 }
 

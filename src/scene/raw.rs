@@ -27,6 +27,33 @@ pub struct RawScene {
     /// A rough scene's measured topographies at increasing sliding distances.
     #[serde(default)]
     pub series: Vec<RawSeriesEntry>,
+    /// Body 1 elastic-plastic (issue 51): `stressfield plastic`.
+    pub plasticity: Option<RawPlasticity>,
+}
+
+/// `[plasticity]`: J2 plasticity of body 1 with linear hardening, the load steps and the
+/// volume grid of the plastic strain.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawPlasticity {
+    pub yield_strength: Option<String>,
+    /// The plastic modulus h of σY(εp) = Y + h εp.
+    pub hardening_modulus: Option<String>,
+    pub unload: Option<bool>,
+    /// Load increments up to the load.
+    pub steps: Option<i64>,
+    /// Increments down to zero.
+    pub unload_steps: Option<i64>,
+    /// Cells along x and y of the volume grid.
+    pub grid_cells: Option<i64>,
+    /// Cell layers in depth.
+    pub depth_cells: Option<i64>,
+    /// The grid's half-width over the Hertz contact radius.
+    pub extent_over_a: Option<f64>,
+    /// The grid's depth over the Hertz contact radius.
+    pub depth_over_a: Option<f64>,
+    /// Relative tolerance of the fixed point in each step.
+    pub tolerance: Option<f64>,
 }
 
 /// `[wear]`: Archard's law stepped over the sliding distance.

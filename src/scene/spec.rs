@@ -538,3 +538,28 @@ pub struct PanelSpec {
     pub at: f64,
     pub subtitle: Option<String>,
 }
+
+/// `[plasticity]`: body 1 elastic-plastic (J2, linear isotropic hardening), loaded to the
+/// scene's load in `steps` increments and, with `unload`, unloaded in `unload_steps`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlasticitySpec {
+    pub yield_strength_pa: f64,
+    /// The plastic modulus `h` of `σY(εp) = Y + h εp` (0: perfectly plastic).
+    pub hardening_modulus_pa: f64,
+    pub unload: bool,
+    pub steps: usize,
+    pub unload_steps: usize,
+    /// Cells along x and along y of the volume grid (and of the contact's grid).
+    pub grid_cells: usize,
+    /// Uniform cell layers in depth.
+    pub depth_cells: usize,
+    /// The grid's half-width over the Hertz contact radius `a`.
+    pub extent_over_a: f64,
+    /// The grid's depth over `a`.
+    pub depth_over_a: f64,
+    pub tolerance: f64,
+    /// Body 1's elastic constants (the elastic-plastic body).
+    pub body1: Material,
+    /// Whether body 2 is rigid (`material = "rigid"`).
+    pub counter_rigid: bool,
+}

@@ -56,6 +56,29 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             "lower figure.resolution (600 to 1200 is plenty for a figure)",
         ));
     }
+    // An elastic-plastic scene: the volume operator, the iteration's fields, two kept states.
+    if let (Some(spec), Some(crate::scene::Hertz::Point(hertz))) = (
+        &scene.plasticity,
+        scene.contact.dimensional.map(|d| d.hertz),
+    ) {
+        let bytes =
+            super::plastic::memory_bytes(spec, hertz.radius_m, scene.contact.friction != 0.0);
+        let limit = memory_limit_bytes().min(super::plastic::MEMORY_LIMIT_BYTES);
+        if bytes > limit {
+            return Err(error(
+                "plasticity.grid_cells",
+                format!(
+                    "a volume of {} x {} x {} cells needs about {} MiB (the operator's transforms, the strains and stresses of the iteration and two kept states), more than the {} MiB allowed",
+                    spec.grid_cells,
+                    spec.grid_cells,
+                    spec.depth_cells,
+                    bytes >> 20,
+                    limit >> 20
+                ),
+                "lower plasticity.grid_cells or plasticity.depth_cells",
+            ));
+        }
+    }
     // A wear scene keeps every step's pressure, gap, worn heights and wear depth, besides the
     // contact's solver and search ([`super::heating_plan::wear_cost`]).
     if let (Some(spec), Some(surface)) = (&scene.wear, &scene.surface) {

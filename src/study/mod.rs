@@ -27,6 +27,7 @@ pub mod heating_plan;
 pub mod map_roll;
 pub mod memory;
 pub mod panels;
+pub mod plastic;
 pub mod rough;
 pub mod rough_sheet;
 pub mod surface;

@@ -81,6 +81,14 @@ impl Validator<'_> {
         missing: &str,
     ) -> Result<Material, SceneError> {
         let preset = match &raw.material {
+            Some(name) if name.trim() == "rigid" && self.rigid_counter && key == "contact.body2" => {
+                // A rigid indenter on an elastic-plastic body 1: it adds nothing to
+                // 1/E* = (1 - ν1²)/E1 + (1 - ν2²)/E2.
+                return Ok(Material {
+                    modulus_pa: f64::INFINITY,
+                    poisson: 0.0,
+                });
+            }
             Some(name) if name.trim() == "rigid" => {
                 return Err(self.error(
                     &format!("{key}.material"),

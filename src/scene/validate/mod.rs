@@ -7,6 +7,7 @@ mod contact;
 mod figure;
 mod gears;
 mod numerical;
+mod plasticity;
 mod rough;
 mod rough_scene;
 mod surface;
@@ -19,13 +20,13 @@ mod wear;
 use std::path::Path;
 
 use super::raw::{
-    self, CountOrList, NumberOrText, RawBody, RawContact, RawFigure, RawGenerate, RawScene,
-    RawSurface, RawSweep, RawVolume, RawWear, TextOrList,
+    self, CountOrList, NumberOrText, RawBody, RawContact, RawFigure, RawGenerate, RawPlasticity,
+    RawScene, RawSurface, RawSweep, RawVolume, RawWear, TextOrList,
 };
 use super::spec::{
     Contact, ContactKind, Dimensional, FigureSpec, Hertz, LengthUnit, Method, Numerical, PanelSpec,
-    RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec, WearSpec, YieldStrength,
-    ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    PlasticitySpec, RoughSpec, Scale, SectionKind, SeriesEntry, StressUnit, SurfaceSpec, WearSpec,
+    YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 use super::sweep::{Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
@@ -137,6 +138,9 @@ pub(super) fn unit_after(unit: LengthUnit) -> &'static str {
 
 pub(super) struct Validator<'a> {
     pub(super) file: &'a str,
+    /// Whether body 2 may be rigid in a contact with Hertz theory (an indenter on the
+    /// elastic-plastic body of a `[plasticity]` scene).
+    pub(super) rigid_counter: bool,
 }
 
 impl Validator<'_> {
@@ -164,6 +168,13 @@ impl Validator<'_> {
         self.heated_contact_keys(&raw)?;
         let contact = self.contact(&raw.contact)?;
         if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
+            if raw.plasticity.is_some() {
+                return Err(self.error(
+                    "plasticity",
+                    "volume plasticity is computed under point contacts so far; a rough contact keeps its hardness cap",
+                    Some("remove [plasticity] (contact.hardness caps the rough contact's pressure), or press a ball: contact.kind = \"point\""),
+                ));
+            }
             return self.rough_scene(raw, name, contact);
         }
         for (key, given) in [
@@ -346,7 +357,7 @@ impl Validator<'_> {
         }
         let mut scene = Scene {
             name: name.into(),
-            title: raw.title,
+            title: raw.title.clone(),
             contact,
             figure,
             panels,
@@ -358,12 +369,16 @@ impl Validator<'_> {
             thermal,
             surface: None,
             wear: None,
+            plasticity: None,
         };
         if let Some(sweep) = &raw.sweep {
             scene.sweep = Some(self.sweep(sweep, &scene)?);
         }
         if let Some(volume) = &raw.volume {
             scene.volume = Some(self.volume(volume, &scene.contact, &scene.figure)?);
+        }
+        if let Some(table) = &raw.plasticity {
+            scene.plasticity = Some(self.plasticity(table, &raw, &scene)?);
         }
         Ok(scene)
     }

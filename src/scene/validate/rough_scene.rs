@@ -127,6 +127,7 @@ impl Validator<'_> {
             thermal,
             surface: Some(surface),
             wear: None,
+            plasticity: None,
         };
         scene.wear = self.wear(&raw, &scene)?;
         if let Some(sweep) = &raw.sweep {

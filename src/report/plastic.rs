@@ -1,0 +1,198 @@
+//! The report of a `[plasticity]` scene (`stressfield plastic`): readable text, or one JSON
+//! object with SI values.
+//!
+//! JSON keys (the output contract of issue 51, all SI): `load_n`, `yield_strength_pa`,
+//! `hardening_modulus_pa`, `converged`, `iterations` (over all steps), `loaded`:
+//! {`max_pressure_pa`, `mean_pressure_pa`, `contact_area_m2`, `contact_radius_m` (√(A/π)),
+//! `approach_m`, `max_plastic_strain`, `max_plastic_strain_depth_m`, `plastic_zone_depth_m`
+//! (the deepest cell with εp > 1e-5), `plastic_volume_m3`, `von_mises_max_pa`,
+//! `von_mises_max_depth_m`, `elastic_max_pressure_pa`} and, when unloaded, `unloaded`:
+//! {`residual_depth_m`, `residual_von_mises_max_pa`, `residual_von_mises_max_depth_m`,
+//! `residual_von_mises_max_r_m`}. Definitions in docs/plasticity.md.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use crate::study::plastic::{Loaded, PlasticStudy, Unloaded};
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LoadedReport {
+    pub max_pressure_pa: f64,
+    pub mean_pressure_pa: f64,
+    pub contact_area_m2: f64,
+    pub contact_radius_m: f64,
+    pub approach_m: f64,
+    pub max_plastic_strain: f64,
+    pub max_plastic_strain_depth_m: f64,
+    pub plastic_zone_depth_m: f64,
+    pub plastic_volume_m3: f64,
+    pub von_mises_max_pa: f64,
+    pub von_mises_max_depth_m: f64,
+    pub elastic_max_pressure_pa: f64,
+}
+
+impl LoadedReport {
+    fn of(loaded: &Loaded) -> Self {
+        Self {
+            max_pressure_pa: loaded.max_pressure_pa,
+            mean_pressure_pa: loaded.mean_pressure_pa,
+            contact_area_m2: loaded.contact_area_m2,
+            contact_radius_m: loaded.contact_radius_m,
+            approach_m: loaded.approach_m,
+            max_plastic_strain: loaded.max_plastic_strain,
+            max_plastic_strain_depth_m: loaded.max_plastic_strain_depth_m,
+            plastic_zone_depth_m: loaded.plastic_zone_depth_m,
+            plastic_volume_m3: loaded.plastic_volume_m3,
+            von_mises_max_pa: loaded.von_mises_max_pa,
+            von_mises_max_depth_m: loaded.von_mises_max_depth_m,
+            elastic_max_pressure_pa: loaded.elastic_max_pressure_pa,
+        }
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct UnloadedReport {
+    pub residual_depth_m: f64,
+    pub residual_von_mises_max_pa: f64,
+    pub residual_von_mises_max_depth_m: f64,
+    pub residual_von_mises_max_r_m: f64,
+}
+
+impl UnloadedReport {
+    fn of(unloaded: &Unloaded) -> Self {
+        Self {
+            residual_depth_m: unloaded.residual_depth_m,
+            residual_von_mises_max_pa: unloaded.residual_von_mises_max_pa,
+            residual_von_mises_max_depth_m: unloaded.residual_von_mises_max_depth_m,
+            residual_von_mises_max_r_m: unloaded.residual_von_mises_max_r_m,
+        }
+    }
+}
+
+/// The report of a plastic study.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PlasticReport {
+    pub load_n: f64,
+    pub yield_strength_pa: f64,
+    pub hardening_modulus_pa: f64,
+    pub converged: bool,
+    pub iterations: usize,
+    pub loaded: LoadedReport,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub unloaded: Option<UnloadedReport>,
+}
+
+impl PlasticReport {
+    pub fn new(study: &PlasticStudy) -> Self {
+        Self {
+            load_n: study.hertz.load_n,
+            yield_strength_pa: study.spec.yield_strength_pa,
+            hardening_modulus_pa: study.spec.hardening_modulus_pa,
+            converged: study.converged,
+            iterations: study.iterations,
+            loaded: LoadedReport::of(&study.loaded),
+            unloaded: study.unloaded.as_ref().map(UnloadedReport::of),
+        }
+    }
+
+    /// One JSON object.
+    pub fn json(&self) -> String {
+        serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+    }
+
+    /// The readable report.
+    pub fn text(&self, study: &PlasticStudy) -> String {
+        let mut out = String::new();
+        let _ = self.write_text(&mut out, study);
+        out
+    }
+
+    fn write_text(&self, out: &mut String, study: &PlasticStudy) -> std::fmt::Result {
+        let y = self.yield_strength_pa;
+        let a = study.hertz.radius_m;
+        let mpa = |v: f64| v / 1e6;
+        let um = |v: f64| v * 1e6;
+        let [nz, ny, nx] = study.grid.dims();
+        writeln!(
+            out,
+            "elastic-plastic point contact (J2, linear hardening; SAM, docs/plasticity.md)"
+        )?;
+        writeln!(
+            out,
+            "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; Hertz: p0 = {:.0} MPa = {:.3} Y, a = {:.2} µm",
+            self.load_n,
+            mpa(y),
+            mpa(self.hardening_modulus_pa),
+            mpa(study.hertz.p0_pa),
+            study.hertz.p0_pa / y,
+            um(a)
+        )?;
+        writeln!(
+            out,
+            "  grid {nx} x {ny} x {nz} cells over ±{} a and {} a deep; {} load and {} unload steps; {} iterations, {}",
+            study.spec.extent_over_a,
+            study.spec.depth_over_a,
+            study.spec.steps,
+            if study.spec.unload { study.spec.unload_steps } else { 0 },
+            self.iterations,
+            if self.converged { "converged" } else { "NOT converged" }
+        )?;
+        let l = &self.loaded;
+        writeln!(out, "loaded")?;
+        writeln!(
+            out,
+            "  max pressure      {:>10.1} MPa ({:.3} Y; elastic {:.1} MPa)",
+            mpa(l.max_pressure_pa),
+            l.max_pressure_pa / y,
+            mpa(l.elastic_max_pressure_pa)
+        )?;
+        writeln!(
+            out,
+            "  mean pressure     {:>10.1} MPa ({:.3} Y)",
+            mpa(l.mean_pressure_pa),
+            l.mean_pressure_pa / y
+        )?;
+        writeln!(
+            out,
+            "  contact radius    {:>10.3} µm ({:.4} a)",
+            um(l.contact_radius_m),
+            l.contact_radius_m / a
+        )?;
+        writeln!(out, "  approach          {:>10.4} µm", um(l.approach_m))?;
+        writeln!(
+            out,
+            "  max plastic strain{:>10.3e} at z = {:.3} µm; plastic zone to z = {:.3} µm, {:.4e} m³",
+            l.max_plastic_strain,
+            um(l.max_plastic_strain_depth_m),
+            um(l.plastic_zone_depth_m),
+            l.plastic_volume_m3
+        )?;
+        writeln!(
+            out,
+            "  von Mises max     {:>10.1} MPa at z = {:.3} µm",
+            mpa(l.von_mises_max_pa),
+            um(l.von_mises_max_depth_m)
+        )?;
+        if let Some(u) = &self.unloaded {
+            writeln!(out, "unloaded")?;
+            writeln!(
+                out,
+                "  dent              {:>10.4} µm",
+                um(u.residual_depth_m)
+            )?;
+            writeln!(
+                out,
+                "  residual von Mises{:>10.1} MPa at z = {:.3} µm, r = {:.3} µm ({:.3} a)",
+                mpa(u.residual_von_mises_max_pa),
+                um(u.residual_von_mises_max_depth_m),
+                um(u.residual_von_mises_max_r_m),
+                u.residual_von_mises_max_r_m / a
+            )?;
+        }
+        for warning in &study.warnings {
+            writeln!(out, "warning: {warning}")?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,368 @@
+//! The elastic-plastic contact of a `[plasticity]` scene (issue 51), computed once for the
+//! command line (`stressfield plastic`), its JSON and its fields: a ball pressed on body 1,
+//! elastic-plastic, in load steps, then unloaded.
+//!
+//! The volume grid is centred on the contact's axis: `grid_cells` cells along x and y over
+//! `±extent_over_a` Hertz radii (a cell centred on the axis), `depth_cells` uniform layers
+//! down to `depth_over_a` radii; the contact's grid is the volume's top face. The half-space
+//! is isolated (DC-FFT, zero padding). What is reported from it is defined in
+//! docs/plasticity.md.
+
+use ndarray::{Array2, Array3};
+
+use crate::contact::PointContact;
+use crate::operator::elastic::Periodicity;
+use crate::plasticity::column::DepthCells;
+use crate::plasticity::halfspace::VolumeGrid;
+use crate::plasticity::j2::Hardening;
+use crate::plasticity::loading::{
+    self, largest, von_mises_field, PlasticContactError, PlasticContactProblem,
+    PlasticContactSolution, Progress, Snapshot, PLASTIC_ZONE_STRAIN,
+};
+use crate::scene::{Hertz, PlasticitySpec, Scene};
+
+/// Iterations allowed in one load step.
+pub const MAX_ITERATIONS: usize = 500;
+/// Differences kept by the Anderson acceleration of each step's fixed point.
+pub const ACCELERATION: usize = 5;
+/// The contact solver's tolerance inside the loop.
+pub const CONTACT_TOLERANCE: f64 = 1e-10;
+/// The most memory a plastic solve may take (bytes): 4 GiB, the limit of fields.
+pub const MEMORY_LIMIT_BYTES: usize = 4 << 30;
+
+/// The loaded state at the full load.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Loaded {
+    pub max_pressure_pa: f64,
+    /// The load over the contact area.
+    pub mean_pressure_pa: f64,
+    /// The area of the cells in contact.
+    pub contact_area_m2: f64,
+    /// `√(A/π)`.
+    pub contact_radius_m: f64,
+    /// The indenter's displacement relative to the far surface from first contact.
+    pub approach_m: f64,
+    pub max_plastic_strain: f64,
+    pub max_plastic_strain_depth_m: f64,
+    /// The centre depth of the deepest cell with `εp > 1e-5` (0 without one).
+    pub plastic_zone_depth_m: f64,
+    pub plastic_volume_m3: f64,
+    /// The largest von Mises stress of the total stress over the volume's cells.
+    pub von_mises_max_pa: f64,
+    pub von_mises_max_depth_m: f64,
+    /// Hertz's peak pressure at the load (the elastic body).
+    pub elastic_max_pressure_pa: f64,
+}
+
+/// The state after full unloading.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Unloaded {
+    /// The permanent surface displacement on the axis (m, into body 1).
+    pub residual_depth_m: f64,
+    pub residual_von_mises_max_pa: f64,
+    pub residual_von_mises_max_depth_m: f64,
+    /// The distance of that maximum from the axis.
+    pub residual_von_mises_max_r_m: f64,
+}
+
+/// Everything computed of a `[plasticity]` scene.
+#[derive(Clone, Debug)]
+pub struct PlasticStudy {
+    pub spec: PlasticitySpec,
+    /// The elastic (Hertz) contact at the scene's load.
+    pub hertz: PointContact,
+    pub friction: f64,
+    pub grid: VolumeGrid,
+    /// Cell centres (m): x, y (from the axis) and depth z.
+    pub x_m: Vec<f64>,
+    pub y_m: Vec<f64>,
+    pub z_m: Vec<f64>,
+    pub solution: PlasticContactSolution,
+    pub loaded: Loaded,
+    pub unloaded: Option<Unloaded>,
+    /// Whether every step converged.
+    pub converged: bool,
+    /// Iterations over all steps.
+    pub iterations: usize,
+    pub warnings: Vec<String>,
+}
+
+impl PlasticStudy {
+    /// The state at the full load.
+    pub fn loaded_snapshot(&self) -> &Snapshot {
+        &self.solution.snapshots[0]
+    }
+
+    /// The state after unloading, if unloaded.
+    pub fn unloaded_snapshot(&self) -> Option<&Snapshot> {
+        self.unloaded.as_ref().and(self.solution.snapshots.get(1))
+    }
+}
+
+/// Why a plastic study failed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PlasticStudyError {
+    #[error("the scene has no [plasticity]")]
+    NotPlastic,
+    #[error(transparent)]
+    Solve(#[from] PlasticContactError),
+    /// The plastic zone reaches the volume grid's edge: the key to change and how.
+    #[error("plasticity.{key}: {message}")]
+    Grid { key: &'static str, message: String },
+    #[error("the volume grid needs {needed_bytes} bytes, more than the {limit_bytes} allowed")]
+    Memory {
+        needed_bytes: usize,
+        limit_bytes: usize,
+    },
+}
+
+/// The volume grid of `spec` about a contact of radius `a_m`.
+pub fn volume_grid(spec: &PlasticitySpec, a_m: f64) -> Result<VolumeGrid, PlasticStudyError> {
+    let n = spec.grid_cells;
+    let dx = 2.0 * spec.extent_over_a * a_m / n as f64;
+    let depth = DepthCells::uniform(
+        spec.depth_cells,
+        spec.depth_over_a * a_m / spec.depth_cells as f64,
+    )
+    .map_err(|e| PlasticStudyError::Grid {
+        key: "depth_cells",
+        message: e.0,
+    })?;
+    Ok(VolumeGrid {
+        shape: [n, n],
+        spacing_m: [dx, dx],
+        depth,
+        periodicity: Periodicity::NonPeriodic,
+    })
+}
+
+/// The bytes a solve of `spec` takes about a contact of radius `a_m` (the operator, the
+/// iteration's fields, the contact solver and two kept states).
+pub fn memory_bytes(spec: &PlasticitySpec, a_m: f64, sliding: bool) -> usize {
+    match volume_grid(spec, a_m) {
+        Ok(grid) => loading::memory_bytes(&grid, sliding) + 2 * loading::snapshot_bytes(&grid),
+        Err(_) => 0,
+    }
+}
+
+/// CPU seconds per cell and iteration of the load loop, measured on the shipped scene (64² ×
+/// 32 cells, 118 iterations in 8.1 s of CPU).
+pub const CPU_SECONDS_PER_CELL_ITERATION: f64 = 5.2e-7;
+/// Iterations a load step takes (the shipped scene: 118 over 8 load and 4 unload steps, the
+/// unload steps 2 each).
+pub const ITERATIONS_PER_LOAD_STEP: f64 = 14.0;
+
+/// A rough estimate of the CPU time of `spec`'s solve, s: the cells, times the iterations of
+/// the load steps (two per unload step), times the measured cost of one.
+pub fn cpu_seconds(spec: &PlasticitySpec) -> f64 {
+    let cells = (spec.grid_cells * spec.grid_cells * spec.depth_cells) as f64;
+    let unload = if spec.unload { spec.unload_steps } else { 0 };
+    let iterations = ITERATIONS_PER_LOAD_STEP * spec.steps as f64 + 2.0 * unload as f64;
+    cells * iterations * CPU_SECONDS_PER_CELL_ITERATION
+}
+
+/// The loads of the steps: `steps` equal increments up to `load_n`, then `unload_steps` down
+/// to zero when unloading.
+pub fn step_loads(spec: &PlasticitySpec, load_n: f64) -> Vec<f64> {
+    let mut loads: Vec<f64> = (1..=spec.steps)
+        .map(|i| load_n * i as f64 / spec.steps as f64)
+        .collect();
+    if spec.unload {
+        loads.extend(
+            (1..=spec.unload_steps)
+                .map(|i| load_n * (1.0 - i as f64 / spec.unload_steps as f64).max(0.0)),
+        );
+    }
+    loads
+}
+
+/// The study of a `[plasticity]` scene; `progress` after every iteration.
+pub fn study(
+    scene: &Scene,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<PlasticStudy, PlasticStudyError> {
+    let spec = scene.plasticity.ok_or(PlasticStudyError::NotPlastic)?;
+    let Some(Hertz::Point(hertz)) = scene.contact.dimensional.map(|d| d.hertz) else {
+        return Err(PlasticStudyError::NotPlastic);
+    };
+    study_point(&spec, &hertz, scene.contact.friction, progress)
+}
+
+/// The study of a ball pressed on an elastic-plastic body 1 (`hertz` its elastic contact).
+pub fn study_point(
+    spec: &PlasticitySpec,
+    hertz: &PointContact,
+    friction: f64,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<PlasticStudy, PlasticStudyError> {
+    let a = hertz.radius_m;
+    let needed_bytes = memory_bytes(spec, a, friction != 0.0);
+    if needed_bytes > MEMORY_LIMIT_BYTES {
+        return Err(PlasticStudyError::Memory {
+            needed_bytes,
+            limit_bytes: MEMORY_LIMIT_BYTES,
+        });
+    }
+    let grid = volume_grid(spec, a)?;
+    let [nz, ny, nx] = grid.dims();
+    let [dx, dy] = grid.spacing_m;
+    let x_m: Vec<f64> = (0..nx).map(|i| (i as f64 - (nx / 2) as f64) * dx).collect();
+    let y_m: Vec<f64> = (0..ny).map(|j| (j as f64 - (ny / 2) as f64) * dy).collect();
+    let z_m = grid.depth.centres_m();
+    let radius = hertz.effective_radius_m;
+    // The gap of a ball on a flat: heights out of body 1, highest on the axis.
+    let heights = Array2::from_shape_fn((ny, nx), |(j, i)| {
+        -(x_m[i] * x_m[i] + y_m[j] * y_m[j]) / (2.0 * radius)
+    });
+    let loads = step_loads(spec, hertz.load_n);
+    let loaded_step = spec.steps - 1;
+    let mut snapshots = vec![loaded_step];
+    if spec.unload {
+        snapshots.push(loads.len() - 1);
+    }
+    let problem = PlasticContactProblem {
+        heights_m: heights.view(),
+        grid: grid.clone(),
+        modulus_pa: spec.body1.modulus_pa,
+        poisson: spec.body1.poisson,
+        e_star_pa: hertz.effective_modulus_pa,
+        hardening: Hardening {
+            yield_strength_pa: spec.yield_strength_pa,
+            plastic_modulus_pa: spec.hardening_modulus_pa,
+        },
+        friction,
+        loads_n: loads,
+        snapshots,
+        axis_cell: [ny / 2, nx / 2],
+        tolerance: spec.tolerance,
+        max_iterations: MAX_ITERATIONS,
+        acceleration: ACCELERATION,
+        contact_tolerance: CONTACT_TOLERANCE,
+        memory_limit_bytes: MEMORY_LIMIT_BYTES,
+    };
+    let solution = loading::solve(&problem, progress)?;
+    let loaded_state = &solution.snapshots[0];
+    let kappa = &loaded_state.equivalent_plastic_strain;
+    // The plastic zone must lie inside the grid: not in its deepest layer, nor on its sides.
+    let mut at_bottom = false;
+    let mut at_side = false;
+    for ((l, j, i), &k) in kappa.indexed_iter() {
+        if k > PLASTIC_ZONE_STRAIN {
+            at_bottom |= l + 1 == nz;
+            at_side |= i == 0 || j == 0 || i + 1 == nx || j + 1 == ny;
+        }
+    }
+    if at_bottom {
+        return Err(PlasticStudyError::Grid {
+            key: "depth_over_a",
+            message: format!(
+                "the plastic zone reaches the volume grid's bottom ({:.3} a): the grid is too shallow for it\nhint: raise depth_over_a (e.g. to {:.1}) and depth_cells with it",
+                spec.depth_over_a,
+                spec.depth_over_a * 2.0
+            ),
+        });
+    }
+    if at_side {
+        return Err(PlasticStudyError::Grid {
+            key: "extent_over_a",
+            message: format!(
+                "the plastic zone reaches the volume grid's sides (±{:.3} a): the grid is too narrow for it\nhint: raise extent_over_a (e.g. to {:.1}) and grid_cells with it",
+                spec.extent_over_a,
+                spec.extent_over_a * 2.0
+            ),
+        });
+    }
+    let loaded_step_result = &solution.steps[loaded_step];
+    let contact_area_m2 = loaded_step_result.contact_cells as f64 * dx * dy;
+    let (max_plastic_strain, at_strain) = largest(kappa);
+    let mut plastic_zone_depth_m: f64 = 0.0;
+    let mut plastic_volume_m3 = 0.0;
+    for ((l, _, _), &k) in kappa.indexed_iter() {
+        if k > PLASTIC_ZONE_STRAIN {
+            plastic_zone_depth_m = plastic_zone_depth_m.max(z_m[l]);
+            plastic_volume_m3 += grid.cell_volume_m3(l);
+        }
+    }
+    let plastic = max_plastic_strain > PLASTIC_ZONE_STRAIN;
+    let von_mises = von_mises_field(&loaded_state.stress_pa);
+    let (von_mises_max_pa, at_von_mises) = largest(&von_mises);
+    let loaded = Loaded {
+        max_pressure_pa: loaded_step_result.max_pressure_pa,
+        mean_pressure_pa: if contact_area_m2 > 0.0 {
+            hertz.load_n / contact_area_m2
+        } else {
+            0.0
+        },
+        contact_area_m2,
+        contact_radius_m: (contact_area_m2 / std::f64::consts::PI).sqrt(),
+        approach_m: loaded_step_result.approach_m.unwrap_or(0.0),
+        max_plastic_strain: if plastic { max_plastic_strain } else { 0.0 },
+        max_plastic_strain_depth_m: if plastic { z_m[at_strain[0]] } else { 0.0 },
+        plastic_zone_depth_m,
+        plastic_volume_m3,
+        von_mises_max_pa,
+        von_mises_max_depth_m: z_m[at_von_mises[0]],
+        elastic_max_pressure_pa: hertz.p0_pa,
+    };
+    let unloaded = spec.unload.then(|| {
+        let state = &solution.snapshots[1];
+        let residual = von_mises_field(&state.stress_pa);
+        let (value, [l, j, i]) = largest(&residual);
+        // No residual stress (an elastic contact): no place of its maximum either.
+        let stressed = value > 0.0;
+        Unloaded {
+            residual_depth_m: state.plastic_displacement_m[[ny / 2, nx / 2]],
+            residual_von_mises_max_pa: value,
+            residual_von_mises_max_depth_m: if stressed { z_m[l] } else { 0.0 },
+            residual_von_mises_max_r_m: if stressed { x_m[i].hypot(y_m[j]) } else { 0.0 },
+        }
+    });
+    let converged = solution.steps.iter().all(|s| s.converged);
+    let iterations = solution.steps.iter().map(|s| s.iterations).sum();
+    let mut warnings = Vec::new();
+    if !converged {
+        let failed: Vec<String> = solution
+            .steps
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| !s.converged)
+            .map(|(i, s)| format!("{} (residual {:.1e})", i + 1, s.residual))
+            .collect();
+        warnings.push(format!(
+            "steps {} did not converge to plasticity.tolerance = {:e} in {MAX_ITERATIONS} iterations",
+            failed.join(", "),
+            spec.tolerance
+        ));
+    }
+    if loaded.mean_pressure_pa > 3.0 * spec.yield_strength_pa {
+        warnings.push(format!(
+            "the mean pressure {:.0} MPa exceeds 3 Y ({:.0} MPa), the fully plastic indentation of Tabor: small strains no longer hold",
+            loaded.mean_pressure_pa / 1e6,
+            3.0 * spec.yield_strength_pa / 1e6
+        ));
+    }
+    Ok(PlasticStudy {
+        spec: *spec,
+        hertz: *hertz,
+        friction,
+        grid,
+        x_m,
+        y_m,
+        z_m,
+        solution,
+        loaded,
+        unloaded,
+        converged,
+        iterations,
+        warnings,
+    })
+}
+
+/// The equivalent plastic strain after the last step (`[nz, ny, nx]`).
+pub fn final_plastic_strain(study: &PlasticStudy) -> &Array3<f64> {
+    let last = study.solution.snapshots.len() - 1;
+    &study.solution.snapshots[last].equivalent_plastic_strain
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,154 @@
+//! Elastic-plastic contact (`[plasticity]`, `stressfield plastic`, issue 51): the JSON
+//! contract on a small grid, the fields archive, and bad input refused naming the key.
+
+use std::path::PathBuf;
+
+use crate::cli::{run, stderr};
+
+/// A rigid ball on a steel flat at p0(Hertz) = 2.5 Y on a coarse grid (a second or two).
+const SMALL: &str = r#"format = 1
+[contact]
+kind = "point"
+load = "151.62 N"
+[contact.body1]
+radius = "flat"
+material = "steel"
+[contact.body2]
+radius = "10 mm"
+material = "rigid"
+[plasticity]
+yield_strength = "1 GPa"
+hardening_modulus = "10 GPa"
+steps = 2
+unload_steps = 1
+grid_cells = 32
+depth_cells = 16
+"#;
+
+fn scene(text: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let path = dir.path().join("case.toml");
+    std::fs::write(&path, text).expect("write scene");
+    (dir, path)
+}
+
+#[test]
+fn plastic_json_has_the_contract_s_keys_and_the_fields_archive_its_arrays() {
+    let (dir, path) = scene(SMALL);
+    let fields = dir.path().join("fields.npz");
+    let output = run(&[
+        "plastic",
+        path.to_str().expect("utf-8"),
+        "--json",
+        "--fields",
+        fields.to_str().expect("utf-8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("one JSON object");
+    for key in [
+        "load_n",
+        "yield_strength_pa",
+        "hardening_modulus_pa",
+        "converged",
+        "iterations",
+    ] {
+        assert!(json.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(json["hardening_modulus_pa"], 10e9);
+    let loaded = &json["loaded"];
+    for key in [
+        "max_pressure_pa",
+        "mean_pressure_pa",
+        "contact_area_m2",
+        "contact_radius_m",
+        "approach_m",
+        "max_plastic_strain",
+        "max_plastic_strain_depth_m",
+        "plastic_zone_depth_m",
+        "plastic_volume_m3",
+        "von_mises_max_pa",
+        "von_mises_max_depth_m",
+        "elastic_max_pressure_pa",
+    ] {
+        assert!(loaded[key].is_number(), "loaded.{key}");
+    }
+    // Beyond first yield the peak pressure lies below Hertz's and the body flowed.
+    let peak = loaded["max_pressure_pa"].as_f64().expect("number");
+    assert!(peak < 0.9 * loaded["elastic_max_pressure_pa"].as_f64().expect("number"));
+    assert!(loaded["max_plastic_strain"].as_f64().expect("number") > 1e-4);
+    let unloaded = &json["unloaded"];
+    for key in [
+        "residual_depth_m",
+        "residual_von_mises_max_pa",
+        "residual_von_mises_max_depth_m",
+        "residual_von_mises_max_r_m",
+    ] {
+        assert!(unloaded[key].is_number(), "unloaded.{key}");
+    }
+    assert!(unloaded["residual_depth_m"].as_f64().expect("number") > 0.0);
+    let bytes = std::fs::read(&fields).expect("the archive");
+    let mut npz = ndarray_npy::NpzReader::new(std::io::Cursor::new(bytes)).expect("npz");
+    let names = npz.names().expect("names");
+    for name in [
+        "plastic_strain",
+        "residual_stress",
+        "pressure",
+        "x",
+        "y",
+        "z",
+    ] {
+        assert!(
+            names.iter().any(|n| n.trim_end_matches(".npy") == name),
+            "{name}: {names:?}"
+        );
+    }
+    let strain: ndarray::Array3<f64> = npz.by_name("plastic_strain").expect("plastic_strain");
+    assert_eq!(strain.dim(), (16, 32, 32));
+    let residual: ndarray::Array4<f64> = npz.by_name("residual_stress").expect("residual");
+    assert_eq!(residual.dim(), (16, 32, 32, 6));
+}
+
+#[test]
+fn bad_plasticity_is_refused_naming_the_key() {
+    let cases: [(&str, &str, &str); 6] = [
+        (
+            "yield_strength = \"1 GPa\"",
+            "yield_strength = \"-1 GPa\"",
+            "plasticity.yield_strength",
+        ),
+        (
+            "yield_strength = \"1 GPa\"",
+            "yield_strength = \"0 GPa\"",
+            "plasticity.yield_strength",
+        ),
+        (
+            "hardening_modulus = \"10 GPa\"",
+            "hardening_modulus = \"-1 GPa\"",
+            "plasticity.hardening_modulus",
+        ),
+        ("steps = 2", "steps = 0", "plasticity.steps"),
+        (
+            "grid_cells = 32",
+            "grid_cells = 16",
+            "plasticity.grid_cells",
+        ),
+        (
+            "kind = \"point\"\n",
+            "kind = \"point\"\nyield_strength = \"2 GPa\"\n",
+            "plasticity.yield_strength",
+        ),
+    ];
+    for (from, to, key) in cases {
+        let (_dir, path) = scene(&SMALL.replacen(from, to, 1));
+        let output = run(&["plastic", path.to_str().expect("utf-8"), "--json"]);
+        assert!(!output.status.success(), "{to} accepted");
+        assert!(output.stdout.is_empty(), "{to}: output written");
+        let message = stderr(&output);
+        assert!(message.contains(key), "{to}: {message}");
+    }
+    // With heating: refused naming [thermal].
+    let (_dir, path) = scene(&format!("{SMALL}[thermal]\nspeed = \"1 m/s\"\n"));
+    let output = run(&["plastic", path.to_str().expect("utf-8")]);
+    assert!(!output.status.success());
+    assert!(stderr(&output).contains("thermal"), "{}", stderr(&output));
+}

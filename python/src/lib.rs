@@ -20,7 +20,9 @@ use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, bail, Context};
 use ndarray::{Array2, Array3, Array4, ArrayView1, ArrayView2, Axis};
-use numpy::{IntoPyArray, PyArray2, PyArray3, PyArray4, PyReadonlyArray1, PyReadonlyArray2};
+use numpy::{
+    IntoPyArray, PyArray1, PyArray2, PyArray3, PyArray4, PyReadonlyArray1, PyReadonlyArray2,
+};
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -374,6 +376,58 @@ impl Scene {
             })
             .map_err(raise)?;
         Ok((json, stacks.map(|s| s.map(|a| a.into_pyarray(py)))))
+    }
+
+    /// `plastic SCENE --json` as text: the elastic-plastic contact of a scene with
+    /// `[plasticity]`; with `fields`, the arrays of `plastic --fields` (plastic strain,
+    /// loaded and residual stress with components last, pressure, x, y, z).
+    #[allow(clippy::type_complexity)]
+    fn plastic<'py>(
+        &self,
+        py: Python<'py>,
+        fields: bool,
+    ) -> PyResult<(String, Option<PlasticArrays<'py>>)> {
+        let (json, arrays) = py
+            .detach(|| -> Result<(String, Option<PlasticFields>)> {
+                if self.scene.plasticity.is_none() {
+                    bail!(
+                        "{} has no [plasticity]\nhint: add [plasticity] with yield_strength = \"1 GPa\" to a point contact (body 1 flat, body 2 a ball, material = \"rigid\" allowed); see docs/plasticity.md",
+                        self.file
+                    );
+                }
+                let study = study::plastic::study(&self.scene, &mut |_| {})
+                    .with_context(|| format!("scene {}", self.scene.name))?;
+                let json = stressfield::report::plastic::PlasticReport::new(&study).json();
+                if !fields {
+                    return Ok((json, None));
+                }
+                let arrays = PlasticFields {
+                    plastic_strain: study::plastic::final_plastic_strain(&study).clone(),
+                    stress: study::plastic::components_last(&study.loaded_snapshot().stress_pa),
+                    residual_stress: study
+                        .unloaded_snapshot()
+                        .map(|state| study::plastic::components_last(&state.stress_pa)),
+                    pressure: study.loaded_snapshot().pressure_pa.clone(),
+                    axes: [study.x_m.clone(), study.y_m.clone(), study.z_m.clone()],
+                };
+                Ok((json, Some(arrays)))
+            })
+            .map_err(raise)?;
+        Ok((
+            json,
+            arrays.map(|a| {
+                let [x, y, z] = a.axes;
+                (
+                    a.plastic_strain.into_pyarray(py),
+                    a.stress.into_pyarray(py),
+                    a.residual_stress.map(|r| r.into_pyarray(py)),
+                    a.pressure.into_pyarray(py),
+                    x.into_pyarray(py),
+                    y.into_pyarray(py),
+                    z.into_pyarray(py),
+                )
+            }),
+        ))
     }
 
     /// Draws the scene's figure to `path` (PNG, or SVG by the extension).
@@ -1006,3 +1060,24 @@ fn _stressfield(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(has_rerun, m)?)?;
     Ok(())
 }
+
+/// The arrays of a plastic study, computed without the GIL.
+struct PlasticFields {
+    plastic_strain: Array3<f64>,
+    stress: Array4<f64>,
+    residual_stress: Option<Array4<f64>>,
+    pressure: Array2<f64>,
+    axes: [Vec<f64>; 3],
+}
+
+/// [`PlasticFields`] handed to Python: plastic strain, stress, residual stress (unloaded
+/// only), pressure, x, y, z.
+type PlasticArrays<'py> = (
+    Bound<'py, PyArray3<f64>>,
+    Bound<'py, PyArray4<f64>>,
+    Option<Bound<'py, PyArray4<f64>>>,
+    Bound<'py, PyArray2<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+    Bound<'py, PyArray1<f64>>,
+);

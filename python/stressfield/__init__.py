@@ -240,6 +240,23 @@ class Scene:
             out["heights"], out["pressure"], out["wear_depth"] = stacks
         return out
 
+    def plastic(self, fields: bool = False) -> dict:
+        """The elastic-plastic contact of a scene with ``[plasticity]``, the dict of
+        ``stressfield plastic SCENE --json``; with ``fields=True`` also the arrays of
+        ``plastic --fields``: ``"plastic_strain"`` (the equivalent plastic strain after the
+        last step, ``(nz, ny, nx)``), ``"stress"`` (the total stress at full load) and
+        ``"residual_stress"`` (after unloading, when unloaded), ``(nz, ny, nx, 6)`` Pa in the
+        order of :data:`COMPONENTS`, ``"pressure"`` (Pa at full load, ``(ny, nx)``) and the
+        cell centres ``"x"``, ``"y"`` (from the axis) and ``"z"`` (depth), m."""
+        text, arrays = self._scene.plastic(bool(fields))
+        out = _json.loads(text)
+        if arrays is not None:
+            names = ("plastic_strain", "stress", "residual_stress", "pressure", "x", "y", "z")
+            for name, value in zip(names, arrays):
+                if value is not None:
+                    out[name] = value
+        return out
+
     def render(self, path) -> None:
         """Draws the scene's figure (or sheet) to ``path``, PNG or SVG by the extension, as
         ``stressfield render`` draws it; written atomically."""

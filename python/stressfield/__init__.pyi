@@ -80,6 +80,9 @@ class Scene:
     def wear(self, arrays: bool = False) -> dict[str, Any]:
         """The keys of `wear SCENE --json`; with arrays=True also "heights", "pressure" and
         "wear_depth" (float64, (steps, ny, nx))."""
+    def plastic(self, fields: bool = False) -> dict[str, Any]:
+        """The keys of `plastic SCENE --json`; with fields=True also "plastic_strain",
+        "stress", "residual_stress", "pressure", "x", "y", "z" (float64 arrays)."""
     def render(self, path: PathLike) -> None: ...
     def record(self, path: PathLike) -> None: ...
 

@@ -321,3 +321,47 @@ def test_batch_runs_wear_scenes(tmp_path):
     with pytest.raises(sf.StressfieldError) as caught:
         sf.batch([path], command="contact")
     assert "command must be" in str(caught.value)
+
+
+SMALL_PLASTIC = """format = 1
+[contact]
+kind = "point"
+load = "151.62 N"
+[contact.body1]
+radius = "flat"
+material = "steel"
+[contact.body2]
+radius = "10 mm"
+material = "rigid"
+[plasticity]
+yield_strength = "1 GPa"
+hardening_modulus = "10 GPa"
+steps = 2
+unload_steps = 1
+grid_cells = 32
+depth_cells = 16
+"""
+
+
+def test_scene_plastic_is_plastic_json_and_its_fields(tmp_path):
+    """Issue 51: Scene.plastic() is `plastic --json` to the last digit; with fields=True the
+    arrays of `plastic --fields`, bit for bit."""
+    path = tmp_path / "plastic.toml"
+    path.write_text(SMALL_PLASTIC)
+    npz = tmp_path / "fields.npz"
+    expected = cli_json("plastic", path, "--json", "--fields", npz)
+    scene = sf.load_scene(path)
+    assert scene.plastic() == expected
+    got = scene.plastic(fields=True)
+    archive = np.load(npz)
+    names = ["plastic_strain", "stress", "residual_stress", "pressure", "x", "y", "z"]
+    assert sorted(archive.files) == sorted(names)
+    for name in names:
+        np.testing.assert_array_equal(got.pop(name), archive[name], err_msg=name)
+    assert got == expected
+    assert archive["plastic_strain"].shape == (16, 32, 32)
+    assert archive["residual_stress"].shape == (16, 32, 32, 6)
+    line = SCENES / "line_tau1.toml"
+    with pytest.raises(sf.StressfieldError) as caught:
+        sf.load_scene(line).plastic()
+    assert str(caught.value) == cli_error("plastic", line)

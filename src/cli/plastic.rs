@@ -5,14 +5,14 @@ use std::io::Cursor;
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
-use ndarray::{Array1, Array4};
+use ndarray::Array1;
 use ndarray_npy::NpzWriter;
 
 use super::console::{print_err, print_out, progress_bar};
 use super::npy::{has_extension, is_device, Reserved};
 use stressfield::io::output::Staged;
 use stressfield::report::plastic::PlasticReport;
-use stressfield::study::plastic::{self, final_plastic_strain, PlasticStudy};
+use stressfield::study::plastic::{self, components_last, final_plastic_strain, PlasticStudy};
 
 /// `plastic SCENE [--json] [--fields FILE.npz]`.
 pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<()> {
@@ -75,10 +75,6 @@ fn fields_npz(study: &PlasticStudy) -> Result<Vec<u8>> {
     let mut npz = NpzWriter::new(Cursor::new(Vec::new()));
     npz.add_array("plastic_strain", final_plastic_strain(study))
         .map_err(error)?;
-    let components_last = |stress: &Array4<f64>| {
-        let (nz, _, ny, nx) = stress.dim();
-        Array4::from_shape_fn((nz, ny, nx, 6), |(l, j, i, c)| stress[[l, c, j, i]])
-    };
     npz.add_array(
         "stress",
         &components_last(&study.loaded_snapshot().stress_pa),

@@ -364,5 +364,12 @@ pub fn final_plastic_strain(study: &PlasticStudy) -> &Array3<f64> {
     &study.solution.snapshots[last].equivalent_plastic_strain
 }
 
+/// A state's stress `[nz, 6, ny, nx]` with its components last, `[nz, ny, nx, 6]` (xx, yy, zz,
+/// yz, xz, xy): the order of the `--fields` archive and of the Python package.
+pub fn components_last(stress: &ndarray::Array4<f64>) -> ndarray::Array4<f64> {
+    let (nz, _, ny, nx) = stress.dim();
+    ndarray::Array4::from_shape_fn((nz, ny, nx, 6), |(l, j, i, c)| stress[[l, c, j, i]])
+}
+
 #[cfg(test)]
 mod tests;

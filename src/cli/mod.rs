@@ -6,6 +6,7 @@ pub mod args;
 mod check;
 mod compare;
 pub mod console;
+mod ehl;
 mod npy;
 mod probe;
 mod record;
@@ -151,6 +152,11 @@ pub fn run(command: Command) -> Result<()> {
             json,
             heights_out,
         } => wear::wear(&scene, json, heights_out.as_deref()),
+        Command::Ehl {
+            scene,
+            json,
+            pressure,
+        } => ehl::ehl(&scene, json, pressure.as_deref()),
     }
 }
 

@@ -26,9 +26,9 @@ use raw::RawScene;
 
 pub use spec::{
     CoatingSpec, Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit,
-    Levelling, Method, Numerical, PanelSpec, RoughSpec, Scale, SectionKind, SeriesDatum,
-    SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection, WearSpec,
-    YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    Levelling, LubricantSpec, Method, Numerical, OilSpec, PanelSpec, RoughSpec, Scale, SectionKind,
+    SeriesDatum, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection,
+    WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
@@ -108,6 +108,8 @@ pub struct Scene {
     pub thermal: Option<ThermalSpec>,
     /// A rough scene's evolution with sliding distance (`[wear]` or `[[series]]`).
     pub wear: Option<WearSpec>,
+    /// The lubricant (`[lubricant]`): film thickness, λ, the line contact's EHL solution.
+    pub lubricant: Option<LubricantSpec>,
 }
 
 impl Scene {

@@ -6,6 +6,7 @@ mod coating;
 mod contact;
 mod figure;
 mod gears;
+mod lubricant;
 mod numerical;
 mod rough;
 mod rough_scene;
@@ -154,8 +155,13 @@ impl Validator<'_> {
             ));
         }
         self.heated_contact_keys(&raw)?;
+        self.lubricated_bodies(&raw)?;
         let contact = self.contact(&raw.contact)?;
         if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
+            if raw.lubricant.is_some() {
+                // The same refusal as the table's own (one message for one requirement).
+                self.lubricant(&raw, &contact, None)?;
+            }
             return self.rough_scene(raw, name, contact);
         }
         for (key, given) in [
@@ -173,6 +179,7 @@ impl Validator<'_> {
             }
         }
         let thermal = self.thermal(&raw, &contact)?;
+        let lubricant = self.lubricant(&raw, &contact, thermal.as_ref())?;
         let own_sections = self.panel_sections(&raw)?;
         let figure = self.figure(&raw.figure, &contact, &own_sections)?;
         let method = self.method("contact.method", raw.contact.method.as_deref())?;
@@ -350,6 +357,7 @@ impl Validator<'_> {
             thermal,
             surface: None,
             wear: None,
+            lubricant,
         };
         if let Some(sweep) = &raw.sweep {
             scene.sweep = Some(self.sweep(sweep, &scene)?);

@@ -123,6 +123,7 @@ impl Validator<'_> {
             thermal,
             surface: Some(surface),
             wear: None,
+            lubricant: None,
         };
         scene.wear = self.wear(&raw, &scene)?;
         if let Some(sweep) = &raw.sweep {

@@ -197,8 +197,9 @@ impl WearReport {
             )?,
             None => writeln!(
                 out,
-                "wear: a measured series of {} topographies, each solved as a static contact; the wear is the first map less each, less the offset of datum the unworn cells share",
-                self.steps.len()
+                "wear: a measured series of {} topographies, each solved as a static contact; the wear is the first map less each, less the offset of datum the unworn cells share; {}",
+                self.steps.len(),
+                series_levelling(scene)
             )?,
         }
         if self.coupled {
@@ -251,5 +252,36 @@ impl WearReport {
             writeln!(out, "warning: {warning}")?;
         }
         Ok(())
+    }
+}
+
+/// How a series' maps were levelled, in words (issue 50: one datum for the specimen).
+fn series_levelling(scene: &Scene) -> String {
+    use crate::scene::{Levelling, SeriesDatum};
+    let Some(surface) = &scene.surface else {
+        return String::new();
+    };
+    let what = match surface.levelling {
+        None | Some(Levelling::Raw) => {
+            return "the maps solved as measured (level = \"none\")".into()
+        }
+        Some(Levelling::Mean { .. }) => "mean height",
+        Some(Levelling::Removed(datum)) => match datum.form() {
+            crate::surface::stats::FormRemoval::Plane => "least-squares plane",
+            crate::surface::stats::FormRemoval::Quadratic => "least-squares second-order form",
+        },
+    };
+    match &surface.series_datum {
+        Some(SeriesDatum::Each) => format!("each map levelled by its own {what} (datum = \"each\")"),
+        Some(SeriesDatum::Region { x_m, y_m }) => format!(
+            "each map levelled by its {what} over x {:.1} to {:.1} µm, y {:.1} to {:.1} µm (datum_region)",
+            x_m[0] * 1e6,
+            x_m[1] * 1e6,
+            y_m[0] * 1e6,
+            y_m[1] * 1e6
+        ),
+        Some(SeriesDatum::First) | None => {
+            format!("every map levelled by the first map's {what} (one datum for the specimen)")
+        }
     }
 }

@@ -4,6 +4,7 @@
 //! The traction grid is in the rough scenes' reference units ([`REFERENCE_LENGTH_M`],
 //! [`REFERENCE_PRESSURE_PA`]: 1 um and 1 MPa), the `a` and `p0` of their `Contact::scale`.
 
+use std::ops::ControlFlow;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
@@ -76,6 +77,21 @@ pub fn solve(
     scene: &Scene,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<RoughSolution, RoughStudyError> {
+    solve_interruptible(scene, &mut |iteration, residual| {
+        progress(iteration, residual);
+        ControlFlow::Continue(())
+    })
+}
+
+/// [`solve`] that can be stopped between iterations: `progress(iteration, residual)` returns
+/// whether to go on ([`rough::solve_interruptible`]; a stop is
+/// [`RoughContactError::Interrupted`]), the same solution as [`solve`] to the last bit
+/// otherwise. A coated body's solve ([`crate::contact::coated::solve`]) has no stop yet: its
+/// progress is reported and its answer to stop is not heard.
+pub fn solve_interruptible(
+    scene: &Scene,
+    progress: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
+) -> Result<RoughSolution, RoughStudyError> {
     if scene.contact.kind != ContactKind::Rough {
         return Err(RoughStudyError::NotRough);
     }
@@ -86,10 +102,17 @@ pub fn solve(
             &problem,
             &coating.layered(),
             coating.counter_per_pa,
-            progress,
+            &mut |iteration, residual| {
+                let _ = progress(iteration, residual);
+            },
         )?);
     }
-    Ok(rough::solve(&problem, progress)?)
+    Ok(rough::solve_interruptible(
+        &problem,
+        &rough::Warm::default(),
+        &mut rough::OperatorCache::default(),
+        progress,
+    )?)
 }
 
 /// The factors of the scene's mean pressure at which [`area_curve`] solves the contact again.

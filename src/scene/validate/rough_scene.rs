@@ -67,10 +67,14 @@ impl Validator<'_> {
                 ));
             }
             if let Some(t) = numerical.tolerance {
-                if !(t > 0.0 && t < 1e-2) {
+                if !(t > 0.0 && t < crate::scene::MAX_ROUGH_TOLERANCE) {
                     return Err(self.error(
                         "numerical.tolerance",
-                        format!("must lie in (0, 0.01), got {}", crate::io::text::number(t)),
+                        format!(
+                            "must lie in (0, {}), got {}",
+                            crate::io::text::number(crate::scene::MAX_ROUGH_TOLERANCE),
+                            crate::io::text::number(t)
+                        ),
                         Some("the default is 1e-8"),
                     ));
                 }

@@ -391,8 +391,20 @@ impl Validator<'_> {
         let (heights, levelling) = match mode {
             LevelMode::Keep => return Ok((map, Levelling::Raw)),
             LevelMode::Mean => {
-                let plane = Datum::fitted(&map, FormRemoval::Plane, None).plane_m;
-                let mean_m = map.heights_m().mean().unwrap_or(0.0);
+                let plane = Datum::fitted(&map, FormRemoval::Plane, region).plane_m;
+                // The mean over the region when given (a series' datum), else the map's.
+                let mean_m = match region {
+                    Some(region) => {
+                        let heights = map.heights_m();
+                        let values: Vec<f64> = region
+                            .rows
+                            .clone()
+                            .flat_map(|j| region.columns.clone().map(move |i| heights[[j, i]]))
+                            .collect();
+                        values.iter().sum::<f64>() / values.len().max(1) as f64
+                    }
+                    None => map.heights_m().mean().unwrap_or(0.0),
+                };
                 (map.heights_m() - mean_m, Levelling::Mean { mean_m, plane })
             }
             LevelMode::Form(form) => {

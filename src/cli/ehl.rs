@@ -38,13 +38,7 @@ pub fn ehl(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()>
         );
     }
     if let Some(file) = &pressure_file {
-        let s = &study.solution;
-        let mut array = ndarray::Array2::zeros((s.x_m.len(), 3));
-        for (i, mut row) in array.rows_mut().into_iter().enumerate() {
-            row[0] = s.x_m[i];
-            row[1] = s.pressure_pa[i];
-            row[2] = s.film_m[i];
-        }
+        let array = stressfield::study::ehl::solution_array(&study.solution);
         file.fill(&npy_bytes(&array, "EHL solution")?)?;
     }
     staged.commit()?;
@@ -59,4 +53,27 @@ pub fn ehl(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result<()>
         ));
     }
     print_out(&text)
+}
+
+/// The EHL sheet of a lubricated line scene as PNG bytes (`render` writes it beside the
+/// scene's figure as `NAME_ehl.png`): a scene whose solution does not converge is refused.
+pub(crate) fn ehl_png(scene: &stressfield::scene::Scene) -> Result<Vec<u8>> {
+    let study = stressfield::study::ehl::solve(scene)?;
+    if !study.solution.converged {
+        bail!(
+            "the EHL solution did not converge after {} Newton iterations: no sheet drawn\nhint: `stressfield ehl {}` reports the iterations (docs/lubrication.md)",
+            study.solution.iterations,
+            scene.name
+        );
+    }
+    let sections = stressfield::study::ehl::sections(
+        &study,
+        stressfield::study::ehl::SHEET_COLUMNS,
+        stressfield::study::ehl::SHEET_ROWS,
+    )?;
+    let title = scene.title.clone().unwrap_or_else(|| scene.name.clone());
+    let sheet = stressfield::figure::ehl::ehl_sheet(&title, &study, &sections);
+    Ok(stressfield::render::encode_png(
+        &stressfield::render::chart::sheet_png(&sheet)?,
+    )?)
 }

@@ -1076,6 +1076,11 @@ mod tests {
             let formula = pan_hamrock(&problem.conditions(), problem.load_n_per_m);
             let central = solution.central_film_m / formula.central_m - 1.0;
             let minimum = solution.minimum_film_m / formula.minimum_m - 1.0;
+            // The measured errors (docs/lubrication.md quotes them: --nocapture).
+            println!(
+                "Pan-Hamrock M {m} L {:.2}: central {central:+.4}, minimum {minimum:+.4}",
+                solution.moes_l
+            );
             assert!(central.abs() < 0.10, "M {m}: central {central:+.3}");
             assert!(minimum.abs() < 0.10, "M {m}: minimum {minimum:+.3}");
             // The load is carried.
@@ -1095,6 +1100,7 @@ mod tests {
             let u = problem.conditions().speed_parameter();
             let moes = moes_line_central(mm, ll) * (2.0 * u).sqrt() * problem.radius_m;
             let error = solution.central_film_m / moes - 1.0;
+            println!("Moes M {m} L 10: central {error:+.4}");
             assert!(error.abs() < 0.04, "M {m}: {error:+.4}");
         }
     }
@@ -1129,6 +1135,9 @@ mod tests {
             .iter()
             .map(|q| (q / mean - 1.0).abs())
             .fold(0.0, f64::max);
+        println!(
+            "M 50: spike at {spike:.4} b ({spike_p:.4} p_h), minimum film at {minimum:.4} b, flow constant to {worst:.2e}"
+        );
         assert!(worst < 0.01, "{worst}");
     }
 
@@ -1147,6 +1156,10 @@ mod tests {
         .expect("valid");
         assert!(finer.converged);
         let change = finer.minimum_film_m / default.minimum_film_m - 1.0;
+        println!(
+            "grid: spacing {} b -> {} b changes h_min by {change:+.5}",
+            default.spacing_over_b, finer.spacing_over_b
+        );
         assert!(change.abs() < 0.01, "{change}");
     }
 
@@ -1165,6 +1178,7 @@ mod tests {
                 .fold(0.0, f64::max)
         };
         let (light, heavy) = (departure(10.0), departure(100.0));
+        println!("largest |p/p_h - Hertz| over |x| < 0.9 b: M 10 {light:.4}, M 100 {heavy:.4}");
         assert!(heavy < 0.015 && heavy < light / 3.0, "{light} -> {heavy}");
     }
 

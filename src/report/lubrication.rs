@@ -78,7 +78,7 @@ fn warning(doubt: &FilmValidity) -> String {
         FilmValidity::Rigid {
             film_over_flattening,
         } => format!(
-            "the film is {} times the elastic flattening a²/(2Rx): the surfaces barely deform, the contact runs in the rigid (hydrodynamic, isoviscous-rigid unless the pressure raises the viscosity much) regime, outside the elastohydrodynamic formula's",
+            "the film is {} times the elastic flattening a²/(2Rx): the elastic deflection is small against the film, and the contact leaves the elastohydrodynamic regime for the rigid one (isoviscous-rigid where the pressure raises the viscosity little), where the formula, a fit to elastic-piezoviscous solutions, is not checked; a line contact's film is solved numerically by `stressfield ehl`",
             text::significant(*film_over_flattening, 3, 1e6, true)
         ),
     }

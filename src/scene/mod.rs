@@ -257,7 +257,13 @@ fn unit_example(leaf: &str) -> &'static str {
         "hardness" => "\"700 HV\"",
         "a" | "approach" | "spacing" | "rms_height" | "rolloff" | "cutoff"
         | "correlation_length" => "\"1 um\"",
-        "speed" | "body1_speed" | "body2_speed" => "\"2 m/s\"",
+        "speed" | "body1_speed" | "body2_speed" | "entrainment_speed" => "\"2 m/s\"",
+        "viscosity" => "\"0.05 Pa s\"",
+        "viscosity_40c" | "viscosity_100c" => "\"220 mm^2/s\"",
+        "pressure_viscosity" => "\"20 GPa^-1\"",
+        "temperature" => "\"70 C\"",
+        "roughness" => "\"0.1 um\"",
+        "pinion_speed" => "\"1500 rpm\"",
         _ => "\"20 mm\" (docs/reference.md gives each key's unit)",
     }
 }

@@ -10,9 +10,11 @@
 
 use std::sync::Arc;
 
+use ndarray::Array2;
 use rayon::prelude::*;
 
 use crate::contact::effective_modulus;
+use crate::field::{Axis, FieldError, Plane};
 use crate::lubrication::line_ehl::{self, LineEhl, LineEhlError, LineEhlOptions, LineEhlProblem};
 use crate::scene::{Hertz, Scene};
 use crate::solution::line_numerical::StripTractions;
@@ -29,6 +31,13 @@ pub enum EhlError {
     NotLine { kind: &'static str },
     #[error("{0}")]
     Solver(#[from] LineEhlError),
+    #[error("{0}")]
+    Field(#[from] FieldError),
+    #[error("the EHL solution at an entrainment speed of {speed_m_per_s} m/s did not converge after {iterations} Newton iterations: no step recorded\nhint: the solver is checked for Moes' M from 0.2 to 2000 and L up to 46 (docs/lubrication.md); narrow the sweep's speeds")]
+    NotConverged {
+        speed_m_per_s: f64,
+        iterations: usize,
+    },
 }
 
 /// The solved contact and the stresses under it.
@@ -230,6 +239,147 @@ fn maximum(
     }
 }
 
+/// The solution as `ehl --pressure` writes it and `Scene.ehl()` returns it: `(n, 3)`, columns
+/// x (m, entrainment in +x), pressure (Pa), film (m).
+pub fn solution_array(solution: &LineEhl) -> Array2<f64> {
+    let mut array = Array2::zeros((solution.x_m.len(), 3));
+    for (i, mut row) in array.rows_mut().into_iter().enumerate() {
+        row[0] = solution.x_m[i];
+        row[1] = solution.pressure_pa[i];
+        row[2] = solution.film_m[i];
+    }
+    array
+}
+
+/// The sections a sheet or a recording draws: von Mises in body 1 under the EHL pressure and
+/// under the dry Hertz contact, on one xz grid in units of b.
+#[derive(Clone, Debug)]
+pub struct EhlSections {
+    /// The grid (units of b): x across the contact, z depth.
+    pub plane: Plane,
+    /// `[z, x]` von Mises over `p_h`: under the EHL pressure, and the dry contact's.
+    pub lubricated_von_mises_over_p0: Array2<f64>,
+    pub dry_von_mises_over_p0: Array2<f64>,
+}
+
+/// The drawn window: `x` from −2 b (the inlet's pressure build-up) to 1.5 b (past the spike),
+/// `z` from the surface to 1.2 b (below the largest von Mises, 0.7 b for μ = 0).
+pub const SECTION_X_OVER_B: (f64, f64) = (-2.0, 1.5);
+pub const SECTION_Z_OVER_B: f64 = 1.2;
+
+/// [`EhlSections`] of `study` on `columns` × `rows` samples (rows in parallel, by
+/// [`crate::field::evaluate`]).
+pub fn sections(study: &EhlStudy, columns: usize, rows: usize) -> Result<EhlSections, FieldError> {
+    let plane = Plane::xz(
+        Axis::new(SECTION_X_OVER_B.0, SECTION_X_OVER_B.1, columns),
+        Axis::new(0.0, SECTION_Z_OVER_B, rows),
+    );
+    let map = |solution: &Solution| -> Result<Array2<f64>, FieldError> {
+        let field = crate::field::evaluate(solution, &plane, &[Quantity::VonMises], &|| {})?;
+        Ok(field
+            .map(Quantity::VonMises)
+            .map(|m| m.to_owned())
+            .unwrap_or_else(|| Array2::zeros((rows, columns))))
+    };
+    Ok(EhlSections {
+        plane,
+        lubricated_von_mises_over_p0: map(&study.lubricated())?,
+        dry_von_mises_over_p0: map(&study.dry())?,
+    })
+}
+
+/// The depth (units of b) above which the sweep's near-surface maximum is taken: the layer the
+/// pressure spike stresses, above the Hertzian maximum at 0.7 b.
+pub const NEAR_SURFACE_DEPTH_OVER_B: f64 = 0.25;
+
+/// A sweep's sections (its table and its recording): samples across (−2 b to 1.5 b) and in
+/// depth (0 to 1.2 b), 0.02 b apart (each step's two maps cost a strip sum per sample).
+pub const SWEEP_COLUMNS: usize = 176;
+pub const SWEEP_ROWS: usize = 61;
+
+/// The sheet's sections (`render`): 0.0125 b apart.
+pub const SHEET_COLUMNS: usize = 281;
+pub const SHEET_ROWS: usize = 97;
+
+/// One step of an entrainment-speed sweep (`[sweep] parameter = "entrainment_speed"`).
+#[derive(Clone, Debug)]
+pub struct EhlStep {
+    pub entrainment_m_per_s: f64,
+    pub study: EhlStudy,
+    pub sections: EhlSections,
+    /// The largest von Mises under the EHL pressure at depths up to
+    /// [`NEAR_SURFACE_DEPTH_OVER_B`], over the section's samples (0.02 b apart; units of p_h
+    /// and b).
+    pub near_surface_von_mises: Extreme,
+}
+
+/// The lubricated line contact of `scene` solved at each entrainment speed of `speeds` (m/s),
+/// steps in parallel, with the sections on `columns` × `rows` samples. A step that does not
+/// converge is an error: a sweep never draws an unconverged film.
+pub fn speed_sweep(
+    scene: &Scene,
+    speeds: &[f64],
+    columns: usize,
+    rows: usize,
+) -> Result<Vec<EhlStep>, EhlError> {
+    let base = problem(scene)?;
+    speeds
+        .par_iter()
+        .map(|&speed| {
+            let problem = LineEhlProblem {
+                entrainment_m_per_s: speed,
+                ..base
+            };
+            let study = solve_problem(
+                &problem,
+                scene.contact.friction,
+                scene.contact.poisson,
+                &LineEhlOptions::default(),
+            )?;
+            if !study.solution.converged {
+                return Err(EhlError::NotConverged {
+                    speed_m_per_s: speed,
+                    iterations: study.solution.iterations,
+                });
+            }
+            let sections = sections(&study, columns, rows)?;
+            let near_surface_von_mises = near_surface_maximum(&sections);
+            Ok(EhlStep {
+                entrainment_m_per_s: speed,
+                study,
+                sections,
+                near_surface_von_mises,
+            })
+        })
+        .collect()
+}
+
+/// The largest sample of the EHL section's von Mises at depths up to
+/// [`NEAR_SURFACE_DEPTH_OVER_B`].
+pub fn near_surface_maximum(sections: &EhlSections) -> Extreme {
+    let plane = &sections.plane;
+    let mut best = (0.0, 0.0, f64::NEG_INFINITY);
+    for iz in 0..plane.v.count {
+        let z = plane.v.value(iz);
+        if z > NEAR_SURFACE_DEPTH_OVER_B + 1e-12 {
+            break;
+        }
+        for ix in 0..plane.u.count {
+            let v = sections.lubricated_von_mises_over_p0[[iz, ix]];
+            if v > best.2 {
+                best = (plane.u.value(ix), z, v);
+            }
+        }
+    }
+    Extreme {
+        value_over_p0: best.2,
+        x_over_a: best.0,
+        y_over_a: 0.0,
+        z_over_a: best.1,
+        mirrored_in_y: false,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -241,7 +391,7 @@ mod tests {
         // A steel roller, M about 20, L about 10.
         let e = 2.3e11;
         let r = 0.01;
-        let u = 1e-11;
+        let u: f64 = 1e-11;
         LineEhlProblem {
             load_n_per_m: 20.0 * (2.0 * u).sqrt() * e * r,
             radius_m: r,

@@ -145,11 +145,11 @@ pub fn films(scene: &Scene) -> Option<Lubrication> {
         dimensional.hertz,
     ) {
         (Some(pair), Some(pinion), Hertz::Line(pitch)) => {
-            let [start, end] = pair.path_of_contact_m();
-            let count = crate::study::gear_heating::PATH_POINTS;
-            (0..count)
-                .filter_map(|k| {
-                    let s = start + (end - start) * k as f64 / (count - 1) as f64;
+            // The heating's positions: evenly spaced, the pitch point, and both sides of each
+            // change in the pairs in mesh.
+            crate::study::gear_heating::path_positions(&pair)
+                .into_iter()
+                .filter_map(|s| {
                     let radii = pair.flank_radii_m(s);
                     let load = pitch.load_n_per_m / pair.pairs_in_contact(s) as f64;
                     let body1 = Body {

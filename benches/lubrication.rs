@@ -1,6 +1,7 @@
 //! The numerical EHL of a line contact (issue 52): one solution on the default grid (target:
 //! under a second), the stresses under it, and a sweep of ten entrainment speeds (target:
-//! under ten seconds).
+//! under ten seconds): the solves alone, one after the other, and the shipped recording's
+//! sweep as it is computed (in parallel, with the sections).
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use stressfield::lubrication::line_ehl::{self, LineEhlOptions, LineEhlProblem};
@@ -58,6 +59,25 @@ fn line_ehl(c: &mut Criterion) {
                     line_ehl::solve(&problem, &LineEhlOptions::default()).map(|s| s.minimum_film_m)
                 })
                 .collect::<Vec<_>>()
+        })
+    });
+    // The shipped recording's sweep as `record` and `sweep` compute it: ten speeds solved in
+    // parallel, each with its two sections (0.02 b) and the maxima.
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/record_lubricated_speed_sweep.toml"
+    );
+    let scene = stressfield::scene::Scene::load(std::path::Path::new(path)).expect("shipped");
+    let speeds = scene.sweep.as_ref().expect("a sweep").values.clone();
+    group.bench_function("speed_sweep_10_steps_with_sections", |b| {
+        b.iter(|| {
+            study::ehl::speed_sweep(
+                &scene,
+                &speeds,
+                study::ehl::SWEEP_COLUMNS,
+                study::ehl::SWEEP_ROWS,
+            )
+            .map(|steps| steps.len())
         })
     });
     group.finish();

@@ -332,14 +332,18 @@ fn render_writes_the_ehl_sheet() {
         dir.path().to_str().expect("utf-8"),
     ]);
     assert!(output.status.success(), "{}", stderr(&output));
-    let sheet = image::open(dir.path().join("lubricated_roller_bearing_ehl.png"))
-        .expect("the sheet");
-    assert!(sheet.width() > 1000 && sheet.height() > 700, "{:?}", (sheet.width(), sheet.height()));
+    let sheet =
+        image::open(dir.path().join("lubricated_roller_bearing_ehl.png")).expect("the sheet");
+    assert!(
+        sheet.width() > 1000 && sheet.height() > 700,
+        "{:?}",
+        (sheet.width(), sheet.height())
+    );
     assert!(dir.path().join("lubricated_roller_bearing.png").exists());
 }
 
 /// The sheet's maps are the study's: their largest samples lie within 0.5 % below the
-/// searched maxima (0.01 b grid), the dry one's at Hertz's 0.5567 p_h.
+/// searched maxima (0.01 b grid), the dry one's at Hertz's 0.5575 p_h.
 #[test]
 fn the_sheet_s_maps_peak_at_the_study_s_maxima() {
     let scene = Scene::load(&repo("scenes/lubricated_roller_bearing.toml")).expect("valid");
@@ -353,18 +357,19 @@ fn the_sheet_s_maps_peak_at_the_study_s_maxima() {
         let gap = 1.0 - largest / searched.value_over_p0;
         assert!((-1e-9..0.005).contains(&gap), "{largest} vs {searched:?}");
     }
-    assert!((study.dry_von_mises.value_over_p0 - 0.5567).abs() < 1e-3);
+    assert!((study.dry_von_mises.value_over_p0 - 0.5575).abs() < 1e-4);
 }
 
 /// `sweep --json` of an entrainment-speed sweep (the roller bearing at 1 and 10 m/s; the
 /// shipped ten-step scene is recorded by `record::every_shipped_recording_scene_records`): the
-/// film thickens with the speed, the minimum film within 10 % of Pan & Hamrock's and the
-/// central within 15 % (M = 22 and 7, L = 15 and 27: the fit's central film is the looser one,
+/// film thickens with the speed; against Pan & Hamrock's fit the minimum film within 15 % and
+/// the central within 20 % (M = 35 and 11, L = 12 and 21: the agreement loosens as L grows,
+/// from 6 % at L = 8 in the unit tests; measured 6.8 and 11.7 %, 11.4 and 16.5 %:
 /// docs/lubrication.md).
 #[test]
 fn entrainment_speed_sweep_table() {
-    let shipped = std::fs::read_to_string(repo("scenes/lubricated_roller_bearing.toml"))
-        .expect("shipped");
+    let shipped =
+        std::fs::read_to_string(repo("scenes/lubricated_roller_bearing.toml")).expect("shipped");
     let (_dir, scene) = write(&format!(
         "{}[sweep]\nparameter = \"entrainment_speed\"\nvalues = [\"1 m/s\", 10.0]\n",
         shipped.split("[figure]").next().expect("text")
@@ -402,7 +407,10 @@ fn entrainment_speed_sweep_table() {
             value(step, "near_surface_von_mises_max_pa"),
             value(step, "von_mises_max_pa"),
         );
-        assert!(central.abs() < 0.15 && minimum.abs() < 0.1, "u {speed}: {central} {minimum}");
+        assert!(
+            central.abs() < 0.2 && minimum.abs() < 0.15,
+            "u {speed}: {central} {minimum}"
+        );
     }
 }
 
@@ -411,11 +419,18 @@ fn entrainment_speed_sweep_table() {
 fn entrainment_speed_sweeps_are_refused_where_they_cannot_run() {
     let sweep = "[sweep]\nparameter = \"entrainment_speed\"\nfrom = 0.5\nto = 20.0\nsteps = 4\n";
     for (what, text, key) in [
-        ("a point contact", format!("{POINT}{LUBRICANT}{sweep}"), "sweep.parameter"),
+        (
+            "a point contact",
+            format!("{POINT}{LUBRICANT}{sweep}"),
+            "sweep.parameter",
+        ),
         ("no lubricant", format!("{LINE}{sweep}"), "sweep.parameter"),
         (
             "a zero speed",
-            format!("{LINE}{LUBRICANT}{}", sweep.replace("from = 0.5", "from = 0.0")),
+            format!(
+                "{LINE}{LUBRICANT}{}",
+                sweep.replace("from = 0.5", "from = 0.0")
+            ),
             "sweep.from",
         ),
     ] {

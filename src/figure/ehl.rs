@@ -99,10 +99,7 @@ pub fn ehl_sheet_in(
     let s = &study.solution;
     let b = s.half_width_m;
     let um = |x: f64| x * 1e6;
-    let (x0, x1) = (
-        sections.plane.u.min * b,
-        sections.plane.u.max * b,
-    );
+    let (x0, x1) = (sections.plane.u.min * b, sections.plane.u.max * b);
     let window: Vec<usize> = (0..s.x_m.len())
         .filter(|&i| s.x_m[i] >= x0 && s.x_m[i] <= x1)
         .collect();
@@ -116,10 +113,7 @@ pub fn ehl_sheet_in(
     pressure.x_range = Some((um(x0), um(x1)));
     pressure.y_range = ranges.map(|r| (0.0, r.pressure_gpa));
     pressure.series.push(Series {
-        label: format!(
-            "EHL, max {:.2} GPa",
-            s.max_pressure_pa * 1e-9
-        ),
+        label: format!("EHL, max {:.2} GPa", s.max_pressure_pa * 1e-9),
         points: window
             .iter()
             .map(|&i| (um(s.x_m[i]), s.pressure_pa[i] * 1e-9))
@@ -156,11 +150,7 @@ pub fn ehl_sheet_in(
     }
     // Film in µm, drawn up to four central films (the inlet's wedge rises far above).
     let top_um = 4.0 * um(s.central_film_m);
-    let mut film = Chart::new(
-        "Film thickness h(x)",
-        "x (µm), entrainment in +x",
-        "h (µm)",
-    );
+    let mut film = Chart::new("Film thickness h(x)", "x (µm), entrainment in +x", "h (µm)");
     film.width_px = WIDTH_PX;
     film.x_range = Some((um(x0), um(x1)));
     film.y_range = Some((0.0, top_um));

@@ -278,9 +278,7 @@ impl Validator<'_> {
                     if !(value.is_finite() && value > 0.0) {
                         return Err(self.error(
                             key,
-                            format!(
-                                "an entrainment speed must be positive, got {written} m/s"
-                            ),
+                            format!("an entrainment speed must be positive, got {written} m/s"),
                             Some("the oil is drawn into the contact at u = (u1 + u2)/2 > 0"),
                         ));
                     }

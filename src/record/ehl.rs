@@ -17,6 +17,7 @@
 
 use rerun::RecordingStream;
 
+use super::layout::{Layout, Node, View, ViewKind};
 use super::rough::rerun_error;
 use super::{RecordError, Summary};
 use crate::figure::ehl::{ehl_sheet_in, SheetRanges};
@@ -28,11 +29,12 @@ use crate::study::ehl::{self, EhlStep, NEAR_SURFACE_DEPTH_OVER_B};
 /// The timeline of the steps.
 pub const TIMELINE: &str = "entrainment_speed";
 
-/// Records an entrainment-speed sweep (module doc). The steps are solved first (in parallel),
-/// then sent one by one.
+/// Records an entrainment-speed sweep (module doc); a `live` stream opens following the newest
+/// step. The steps are solved first (in parallel), then sent one by one.
 pub fn record(
     scene: &Scene,
     stream: &RecordingStream,
+    live: bool,
     flush: &dyn Fn() -> Result<(), RecordError>,
 ) -> Result<Summary, RecordError> {
     let sweep = scene
@@ -75,6 +77,7 @@ pub fn record(
                 .fold(0.0, f64::max),
         ),
     };
+    super::layout::send(stream, &plan_layout(), live)?;
     let title = scene.title.clone().unwrap_or_else(|| scene.name.clone());
     let count = steps.len();
     for (k, step) in steps.iter().enumerate() {
@@ -142,6 +145,44 @@ pub fn record(
     })
 }
 
+/// The viewer layout: the sheet takes most of the window; beside it the charts (tabs) above
+/// the documents and the scalars against the step.
+fn plan_layout() -> Layout {
+    let view2d =
+        |name: &str, origin: &str| Node::View(View::new(ViewKind::Spatial2D(None), name, origin));
+    let charts = Node::Tabs(
+        vec![
+            view2d("films vs u", "charts/films"),
+            view2d("spike, stress vs u", "charts/stress"),
+        ],
+        0,
+    );
+    let documents = Node::Tabs(
+        vec![
+            Node::View(View::new(ViewKind::TextDocument, "scene", "description")),
+            Node::View(View::new(ViewKind::TextLog, "steps", "log")),
+            Node::View(
+                View::new(ViewKind::TimeSeries, "over p_h vs step", "series").with_contents(&[
+                    "$origin/spike_pressure_over_ph",
+                    "$origin/near_surface_von_mises_over_ph",
+                    "$origin/von_mises_max_over_ph",
+                ]),
+            ),
+        ],
+        0,
+    );
+    Layout {
+        root: Node::Horizontal(
+            vec![
+                view2d("EHL sheet at this speed", "sheet"),
+                Node::Vertical(vec![charts, documents], vec![1.3, 1.0]),
+            ],
+            vec![super::MAIN_SHARE, super::SIDE_SHARE],
+        ),
+        timeline: Some(TIMELINE.to_string()),
+    }
+}
+
 /// The charts at step `current` (the steps so far, the current one marked), by entity name.
 fn charts(
     steps: &[EhlStep],
@@ -175,13 +216,10 @@ fn charts(
             },
             Series {
                 label: String::new(),
-                points: [(
-                    steps[current].entrainment_m_per_s,
-                    f(&steps[current]),
-                )]
-                .into_iter()
-                .filter(|p| p.1.is_finite())
-                .collect(),
+                points: [(steps[current].entrainment_m_per_s, f(&steps[current]))]
+                    .into_iter()
+                    .filter(|p| p.1.is_finite())
+                    .collect(),
                 style: Style::Markers,
                 colour,
             },
@@ -255,11 +293,13 @@ fn charts(
             .fold(1.0, f64::max);
         1.1 * top
     }));
-    stress.series.extend(line("spike pressure", [214, 39, 40], &|s| {
-        let sol = &s.study.solution;
-        sol.spike_pressure_pa
-            .map_or(f64::NAN, |p| p / sol.hertz_p0_pa)
-    }));
+    stress
+        .series
+        .extend(line("spike pressure", [214, 39, 40], &|s| {
+            let sol = &s.study.solution;
+            sol.spike_pressure_pa
+                .map_or(f64::NAN, |p| p / sol.hertz_p0_pa)
+        }));
     stress.series.extend(line(
         &format!("von Mises max above z = {NEAR_SURFACE_DEPTH_OVER_B} b"),
         [31, 119, 180],

@@ -352,7 +352,7 @@ fn record_with(
         return thermal::record(scene, stream, live, flush);
     }
     if is_entrainment_sweep(scene) {
-        return ehl::record(scene, stream, flush);
+        return ehl::record(scene, stream, live, flush);
     }
     record_sections(scene, stream, live, on_row, flush)
 }

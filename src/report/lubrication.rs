@@ -131,22 +131,19 @@ pub fn text(lubrication: &Lubrication) -> String {
 fn write_text(out: &mut String, l: &Lubrication) -> std::fmt::Result {
     let lubricant = &l.lubricant;
     writeln!(out, "lubrication ({}):", l.formula.citation())?;
-    match lubricant.oil {
-        Some(oil) => {
-            let grade = oil
-                .grade
-                .map_or_else(String::new, |g| format!("ISO VG {g}, "));
-            writeln!(
-                out,
-                "  lubricant                    {grade}{} mm²/s at 40 °C, {} mm²/s at 100 °C (Walther, ASTM D341): {} mm²/s at {} °C, density {} kg/m³",
-                text::significant(oil.kinematic_40c_m2_per_s * 1e6, 4, 1e6, true),
-                text::significant(oil.kinematic_100c_m2_per_s * 1e6, 4, 1e6, true),
-                text::significant(oil.kinematic_m2_per_s * 1e6, 4, 1e6, true),
-                text::fixed(oil.temperature_k - 273.15, 1),
-                text::significant(oil.density_kg_per_m3, 4, 1e6, true)
-            )?;
-        }
-        None => {}
+    if let Some(oil) = lubricant.oil {
+        let grade = oil
+            .grade
+            .map_or_else(String::new, |g| format!("ISO VG {g}, "));
+        writeln!(
+            out,
+            "  lubricant                    {grade}{} mm²/s at 40 °C, {} mm²/s at 100 °C (Walther, ASTM D341): {} mm²/s at {} °C, density {} kg/m³",
+            text::significant(oil.kinematic_40c_m2_per_s * 1e6, 4, 1e6, true),
+            text::significant(oil.kinematic_100c_m2_per_s * 1e6, 4, 1e6, true),
+            text::significant(oil.kinematic_m2_per_s * 1e6, 4, 1e6, true),
+            text::fixed(oil.temperature_k - 273.15, 1),
+            text::significant(oil.density_kg_per_m3, 4, 1e6, true)
+        )?;
     }
     writeln!(
         out,

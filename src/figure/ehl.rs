@@ -134,9 +134,10 @@ pub fn ehl_sheet_in(
         colour: GREY,
     });
     if let (Some(x), Some(p)) = (s.spike_x_m, s.spike_pressure_pa) {
-        // A spike stands apart from the pressure's maximum; at light loads (low M) the one
-        // maximum is all there is, and is called so.
-        let label = if x == s.max_pressure_x_m {
+        // A spike stands near the outlet, apart from the central pressure (it may be the
+        // largest pressure at high speeds); at light loads (low M) one maximum near the centre
+        // is all there is, and is called so.
+        let label = if x == s.max_pressure_x_m && x < 0.5 * b {
             format!("maximum at x = {:.2} b (no separate spike)", x / b)
         } else {
             format!("spike {:.2} GPa at x = {:.2} b", p * 1e-9, x / b)

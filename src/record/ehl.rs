@@ -320,7 +320,7 @@ fn describe(scene: &Scene, steps: &[EhlStep]) -> String {
     );
     text.push_str("- `sheet`: the step's pressure (Hertz's dashed, the spike marked), film (minimum marked, central dashed) and von Mises in body 1 under the EHL pressure beside the dry contact's; the pressure axis and the maps' colours are the whole sweep's.\n");
     text.push_str("- `charts/films`: the central and minimum films against u (log axes) with Pan & Hamrock's formula (dashed); `charts/stress`: the spike's pressure and the largest von Mises (near the surface and overall) over p_h.\n");
-    text.push_str(&format!("- The near-surface maximum is the section's largest sample above z = {NEAR_SURFACE_DEPTH_OVER_B} b (grid 0.01 b).\n\n| step | u (m/s) | M | L | h_min (µm) | spike / p_h |\n|---|---|---|---|---|---|\n"));
+    text.push_str(&format!("- The near-surface maximum is the section's largest sample above z = {NEAR_SURFACE_DEPTH_OVER_B} b (grid 0.02 b).\n\n| step | u (m/s) | M | L | h_min (µm) | spike / p_h |\n|---|---|---|---|---|---|\n"));
     for (k, step) in steps.iter().enumerate() {
         let s = &step.study.solution;
         text.push_str(&format!(

@@ -23,6 +23,8 @@
 //! - [`solution`]: stress solutions as pure functions of a point, in units of `a` and `p0`.
 //! - [`stress`]: the stress tensor and derived measures (principal, von Mises, Tresca, τ1).
 //! - [`surface`]: height maps of rough surfaces.
+//! - [`lubrication`]: lubricated contacts: viscosity and density laws, the film-thickness
+//!   regressions and λ, the numerical EHL solution of a line contact.
 //! - [`field`]: grids, and the one place where rayon evaluates them.
 //! - [`operator`]: below both contact and solution: the shared parallel 2-D FFT and the
 //!   elastic half-space's surface-displacement operator.
@@ -53,6 +55,7 @@ pub mod contact;
 pub mod field;
 pub mod figure;
 pub mod io;
+pub mod lubrication;
 pub mod operator;
 pub mod plasticity;
 #[cfg(feature = "rerun")]

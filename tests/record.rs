@@ -698,7 +698,21 @@ fn every_shipped_recording_scene_records() {
             .is_some_and(|s| s.parameter == SweepParameter::Peclet);
         // A rough contact's load sweep logs its pressure map at every load (and places it
         // once, statically); a speed sweep its surface temperature at every speed.
-        if speed_sweep {
+        let entrainment_sweep = scene
+            .sweep
+            .as_ref()
+            .is_some_and(|s| s.parameter == SweepParameter::EntrainmentSpeed);
+        if entrainment_sweep {
+            // The EHL sheet and the charts at every speed.
+            for entity in ["/sheet", "/charts/films", "/charts/stress"] {
+                assert_eq!(
+                    contents.rows_on(entity, "entrainment_speed"),
+                    steps,
+                    "{}: {entity}",
+                    path.display()
+                );
+            }
+        } else if speed_sweep {
             assert_eq!(
                 contents.rows_on("/surface/field", "peclet"),
                 steps,

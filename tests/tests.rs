@@ -8,6 +8,7 @@ mod golden;
 mod heating_agree;
 mod inputs;
 mod line_contact;
+mod lubrication;
 mod mutations;
 mod patch;
 mod plastic;

@@ -430,6 +430,29 @@ impl Scene {
         ))
     }
 
+    /// `ehl SCENE --json` as text, and the solution as `ehl --pressure` writes it (`(n, 3)`:
+    /// x m, pressure Pa, film m; entrainment in +x). A solution that does not converge
+    /// raises, as the command line fails.
+    fn ehl<'py>(&self, py: Python<'py>) -> PyResult<(String, Bound<'py, PyArray2<f64>>)> {
+        let (json, array) = py
+            .detach(|| -> Result<(String, Array2<f64>)> {
+                let study = study::ehl::solve(&self.scene)
+                    .with_context(|| format!("scene {}", self.scene.name))?;
+                if !study.solution.converged {
+                    bail!(
+                        "scene {}: the EHL solution did not converge after {} Newton iterations\nhint: the solver is checked for Moes' M from 0.2 to 2000 and L up to 46 (docs/lubrication.md)",
+                        self.scene.name,
+                        study.solution.iterations
+                    );
+                }
+                let json =
+                    stressfield::report::lubrication::EhlReport::new(&self.scene, &study).json();
+                Ok((json, study::ehl::solution_array(&study.solution)))
+            })
+            .map_err(raise)?;
+        Ok((json, array.into_pyarray(py)))
+    }
+
     /// Draws the scene's figure to `path` (PNG, or SVG by the extension).
     fn render(&self, py: Python<'_>, path: PathBuf) -> PyResult<()> {
         py.detach(|| -> Result<()> {

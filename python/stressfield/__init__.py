@@ -229,6 +229,15 @@ class Scene:
         values["temperature"] = temperature
         return values
 
+    def ehl(self) -> dict:
+        """The numerical EHL solution of a lubricated line contact: the dict of ``stressfield
+        ehl SCENE --json`` plus ``"solution"``, the float64 array ``ehl --pressure`` writes,
+        shape (n, 3): x (m, entrainment in +x), pressure (Pa), film (m)."""
+        text, solution = self._scene.ehl()
+        values = _json.loads(text)
+        values["solution"] = solution
+        return values
+
     def wear(self, arrays: bool = False) -> dict:
         """The steps of a wear scene (``[wear]`` or ``[[series]]``), the dict of ``stressfield
         wear SCENE --json``; with ``arrays=True`` also ``"heights"`` (each step's worn surface,

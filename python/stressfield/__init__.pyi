@@ -77,6 +77,8 @@ class Scene:
     def contact(self) -> ContactResult: ...
     def thermal(self) -> dict[str, Any]:
         """The keys of `thermal SCENE --json` and "temperature" (K, float64 2-D)."""
+    def ehl(self) -> dict[str, Any]:
+        """The keys of `ehl SCENE --json` and "solution" (float64 (n, 3): x m, p Pa, h m)."""
     def wear(self, arrays: bool = False) -> dict[str, Any]:
         """The keys of `wear SCENE --json`; with arrays=True also "heights", "pressure" and
         "wear_depth" (float64, (steps, ny, nx))."""

@@ -24,6 +24,10 @@ HERTZ_SCENES = [
     "coated_roller_b4c_on_aluminium",  # coated line, hard on soft
     "thermal_ball_on_disc",  # point with a coupled [thermal]
     "wear_series_measured",  # a measured wear series: its first map's contact
+    # Issue 52: lubricated scenes (the "lubrication" keys).
+    "lubricated_roller_bearing",  # line, Pan & Hamrock
+    "lubricated_gear_pitch_point",  # gears: the film along the path of contact
+    "lubricated_ball_on_flat",  # point, Hamrock & Dowson
 ]
 
 
@@ -365,3 +369,28 @@ def test_scene_plastic_is_plastic_json_and_its_fields(tmp_path):
     with pytest.raises(sf.StressfieldError) as caught:
         sf.load_scene(line).plastic()
     assert str(caught.value) == cli_error("plastic", line)
+def test_scene_ehl_is_ehl_json_and_the_pressure_file(tmp_path):
+    path = SCENES / "lubricated_roller_bearing.toml"
+    npy = tmp_path / "ehl.npy"
+    expected = cli_json("ehl", path, "--json", "--pressure", npy)
+    result = sf.load_scene(path).ehl()
+    solution = result.pop("solution")
+    assert result == expected
+    assert set(sf.load_scene(path).hertz()["lubrication"]) >= {
+        "entrainment_speed_m_per_s",
+        "central_film_m",
+        "minimum_film_m",
+        "film_formula",
+        "composite_roughness_m",
+        "lambda",
+        "regime",
+    }
+    assert solution.dtype == np.float64 and solution.shape[1] == 3
+    np.testing.assert_array_equal(solution, np.load(npy))
+
+
+def test_scene_ehl_of_a_point_contact_is_the_cli_error():
+    path = SCENES / "lubricated_ball_on_flat.toml"
+    with pytest.raises(sf.StressfieldError) as raised:
+        sf.load_scene(path).ehl()
+    assert str(raised.value) == cli_error("ehl", path)

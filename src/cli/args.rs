@@ -107,6 +107,20 @@ pub enum Command {
         #[arg(long, value_name = "FILE.png")]
         figure: Option<PathBuf>,
     },
+    /// Solve a lubricated line contact (a line or spur-gear scene with [lubricant])
+    /// numerically: the elastohydrodynamic pressure and film (Reynolds' equation, the elastic
+    /// deflection, the load; Roelands or Barus viscosity), the minimum and central film, the
+    /// pressure spike, and the von Mises stress under the pressure beside the dry Hertz one.
+    Ehl {
+        scene: PathBuf,
+        /// Print one JSON object (SI units) instead of the table.
+        #[arg(long)]
+        json: bool,
+        /// Also write the solution as a NumPy .npy file: float64, shape (n, 3), columns x (m),
+        /// pressure (Pa), film (m); the entrainment in +x (inlet at -x, outlet at +x).
+        #[arg(long, value_name = "FILE.npy")]
+        pressure: Option<PathBuf>,
+    },
     /// The evolution of a rough contact with sliding distance (a scene with [wear] or
     /// [[series]]): per step the real and plastic area, spots, pressures, worn volume and
     /// depth, the subsurface maxima and, with [thermal], the flash temperature.

@@ -6,6 +6,7 @@ pub mod args;
 mod check;
 mod compare;
 pub mod console;
+mod ehl;
 mod npy;
 mod plastic;
 mod probe;
@@ -152,6 +153,11 @@ pub fn run(command: Command) -> Result<()> {
             json,
             fields,
         } => plastic::plastic(&scene, json, fields.as_deref()),
+        Command::Ehl {
+            scene,
+            json,
+            pressure,
+        } => ehl::ehl(&scene, json, pressure.as_deref()),
     }
 }
 

@@ -222,6 +222,13 @@ fn render_scene(
         staged.add(&heating_path, &super::thermal::heating_png(scene)?)?;
         written.push(heating_path.display().to_string());
     }
+    // A lubricated line contact also gets its EHL sheet (the solved pressure and film, the
+    // stress under them beside the dry contact's).
+    if stressfield::study::ehl::problem(scene).is_ok() {
+        let ehl_path = out_dir.join(format!("{}_ehl.png", scene.name));
+        staged.add(&ehl_path, &super::ehl::ehl_png(scene)?)?;
+        written.push(ehl_path.display().to_string());
+    }
     let mut lines = Vec::new();
     if options.save_field {
         match &field {

@@ -6,6 +6,7 @@
 //! figure and sheet types), [`crate::report`] (the tables of a sheet), [`crate::io`].
 
 pub mod coated;
+pub mod ehl;
 pub mod rough;
 pub mod surface;
 pub mod thermal;

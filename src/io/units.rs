@@ -23,6 +23,12 @@ pub enum Dimension {
     /// Archard's dimensional wear coefficient: volume worn per load and sliding distance
     /// (m³/(N m) = m²/N).
     WearCoefficient,
+    /// Dynamic viscosity (Pa s).
+    DynamicViscosity,
+    /// Kinematic viscosity (m²/s).
+    KinematicViscosity,
+    /// The inverse of a pressure (1/Pa): a pressure-viscosity coefficient.
+    InversePressure,
 }
 
 impl Dimension {
@@ -109,6 +115,36 @@ impl Dimension {
                 ("m^2/N", 1.0),
                 ("m2/N", 1.0),
             ],
+            Dimension::DynamicViscosity => &[
+                ("Pa s", 1.0),
+                ("Pa*s", 1.0),
+                ("Pa.s", 1.0),
+                ("mPa s", 1e-3),
+                ("mPa*s", 1e-3),
+                ("mPa.s", 1e-3),
+                ("cP", 1e-3),
+                ("N s/m^2", 1.0),
+            ],
+            Dimension::KinematicViscosity => &[
+                ("mm^2/s", 1e-6),
+                ("mm2/s", 1e-6),
+                ("cSt", 1e-6),
+                ("m^2/s", 1.0),
+                ("m2/s", 1.0),
+            ],
+            Dimension::InversePressure => &[
+                ("1/Pa", 1.0),
+                ("/Pa", 1.0),
+                ("Pa^-1", 1.0),
+                ("1/MPa", 1e-6),
+                ("/MPa", 1e-6),
+                ("MPa^-1", 1e-6),
+                ("1/GPa", 1e-9),
+                ("/GPa", 1e-9),
+                ("GPa^-1", 1e-9),
+                ("m^2/N", 1.0),
+                ("mm^2/N", 1e-6),
+            ],
         }
     }
 
@@ -129,6 +165,9 @@ impl Dimension {
             Dimension::Expansion => "\"11.5e-6 /K\"",
             Dimension::RotationalSpeed => "\"1500 rpm\"",
             Dimension::WearCoefficient => "\"2e-6 mm^3/(N m)\"",
+            Dimension::DynamicViscosity => "\"0.05 Pa s\"",
+            Dimension::KinematicViscosity => "\"220 mm^2/s\"",
+            Dimension::InversePressure => "\"20 GPa^-1\"",
         }
     }
 
@@ -149,6 +188,9 @@ impl Dimension {
             Dimension::Expansion => "/K",
             Dimension::RotationalSpeed => "rad/s",
             Dimension::WearCoefficient => "m^2/N",
+            Dimension::DynamicViscosity => "Pa s",
+            Dimension::KinematicViscosity => "m^2/s",
+            Dimension::InversePressure => "1/Pa",
         }
     }
 
@@ -352,6 +394,39 @@ mod tests {
         assert_relative_eq!(
             parse("475 J/(kg K)", Dimension::SpecificHeat).expect("ok"),
             475.0
+        );
+    }
+
+    /// The lubricant's units (issue 52): viscosities and a pressure-viscosity coefficient.
+    #[test]
+    fn lubricant_units() {
+        assert_relative_eq!(
+            parse("0.05 Pa s", Dimension::DynamicViscosity).expect("ok"),
+            0.05
+        );
+        assert_relative_eq!(
+            parse("50 cP", Dimension::DynamicViscosity).expect("ok"),
+            0.05
+        );
+        assert_relative_eq!(
+            parse("220 mm^2/s", Dimension::KinematicViscosity).expect("ok"),
+            220e-6
+        );
+        assert_relative_eq!(
+            parse("19 cSt", Dimension::KinematicViscosity).expect("ok"),
+            19e-6
+        );
+        assert_relative_eq!(
+            parse("20 GPa^-1", Dimension::InversePressure).expect("ok"),
+            2e-8
+        );
+        assert_relative_eq!(
+            parse("2e-8 1/Pa", Dimension::InversePressure).expect("ok"),
+            2e-8
+        );
+        assert_relative_eq!(
+            parse("20 /GPa", Dimension::InversePressure).expect("ok"),
+            2e-8
         );
     }
 

@@ -38,6 +38,7 @@
 //! scene; it draws what they computed.
 
 mod coated;
+mod ehl;
 mod isosurface;
 mod layout;
 mod panels;
@@ -183,7 +184,7 @@ pub fn timeline(scene: &Scene) -> &'static str {
 /// its parameter's value, an integer in the unit the timeline's name gives (`μ × 100`,
 /// `W (N)`, `W (mN)`, `x0/a × 10`, `x0 (µm)`). The time panel opens on it, so the plots run
 /// against the parameter. `None` for a single step, and for a speed sweep: its Péclet numbers
-/// span decades, and its charts are drawn on logarithmic axes instead.
+/// (or entrainment speeds) span decades, and its charts are drawn on logarithmic axes instead.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ValueTimeline {
     pub name: String,
@@ -200,7 +201,7 @@ impl ValueTimeline {
 
 /// See [`ValueTimeline`].
 pub fn value_timeline(scene: &Scene) -> Option<ValueTimeline> {
-    if is_speed_sweep(scene) {
+    if is_speed_sweep(scene) || is_entrainment_sweep(scene) {
         return None;
     }
     let (label, xs) = panels::parameter_axis(scene)?;
@@ -264,6 +265,14 @@ fn is_speed_sweep(scene: &Scene) -> bool {
         .is_some_and(|s| s.parameter == SweepParameter::Peclet)
 }
 
+/// Whether `scene` sweeps the lubricant's entrainment speed (recorded by [`ehl`]).
+fn is_entrainment_sweep(scene: &Scene) -> bool {
+    scene
+        .sweep
+        .as_ref()
+        .is_some_and(|s| s.parameter == SweepParameter::EntrainmentSpeed)
+}
+
 /// Grid rows a recording of `scene` evaluates (its sections at every step), for progress;
 /// recordings of rough, surface and coated scenes and speed sweeps report none.
 pub fn rows(scene: &Scene) -> usize {
@@ -271,6 +280,7 @@ pub fn rows(scene: &Scene) -> usize {
         scene.contact.kind,
         ContactKind::Rough | ContactKind::Surface
     ) || is_speed_sweep(scene)
+        || is_entrainment_sweep(scene)
         || scene.contact.coating.is_some()
     {
         return 0;
@@ -340,6 +350,9 @@ fn record_with(
     }
     if is_speed_sweep(scene) {
         return thermal::record(scene, stream, live, flush);
+    }
+    if is_entrainment_sweep(scene) {
+        return ehl::record(scene, stream, live, flush);
     }
     record_sections(scene, stream, live, on_row, flush)
 }

@@ -48,6 +48,7 @@ pub(super) fn parameter_axis(scene: &Scene) -> Option<(String, Vec<f64>)> {
             "h (µm)".into(),
             sweep.values.iter().map(|v| v * 1e6).collect(),
         ),
+        SweepParameter::EntrainmentSpeed => ("u (m/s)".into(), sweep.values.clone()),
     })
 }
 

@@ -24,8 +24,9 @@
 //! `von_mises_over_yield`, `tresca_over_half_yield`, `surface_von_mises_over_yield`,
 //! `verdict` (`elastic`, `subsurface`, `surface`), `p0_at_first_yield_pa`,
 //! `load_at_first_yield` (N, or N/m for a line contact; for tractions the factor on every
-//! traction), `load_factor_at_first_yield`. A scene with `[thermal]` adds the key `thermal`
-//! with the object of `thermal --json`.
+//! traction), `load_factor_at_first_yield`. A scene with `[lubricant]` adds the key
+//! `lubrication` (the film and λ, [`super::lubrication`]); a scene with `[thermal]` adds the
+//! key `thermal` with the object of `thermal --json`.
 
 use serde::Serialize;
 
@@ -85,6 +86,9 @@ pub struct HertzReport {
     pub p0_at_first_yield_pa: Option<f64>,
     pub load_at_first_yield: Option<f64>,
     pub load_factor_at_first_yield: Option<f64>,
+    /// The film and λ of a scene with `[lubricant]` ([`super::lubrication`]'s keys).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lubrication: Option<super::lubrication::LubricationReport>,
 }
 
 impl HertzReport {
@@ -148,6 +152,9 @@ impl HertzReport {
             p0_at_first_yield_pa: None,
             load_at_first_yield: None,
             load_factor_at_first_yield: None,
+            lubrication: crate::study::lubrication::films(scene)
+                .as_ref()
+                .map(super::lubrication::LubricationReport::new),
         };
         let tractions = contact.kind == ContactKind::Tractions;
         // The contact's size: from the Hertz solution of the bodies, else from the scale.

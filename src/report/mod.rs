@@ -6,6 +6,7 @@
 pub mod coated;
 pub mod commands;
 pub mod hertz;
+pub mod lubrication;
 pub mod plastic;
 pub mod probe;
 pub mod rough;
@@ -105,6 +106,9 @@ pub fn hertz(scene: &Scene, maxima: &SceneMaxima) -> String {
     let mut out = String::new();
     // Writing into a String cannot fail.
     let _ = write_report(&mut out, scene, maxima);
+    if let Some(lubrication) = crate::study::lubrication::films(scene) {
+        out.push_str(&lubrication::text(&lubrication));
+    }
     out
 }
 

@@ -128,6 +128,47 @@ pub fn sweep_table(
         }
         return Ok(table);
     }
+    if sweep.parameter == SweepParameter::EntrainmentSpeed {
+        let steps = study::ehl::speed_sweep(
+            scene,
+            &sweep.values,
+            study::ehl::SWEEP_COLUMNS,
+            study::ehl::SWEEP_ROWS,
+        )
+        .map_err(|e| step_error(0, e))?;
+        table.columns = vec![
+            column("entrainment_speed_m_per_s", "m/s"),
+            column("moes_m", "1"),
+            column("moes_l", "1"),
+            column("central_film_m", "m"),
+            column("minimum_film_m", "m"),
+            column("max_pressure_pa", "Pa"),
+            column("spike_pressure_pa", "Pa"),
+            column("spike_x_m", "m"),
+            column("von_mises_max_pa", "Pa"),
+            column("von_mises_max_depth_m", "m"),
+            column("near_surface_von_mises_max_pa", "Pa"),
+        ];
+        for step in &steps {
+            let s = &step.study.solution;
+            let (b, ph) = (s.half_width_m, s.hertz_p0_pa);
+            table.rows.push(vec![
+                Some(step.entrainment_m_per_s),
+                Some(s.moes_m),
+                Some(s.moes_l),
+                Some(s.central_film_m),
+                Some(s.minimum_film_m),
+                Some(s.max_pressure_pa),
+                s.spike_pressure_pa,
+                s.spike_x_m,
+                Some(step.study.von_mises.value_over_p0 * ph),
+                Some(step.study.von_mises.z_over_a * b),
+                Some(step.near_surface_von_mises.value_over_p0 * ph),
+            ]);
+        }
+        on_step(steps.len(), steps.len());
+        return Ok(table);
+    }
     if sweep.parameter == SweepParameter::Peclet {
         let speeds = study::thermal_sweep::speed_sweep(scene, &sweep.values, on_step)
             .map_err(|e| step_error(0, e))?;

@@ -31,10 +31,10 @@ use raw::RawScene;
 
 pub use spec::{
     CoatingSpec, Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit,
-    Levelling, Method, Numerical, PanelSpec, PlasticitySpec, RoughSpec, Scale, SectionKind,
-    SeriesDatum, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection,
-    WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
-    ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
+    Levelling, LubricantSpec, Method, Numerical, OilSpec, PanelSpec, PlasticitySpec, RoughSpec,
+    Scale, SectionKind, SeriesDatum, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody,
+    ThermalSpec, TractionDirection, WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH,
+    ROUGH_SECTION_MIN_CELLS, ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
 
@@ -119,6 +119,8 @@ pub struct Scene {
     pub wear: Option<WearSpec>,
     /// Body 1 elastic-plastic (`[plasticity]`, `stressfield plastic`).
     pub plasticity: Option<PlasticitySpec>,
+    /// The lubricant (`[lubricant]`): film thickness, λ, the line contact's EHL solution.
+    pub lubricant: Option<LubricantSpec>,
 }
 
 impl Scene {
@@ -261,7 +263,13 @@ fn unit_example(leaf: &str) -> &'static str {
         "hardness" => "\"700 HV\"",
         "a" | "approach" | "spacing" | "rms_height" | "rolloff" | "cutoff"
         | "correlation_length" => "\"1 um\"",
-        "speed" | "body1_speed" | "body2_speed" => "\"2 m/s\"",
+        "speed" | "body1_speed" | "body2_speed" | "entrainment_speed" => "\"2 m/s\"",
+        "viscosity" => "\"0.05 Pa s\"",
+        "viscosity_40c" | "viscosity_100c" => "\"220 mm^2/s\"",
+        "pressure_viscosity" => "\"20 GPa^-1\"",
+        "temperature" => "\"70 C\"",
+        "roughness" => "\"0.1 um\"",
+        "pinion_speed" => "\"1500 rpm\"",
         _ => "\"20 mm\" (docs/reference.md gives each key's unit)",
     }
 }

@@ -29,6 +29,8 @@ pub struct RawScene {
     pub series: Vec<RawSeriesEntry>,
     /// Body 1 elastic-plastic (issue 51): `stressfield plastic`.
     pub plasticity: Option<RawPlasticity>,
+    /// The lubricant: film thickness and λ (line, point, elliptical and gear scenes).
+    pub lubricant: Option<RawLubricant>,
 }
 
 /// `[plasticity]`: J2 plasticity of body 1 with linear hardening, the load steps and the
@@ -54,6 +56,37 @@ pub struct RawPlasticity {
     pub depth_over_a: Option<f64>,
     /// Relative tolerance of the fixed point in each step.
     pub tolerance: Option<f64>,
+}
+
+/// `[lubricant]`: the oil, how fast the surfaces entrain it, and their roughness.
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLubricant {
+    /// Dynamic viscosity at the inlet temperature, e.g. "0.05 Pa s".
+    pub viscosity: Option<String>,
+    /// An ISO viscosity grade, "ISO VG 220" or 220: the kinematic viscosity at 40 °C.
+    pub grade: Option<NumberOrText>,
+    /// Kinematic viscosities at 40 °C and 100 °C, e.g. "220 mm^2/s" (Walther, ASTM D341).
+    pub viscosity_40c: Option<String>,
+    pub viscosity_100c: Option<String>,
+    /// The inlet (oil) temperature, e.g. "70 C".
+    pub temperature: Option<String>,
+    /// The oil's density at the inlet temperature, e.g. "870 kg/m^3".
+    pub density: Option<String>,
+    /// The pressure-viscosity coefficient α, e.g. "20 GPa^-1".
+    pub pressure_viscosity: Option<String>,
+    /// Roelands' pressure-viscosity index Z.
+    pub roelands_z: Option<f64>,
+    /// The numerical solution's viscosity law: "roelands" (default) or "barus".
+    pub pressure_viscosity_law: Option<String>,
+    /// The numerical solution's density: "dowson_higginson" (default) or "constant".
+    pub compressibility: Option<String>,
+    /// The mean entrainment speed u = (u1 + u2)/2, e.g. "2 m/s".
+    pub entrainment_speed: Option<String>,
+    /// Spur gears: the pinion's speed, when [thermal] does not give it.
+    pub pinion_speed: Option<String>,
+    /// The composite rms roughness, or the two surfaces' rms roughness.
+    pub roughness: Option<TextOrList>,
 }
 
 /// `[wear]`: Archard's law stepped over the sliding distance.

@@ -180,6 +180,45 @@ pub struct GearMesh {
     pub friction: f64,
 }
 
+/// `[lubricant]`: the oil, its entrainment and the surfaces' roughness (film thickness, λ and
+/// the numerical EHL solution of a line contact).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LubricantSpec {
+    /// Dynamic viscosity at the inlet temperature and ambient pressure, Pa s.
+    pub viscosity_pa_s: f64,
+    /// The oil's kinematic viscosities and temperature, when the viscosity follows from them.
+    pub oil: Option<OilSpec>,
+    /// The pressure-viscosity coefficient α (the slope of `ln η` at zero pressure), 1/Pa: the
+    /// film formulas'.
+    pub alpha_per_pa: f64,
+    /// The numerical solution's pressure-viscosity law (Roelands by default).
+    pub pressure_viscosity: crate::lubrication::viscosity::PressureViscosity,
+    /// The numerical solution's density law (Dowson–Higginson by default).
+    pub compressibility: crate::lubrication::density::Compressibility,
+    /// The mean entrainment speed `u = (u1 + u2)/2`, m/s (gears: at the pitch point).
+    pub entrainment_m_per_s: f64,
+    /// Where the entrainment speed comes from, for reports (`lubricant.entrainment_speed`,
+    /// the bodies' speeds of `[thermal]`, the pinion's speed).
+    pub entrainment_source: &'static str,
+    /// Spur gears: the pinion's speed, rad/s (the film along the path of contact).
+    pub pinion_rad_per_s: Option<f64>,
+    /// The composite rms roughness `√(σ1² + σ2²)`, m, when given.
+    pub roughness_m: Option<f64>,
+}
+
+/// An oil given by its kinematic viscosities (Walther, ASTM D341) at a temperature.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OilSpec {
+    /// The ISO VG grade, when the scene names one.
+    pub grade: Option<u32>,
+    pub kinematic_40c_m2_per_s: f64,
+    pub kinematic_100c_m2_per_s: f64,
+    pub temperature_k: f64,
+    pub density_kg_per_m3: f64,
+    /// The kinematic viscosity at the temperature.
+    pub kinematic_m2_per_s: f64,
+}
+
 /// The validated contact of a scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact {

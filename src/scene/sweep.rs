@@ -28,6 +28,10 @@ pub enum SweepParameter {
     /// travelling between the substrate, the interface and the layer. Values from
     /// `from`/`to`/`steps` (in the figure's length unit) are spaced geometrically.
     CoatingThickness,
+    /// The lubricant's entrainment speed (m/s; lubricated line contacts): the numerical EHL
+    /// solution at each speed, its pressure spike and the stress under it. Values from
+    /// `from`/`to`/`steps` are spaced geometrically.
+    EntrainmentSpeed,
 }
 
 impl SweepParameter {
@@ -38,6 +42,7 @@ impl SweepParameter {
             "position" => Some(Self::Position),
             "peclet" => Some(Self::Peclet),
             "coating_thickness" => Some(Self::CoatingThickness),
+            "entrainment_speed" => Some(Self::EntrainmentSpeed),
             _ => None,
         }
     }
@@ -50,6 +55,7 @@ impl SweepParameter {
             Self::Position => "position",
             Self::Peclet => "peclet",
             Self::CoatingThickness => "coating_thickness",
+            Self::EntrainmentSpeed => "entrainment_speed",
         }
     }
 }
@@ -59,7 +65,8 @@ impl SweepParameter {
 pub struct Sweep {
     pub parameter: SweepParameter,
     /// Friction coefficients; loads in N/m (line) or N (point); positions in the figure's
-    /// length unit; body 1's Péclet numbers; coating thicknesses in m.
+    /// length unit; body 1's Péclet numbers; coating thicknesses in m; entrainment speeds in
+    /// m/s.
     pub values: Vec<f64>,
     /// Material points `(x, z)` (figure length unit, body frame, in the plane of the section)
     /// whose stresses are recorded at every step: the stress history as the load passes.
@@ -106,6 +113,10 @@ impl Sweep {
                     crate::io::text::significant(value * 1e6, 3, 1e6, true)
                 )
             }
+            SweepParameter::EntrainmentSpeed => format!(
+                "u = {} m/s",
+                crate::io::text::significant(value, 3, 1e6, true)
+            ),
             SweepParameter::Peclet => {
                 let three = |v: f64| crate::io::text::significant(v, 3, 1e6, true);
                 match &scene.thermal {

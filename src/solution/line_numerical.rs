@@ -56,9 +56,17 @@ impl StripTractions {
         if z > 0.0 || stress.is_finite() {
             return stress;
         }
-        let n = self.pressure.len() as f64;
-        let half = 0.5 * (self.edges[self.pressure.len()] - self.edges[0]) / n;
-        Stress::mean(&[self.summed(x - half, z, nu), self.summed(x + half, z, nu)])
+        // The centres of the strips either side of the edge at x (the strips may differ in
+        // width: the solved pressure of an EHL contact lies on a graded grid).
+        let n = self.pressure.len();
+        let k = self.edges.partition_point(|&e| e < x).min(n);
+        let width = |i: usize| self.edges[i + 1] - self.edges[i];
+        let left = if k > 0 { width(k - 1) } else { width(0) };
+        let right = if k < n { width(k) } else { width(n - 1) };
+        Stress::mean(&[
+            self.summed(x - 0.5 * left, z, nu),
+            self.summed(x + 0.5 * right, z, nu),
+        ])
     }
 
     fn summed(&self, x: f64, z: f64, nu: f64) -> Stress {
@@ -80,8 +88,11 @@ impl StripTractions {
         if !(x >= first && x < last) {
             return (0.0, 0.0);
         }
-        let i = (((x - first) / (last - first)) * n as f64) as usize;
-        let i = i.min(n - 1);
+        let i = self
+            .edges
+            .partition_point(|&e| e <= x)
+            .saturating_sub(1)
+            .min(n - 1);
         (self.pressure[i], self.shear[i])
     }
 

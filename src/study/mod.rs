@@ -19,11 +19,13 @@ pub mod commands;
 mod compass;
 pub mod coupled;
 pub mod drawing;
+pub mod ehl;
 pub mod gear_heating;
 mod grid;
 mod heated_search;
 pub(crate) mod heated_stress;
 pub mod heating_plan;
+pub mod lubrication;
 pub mod map_roll;
 pub mod memory;
 pub mod panels;
@@ -155,8 +157,8 @@ pub fn closed_form(scene: &Scene, panel: &PanelSpec) -> Option<Solution> {
 
 /// The scene at step `k` of its sweep (the scene itself when it has none): the friction of
 /// every panel, the load (Hertz recomputed at fixed geometry), the load's position, the
-/// speeds of `[thermal]` (scaled together to body 1's Péclet number), or the coating's
-/// thickness.
+/// speeds of `[thermal]` (scaled together to body 1's Péclet number), the coating's
+/// thickness, or the lubricant's entrainment speed.
 pub fn at_step(scene: &Scene, k: usize) -> Result<Scene, ContactError> {
     let Some(sweep) = &scene.sweep else {
         return Ok(scene.clone());
@@ -181,6 +183,11 @@ pub fn at_step(scene: &Scene, k: usize) -> Result<Scene, ContactError> {
         SweepParameter::CoatingThickness => {
             if let Some(coating) = &mut stepped.contact.coating {
                 coating.thickness_m = value;
+            }
+        }
+        SweepParameter::EntrainmentSpeed => {
+            if let Some(lubricant) = &mut stepped.lubricant {
+                lubricant.entrainment_m_per_s = value;
             }
         }
     }

@@ -6,6 +6,7 @@ mod coating;
 mod contact;
 mod figure;
 mod gears;
+mod lubricant;
 mod numerical;
 mod plasticity;
 mod rough;
@@ -166,6 +167,7 @@ impl Validator<'_> {
             ));
         }
         self.heated_contact_keys(&raw)?;
+        self.lubricated_bodies(&raw)?;
         let contact = self.contact(&raw.contact)?;
         if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
             if raw.plasticity.is_some() {
@@ -174,6 +176,10 @@ impl Validator<'_> {
                     "volume plasticity is computed under point contacts so far; a rough contact keeps its hardness cap",
                     Some("remove [plasticity] (contact.hardness caps the rough contact's pressure), or press a ball: contact.kind = \"point\""),
                 ));
+            }
+            if raw.lubricant.is_some() {
+                // The same refusal as the table's own (one message for one requirement).
+                self.lubricant(&raw, &contact, None)?;
             }
             return self.rough_scene(raw, name, contact);
         }
@@ -192,6 +198,7 @@ impl Validator<'_> {
             }
         }
         let thermal = self.thermal(&raw, &contact)?;
+        let lubricant = self.lubricant(&raw, &contact, thermal.as_ref())?;
         let own_sections = self.panel_sections(&raw)?;
         let figure = self.figure(&raw.figure, &contact, &own_sections)?;
         let method = self.method("contact.method", raw.contact.method.as_deref())?;
@@ -370,6 +377,7 @@ impl Validator<'_> {
             surface: None,
             wear: None,
             plasticity: None,
+            lubricant,
         };
         if let Some(sweep) = &raw.sweep {
             scene.sweep = Some(self.sweep(sweep, &scene)?);

@@ -128,6 +128,7 @@ impl Validator<'_> {
             surface: Some(surface),
             wear: None,
             plasticity: None,
+            lubricant: None,
         };
         scene.wear = self.wear(&raw, &scene)?;
         if let Some(sweep) = &raw.sweep {

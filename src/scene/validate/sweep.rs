@@ -10,7 +10,7 @@ impl Validator<'_> {
                 "sweep.parameter",
                 format!("unknown sweep parameter `{}`", raw.parameter),
                 Some(
-                    "use \"friction\", \"load\", \"position\", \"peclet\" or \"coating_thickness\"",
+                    "use \"friction\", \"load\", \"position\", \"peclet\", \"coating_thickness\" or \"entrainment_speed\"",
                 ),
             )
         })?;
@@ -22,6 +22,19 @@ impl Validator<'_> {
                 Some("add [contact.body1.coating] with thickness and material, or sweep another parameter"),
             ));
         }
+        if parameter == SweepParameter::EntrainmentSpeed {
+            let line = matches!(
+                contact.dimensional.map(|d| d.hertz),
+                Some(crate::scene::Hertz::Line(_))
+            );
+            if scene.lubricant.is_none() || !line {
+                return Err(self.error(
+                    "sweep.parameter",
+                    "an entrainment-speed sweep records the numerical EHL solution of a lubricated line contact",
+                    Some("give a line contact with bodies and a load, and [lubricant] (docs/lubrication.md), or sweep another parameter"),
+                ));
+            }
+        }
         // A coating's thickness given as a plain number is in the figure's length unit.
         let unit_m = scene.figure.length_unit.metres(contact.half_width_m());
         let values: Vec<f64> = match (&raw.values, raw.from, raw.to, raw.steps) {
@@ -31,6 +44,10 @@ impl Validator<'_> {
                     let key = format!("sweep.values[{i}]");
                     numbers.push(match (value, parameter) {
                         (NumberOrText::Number(v), SweepParameter::CoatingThickness) => v * unit_m,
+                        (NumberOrText::Text(text), SweepParameter::EntrainmentSpeed) => {
+                            units::parse(text, Dimension::Speed)
+                                .map_err(|m| self.error(&key, m, None))?
+                        }
                         (NumberOrText::Number(v), _) => *v,
                         (NumberOrText::Text(text), SweepParameter::CoatingThickness) => {
                             units::parse(text, Dimension::Length)
@@ -103,6 +120,23 @@ impl Validator<'_> {
                     }
                     (0..n)
                         .map(|k| unit_m * from * (to / from).powf(k as f64 / (n - 1) as f64))
+                        .collect()
+                } else if parameter == SweepParameter::EntrainmentSpeed {
+                    // Geometric steps in m/s: 0.1 to 10 m/s is two decades.
+                    for (key, value) in [("sweep.from", from), ("sweep.to", to)] {
+                        if value <= 0.0 {
+                            return Err(self.error(
+                                key,
+                                format!(
+                                    "entrainment speeds (m/s) are spaced geometrically from `from` to `to`, so both must be positive, got {}",
+                                    crate::io::text::number(value)
+                                ),
+                                Some("e.g. from = 0.2, to = 20, steps = 10"),
+                            ));
+                        }
+                    }
+                    (0..n)
+                        .map(|k| from * (to / from).powf(k as f64 / (n - 1) as f64))
                         .collect()
                 } else if parameter == SweepParameter::Peclet {
                     // Geometric steps: Pe 0.1 to 100 is three decades.
@@ -240,6 +274,15 @@ impl Validator<'_> {
                 }
                 SweepParameter::Peclet => self.peclet(key, value)?,
                 SweepParameter::CoatingThickness => self.swept_thickness(key, value, scene)?,
+                SweepParameter::EntrainmentSpeed => {
+                    if !(value.is_finite() && value > 0.0) {
+                        return Err(self.error(
+                            key,
+                            format!("an entrainment speed must be positive, got {written} m/s"),
+                            Some("the oil is drawn into the contact at u = (u1 + u2)/2 > 0"),
+                        ));
+                    }
+                }
                 SweepParameter::Position => {
                     // In units of a, like every figure range.
                     let over_a = value * scene.length_unit_over_a();

@@ -57,9 +57,9 @@ const HEATED_CONTACT_HINT: &str = "give contact.load (instead of contact.a and c
 
 /// The speeds of the contact over the bodies and the sliding speed, m/s, with the keys that
 /// set the bodies' speeds.
-struct Speeds {
-    body1: f64,
-    body2: f64,
+pub(super) struct Speeds {
+    pub(super) body1: f64,
+    pub(super) body2: f64,
     sliding: f64,
     keys: [&'static str; 2],
 }
@@ -283,7 +283,7 @@ impl Validator<'_> {
     /// default `speed`), `V2` over body 2 (`body2_speed`, by default 0: body 2 carries the
     /// contact), and the sliding speed `|V1 - V2|`: derived from them, or `speed` when it
     /// agrees (a `speed` that disagrees is refused, naming the keys).
-    fn speeds(&self, table: &RawThermal) -> Result<Speeds, SceneError> {
+    pub(super) fn speeds(&self, table: &RawThermal) -> Result<Speeds, SceneError> {
         let number = |v: f64| crate::io::text::significant(v, 6, 1e6, true);
         let sliding_given = match &table.speed {
             None => None,

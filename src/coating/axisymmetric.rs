@@ -452,7 +452,7 @@ mod tests {
     #[test]
     fn one_material_gives_hubers_hertz_field_and_the_thickness_limits_hold() {
         // The Hertz pressure (c = [p0]) by the Love integrals alone: on one material Huber's
-        // field (Johnson §3.4); under a coating 1000 a thick the coating's; under one of a/1000
+        // field (Johnson §3.4); under a coating 1000 a thick the coating's; under one of a/10⁶
         // the substrate's (below it). Then the full reference (Huber term added in the coating)
         // on a B4C-like coating: σz, τrz continuous at the interface, σr jumps.
         let (a, p0) = (1e-4, 1e9);

@@ -219,10 +219,10 @@ fn equal_moduli_give_the_homogeneous_field_and_the_free_surface_holds() {
             }
         }
     }
-    // The largest error lies at the window's edge (σxx at x = -1.5a, z = 0.8a): the periodic
-    // images two grid lengths apart.
+    // What is left is the sampled pressure (2.7e-4 p0 on 256² cells): the periodic images two
+    // grid lengths apart, which put 8.9e-3 p0 into σxx at x = -1.5a, z = 0.8a, are gone.
     eprintln!("measured: equal moduli, layered field against Hamilton's closed form (128² over ±2a, |x|, |y| <= 1.5a, z = 0.25a to 0.8a): {worst:.1e} p0");
-    assert!(worst < 1e-2, "{worst}");
+    assert!(worst < 2e-3, "{worst}");
 }
 
 #[test]
@@ -261,31 +261,102 @@ fn the_field_is_continuous_where_it_must_be_across_the_interface() {
 
 #[test]
 fn a_row_alone_equals_the_layer_s_row() {
+    // A row sums the waves and the isolated contact's correction at every cell; a plane sums
+    // the correction every n/16 cells and interpolates it by cubics. Periodic: the same sums.
     use super::stress::LayeredStress;
-    let (n, mu) = (32, 0.3);
+    let (n, mu) = (64, 0.3);
     let (p, q, d) = hertz_tractions(n, mu);
     let body = Layered {
         coating: B4C,
         substrate: STEEL,
         thickness_m: 0.4,
     };
-    let layers = LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
-    let mut worst: f64 = 0.0;
-    for (z, side) in [
-        (0.0, Side::Coating),
-        (0.4, Side::Coating),
-        (0.4, Side::Substrate),
-        (0.9, Side::Substrate),
-    ] {
-        let layer = layers.layer(z, side).expect("layer");
-        for j in [0, n / 2, n - 1] {
-            let row = layers.row(j, z, side);
-            for c in 0..6 {
-                for i in 0..n {
-                    worst = worst.max((layer[[c, j, i]] - row[[c, i]]).abs());
+    for periodic in [true, false] {
+        let layers =
+            LayeredStress::new(body, p.view(), Some(q.view()), [d, d], periodic).expect("layers");
+        let mut worst: f64 = 0.0;
+        for (z, side) in [
+            (0.0, Side::Coating),
+            (0.4, Side::Coating),
+            (0.4, Side::Substrate),
+            (0.9, Side::Substrate),
+            (2.5, Side::Substrate),
+        ] {
+            let layer = layers.layer(z, side).expect("layer");
+            for j in [0, 5, n / 2, n - 1] {
+                let row = layers.row(j, z, side);
+                for c in 0..6 {
+                    for i in 0..n {
+                        worst = worst.max((layer[[c, j, i]] - row[[c, i]]).abs());
+                    }
+                }
+            }
+        }
+        eprintln!(
+            "measured: a row alone against the plane's row (periodic: {periodic}): {worst:.1e} p0"
+        );
+        let tolerance = if periodic { 1e-13 } else { 1e-6 };
+        assert!(worst < tolerance, "{worst}");
+    }
+}
+
+#[test]
+fn the_isolated_field_does_not_see_the_grids_extent() {
+    // An isolated contact's field must not change when its grid is widened by cells of zero
+    // traction: the same Hertz tractions (μ = 0.3) on 64² cells over ±2a and centred in 192²
+    // cells over ±6a, B4C on steel and a soft coating on steel (h = 0.5a), compared on the
+    // small grid's cells at depths to 2.5a. The periodic images two grid lengths apart moved
+    // the field by up to 2.2e-2 p0 here. On the surface the band-limited tractions' waves
+    // near the Nyquist wavenumber do not decay and their sharp edge in k leaves slowly
+    // decaying ripples, whose images are what remains there.
+    use super::stress::LayeredStress;
+    let (n, mu) = (64, 0.3);
+    let (p, q, d) = hertz_tractions(n, mu);
+    let wide = |a: &ndarray::Array2<f64>| {
+        ndarray::Array2::from_shape_fn((3 * n, 3 * n), |(j, i)| {
+            let inside = (n..2 * n).contains(&j) && (n..2 * n).contains(&i);
+            if inside {
+                a[[j - n, i - n]]
+            } else {
+                0.0
+            }
+        })
+    };
+    let (pw, qw) = (wide(&p), wide(&q));
+    let (mut worst, mut surface) = (0.0f64, 0.0f64);
+    for coating in [B4C, SOFT] {
+        let body = Layered {
+            coating,
+            substrate: STEEL,
+            thickness_m: 0.5,
+        };
+        let small =
+            LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("small");
+        let large =
+            LayeredStress::new(body, pw.view(), Some(qw.view()), [d, d], false).expect("large");
+        for (z, side) in [
+            (0.0, Side::Coating),
+            (0.5, Side::Coating),
+            (0.5, Side::Substrate),
+            (1.0, Side::Substrate),
+            (2.5, Side::Substrate),
+        ] {
+            for j in [0, n / 2, n - 1] {
+                let (a, b) = (small.row(j, z, side), large.row(n + j, z, side));
+                for c in 0..6 {
+                    for i in 0..n {
+                        let error = (a[[c, i]] - b[[c, n + i]]).abs();
+                        if z == 0.0 {
+                            surface = surface.max(error);
+                        } else {
+                            worst = worst.max(error);
+                        }
+                    }
                 }
             }
         }
     }
-    assert!(worst < 1e-13, "{worst}");
+    eprintln!("measured: isolated field, 64² cells over ±2a against the same in 192² over ±6a: {worst:.1e} p0 below the surface, {surface:.1e} p0 on it");
+    assert!(worst < 1e-4, "{worst}");
+    assert!(surface < 2e-4, "{surface}");
 }

@@ -1112,3 +1112,66 @@ fn round_two_leftovers_name_their_cause() {
     crate::cli::assert_fails_with(&output, &["heights.x3p", "it is a directory"]);
     assert!(!stderr(&output).contains("zip"), "{}", stderr(&output));
 }
+
+/// Issue 50, round four of hardening. An output directory that takes no file (`/proc`: not
+/// even root creates files there) is found before anything is computed: the scenes here would
+/// fail in their computation (an isolated contact reaching its map's edge), so an output
+/// directory checked only afterwards says the computation's error instead. And a rigid body 2
+/// refuses a Poisson ratio in a rough scene as it does in a coated one, naming the key.
+#[test]
+fn outputs_are_checked_first_and_a_rigid_body_has_no_constants() {
+    let dir = tempfile::tempdir().expect("temp");
+    // A 300 mm ball under 5 N on a 96 µm map: its unworn contact covers the map.
+    let edge = "format = 1\n[contact]\nkind = \"rough\"\nload = \"5 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface.generate]\nsamples = 24\nspacing = \"4 um\"\nhurst = 0.8\nrolloff = \"24 um\"\ncutoff = \"8 um\"\nrms_height = \"0.1 um\"\nsphere_radius = \"300 mm\"\nseed = 2\n";
+    let rough = dir.path().join("edge.toml");
+    std::fs::write(&rough, edge).expect("scene");
+    let output = run(&[
+        "render",
+        rough.to_str().expect("utf8"),
+        "--out-dir",
+        "/proc",
+    ]);
+    assert!(!output.status.success());
+    let message = stderr(&output);
+    assert!(
+        message.contains("cannot write into the output directory /proc"),
+        "{message}"
+    );
+    assert!(!message.contains("edge"), "{message}");
+    let wear = dir.path().join("edge_wear.toml");
+    std::fs::write(
+        &wear,
+        format!(
+            "{edge}[wear]\ncoefficient = \"2e-6 mm^3/(N m)\"\ndistance = \"0.1 m\"\nsteps = 2\n"
+        ),
+    )
+    .expect("scene");
+    let output = run(&[
+        "wear",
+        wear.to_str().expect("utf8"),
+        "--heights-out",
+        "/proc",
+    ]);
+    assert!(!output.status.success());
+    let message = stderr(&output);
+    assert!(
+        message.contains("--heights-out /proc: cannot write into it"),
+        "{message}"
+    );
+    assert!(!message.contains("edge of"), "{message}");
+
+    let rigid = edge.replace(
+        "[contact.body2]\nmaterial = \"steel\"",
+        "[contact.body2]\nmaterial = \"rigid\"\npoisson = 0.3",
+    );
+    let scene = dir.path().join("rigid.toml");
+    std::fs::write(&scene, rigid).expect("scene");
+    let output = run(&["check", scene.to_str().expect("utf8")]);
+    assert!(!output.status.success());
+    let message = stderr(&output);
+    assert!(message.contains("`contact.body2.poisson`"), "{message}");
+    assert!(
+        message.contains("a rigid body has no elastic constants"),
+        "{message}"
+    );
+}

@@ -524,12 +524,15 @@ fn contact_of_map(
 }
 
 /// Measured maps are solved as measured (issue 38): a map tilted as an instrument leaves it
-/// is levelled before its contact is solved, so that it gives the untilted map's contact (the
-/// least-squares plane is linear in the heights: the same to round-off, 1e-9 relative here),
-/// and the JSON says what was removed and the plane's slopes (to 1e-9 of the tilt given);
-/// `level = "none"` keeps the tilt deliberately and its contact moves to the high side.
-/// A periodic solve of a map whose opposite edges do not meet is warned about; one that tiles
-/// (whole periods) is not.
+/// is levelled before its isolated contact is solved, so that it gives the untilted map's
+/// contact (the least-squares plane is linear in the heights: the same to round-off, 1e-9
+/// relative here), and the JSON says what was removed and the plane's slopes (to 1e-9 of the
+/// tilt given); `level = "none"` keeps the tilt deliberately and its contact moves to the high
+/// side. A periodic map is one period of a surface that repeats, and a plane is not periodic
+/// (issue 50): a periodic solve removes only the mean by default (the contact of the map as
+/// given, `level = "none"`'s to the solver's tolerance), and a plane only when asked, with a
+/// warning that it steps the seam. A periodic solve of a map whose opposite edges do not meet
+/// is warned about; one that tiles (whole periods) is not.
 #[test]
 fn a_tilted_measured_map_is_levelled_before_solving_and_a_seam_is_warned_about() {
     let dir = tempfile::tempdir().expect("temporary directory");
@@ -553,8 +556,9 @@ fn a_tilted_measured_map_is_levelled_before_solving_and_a_seam_is_warned_about()
         let tilted = Array2::from_shape_fn((n, n), |(j, i)| {
             wavy[[j, i]] + (sx * (i as f64 * 2.0) + sy * (j as f64 * 2.0)) + 7.0
         });
-        let flat = contact_of_map(dir.path(), "wavy", &wavy, "", periodic);
-        let levelled = contact_of_map(dir.path(), "tilted", &tilted, "", periodic);
+        let plane = if periodic { "level = \"plane\"" } else { "" };
+        let flat = contact_of_map(dir.path(), "wavy", &wavy, plane, periodic);
+        let levelled = contact_of_map(dir.path(), "tilted", &tilted, plane, periodic);
         let raw = contact_of_map(dir.path(), "raw", &tilted, "level = \"none\"", periodic);
         let f = |v: &serde_json::Value, key: &str| v[key].as_f64().expect(key);
         assert_eq!(levelled["levelling"]["removed"], "plane");
@@ -584,16 +588,115 @@ fn a_tilted_measured_map_is_levelled_before_solving_and_a_seam_is_warned_about()
                 || raw["spots"] != flat["spots"],
             "the tilt changed nothing"
         );
-        let seam = |v: &serde_json::Value| {
-            v["warnings"].as_array().expect("warnings").iter().any(|w| {
-                w.as_str()
-                    .expect("text")
-                    .contains("opposite edges do not meet")
-            })
+        let warned = |v: &serde_json::Value, text: &str| {
+            v["warnings"]
+                .as_array()
+                .expect("warnings")
+                .iter()
+                .any(|w| w.as_str().expect("text").contains(text))
         };
+        let seam = |v: &serde_json::Value| warned(v, "opposite edges do not meet");
         // Whole periods tile, levelled or not (the plane is removed, the waves kept); the raw
         // tilt steps at both seams.
         assert!(!seam(&flat) && !seam(&levelled), "periodic {periodic}");
         assert_eq!(seam(&raw), periodic, "periodic {periodic}: {raw}");
+        // A plane asked of a periodic map is warned about where it steps the seam: the tilt's
+        // does (0.5 µm across x), the waves' own least-squares plane does not.
+        let stepped = "on a periodic map: the removed form is not periodic";
+        assert_eq!(warned(&levelled, stepped), periodic, "{levelled}");
+        assert!(!warned(&flat, stepped), "{flat}");
+        if periodic {
+            // The default of a periodic map: only the mean removed, the map as given.
+            let default = contact_of_map(dir.path(), "default", &tilted, "", periodic);
+            assert_eq!(default["levelling"]["removed"], "mean");
+            assert_eq!(
+                default["levelling"]["plane_m"],
+                levelled["levelling"]["plane_m"]
+            );
+            assert_eq!(default["spots"], raw["spots"]);
+            for key in ["contact_fraction", "max_pressure_pa", "von_mises_max_pa"] {
+                let (a, b) = (f(&default, key), f(&raw, key));
+                assert!((a - b).abs() <= 1e-6 * b.abs(), "{key}: {a} against {b}");
+            }
+            assert!(seam(&default) && !warned(&default, stepped), "{default}");
+        }
     }
+}
+
+/// A periodic self-affine map given as a file (the kind Tamaas, ContactMechanics and
+/// SurfaceTopography generate and exchange) is solved as the surface it is (issue 50): with
+/// the default levelling its periodic contact is the generated map's own, which nothing
+/// levels (pressure fields equal to 1e-9 of the peak, correlation 1 - 1e-12). Removing a
+/// plane, as the default did, tilted the map and stepped its seam: the pressures' correlation
+/// with Tamaas's solution of the same heights fell to 0.992 at 256².
+#[test]
+fn a_periodic_map_from_a_file_is_solved_as_given() {
+    let dir = tempfile::tempdir().expect("temporary directory");
+    let generate = "[surface.generate]\nsamples = 64\nspacing = \"1 um\"\nhurst = 0.8\nrolloff = \"16 um\"\ncutoff = \"2 um\"\nrms_slope = 0.1\nseed = 3\n";
+    let head = "format = 1\n[contact]\nkind = \"rough\"\nmean_pressure = \"0.5 GPa\"\nperiodic = true\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"rigid\"\n";
+    let generated = dir.path().join("generated.toml");
+    std::fs::write(&generated, format!("{head}{generate}")).expect("scene");
+    let heights = dir.path().join("heights.npy");
+    let written = std::process::Command::new(env!("CARGO_BIN_EXE_stressfield"))
+        .args(["surface", generated.to_str().expect("utf-8"), "--heights"])
+        .arg(&heights)
+        .output()
+        .expect("the binary runs");
+    assert!(
+        written.status.success(),
+        "{}",
+        String::from_utf8_lossy(&written.stderr)
+    );
+    let file = dir.path().join("file.toml");
+    std::fs::write(
+        &file,
+        format!("{head}[surface]\nfile = \"heights.npy\"\nspacing = \"1 um\"\n"),
+    )
+    .expect("scene");
+    let run = |scene: &std::path::Path| -> (serde_json::Value, Vec<f64>) {
+        let fields = dir.path().join("pressure.npy");
+        let output = std::process::Command::new(env!("CARGO_BIN_EXE_stressfield"))
+            .args([
+                "contact",
+                scene.to_str().expect("utf-8"),
+                "--json",
+                "--pressure",
+            ])
+            .arg(&fields)
+            .output()
+            .expect("the binary runs");
+        assert!(
+            output.status.success(),
+            "{}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("json");
+        let file = std::fs::File::open(&fields).expect("pressure file");
+        let pressure: ndarray::Array2<f64> =
+            ndarray_npy::ReadNpyExt::read_npy(file).expect("pressure .npy");
+        (json, pressure.iter().copied().collect())
+    };
+    let (reference, p_reference) = run(&generated);
+    let (given, p_given) = run(&file);
+    assert_eq!(given["levelling"]["removed"], "mean", "{given}");
+    let peak = p_reference.iter().fold(0.0f64, |m, &p| m.max(p));
+    let worst = p_reference
+        .iter()
+        .zip(&p_given)
+        .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(
+        worst <= 1e-9 * peak,
+        "pressures differ by {worst} of a peak {peak} Pa"
+    );
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    let (ma, mb) = (mean(&p_reference), mean(&p_given));
+    let (mut sab, mut saa, mut sbb) = (0.0, 0.0, 0.0);
+    for (a, b) in p_reference.iter().zip(&p_given) {
+        sab += (a - ma) * (b - mb);
+        saa += (a - ma).powi(2);
+        sbb += (b - mb).powi(2);
+    }
+    let correlation = sab / (saa * sbb).sqrt();
+    assert!(correlation > 1.0 - 1e-12, "correlation {correlation}");
+    assert_eq!(reference["spots"], given["spots"]);
 }

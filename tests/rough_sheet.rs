@@ -310,10 +310,11 @@ fn a_contact_on_the_periodic_seam_is_drawn_centred_on_the_maximum() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/rough_worn_on_flat.toml");
     let text = std::fs::read_to_string(&path)
         .expect("shipped scene")
-        .replace(
-            "file = \"surfaces/worn.asc\"",
-            "file = \"surfaces/worn.asc\"\nlevel = \"none\"",
-        );
+        .replace("level = \"plane\"", "level = \"none\"");
+    assert!(
+        text.contains("level = \"none\""),
+        "the shipped scene's level"
+    );
     let raw = Scene::parse(&text, "rough_worn_on_flat", &path.display().to_string())
         .unwrap_or_else(|e| panic!("{e}"));
     let (_, _, unmoved) = solved_sheet(&raw);

@@ -202,15 +202,21 @@ fn wear_steps(scene: &Path, extra: &[&str]) -> Vec<serde_json::Map<String, Value
 
 #[test]
 fn a_series_read_back_from_heights_out_gives_the_simulated_steps() {
-    // The simulation's worn heights (`--heights-out`, with its [[series]] fragment) read back
-    // as a measured series, with the same contact and hardness: each step solved again from
-    // its map gives the same contact (area and spots exactly, the peak pressure and the von
-    // Mises maximum within 1e-6, relative: the solver's tolerance is 1e-8), and the volume the
-    // maps lack is the simulation's worn plus flattened volume within 1e-9 of the total.
-    // With a rough counter-surface too: it slides by each entry's distance in both.
+    // The simulation's worn heights (`--heights-out`, with its [[series]] fragment, which
+    // carries its own [surface] table: both spacings and level = "none") read back as a
+    // measured series, with the same contact and hardness: each step solved again from its
+    // map gives the same contact (area and spots exactly, the peak pressure and the von Mises
+    // maximum within 1e-6, relative: the solver's tolerance is 1e-8), and the volume the maps
+    // lack is the simulation's worn plus flattened volume within 1e-9 of the total. With a
+    // rough counter-surface too: it slides by each entry's distance in both. On an
+    // anisotropic grid (4 x 6 µm cells) the fragment states both spacings (issue 50: it wrote
+    // dx alone, and the surface read back was another). Read back with the default levelling
+    // instead (every map less the first map's least-squares plane: one datum for the
+    // specimen), the maps' differences, and so the worn volume, are unchanged.
     for (case, extra) in [
         ("capped", "hardness = \"300 HV\""),
         ("counter", "hardness = \"300 HV\""),
+        ("anisotropic", "hardness = \"300 HV\""),
     ] {
         let dir = tempfile::tempdir().expect("temp");
         let counter = if case == "counter" {
@@ -218,7 +224,10 @@ fn a_series_read_back_from_heights_out_gives_the_simulated_steps() {
         } else {
             ""
         };
-        let body = small_scene(extra) + counter;
+        let mut body = small_scene(extra) + counter;
+        if case == "anisotropic" {
+            body = body.replace("spacing = \"4 um\"", "spacing = [\"4 um\", \"6 um\"]");
+        }
         let scene = write(dir.path(), "sim.toml", &(body.clone() + SMALL_WEAR));
         let out = dir.path().join("heights");
         std::fs::create_dir(&out).expect("mkdir");
@@ -233,9 +242,7 @@ fn a_series_read_back_from_heights_out_gives_the_simulated_steps() {
         let series = write(
             &out,
             "series.toml",
-            &format!(
-                "{generated}{counter}[surface]\nspacing = \"4 um\"\nlevel = \"none\"\n{fragment}"
-            ),
+            &format!("{generated}{counter}{fragment}"),
         );
         let measured = wear_steps(&series, &[]);
         assert_eq!(measured.len(), simulated.len());
@@ -263,6 +270,24 @@ fn a_series_read_back_from_heights_out_gives_the_simulated_steps() {
         }
         eprintln!("measured: series read back ({case}): largest relative difference of the peak pressure and von Mises maximum {worst:.1e}");
         assert!(worst < 1e-6, "{case}: {worst}");
+        // The default levelling: one datum, so the same worn volume and depth at every step.
+        let levelled = write(
+            &out,
+            "levelled.toml",
+            &format!(
+                "{generated}{counter}{}",
+                fragment.replace("level = \"none\"", "")
+            ),
+        );
+        for (l, m) in wear_steps(&levelled, &[]).iter().zip(&measured) {
+            for key in ["worn_volume_m3", "max_wear_depth_m"] {
+                let (a, b) = (l[key].as_f64().expect("a"), m[key].as_f64().expect("b"));
+                assert!(
+                    (a - b).abs() <= 1e-9 * b.abs().max(1e-30),
+                    "{case}: {key} {a} {b}"
+                );
+            }
+        }
     }
 }
 
@@ -436,4 +461,215 @@ fn wear_outputs_are_checked_before_computing_and_written_all_or_none() {
     names.sort();
     assert_eq!(names.len(), 8, "{names:?}");
     assert!(names.iter().all(|n| n.starts_with("ball_")), "{names:?}");
+}
+
+/// A measured series is one specimen (issue 50): its maps are levelled by one datum. Two maps
+/// of a rough flat (32², 2 µm cells) with a bump that carries the contact, the second worn by
+/// a 0.3 µm deep pit off the middle (12 x 12 cells, 1728 µm³) and remounted with a tilt of
+/// 2e-3 along x and -1e-3 along y
+/// (0.13 and 0.06 µm across the map, the order of the pit): each map's plane fitted on the
+/// unworn border (`datum_region`) removes the mounting tilt and the worn volume is the pit's
+/// (to 1e-9); the default (the first map's plane, one frame for both) keeps the second map's
+/// tilt, which the datum offset cannot remove, and the volume is off; `datum = "each"`, the
+/// old default, fits the worn map's plane through its pit, and is off too. And the datum keys
+/// are refused where they mean nothing, named.
+#[test]
+fn a_series_is_levelled_by_one_datum() {
+    let n = 32;
+    let rough = |j: usize, i: usize| {
+        let (x, y) = (i as f64 / n as f64, j as f64 / n as f64);
+        let bump = (-((i as f64 - 10.0).powi(2) + (j as f64 - 16.0).powi(2)) / 8.0).exp();
+        0.05e-6 * (2.0 * std::f64::consts::PI * (3.0 * x + 2.0 * y)).sin()
+            + 0.03e-6 * (2.0 * std::f64::consts::PI * (5.0 * x - 4.0 * y) + 1.0).cos()
+            + 1e-6 * bump
+    };
+    let pit = |j: usize, i: usize| (18..30).contains(&i) && (10..22).contains(&j);
+    let first = npy(n, n, rough);
+    let worn = npy(n, n, |j, i| {
+        rough(j, i) - if pit(j, i) { 0.3e-6 } else { 0.0 } + 2e-3 * (i as f64 * 2e-6)
+            - 1e-3 * (j as f64 * 2e-6)
+    });
+    let head = "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.01 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n";
+    let series = "[[series]]\nfile = \"a.npy\"\ndistance = \"0 m\"\n[[series]]\nfile = \"b.npy\"\ndistance = \"1 m\"\n";
+    let dir = tempfile::tempdir().expect("temp");
+    std::fs::write(dir.path().join("a.npy"), &first).expect("a");
+    std::fs::write(dir.path().join("b.npy"), &worn).expect("b");
+    let volume = |surface: &str| -> f64 {
+        let scene = write(
+            dir.path(),
+            "series.toml",
+            &format!("{head}[surface]\nspacing = \"2 um\"\n{surface}\n{series}"),
+        );
+        let steps = wear_steps(&scene, &[]);
+        steps[1]["worn_volume_m3"].as_f64().expect("volume")
+    };
+    let pit_m3 = 12.0 * 12.0 * 0.3e-6 * 4e-12;
+    // The unworn border: the first four columns and the whole height (x 0 to 6 µm).
+    let region = volume("datum_region = [\"0 um\", \"6 um\", \"0 um\", \"62 um\"]");
+    assert!(
+        (region - pit_m3).abs() <= 1e-9 * pit_m3,
+        "{region} against {pit_m3}"
+    );
+    let first_datum = volume("");
+    assert!(
+        (first_datum - pit_m3).abs() > 0.05 * pit_m3,
+        "{first_datum}"
+    );
+    assert_eq!(volume("datum = \"first\""), first_datum);
+    let each = volume("datum = \"each\"");
+    assert!((each - pit_m3).abs() > 0.05 * pit_m3, "{each}");
+
+    let files: &[(&str, &[u8])] = &[("a.npy", &first), ("b.npy", &worn)];
+    for (surface, key) in [
+        ("datum = \"last\"", "surface.datum"),
+        (
+            "datum = \"each\"\ndatum_region = [\"0 um\", \"6 um\", \"0 um\", \"62 um\"]",
+            "surface.datum",
+        ),
+        (
+            "datum_region = [\"0 um\", \"6 um\", \"0 um\"]",
+            "surface.datum_region",
+        ),
+        (
+            "datum_region = [\"6 um\", \"0 um\", \"0 um\", \"62 um\"]",
+            "surface.datum_region",
+        ),
+        (
+            "datum_region = [\"0 um\", \"1 um\", \"0 um\", \"62 um\"]",
+            "surface.datum_region",
+        ),
+        (
+            "datum_region = [\"0 um\", \"6 MPa\", \"0 um\", \"62 um\"]",
+            "surface.datum_region",
+        ),
+        ("level = \"none\"\ndatum = \"first\"", "surface.datum"),
+    ] {
+        let message = refused(
+            &format!("{head}[surface]\nspacing = \"2 um\"\n{surface}\n{series}"),
+            files,
+        );
+        assert!(
+            message.contains(&format!("`{key}`")),
+            "{surface}: {message}"
+        );
+    }
+    // Not a series: the datum means nothing.
+    let message = refused(
+        &format!("{head}[surface]\nfile = \"a.npy\"\nspacing = \"2 um\"\ndatum = \"first\"\n"),
+        files,
+    );
+    assert!(message.contains("`surface.datum`"), "{message}");
+}
+
+/// A wear scene whose unworn contact already reaches the map's edge (a 300 mm ball under 5 N
+/// on a 192 µm map: a Hertz radius of about 210 µm) is refused with the contact's own hint:
+/// at step 0 nothing is worn, so "shorten wear.distance" would not help (issue 50).
+#[test]
+fn an_unworn_contact_at_the_edge_gets_the_contact_s_hint() {
+    let dir = tempfile::tempdir().expect("temp");
+    let text = small_scene("")
+        .replace("sphere_radius = \"3 mm\"", "sphere_radius = \"300 mm\"")
+        .replace("load = \"0.5 N\"", "load = \"5 N\"")
+        + &SMALL_WEAR.replace("distance = \"5 m\"", "distance = \"0.1 m\"");
+    let scene = write(dir.path(), "edge.toml", &text);
+    let output = run(&["wear", scene.to_str().expect("utf8")]);
+    assert!(!output.status.success());
+    let message = stderr(&output);
+    assert!(message.contains("(step 0)"), "{message}");
+    assert!(message.contains("enlarge the domain"), "{message}");
+    assert!(!message.contains("wear.distance"), "{message}");
+}
+
+/// A series map that grew (material added, nothing worn: a 0.2 µm bump beside a ball's
+/// contact) reports no wear and no scar, and says that the map stands higher (issue 50: each
+/// map levelled by its own plane made the bump a tilt, 6 nm of wear and a scar 15 times the
+/// contact).
+#[test]
+fn a_series_map_that_grew_shows_no_wear_and_says_it_stands_higher() {
+    let n = 48;
+    let ball = |j: usize, i: usize| {
+        let (x, y) = ((i as f64 - 24.0) * 2e-6, (j as f64 - 24.0) * 2e-6);
+        -(x * x + y * y) / (2.0 * 3e-3)
+            + 0.01e-6 * ((0.7 * i as f64).sin() + (1.3 * j as f64 + 0.5).cos())
+    };
+    let first = npy(n, n, ball);
+    let grown = npy(n, n, |j, i| {
+        ball(j, i)
+            + 0.2e-6 * (-((i as f64 - 12.0).powi(2) + (j as f64 - 36.0).powi(2)) / 20.0).exp()
+    });
+    let dir = tempfile::tempdir().expect("temp");
+    std::fs::write(dir.path().join("a.npy"), &first).expect("a");
+    std::fs::write(dir.path().join("b.npy"), &grown).expect("b");
+    let scene = write(
+        dir.path(),
+        "grown.toml",
+        "format = 1\n[contact]\nkind = \"rough\"\nload = \"0.2 N\"\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"steel\"\n[surface]\nspacing = \"2 um\"\n[[series]]\nfile = \"a.npy\"\ndistance = \"0 m\"\n[[series]]\nfile = \"b.npy\"\ndistance = \"1 m\"\n",
+    );
+    let output = run(&["wear", scene.to_str().expect("utf8"), "--json"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let report = json(&output);
+    let last = &steps(&report)[1];
+    assert_eq!(last["worn_volume_m3"].as_f64(), Some(0.0), "{last:?}");
+    assert_eq!(last["scar_area_m2"].as_f64(), Some(0.0), "{last:?}");
+    let warnings = report["warnings"].as_array().expect("warnings");
+    assert_eq!(warnings.len(), 1, "{warnings:?}");
+    let text = warnings[0].as_str().expect("text");
+    assert!(
+        text.contains("series[1] (b.npy) stands up to 0.2"),
+        "{text}"
+    );
+    // The first map against itself: nothing to say.
+    let same = write(
+        dir.path(),
+        "same.toml",
+        &std::fs::read_to_string(&scene)
+            .expect("scene")
+            .replace("b.npy", "a.npy"),
+    );
+    let output = run(&["wear", same.to_str().expect("utf8"), "--json"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(json(&output)["warnings"].as_array().map(Vec::len), Some(0));
+}
+
+/// `check` of a wear scene states the whole run (issue 50: it stated one contact's estimate,
+/// and none with `[thermal]`): every step's fields (32 bytes a cell a step, exactly), more
+/// time for more steps, a counter-surface, heating and coupling, each by its measured factor.
+/// The estimate against measured runs is in docs/benchmarks.md (within 20 %).
+#[test]
+fn check_estimates_the_whole_wear_run() {
+    let dir = tempfile::tempdir().expect("temp");
+    let heating = "[thermal]\nspeed = \"0.5 m/s\"\nbody1_speed = \"0 m/s\"\nbody2_speed = \"0.5 m/s\"\npartition = \"body1\"\n";
+    let counter = "[counter_surface.generate]\nsamples = 48\nspacing = \"4 um\"\nhurst = 0.8\nrolloff = \"48 um\"\ncutoff = \"16 um\"\nrms_height = \"0.2 um\"\nseed = 9\n";
+    let cost = |name: &str, text: &str| -> (usize, f64, String) {
+        let path = write(dir.path(), name, text);
+        let scene = stressfield::study::load_scene(&path).unwrap_or_else(|e| panic!("{e}"));
+        let (bytes, seconds) = stressfield::study::heating_plan::wear_cost(&scene, [48, 48]);
+        let output = run(&["check", path.to_str().expect("utf8")]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        (
+            bytes,
+            seconds,
+            String::from_utf8_lossy(&output.stdout).into_owned(),
+        )
+    };
+    let thirty = SMALL_WEAR.replace("steps = 6", "steps = 30");
+    let (b6, s6, said) = cost("six.toml", &(small_scene("") + SMALL_WEAR));
+    assert!(
+        said.contains("wear: about") && said.contains("in all"),
+        "{said}"
+    );
+    let (b30, s30, _) = cost("thirty.toml", &(small_scene("") + &thirty));
+    assert_eq!(b30 - b6, 24 * 32 * 48 * 48);
+    assert!(s30 > 2.0 * s6, "{s30} {s6}");
+    let (_, heated, said) = cost("heated.toml", &(small_scene("") + &thirty + heating));
+    assert!(said.contains("wear: about"), "{said}");
+    let (_, sliding, _) = cost("counter.toml", &(small_scene("") + counter + &thirty));
+    let (_, coupled, _) = cost(
+        "coupled.toml",
+        &(small_scene("") + &thirty + heating + "coupled = true\n"),
+    );
+    assert!(
+        heated > s30 && sliding > heated && coupled > heated,
+        "{s30} {heated} {sliding} {coupled}"
+    );
 }

@@ -4,16 +4,22 @@
 //!
 //! Arrays come in as NumPy float64 views of any order (C or Fortran: read through their
 //! strides, not copied) and go out as arrays moved into NumPy (not copied). Computation runs
-//! with the GIL released (`Python::detach`). Errors raise `StressfieldError` (a `ValueError`)
-//! with the text the command line prints after `error: `. The Python wrapper
+//! with the GIL released (`Python::detach`); the long ones (rough contacts and what contains
+//! them) check Python's pending signals between solver iterations ([`Signals`]), so that
+//! Ctrl-C stops them. Errors raise `StressfieldError` (a `ValueError`) with the text the
+//! command line prints after `error: `; every argument is checked against the bounds the
+//! command line keeps for the same quantity in a scene, and named. The Python wrapper
 //! (`stressfield/__init__.py`) checks the arguments' kinds, broadcasts, and builds the result
 //! objects; the JSON objects are passed as the command line's text and parsed there, so that
 //! every number is the command line's to the last digit.
 
+use std::ops::ControlFlow;
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, bail, Context};
-use ndarray::{Array2, Array4, ArrayView1, Axis};
+use ndarray::{Array2, Array4, ArrayView1, ArrayView2, Axis};
 use numpy::{IntoPyArray, PyArray2, PyArray4, PyReadonlyArray1, PyReadonlyArray2};
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
@@ -22,12 +28,13 @@ use rayon::prelude::*;
 
 use stressfield::contact::rough::{self as rough_contact, Control, RoughContactProblem};
 use stressfield::operator::elastic::Periodicity;
+use stressfield::report::commands::{contact_json, heating_report, hertz_json};
 use stressfield::report::rough::ContactReport;
 use stressfield::report::surface::SurfaceReport;
-use stressfield::report::thermal::ThermalReport;
-use stressfield::scene::{ContactKind, RoughSpec};
+use stressfield::scene::{Bounds, ContactKind, RoughSpec};
 use stressfield::solution::dcfft::{DcFft, TractionGrid};
 use stressfield::study;
+use stressfield::study::commands::{self, Progress};
 use stressfield::study::rough::{RoughMaterials, REFERENCE_LENGTH_M, REFERENCE_PRESSURE_PA};
 use stressfield::surface::read::{self, Fill, ReadOptions};
 use stressfield::surface::stats::{self, FormRemoval, Options};
@@ -87,115 +94,112 @@ fn parse_scene(py: Python<'_>, text: &str, base_dir: PathBuf, name: &str) -> PyR
     Ok(Scene { scene, file })
 }
 
-/// `contact SCENE`'s computation: the solved contact, its report and, with `[thermal]`, the
-/// heating on it.
-fn scene_contact(scene: &stressfield::scene::Scene, file: &str) -> Result<(String, Array2<f64>)> {
+/// Python's pending signals (Ctrl-C), checked from a computation running without the GIL.
+///
+/// Python runs its signal handlers in the main thread between bytecodes; a computation in
+/// Rust holds that thread until it returns, so a Ctrl-C would wait for the end of a solve.
+/// [`Signals::stop`] takes the GIL briefly and runs the handlers (`PyErr_CheckSignals`): when
+/// one raises (`KeyboardInterrupt`), the exception is kept, the computation is asked to stop
+/// (between two iterations of a rough contact's solver, or before the next phase of a
+/// study), and [`Signals::finish`] raises it instead of any result. Only a call from the
+/// main thread checks (Python delivers signals there alone), and at most every
+/// [`Signals::EVERY`], so that other Python threads keep the GIL.
+struct Signals {
+    main_thread: bool,
+    last: Instant,
+    raised: Option<PyErr>,
+}
+
+impl Signals {
+    /// The least time between two checks.
+    const EVERY: Duration = Duration::from_millis(20);
+
+    /// Signals for a call made by `py`'s current thread.
+    fn new(py: Python<'_>) -> Self {
+        fn on_main_thread(py: Python<'_>) -> PyResult<bool> {
+            let threading = py.import("threading")?;
+            let main = threading.call_method0("main_thread")?;
+            let current = threading.call_method0("current_thread")?;
+            Ok(main.is(&current))
+        }
+        Self {
+            main_thread: on_main_thread(py).unwrap_or(false),
+            last: Instant::now(),
+            raised: None,
+        }
+    }
+
+    /// Whether to stop: a signal handler has raised (now or before).
+    fn stop(&mut self) -> ControlFlow<()> {
+        if self.raised.is_some() {
+            return ControlFlow::Break(());
+        }
+        if !self.main_thread || self.last.elapsed() < Self::EVERY {
+            return ControlFlow::Continue(());
+        }
+        self.last = Instant::now();
+        match Python::attach(|py| py.check_signals()) {
+            Ok(()) => ControlFlow::Continue(()),
+            Err(raised) => {
+                self.raised = Some(raised);
+                ControlFlow::Break(())
+            }
+        }
+    }
+
+    /// The computation's result as Python sees it: the exception a signal handler raised, if
+    /// any (whatever the computation returned), else the result or its error.
+    fn finish<T>(self, result: Result<T>) -> PyResult<T> {
+        match self.raised {
+            Some(raised) => Err(raised),
+            None => result.map_err(raise),
+        }
+    }
+}
+
+/// A study of the commands ([`commands`]) with the GIL released and Ctrl-C heard between its
+/// steps.
+fn interruptible<T: Send>(
+    py: Python<'_>,
+    run: impl FnOnce(&mut dyn FnMut(Progress) -> ControlFlow<()>) -> Result<T> + Send,
+) -> PyResult<T> {
+    let mut signals = Signals::new(py);
+    let result = py.detach(|| run(&mut |_| signals.stop()));
+    signals.finish(result)
+}
+
+/// `contact SCENE --json`'s study of a rough scene (the command line's message otherwise).
+fn scene_contact(
+    scene: &stressfield::scene::Scene,
+    file: &str,
+    progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+) -> Result<commands::ContactStudy> {
     if scene.contact.kind != ContactKind::Rough {
         bail!(
             "{file} is not a rough contact scene (contact.kind = \"rough\")\nhint: `stressfield hertz {file}` reports Hertz contacts"
         );
     }
-    let solution = study::rough::solve(scene, &mut |_, _| {})
-        .with_context(|| format!("scene {}", scene.name))?;
-    let findings = study::rough::findings(scene, &solution)?;
-    let report = ContactReport::new(scene, &solution, &findings);
-    let thermal = match scene.thermal {
-        // The heating reuses the maxima just found (its contact alone's).
-        Some(_) => Some(ThermalReport::new(
-            &study::thermal::study_with(
-                scene,
-                Some(&solution),
-                Some(study::thermal::ContactMaxima {
-                    maxima: &findings.maxima,
-                    friction: scene.contact.friction,
-                    poisson: scene.contact.poisson,
-                }),
-                &mut |_| {},
-            )
-            .context("frictional heating")
-            .with_context(|| format!("scene {}", scene.name))?,
-        )),
-        None => None,
-    };
-    Ok((report.json_with(thermal.as_ref()), solution.pressure_pa))
-}
-
-/// The heating of a Hertz or gear scene (the gears' along their path), as `hertz` and
-/// `thermal` compute it.
-fn hertz_heating(
-    scene: &stressfield::scene::Scene,
-) -> Result<(ThermalReport, study::thermal::ThermalStudy)> {
-    let gears = scene.thermal.and_then(|t| t.gear).is_some();
-    Ok(if gears {
-        let gear = study::gear_heating::gear_heating(scene, &mut |_| {})
-            .context("frictional heating of the gears")?;
-        (ThermalReport::for_gears(&gear), gear.study.clone())
-    } else {
-        let study =
-            study::thermal::study(scene, None, &mut |_| {}).context("frictional heating")?;
-        (ThermalReport::new(&study), study)
-    })
-}
-
-/// `surface SCENE --json` of a surface scene.
-fn scene_surface_json(scene: &stressfield::scene::Scene, file: &str) -> Result<String> {
-    let Some(surface) = &scene.surface else {
-        bail!("{file} has no [surface]: characterise a surface scene (kind = \"surface\" or \"rough\") or a height file");
-    };
-    let rough = scene.contact.rough;
-    let options = Options {
-        form: surface.form,
-        band_m: surface.band_m,
-        window: !surface.generated,
-    };
-    let characterisation = stats::characterise(&surface.heights, &options)
-        .with_context(|| format!("characterising {}", surface.source))?;
-    Ok(SurfaceReport::new(
-        &characterisation,
-        rough.and_then(|r| r.e_star_pa),
-        rough.and_then(|r| r.hardness_pa),
-    )
-    .json())
-}
-
-/// `hertz SCENE --json`.
-fn scene_hertz_json(scene: &stressfield::scene::Scene, file: &str) -> Result<String> {
-    match scene.contact.kind {
-        ContactKind::Rough => Ok(scene_contact(scene, file)?.0),
-        ContactKind::Surface => scene_surface_json(scene, file),
-        _ => {
-            let maxima = study::assess::scene_maxima(scene);
-            let heating = match scene.thermal {
-                Some(_) => {
-                    Some(hertz_heating(scene).with_context(|| format!("scene {}", scene.name))?)
-                }
-                None => None,
-            };
-            let report = stressfield::report::hertz::HertzReport::new(scene, &maxima);
-            Ok(report.json(heating.as_ref().map(|(report, _)| report)))
-        }
-    }
+    Ok(commands::contact(scene, progress)?)
 }
 
 /// `thermal SCENE --json` and body 1's surface temperature rise (K).
-fn scene_thermal(scene: &stressfield::scene::Scene, file: &str) -> Result<(String, Array2<f64>)> {
+fn scene_thermal(
+    scene: &stressfield::scene::Scene,
+    file: &str,
+    progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
+) -> Result<(String, Array2<f64>)> {
     if scene.thermal.is_none() {
         bail!(
             "{file} has no [thermal] table\nhint: add [thermal] with speed = \"2 m/s\" and the bodies' thermal properties (material = \"steel\", or conductivity, diffusivity, expansion); see docs/heating.md"
         );
     }
-    let computed = || -> Result<(ThermalReport, study::thermal::ThermalStudy)> {
-        if scene.contact.kind == ContactKind::Rough {
-            let solution = study::rough::solve(scene, &mut |_, _| {})?;
-            let study = study::thermal::study(scene, Some(&solution), &mut |_| {})
-                .context("frictional heating")?;
-            Ok((ThermalReport::new(&study), study))
-        } else {
-            hertz_heating(scene)
-        }
+    let heating = commands::thermal(scene, progress)?;
+    let json = heating_report(&heating).json();
+    let temperature = match heating {
+        commands::Heating::Contact(study) => study.body1.temperature_k,
+        commands::Heating::Gears(gear) => gear.study.body1.temperature_k,
     };
-    let (report, study) = computed().with_context(|| format!("scene {}", scene.name))?;
-    Ok((report.json(), study.body1.temperature_k))
+    Ok((json, temperature))
 }
 
 /// The scene's figure (or sheet) as `render` draws it, as PNG or SVG bytes.
@@ -276,10 +280,14 @@ impl Scene {
         self.scene.sweep.is_some()
     }
 
-    /// `hertz SCENE --json` as text.
+    /// `hertz SCENE --json` as text: the command line's study ([`commands::hertz`]), so a
+    /// coated scene is its coated contact, a rough one its contact, a surface one its
+    /// characterisation. Ctrl-C stops it.
     fn hertz_json(&self, py: Python<'_>) -> PyResult<String> {
-        py.detach(|| scene_hertz_json(&self.scene, &self.file))
-            .map_err(raise)
+        interruptible(py, |progress| {
+            let study = commands::hertz(&self.scene, progress)?;
+            Ok(hertz_json(&self.scene, &study))
+        })
     }
 
     /// `sweep SCENE --json` as text.
@@ -292,21 +300,40 @@ impl Scene {
         .map_err(raise)
     }
 
-    /// `contact SCENE --json` as text, and the pressure (Pa, `[rows, columns]`).
+    /// `contact SCENE --json` as text, and the pressure (Pa, `[rows, columns]`). Ctrl-C
+    /// stops it.
     fn contact<'py>(&self, py: Python<'py>) -> PyResult<(String, Bound<'py, PyArray2<f64>>)> {
-        let (json, pressure) = py
-            .detach(|| scene_contact(&self.scene, &self.file))
-            .map_err(raise)?;
+        let (json, pressure) = interruptible(py, |progress| {
+            let study = scene_contact(&self.scene, &self.file, progress)?;
+            let json = contact_json(&self.scene, &study);
+            Ok((json, study.solution.pressure_pa))
+        })?;
         Ok((json, pressure.into_pyarray(py)))
     }
 
     /// `thermal SCENE --json` as text, and body 1's surface temperature rise (K, `[rows,
-    /// columns]` of the thermal grid).
+    /// columns]` of the thermal grid). Ctrl-C stops it.
     fn thermal<'py>(&self, py: Python<'py>) -> PyResult<(String, Bound<'py, PyArray2<f64>>)> {
-        let (json, temperature) = py
-            .detach(|| scene_thermal(&self.scene, &self.file))
-            .map_err(raise)?;
+        let (json, temperature) = interruptible(py, |progress| {
+            scene_thermal(&self.scene, &self.file, progress)
+        })?;
         Ok((json, temperature.into_pyarray(py)))
+    }
+
+    /// `wear SCENE --json` as text: the steps of a scene with `[wear]` or `[[series]]`.
+    fn wear_json(&self, py: Python<'_>) -> PyResult<String> {
+        py.detach(|| -> Result<String> {
+            if self.scene.wear.is_none() {
+                bail!(
+                    "{} has no [wear] or [[series]]\nhint: add [wear] with coefficient = \"2e-6 mm^3/(N m)\", distance = \"20 m\" and steps = 40 to a rough scene (contact.kind = \"rough\"); see docs/wear.md",
+                    self.file
+                );
+            }
+            let study = study::wear::study(&self.scene, &mut |_| {})
+                .with_context(|| format!("scene {}", self.scene.name))?;
+            Ok(stressfield::report::wear::WearReport::new(&study).json())
+        })
+        .map_err(raise)
     }
 
     /// Draws the scene's figure to `path` (PNG, or SVG by the extension).
@@ -348,21 +375,75 @@ impl Scene {
     }
 }
 
-/// A positive, finite spacing pair (m), named as the Python argument.
-fn spacing_pair(dx: f64, dy: f64) -> Result<[f64; 2]> {
+/// A spacing pair (m) within `bounds`, named as the Python argument.
+fn spacing_pair(dx: f64, dy: f64, bounds: Bounds) -> Result<[f64; 2]> {
     for (name, value) in [("dx", dx), ("dy", dy)] {
-        if !(value.is_finite() && (stressfield::surface::MIN_SPACING_M..=1e4).contains(&value)) {
+        if !bounds.contains(value) {
             bail!(
-                "spacing: {name} must lie between 1e-10 m and 10000 m, got {}",
-                stressfield::io::text::number(value)
+                "spacing: {name} must lie between {} m and {} m, got {}\nhint: {}",
+                stressfield::io::text::compact(bounds.lo),
+                stressfield::io::text::compact(bounds.hi),
+                stressfield::io::text::number(value),
+                bounds.why
             );
         }
     }
     Ok([dx, dy])
 }
 
+/// The spacing of a traction grid (`stress`): from an atomic spacing to 10 km.
+const TRACTION_SPACING: Bounds = stressfield::scene::WAVELENGTH_BOUNDS;
+
+/// `value` (SI, in `unit`) within a scene's `bounds` for the same quantity, named `name` as
+/// the Python argument, the scene's reason as the hint.
+fn check_bounds(name: &str, value: f64, bounds: Bounds, unit: &str) -> Result<()> {
+    if !bounds.contains(value) {
+        bail!(
+            "{name} must lie between {} {unit} and {} {unit}, got {}\nhint: {}",
+            stressfield::io::text::compact(bounds.lo),
+            stressfield::io::text::compact(bounds.hi),
+            stressfield::io::text::number(value),
+            bounds.why
+        );
+    }
+    Ok(())
+}
+
+/// Body 1's friction coefficient, as scenes and `probe --friction` take it.
+fn check_friction(friction: f64) -> Result<()> {
+    if let Some(message) = stressfield::scene::friction_requirement(friction) {
+        bail!(
+            "friction: {message}\nhint: {}",
+            stressfield::scene::FRICTION_HINT
+        );
+    }
+    Ok(())
+}
+
+/// Poisson's ratio, as scenes take it.
+fn check_poisson(poisson: f64) -> Result<()> {
+    if !(-1.0 < poisson && poisson <= 0.5) {
+        bail!(
+            "poisson must lie in (-1, 0.5], got {}\nhint: steel is about 0.3",
+            stressfield::io::text::number(poisson)
+        );
+    }
+    Ok(())
+}
+
+/// A height array and its spacing, checked as a height map's (finite heights at most 1 m in
+/// size, spacings of 0.1 nm to 1 m, at least 2 x 2), named as the Python arguments.
+fn check_heights(heights: ArrayView2<f64>, spacing_m: [f64; 2]) -> Result<()> {
+    use stressfield::surface::SurfaceError;
+    stressfield::surface::check_samples(heights, spacing_m).map_err(|error| match error {
+        SurfaceError::Spacing { .. } => anyhow!("spacing: {error}"),
+        other => anyhow!("heights: {other}"),
+    })
+}
+
 /// `stressfield.contact`: the rough contact of a height array, solved and reported as
-/// `contact --json` reports a scene's.
+/// `contact --json` reports a scene's; every argument within the bounds of the scene key it
+/// stands for. Ctrl-C stops it between iterations.
 #[pyfunction]
 #[pyo3(signature = (heights, dx, dy, e_star, control, value, periodic, hardness, friction, poisson, tolerance))]
 #[allow(clippy::too_many_arguments)]
@@ -381,89 +462,113 @@ fn contact<'py>(
     tolerance: f64,
 ) -> PyResult<(String, Bound<'py, PyArray2<f64>>)> {
     let heights = heights.as_array();
-    let (json, pressure) = py
-        .detach(|| -> Result<(String, Array2<f64>)> {
-            let spacing_m = spacing_pair(dx, dy)?;
-            check_range("e_star", e_star, 1.0, 1e13, "Pa")?;
-            if let Some(h) = hardness {
-                check_range("hardness", h, 1.0, 1e13, "Pa")?;
+    let mut signals = Signals::new(py);
+    let result = py.detach(|| -> Result<(String, Array2<f64>)> {
+        let spacing_m = [dx, dy];
+        check_heights(heights, spacing_m)?;
+        check_range("e_star", e_star, 1.0, 1e13, "Pa")?;
+        if let Some(h) = hardness {
+            check_range("hardness", h, 1.0, 1e13, "Pa")?;
+        }
+        check_poisson(poisson)?;
+        check_friction(friction)?;
+        let loosest = stressfield::scene::MAX_ROUGH_TOLERANCE;
+        if !(tolerance > 0.0 && tolerance < loosest) {
+            bail!(
+                "tolerance must lie in (0, {}), as a scene's numerical.tolerance, got {}\nhint: the default is 1e-8",
+                stressfield::io::text::number(loosest),
+                stressfield::io::text::number(tolerance)
+            );
+        }
+        let control = match control {
+            "load" => {
+                check_bounds("load", value, stressfield::scene::LOAD_BOUNDS, "N")?;
+                Control::Load { newtons: value }
             }
-            if !(-1.0 < poisson && poisson <= 0.5) {
-                bail!(
-                    "poisson must lie in (-1, 0.5], got {}",
-                    stressfield::io::text::number(poisson)
-                );
+            "mean_pressure" => {
+                check_bounds("mean_pressure", value, stressfield::scene::STRESS_BOUNDS, "Pa")?;
+                Control::MeanPressure { pa: value }
             }
-            if !(friction.is_finite() && friction >= 0.0) {
-                bail!(
-                    "friction must be a non-negative number, got {}",
-                    stressfield::io::text::number(friction)
-                );
+            "approach" => {
+                check_bounds("approach", value, stressfield::scene::APPROACH_BOUNDS, "m")?;
+                Control::Approach { m: value }
             }
-            let control = match control {
-                "load" => {
-                    check_range("load", value, 0.0, f64::MAX, "N")?;
-                    Control::Load { newtons: value }
-                }
-                "mean_pressure" => {
-                    check_range("mean_pressure", value, 0.0, f64::MAX, "Pa")?;
-                    Control::MeanPressure { pa: value }
-                }
-                "approach" => Control::Approach { m: value },
-                other => bail!("unknown control {other}: use load, mean_pressure or approach"),
-            };
-            let problem = RoughContactProblem {
-                heights_m: heights,
-                spacing_m,
-                e_star_pa: e_star,
-                periodicity: if periodic {
-                    Periodicity::Periodic
-                } else {
-                    Periodicity::NonPeriodic
-                },
-                control,
-                hardness_pa: hardness,
-                tolerance,
-                max_iterations: rough_contact::DEFAULT_MAX_ITERATIONS,
-                memory_limit_bytes: stressfield::field::memory_limit_bytes(),
-            };
-            let solution = rough_contact::solve(&problem, &mut |_, _| {})?;
-            let materials = RoughMaterials {
-                friction,
-                poisson,
-                e_star_pa: Some(e_star),
-                hardness_pa: hardness,
-            };
-            // The plasticity index reads the summits of the surface (a copy of the heights,
-            // made only with a hardness).
-            let surface = match hardness {
-                Some(_) => Some(HeightMap::new(heights.to_owned(), spacing_m)?),
-                None => None,
-            };
-            let findings = study::rough::findings_of(
-                &solution,
-                &materials,
-                surface.as_ref().map(|s| (s, false)),
-            )?;
-            let spec = RoughSpec {
-                control: Some(control),
-                periodic,
-                e_star_pa: Some(e_star),
-                hardness_pa: hardness,
-                tolerance,
-                max_iterations: rough_contact::DEFAULT_MAX_ITERATIONS,
-            };
-            let mut report = ContactReport::of(&spec, friction, poisson, &solution, &findings);
-            // As the command line warns of a scene's map: a periodic contact on a seam where
-            // the heights' opposite edges do not meet.
-            if periodic {
-                report
-                    .warnings
-                    .extend(study::rough::seam_warning(heights, &solution.pressure_pa));
-            }
-            Ok((report.json(), solution.pressure_pa))
-        })
-        .map_err(raise)?;
+            other => bail!("unknown control {other}: use load, mean_pressure or approach"),
+        };
+        // As a rough scene is admitted: the solve and the subsurface search within the memory
+        // allowed, estimated before anything is allocated.
+        let (ny, nx) = heights.dim();
+        let (bytes, seconds) = study::heating_plan::contact_cost([ny, nx]);
+        let limit = stressfield::field::memory_limit_bytes();
+        if bytes > limit {
+            bail!(
+                "heights: the contact of a {nx} x {ny} map needs about {} of CPU and {} ({} bytes a cell), more than the {} this machine allows\nhint: use a coarser map (half the samples a side takes a quarter of the memory)",
+                study::heating_plan::duration(seconds),
+                stressfield::io::text::bytes(bytes as u64),
+                study::heating_plan::CONTACT_BYTES_PER_CELL,
+                stressfield::io::text::bytes(limit as u64)
+            );
+        }
+        let problem = RoughContactProblem {
+            heights_m: heights,
+            spacing_m,
+            e_star_pa: e_star,
+            periodicity: if periodic {
+                Periodicity::Periodic
+            } else {
+                Periodicity::NonPeriodic
+            },
+            control,
+            hardness_pa: hardness,
+            tolerance,
+            max_iterations: rough_contact::DEFAULT_MAX_ITERATIONS,
+            memory_limit_bytes: stressfield::field::memory_limit_bytes(),
+        };
+        let solution = rough_contact::solve_interruptible(
+            &problem,
+            &rough_contact::Warm::default(),
+            &mut rough_contact::OperatorCache::default(),
+            &mut |_, _| signals.stop(),
+        )?;
+        if signals.stop().is_break() {
+            bail!("interrupted before the subsurface maxima: no result");
+        }
+        let materials = RoughMaterials {
+            friction,
+            poisson,
+            e_star_pa: Some(e_star),
+            hardness_pa: hardness,
+        };
+        // The plasticity index reads the summits of the surface (a copy of the heights,
+        // made only with a hardness).
+        let surface = match hardness {
+            Some(_) => Some(HeightMap::new(heights.to_owned(), spacing_m)?),
+            None => None,
+        };
+        let findings = study::rough::findings_of(
+            &solution,
+            &materials,
+            surface.as_ref().map(|s| (s, false)),
+        )?;
+        let spec = RoughSpec {
+            control: Some(control),
+            periodic,
+            e_star_pa: Some(e_star),
+            hardness_pa: hardness,
+            tolerance,
+            max_iterations: rough_contact::DEFAULT_MAX_ITERATIONS,
+        };
+        let mut report = ContactReport::of(&spec, friction, poisson, &solution, &findings);
+        // As the command line warns of a scene's map: a periodic contact on a seam where
+        // the heights' opposite edges do not meet.
+        if periodic {
+            report
+                .warnings
+                .extend(study::rough::seam_warning(heights, &solution.pressure_pa));
+        }
+        Ok((report.json(), solution.pressure_pa))
+    });
+    let (json, pressure) = signals.finish(result)?;
     Ok((json, pressure.into_pyarray(py)))
 }
 
@@ -486,15 +591,28 @@ fn check_range(name: &str, value: f64, low: f64, high: f64, unit: &str) -> Resul
     Ok(())
 }
 
-/// An optional traction array: copied into the grid (scaled to the reference pressure).
-fn traction(array: &Option<PyReadonlyArray2<'_, f64>>) -> Option<Array2<f64>> {
-    array
-        .as_ref()
-        .map(|a| a.as_array().mapv(|p| p / REFERENCE_PRESSURE_PA))
+/// The tractions of `stress` (Pa) within the bounds of a pressure given in a scene (in size:
+/// a traction may pull or push), named by their argument and cell.
+fn check_traction(name: &str, array: ArrayView2<f64>) -> Result<()> {
+    let bound = stressfield::scene::STRESS_BOUNDS;
+    if let Some(((row, column), &value)) = array
+        .indexed_iter()
+        .find(|(_, t)| !(t.is_finite() && t.abs() <= bound.hi))
+    {
+        bail!(
+            "{name}[{row}, {column}] is {} Pa: a traction must be finite and at most {} Pa in size\nhint: {}",
+            stressfield::io::text::number(value),
+            stressfield::io::text::compact(bound.hi),
+            bound.why
+        );
+    }
+    Ok(())
 }
 
 /// `stressfield.stress`: the stresses under uniform tractions on the cells of a grid, by
-/// DC-FFT, at the cell centres of each depth: `[depth, row, column, component]` in Pa.
+/// DC-FFT, at the cell centres of each depth: `[depth, row, column, component]` in Pa. The
+/// memory the layers take is estimated and refused beyond what the machine allows before
+/// anything is allocated ([`stressfield::field::kept_layers_bytes`]).
 #[pyfunction]
 #[pyo3(signature = (pressure, dx, dy, depths, shear_x, shear_y, poisson, periodic))]
 #[allow(clippy::too_many_arguments)]
@@ -509,77 +627,104 @@ fn stress<'py>(
     poisson: f64,
     periodic: bool,
 ) -> PyResult<Bound<'py, PyArray4<f64>>> {
-    // The grid in the rough study's reference units (1 µm, 1 MPa), as its layers are.
-    let (p, qx, qy) = (traction(&pressure), traction(&shear_x), traction(&shear_y));
+    let named = [
+        ("pressure", pressure.as_ref().map(|a| a.as_array())),
+        ("shear_x", shear_x.as_ref().map(|a| a.as_array())),
+        ("shear_y", shear_y.as_ref().map(|a| a.as_array())),
+    ];
     let depths = depths.as_array();
     let layers = py
         .detach(|| -> Result<Array4<f64>> {
-            let [dx, dy] = spacing_pair(dx, dy)?;
-            if !(-1.0 < poisson && poisson <= 0.5) {
-                bail!(
-                    "poisson must lie in (-1, 0.5], got {}",
-                    stressfield::io::text::number(poisson)
-                );
-            }
+            let [dx, dy] = spacing_pair(dx, dy, TRACTION_SPACING)?;
+            check_poisson(poisson)?;
             if let Some(&z) = depths.iter().find(|z| !(z.is_finite() && **z >= 0.0)) {
                 bail!(
                     "depths must be non-negative and finite (m, into the body), got {}",
                     stressfield::io::text::number(z)
                 );
             }
+            let present: Vec<(&str, ArrayView2<f64>)> = named
+                .iter()
+                .filter_map(|(name, array)| array.map(|a| (*name, a)))
+                .collect();
+            // Shapes and values before the memory (a mismatch is said as such).
+            if let Some((first, array)) = present.first() {
+                for (name, other) in &present[1..] {
+                    if other.dim() != array.dim() {
+                        let ((ny, nx), (my, mx)) = (other.dim(), array.dim());
+                        bail!("{name} has shape [{ny}, {nx}] but {first} has [{my}, {mx}]; give every traction as [rows = y, columns = x]");
+                    }
+                }
+                let (ny, nx) = array.dim();
+                let bytes = stressfield::field::kept_layers_bytes(
+                    [ny, nx],
+                    present.len(),
+                    depths.len(),
+                    rayon::current_num_threads(),
+                );
+                let limit = stressfield::field::memory_limit_bytes();
+                if bytes > limit {
+                    bail!(
+                        "stress: {} depths of a {nx} x {ny} grid need about {} (the layers returned, 48 bytes a cell each, and the DC-FFT's working memory), more than the {} this machine allows (at most 4 GiB, and 3/4 of the memory available)\nhint: ask for fewer depths at a time (each depth's layer is computed on its own), or use a coarser grid",
+                        depths.len(),
+                        stressfield::io::text::bytes(bytes as u64),
+                        stressfield::io::text::bytes(limit as u64)
+                    );
+                }
+            }
+            for (name, array) in &present {
+                check_traction(name, *array)?;
+            }
+            // The grid in the rough study's reference units (1 µm, 1 MPa), as its layers are.
+            let scaled = |k: usize| {
+                named[k]
+                    .1
+                    .map(|a| a.mapv(|t| t / REFERENCE_PRESSURE_PA))
+            };
             let grid = TractionGrid::new(
                 [0.0, 0.0],
                 [dx / REFERENCE_LENGTH_M, dy / REFERENCE_LENGTH_M],
-                p,
-                qx,
-                qy,
+                scaled(0),
+                scaled(1),
+                scaled(2),
             )?;
             let fft = if periodic {
                 DcFft::periodic(&grid, poisson)?
             } else {
                 DcFft::new(&grid, poisson)?
             };
+            drop(grid);
             layers_of(&fft, depths)
         })
         .map_err(raise)?;
     Ok(layers.into_pyarray(py))
 }
 
-/// The DC-FFT layers at `depths_m`, in parallel over the depths, `[depth, row, column,
-/// component]` in Pa.
+/// The DC-FFT layers at `depths_m` by the library's driver of depth layers (in parallel over
+/// the depths, or layer after layer with each split over the threads where the working sets
+/// would not fit), `[depth, row, column, component]` in Pa.
 fn layers_of(fft: &DcFft, depths_m: ArrayView1<f64>) -> Result<Array4<f64>> {
     let [ny, nx] = fft.shape();
-    let depths: Vec<f64> = depths_m.iter().copied().collect();
+    let depths: Vec<f64> = depths_m.iter().map(|z| z / REFERENCE_LENGTH_M).collect();
     let mut out = Array4::<f64>::zeros((depths.len(), ny, nx, 6));
-    out.axis_iter_mut(Axis(0))
-        .into_par_iter()
-        .zip(depths.par_iter())
-        .try_for_each(|(mut slot, &z)| -> Result<()> {
-            let layer = fft.layer(z / REFERENCE_LENGTH_M)?;
+    // Each depth's slot, written by whichever worker computes it.
+    let slots: Vec<Mutex<_>> = out.axis_iter_mut(Axis(0)).map(Mutex::new).collect();
+    stressfield::field::for_each_dcfft_layer(fft, &depths, |index, _, layer| {
+        if let Ok(mut slot) = slots[index].lock() {
             for (c, component) in layer.axis_iter(Axis(0)).enumerate() {
                 slot.index_axis_mut(Axis(2), c)
                     .zip_mut_with(&component, |o, &v| *o = v * REFERENCE_PRESSURE_PA);
             }
-            Ok(())
-        })?;
+        }
+    })?;
+    drop(slots);
     Ok(out)
 }
 
-/// Friction and Poisson ratio of a closed form, checked as scenes check them.
+/// Friction and Poisson ratio of a closed form, checked as scenes and `probe` check them.
 fn closed_form_parameters(friction: f64, poisson: f64) -> Result<()> {
-    if !(friction.is_finite() && friction >= 0.0) {
-        bail!(
-            "friction must be a non-negative number, got {}",
-            stressfield::io::text::number(friction)
-        );
-    }
-    if !(-1.0 < poisson && poisson <= 0.5) {
-        bail!(
-            "poisson must lie in (-1, 0.5], got {}",
-            stressfield::io::text::number(poisson)
-        );
-    }
-    Ok(())
+    check_friction(friction)?;
+    check_poisson(poisson)
 }
 
 /// `stressfield.line_stress` on flat arrays of points (the wrapper broadcasts): `[point,
@@ -593,38 +738,68 @@ fn line_stress<'py>(
     poisson: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let (x, z) = (x.as_array(), z.as_array());
-    closed_form_rows(py, friction, poisson, z, |i| {
+    closed_form_rows(py, friction, poisson, [("x", x), ("z", z)], |i| {
         stressfield::solution::line_hertz::stress_over_p0(x[i], z[i], friction, poisson)
     })
 }
 
-/// Depths of the closed forms: z >= 0 (into the body), finite.
-fn check_depths<'a>(mut z: impl Iterator<Item = &'a f64>) -> Result<()> {
-    if let Some(&bad) = z.find(|z| !(z.is_finite() && **z >= 0.0)) {
-        bail!(
-            "z must be non-negative and finite (into the body, units of a), got {}",
-            stressfield::io::text::number(bad)
-        );
+/// The points of the closed forms (coordinates `named`, the last one z, broadcast to one
+/// length), as `probe` reads its points: finite, z >= 0 (into the body), and within
+/// [`stressfield::io::points::MAX_DISTANCE_OVER_A`] of the contact.
+fn check_points(named: &[(&str, ArrayView1<'_, f64>)]) -> Result<()> {
+    use stressfield::io::points::MAX_DISTANCE_OVER_A;
+    for (name, values) in named {
+        if let Some((i, &bad)) = values.indexed_iter().find(|(_, v)| !v.is_finite()) {
+            bail!(
+                "{name} must be finite (units of a), got {} at point {i} (of the coordinates broadcast together, in C order)",
+                stressfield::io::text::number(bad)
+            );
+        }
+    }
+    if let Some((_, z)) = named.last() {
+        if let Some(&bad) = z.iter().find(|z| **z < 0.0) {
+            bail!(
+                "z must be non-negative and finite (into the body, units of a), got {}",
+                stressfield::io::text::number(bad)
+            );
+        }
+    }
+    let points = named.first().map_or(0, |(_, v)| v.len());
+    for i in 0..points {
+        let distance = named.iter().map(|(_, v)| v[i].abs()).fold(0.0, f64::max);
+        if distance > MAX_DISTANCE_OVER_A {
+            let coordinates: Vec<String> = named
+                .iter()
+                .map(|(name, v)| format!("{name} = {}", stressfield::io::text::number(v[i])))
+                .collect();
+            bail!(
+                "point {i} ({}) lies {} a from the contact, farther than the {} a a probe reaches\nhint: beyond it every stress is below 1e-9 p0 (they fall as a/r for a line contact, (a/r)² for a point contact); probe nearer",
+                coordinates.join(", "),
+                stressfield::io::text::number(distance),
+                stressfield::io::text::compact(MAX_DISTANCE_OVER_A)
+            );
+        }
     }
     Ok(())
 }
 
-/// A closed form's stresses at the points `0..z.len()` (the Python side broadcast the
-/// coordinates to one length), in parallel and without the GIL: `[point, component]`, the
-/// components in `Stress` order (xx, yy, zz, yz, xz, xy), after the parameters and depths
-/// are checked.
-fn closed_form_rows<'py>(
+/// A closed form's stresses at the points `0..n` (the Python side broadcast the coordinates
+/// to one length `n`), in parallel and without the GIL: `[point, component]`, the
+/// components in `Stress` order (xx, yy, zz, yz, xz, xy), after the parameters and points are
+/// checked.
+fn closed_form_rows<'py, const N: usize>(
     py: Python<'py>,
     friction: f64,
     poisson: f64,
-    z: ArrayView1<'_, f64>,
+    named: [(&str, ArrayView1<'_, f64>); N],
     stress: impl Fn(usize) -> stressfield::stress::Stress + Sync,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let out = py
         .detach(|| -> Result<Array2<f64>> {
             closed_form_parameters(friction, poisson)?;
-            check_depths(z.iter())?;
-            let mut out = Array2::zeros((z.len(), 6));
+            check_points(&named)?;
+            let points = named.first().map_or(0, |(_, v)| v.len());
+            let mut out = Array2::zeros((points, 6));
             out.axis_iter_mut(Axis(0))
                 .into_par_iter()
                 .enumerate()
@@ -649,7 +824,7 @@ fn sphere_stress<'py>(
     poisson: f64,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let (x, y, z) = (x.as_array(), y.as_array(), z.as_array());
-    closed_form_rows(py, friction, poisson, z, |i| {
+    closed_form_rows(py, friction, poisson, [("x", x), ("y", y), ("z", z)], |i| {
         stressfield::solution::sphere_hertz::stress_over_p0(x[i], y[i], z[i], friction, poisson)
     })
 }
@@ -688,7 +863,9 @@ fn read_surface<'py>(
                 other => bail!("fill {other}: use refuse or interpolate"),
             };
             let options = ReadOptions {
-                spacing_m: spacing.map(|(dx, dy)| spacing_pair(dx, dy)).transpose()?,
+                spacing_m: spacing
+                    .map(|(dx, dy)| spacing_pair(dx, dy, stressfield::scene::SPACING_BOUNDS))
+                    .transpose()?,
                 height_unit_m: unit_m("height_unit", height_unit.as_deref())?,
                 xyz_length_unit_m: unit_m("length_unit", length_unit.as_deref())?,
                 fill,
@@ -724,7 +901,18 @@ fn surface_stats(
         };
         let band_m = match band {
             Some((a, b)) => {
-                let [a, b] = spacing_pair(a, b).map_err(|e| anyhow!("band: {e}"))?;
+                let bounds = stressfield::scene::WAVELENGTH_BOUNDS;
+                for (which, value) in [("shorter", a), ("longer", b)] {
+                    if !bounds.contains(value) {
+                        bail!(
+                            "band: the {which} wavelength must lie between {} m and {} m, got {}\nhint: {}",
+                            stressfield::io::text::compact(bounds.lo),
+                            stressfield::io::text::compact(bounds.hi),
+                            stressfield::io::text::number(value),
+                            bounds.why
+                        );
+                    }
+                }
                 if a >= b {
                     bail!(
                         "band: give the shorter wavelength first, got {},{}",
@@ -742,8 +930,9 @@ fn surface_stats(
         if let Some(h) = hardness {
             check_range("hardness", h, 1.0, 1e13, "Pa")?;
         }
+        check_heights(heights, [dx, dy])?;
         // The statistics need the map as the library holds it: one copy.
-        let map = HeightMap::new(heights.to_owned(), spacing_pair(dx, dy)?)?;
+        let map = HeightMap::new(heights.to_owned(), [dx, dy])?;
         let options = Options {
             form,
             band_m,

@@ -1,9 +1,12 @@
 """stressfield from Python: elastic stress fields under loaded contacts.
 
 The same physics, checks and messages as the ``stressfield`` command line (the same Rust
-library underneath). SI units; NumPy float64 arrays in (C or Fortran order) and out; the GIL
-is released while computing; errors raise :class:`StressfieldError` (a ``ValueError``) with
-the command line's message; nothing is printed.
+library and the same studies underneath). SI units; NumPy float64 arrays in (C or Fortran
+order) and out; every argument is checked against the bounds the command line keeps for the
+same quantity, and arrays of text, complex numbers or booleans, and masked arrays with masked
+points, are refused; the GIL is released while computing, and Ctrl-C stops a rough contact
+between two solver iterations; errors raise :class:`StressfieldError` (a ``ValueError``) with
+the command line's message, naming the argument; nothing is printed.
 
 Stress components are always in the order ``sxx, syy, szz, syz, sxz, sxy`` (last axis of 6);
 z points into the body; compression is negative; the tangential traction ``q = friction * p``
@@ -32,6 +35,7 @@ __all__ = [
     "read_surface",
     "surface_stats",
     "batch",
+    "BatchError",
     "COMPONENTS",
 ]
 
@@ -41,13 +45,55 @@ COMPONENTS = ("sxx", "syy", "szz", "syz", "sxz", "sxy")
 StressfieldError.__module__ = "stressfield"
 
 
-def _float64(name, value, ndim):
-    """``value`` as a float64 array of ``ndim`` dimensions, without a copy when it is one."""
+#: What each kind of NumPy array holds, for the messages refusing it.
+_KINDS = {
+    "b": "booleans",
+    "c": "complex numbers",
+    "U": "text",
+    "S": "bytes",
+    "O": "Python objects",
+    "M": "dates",
+    "m": "time spans",
+    "V": "raw records",
+}
+
+
+def _refused_kind(name, kind, example):
+    """The error for an array (or scalar) of ``kind`` given as ``name``."""
+    what = _KINDS.get(kind, f"values of kind {kind!r}")
+    hint = {
+        "c": "give the real part (np.real) if that is what you mean",
+        "U": "convert the text to numbers first (SI units: 1e-6 for 1 µm)",
+        "S": "convert the bytes to numbers first",
+        "b": "give numbers (a boolean mask is not a value)",
+    }.get(kind, "give real numbers (float or int)")
+    return StressfieldError(f"{name} must be real numbers, got {what} ({example})\nhint: {hint}")
+
+
+def _float64(name, value, ndim=None):
+    """``value`` as a float64 array of ``ndim`` dimensions (any when None), without a copy when
+    it is one; text, complex numbers, booleans and objects are refused (NumPy would convert
+    text silently and drop an imaginary part with a warning only), and a masked array is
+    refused when it masks anything (its mask would be dropped)."""
+    if _np.ma.isMaskedArray(value):
+        masked = int(_np.ma.count_masked(value))
+        if masked:
+            raise StressfieldError(
+                f"{name} is a masked array with {masked} masked point(s): the mask would be "
+                "dropped and the values under it used\nhint: fill the missing points first "
+                "(read_surface(..., fill=\"interpolate\") fills a height file's), or pass "
+                f"{name}.filled(value) for a value of your choice"
+            )
+        value = _np.ma.getdata(value)
     try:
-        array = _np.asarray(value, dtype=_np.float64)
+        given = _np.asarray(value)
     except (TypeError, ValueError) as error:
         raise StressfieldError(f"{name} must be an array of numbers: {error}") from None
-    if array.ndim != ndim:
+    if given.dtype.kind not in "fiu":
+        example = given.flat[0] if given.size else "empty"
+        raise _refused_kind(name, given.dtype.kind, repr(example))
+    array = given.astype(_np.float64, copy=False)
+    if ndim is not None and array.ndim != ndim:
         raise StressfieldError(
             f"{name} must be a {ndim}-D array, got shape {tuple(array.shape)}"
         )
@@ -55,8 +101,26 @@ def _float64(name, value, ndim):
 
 
 def _number(name, value):
-    if isinstance(value, bool):
+    """``value`` as one real number; text, booleans, complex numbers, arrays of more than one
+    value and masked values are refused, naming ``name``."""
+    if isinstance(value, (str, bytes)):
+        raise StressfieldError(
+            f"{name} must be a number, got text {value!r}\nhint: give a number in SI units "
+            "(e.g. 1e-6 for 1 µm, 115e9 for 115 GPa)"
+        )
+    if value is _np.ma.masked:
+        raise StressfieldError(f"{name} must be a number, got a masked value")
+    if isinstance(value, (bool, _np.bool_)):
         raise StressfieldError(f"{name} must be a number, got {value!r}")
+    if isinstance(value, (_np.ndarray, _np.generic)):
+        if value.dtype.kind not in "fiu":
+            raise _refused_kind(name, value.dtype.kind, repr(value))
+        if value.ndim != 0:
+            raise StressfieldError(
+                f"{name} must be one number, got an array of shape {tuple(value.shape)}"
+            )
+    if isinstance(value, complex):
+        raise _refused_kind(name, "c", repr(value))
     try:
         return float(value)
     except (TypeError, ValueError):
@@ -65,7 +129,7 @@ def _number(name, value):
 
 def _spacing(spacing, name="spacing"):
     """A spacing (m): one number for both axes, or a pair ``(dx, dy)``."""
-    if _np.ndim(spacing) == 0:
+    if isinstance(spacing, (str, bytes)) or _np.ndim(spacing) == 0:
         d = _number(name, spacing)
         return d, d
     values = list(_np.asarray(spacing, dtype=object).ravel())
@@ -164,6 +228,11 @@ class Scene:
         values = _json.loads(text)
         values["temperature"] = temperature
         return values
+
+    def wear(self) -> dict:
+        """The steps of a wear scene (``[wear]`` or ``[[series]]``), the dict of ``stressfield
+        wear SCENE --json``."""
+        return _json.loads(self._scene.wear_json())
 
     def render(self, path) -> None:
         """Draws the scene's figure (or sheet) to ``path``, PNG or SVG by the extension, as
@@ -267,7 +336,11 @@ def stress(
     for name, value in (("pressure", pressure), ("shear_x", shear_x), ("shear_y", shear_y)):
         arrays[name] = None if value is None else _float64(name, value, 2)
     dx, dy = _spacing(spacing)
-    depths = _float64("depths", _np.atleast_1d(_np.asarray(depths, dtype=_np.float64)), 1)
+    depths = _np.atleast_1d(_float64("depths", depths))
+    if depths.ndim != 1:
+        raise StressfieldError(
+            f"depths must be a number or a 1-D array, got shape {tuple(depths.shape)}"
+        )
     return _ext.stress(
         arrays["pressure"],
         dx,
@@ -281,7 +354,7 @@ def stress(
 
 
 def _closed_form(points, evaluate):
-    coordinates = [_np.asarray(p, dtype=_np.float64) for p in points]
+    coordinates = [_float64(name, p) for name, p in points]
     try:
         broadcast = _np.broadcast_arrays(*coordinates)
     except ValueError as error:
@@ -297,7 +370,7 @@ def line_stress(x, z, *, friction=0.0, poisson=0.3) -> _np.ndarray:
     half-width ``a`` (broadcast together; z >= 0 into the body). Returns stresses over p0 with
     a last axis of 6 (sxx, syy, szz, syz, sxz, sxy; syy = nu (sxx + szz))."""
     f, nu = _number("friction", friction), _number("poisson", poisson)
-    return _closed_form((x, z), lambda x, z: _ext.line_stress(x, z, f, nu))
+    return _closed_form((("x", x), ("z", z)), lambda x, z: _ext.line_stress(x, z, f, nu))
 
 
 def sphere_stress(x, y, z, *, friction=0.0, poisson=0.3) -> _np.ndarray:
@@ -305,7 +378,9 @@ def sphere_stress(x, y, z, *, friction=0.0, poisson=0.3) -> _np.ndarray:
     (Hamilton 1983), at points ``x, y, z`` in units of the contact radius ``a`` (broadcast
     together; z >= 0). Returns stresses over p0 with a last axis of 6."""
     f, nu = _number("friction", friction), _number("poisson", poisson)
-    return _closed_form((x, y, z), lambda x, y, z: _ext.sphere_stress(x, y, z, f, nu))
+    return _closed_form(
+        (("x", x), ("y", y), ("z", z)), lambda x, y, z: _ext.sphere_stress(x, y, z, f, nu)
+    )
 
 
 def read_surface(path, *, spacing=None, height_unit=None, length_unit=None, fill="refuse"):
@@ -348,6 +423,30 @@ def surface_stats(
     return _json.loads(text)
 
 
+class BatchError(StressfieldError):
+    """Tasks of :func:`batch` failed: the message names the first failed task by its index
+    and gives its error; ``results`` holds every task's dict in order (``None`` where the task
+    failed) and ``errors`` maps each failed task's index to its :class:`StressfieldError`."""
+
+    def __init__(self, message, results, errors):
+        super().__init__(message)
+        self.results = results
+        self.errors = errors
+
+
+def _task_label(task):
+    """How a batch task is named in messages."""
+    if isinstance(task, Scene):
+        return f"scene {task.name} ({task.file})"
+    if isinstance(task, _os.PathLike) or (
+        isinstance(task, str) and "\n" not in task and task.strip().endswith(".toml")
+    ):
+        return _os.fspath(task)
+    if isinstance(task, str):
+        return "TOML text"
+    return type(task).__name__
+
+
 def _run_task(task) -> dict:
     """One batch task: a scene path, TOML text or Scene -> the dict of ``hertz --json``."""
     if isinstance(task, Scene):
@@ -365,29 +464,75 @@ def _run_task(task) -> dict:
     return scene.hertz()
 
 
-def batch(tasks, client=None) -> list:
+def _run_task_caught(task):
+    """``_run_task`` with its StressfieldError returned as its message, so that one task's
+    failure does not lose the others' results (other exceptions, such as KeyboardInterrupt,
+    propagate)."""
+    try:
+        return True, _run_task(task)
+    except StressfieldError as error:
+        return False, str(error)
+
+
+def batch(tasks, client=None, *, errors="raise") -> list:
     """Runs a list of scenes (paths, TOML texts or :class:`Scene` objects) and returns one
     dict per task, in order: each scene's ``stressfield hertz SCENE --json`` (for a rough
-    scene that of ``contact --json``).
+    scene that of ``contact --json``, for a coated one the coated contact with its
+    ``coating``).
 
     client: a ``dask.distributed.Client``: the tasks are mapped over its cluster (a
     LocalCluster, or one from dask-jobqueue on Slurm/PBS); None runs them here, one after the
     other (each one uses every core). Scenes are sent as their file paths or text: paths must
-    be readable by the workers. A failing task raises its StressfieldError.
+    be readable by the workers.
+
+    errors: every task runs whatever the others do. ``"raise"`` (the default): if any task
+    failed, a :class:`BatchError` (a StressfieldError) names the first failed task by its
+    index, with ``.results`` (every task's dict, None where it failed) and ``.errors``;
+    ``"return"``: the list is returned with each failed task's StressfieldError in its place.
     """
+    if errors not in ("raise", "return"):
+        raise StressfieldError(f'errors must be "raise" or "return", got {errors!r}')
     tasks = list(tasks)
     if client is None:
-        return [_run_task(task) for task in tasks]
-    portable = []
-    for task in tasks:
-        if isinstance(task, Scene):
-            # A Scene lives in this process: send what it was read from.
-            if not _os.path.exists(task.file):
-                raise StressfieldError(
-                    f"scene {task.name} was not read from a file: pass its TOML text to batch() to run it on a cluster"
-                )
-            portable.append(task.file)
+        outcomes = [_run_task_caught(task) for task in tasks]
+    else:
+        portable = []
+        for task in tasks:
+            if isinstance(task, Scene):
+                # A Scene lives in this process: send what it was read from.
+                if not _os.path.exists(task.file):
+                    raise StressfieldError(
+                        f"scene {task.name} was not read from a file: pass its TOML text to batch() to run it on a cluster"
+                    )
+                portable.append(task.file)
+            else:
+                portable.append(_os.fspath(task) if isinstance(task, _os.PathLike) else task)
+        futures = client.map(_run_task_caught, portable, pure=False)
+        outcomes = client.gather(futures)
+    results, failed = [], {}
+    for index, (task, (ok, value)) in enumerate(zip(tasks, outcomes)):
+        if ok:
+            results.append(value)
         else:
-            portable.append(_os.fspath(task) if isinstance(task, _os.PathLike) else task)
-    futures = client.map(_run_task, portable, pure=False)
-    return client.gather(futures)
+            failed[index] = StressfieldError(
+                f"batch: tasks[{index}] of {len(tasks)} ({_task_label(task)}): {value}"
+            )
+            results.append(None)
+    if not failed:
+        return results
+    if errors == "return":
+        return [failed.get(index, result) for index, result in enumerate(results)]
+    first = min(failed)
+    others = sorted(failed)[1:]
+    more = ""
+    if others:
+        listed = ", ".join(map(str, others[:10])) + (", ..." if len(others) > 10 else "")
+        more = f"\n{len(others)} more task(s) failed: tasks[{listed}]"
+    raise BatchError(
+        f"{failed[first]}{more}\nhint: the {len(tasks) - len(failed)} other task(s) ran: "
+        "their results are in this error's .results (None where a task failed), its .errors "
+        "has each failure; batch(..., errors=\"return\") returns them with each failure in its "
+        "place",
+        results,
+        failed,
+    )

@@ -16,6 +16,13 @@ COMPONENTS: Tuple[str, str, str, str, str, str]
 class StressfieldError(ValueError):
     """An input or computation failed; the message is the command line's."""
 
+class BatchError(StressfieldError):
+    """Tasks of batch() failed: the first is named by its index; `results` holds every task's
+    dict (None where it failed), `errors` each failed task's error by index."""
+
+    results: list[Optional[dict[str, Any]]]
+    errors: dict[int, StressfieldError]
+
 class ContactResult:
     """The keys of `contact --json` as attributes (SI), and `pressure` (Pa, the heights'
     shape [rows = y, columns = x])."""
@@ -70,6 +77,8 @@ class Scene:
     def contact(self) -> ContactResult: ...
     def thermal(self) -> dict[str, Any]:
         """The keys of `thermal SCENE --json` and "temperature" (K, float64 2-D)."""
+    def wear(self) -> dict[str, Any]:
+        """The keys of `wear SCENE --json`."""
     def render(self, path: PathLike) -> None: ...
     def record(self, path: PathLike) -> None: ...
 
@@ -133,5 +142,9 @@ def surface_stats(
 ) -> dict[str, Any]:
     """The keys of `surface --json`."""
 
-def batch(tasks: Sequence[Union[PathLike, str, Scene]], client: Any = None) -> list[dict[str, Any]]:
-    """One `hertz --json` dict per task, in order; with a dask.distributed Client, on its cluster."""
+def batch(
+    tasks: Sequence[Union[PathLike, str, Scene]], client: Any = None, *, errors: str = "raise"
+) -> list[Any]:
+    """One `hertz --json` dict per task, in order; with a dask.distributed Client, on its
+    cluster. errors="raise": BatchError if any task failed (with the others' results);
+    errors="return": each failed task's StressfieldError in its place."""

@@ -40,6 +40,15 @@ fn check_summary(scene: &Scene) -> String {
             } else {
                 "surface"
             };
+            if scene.wear.is_some() {
+                // The whole run: every step, its maxima and its heating (issue 50).
+                let (bytes, seconds) = study::heating_plan::wear_cost(scene, [ny, nx]);
+                return format!(
+                    "{kind}, {nx} x {ny} samples; wear: about {} of CPU and {} in all",
+                    study::heating_plan::duration(seconds),
+                    stressfield::io::text::bytes(bytes as u64)
+                );
+            }
             if scene.contact.kind == ContactKind::Rough && scene.thermal.is_none() {
                 // What `contact` will take (issue 41): estimated before anything is computed.
                 let (bytes, seconds, _) = study::heating_plan::rough_contact_cost(scene, [ny, nx]);

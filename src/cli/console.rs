@@ -82,6 +82,150 @@ pub(crate) fn spinner(message: &str) -> ProgressBar {
     bar
 }
 
+/// The progress of a command's study ([`stressfield::study::commands`]) on the terminal: the
+/// rough contact's solver bar, the spinner of its subsurface maxima, then the heating's bar
+/// (over its depths, or a gear's path of contact then the depths at its hottest point), each
+/// replacing the one before. Records when the solve and the maxima ended, for
+/// `STRESSFIELD_TIMINGS`.
+pub(crate) struct StudyBars {
+    bar: ProgressBar,
+    phase: Phase,
+    started: std::time::Instant,
+    solved: Option<std::time::Duration>,
+    maxima_done: Option<std::time::Duration>,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Phase {
+    Solving,
+    Maxima,
+    Heating { gears: bool },
+    Idle,
+}
+
+impl StudyBars {
+    /// The bars of `scene`'s study, the first shown at once (the solver's for a rough scene,
+    /// the heating's for a heated Hertz scene).
+    pub(crate) fn new(scene: &stressfield::scene::Scene) -> Self {
+        let gears = scene.thermal.and_then(|t| t.gear).is_some();
+        let phase = if scene.contact.kind == stressfield::scene::ContactKind::Rough {
+            Phase::Solving
+        } else if scene.thermal.is_some() && scene.contact.coating.is_none() {
+            Phase::Heating { gears }
+        } else {
+            Phase::Idle
+        };
+        Self {
+            bar: Self::bar_of(phase),
+            phase,
+            started: std::time::Instant::now(),
+            solved: None,
+            maxima_done: None,
+        }
+    }
+
+    fn bar_of(phase: Phase) -> ProgressBar {
+        use stressfield::study::{gear_heating::PATH_POINTS, thermal::DEPTHS_OVER_A};
+        match phase {
+            Phase::Solving => solver_bar(),
+            Phase::Maxima | Phase::Idle => ProgressBar::hidden(),
+            Phase::Heating { gears: false } => {
+                let bar = progress_bar(DEPTHS_OVER_A.len() as u64);
+                bar.set_message("thermal stress by depth");
+                bar
+            }
+            Phase::Heating { gears: true } => {
+                let bar = progress_bar((PATH_POINTS + DEPTHS_OVER_A.len()) as u64);
+                bar.set_message("flash temperature along the path of contact");
+                bar
+            }
+        }
+    }
+
+    /// Moves to `phase` (a new bar) unless already there.
+    fn enter(&mut self, phase: Phase) {
+        if self.phase != phase {
+            self.bar.finish_and_clear();
+            self.phase = phase;
+            self.bar = Self::bar_of(phase);
+        }
+    }
+
+    /// Shows `progress`; the command line always goes on (Ctrl-C ends the process).
+    pub(crate) fn show(
+        &mut self,
+        progress: stressfield::study::commands::Progress,
+    ) -> std::ops::ControlFlow<()> {
+        use stressfield::study::commands::Progress;
+        use stressfield::study::thermal::Progress as Heat;
+        match progress {
+            Progress::Solving {
+                iteration,
+                residual,
+            } => {
+                self.enter(Phase::Solving);
+                self.bar.set_position(iteration as u64);
+                self.bar.set_message(format!("residual {residual:.1e}"));
+            }
+            Progress::Maxima { depth_m } => {
+                self.solved = Some(self.started.elapsed());
+                self.bar.finish_and_clear();
+                self.phase = Phase::Maxima;
+                self.bar = spinner(&format!(
+                    "subsurface maxima: DC-FFT layers down to {:.1} µm",
+                    depth_m * 1e6
+                ));
+            }
+            Progress::Heating(heat) => {
+                if self.phase == Phase::Maxima {
+                    self.maxima_done = Some(self.started.elapsed());
+                }
+                let gears = match self.phase {
+                    Phase::Heating { gears } => gears,
+                    _ => matches!(heat, Heat::Path { .. }),
+                };
+                self.enter(Phase::Heating { gears });
+                let path = stressfield::study::gear_heating::PATH_POINTS;
+                match (heat, gears) {
+                    (Heat::Path { done, .. }, _) => self.bar.set_position(done as u64),
+                    (Heat::Depth { done, .. }, true) => {
+                        self.bar
+                            .set_message("thermal stress by depth at the hottest point");
+                        self.bar.set_position((path + done) as u64);
+                    }
+                    (Heat::Depth { done, total }, false) => {
+                        self.bar.set_message("thermal stress by depth");
+                        self.bar.set_length(total as u64);
+                        self.bar.set_position(done as u64);
+                    }
+                    (Heat::Coupled { iteration, change }, _) => self.bar.set_message(format!(
+                        "coupled iteration {iteration}: pressure change {change:.1e}"
+                    )),
+                }
+            }
+        }
+        std::ops::ControlFlow::Continue(())
+    }
+
+    /// Clears the bar; with `STRESSFIELD_TIMINGS` set and a rough contact solved in
+    /// `iterations`, prints the wall-clock times of the solve and of the subsurface maxima
+    /// (for the README's scaling table; never in a report, which stays the same from run to
+    /// run).
+    pub(crate) fn finish(self, iterations: Option<usize>) {
+        self.bar.finish_and_clear();
+        let maxima_done = self.maxima_done.unwrap_or_else(|| self.started.elapsed());
+        if let (Some(solved), Some(iterations)) = (self.solved, iterations) {
+            if std::env::var_os("STRESSFIELD_TIMINGS").is_some() {
+                eprintln!(
+                    "timings: solve {:.3} s ({iterations} iterations), subsurface maxima {:.3} s",
+                    solved.as_secs_f64(),
+                    (maxima_done - solved).as_secs_f64()
+                );
+            }
+        }
+    }
+}
+
 /// An error and its causes for the user, each said once ([`stressfield::io::text::error_text`]).
 pub(crate) fn error_text(error: &anyhow::Error) -> String {
     stressfield::io::text::error_text(error)

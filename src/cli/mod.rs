@@ -22,7 +22,7 @@ use args::Command;
 use console::print_out;
 use record::{record_all, Target};
 use render::{render_all, RenderOptions};
-use stressfield::scene::ContactKind;
+use stressfield::study::commands::HertzStudy;
 
 /// Runs one subcommand.
 pub fn run(command: Command) -> Result<()> {
@@ -79,41 +79,36 @@ pub fn run(command: Command) -> Result<()> {
             json,
         } => {
             let scene = stressfield::study::load_scene(&scene_path)?;
-            if scene.contact.coating.is_some() && scene.contact.kind != ContactKind::Rough {
-                let study = stressfield::study::coated::solve(&scene)
-                    .with_context(|| format!("scene {}", scene.name))?;
-                let report = stressfield::report::coated::CoatedReport::new(&study);
-                if json {
-                    let text = serde_json::to_string_pretty(&report.json_fields())
-                        .context("encoding the coated report as JSON")?;
-                    return print_out(&format!("{text}\n"));
-                }
-                return print_out(&report.text(&scene, &study));
+            // One study for every kind of scene, the Python package's too (issue 50).
+            let mut bars = console::StudyBars::new(&scene);
+            let study = stressfield::study::commands::hertz(&scene, &mut |p| bars.show(p));
+            let iterations = match &study {
+                Ok(HertzStudy::Rough(contact)) => Some(contact.solution.iterations),
+                _ => None,
+            };
+            bars.finish(iterations);
+            let study = study?;
+            if json {
+                let text = stressfield::report::commands::hertz_json(&scene, &study);
+                return print_out(&format!("{text}\n"));
             }
-            match scene.contact.kind {
-                ContactKind::Rough => surface::contact(&scene_path, json, None),
-                ContactKind::Surface => surface::surface_of_scene(&scene_path, json),
-                _ => {
-                    let maxima = stressfield::study::assess::scene_maxima(&scene);
-                    let heating = match scene.thermal {
-                        Some(_) => Some(
-                            thermal::hertz_heating(&scene)
-                                .with_context(|| format!("scene {}", scene.name))?,
-                        ),
-                        None => None,
-                    };
-                    if json {
-                        let report = stressfield::report::hertz::HertzReport::new(&scene, &maxima);
-                        let thermal = heating.as_ref().map(|(report, _)| report);
-                        return print_out(&format!("{}\n", report.json(thermal)));
-                    }
-                    let mut text = stressfield::report::hertz(&scene, &maxima);
-                    if let Some((report, study)) = &heating {
-                        text.push_str(&report.text(study));
-                    }
-                    print_out(&text)
+            print_out(&match &study {
+                HertzStudy::Coated(coated) => {
+                    stressfield::report::coated::CoatedReport::new(coated).text(&scene, coated)
                 }
-            }
+                HertzStudy::Rough(contact) => surface::contact_text(&scene, contact),
+                HertzStudy::Surface(characterisation) => {
+                    surface::surface_scene_text(&scene, characterisation)
+                }
+                HertzStudy::Closed { maxima, heating } => {
+                    let mut text = stressfield::report::hertz(&scene, maxima);
+                    if let Some(heating) = heating {
+                        let report = stressfield::report::commands::heating_report(heating);
+                        text.push_str(&report.text(heating.study()));
+                    }
+                    text
+                }
+            })
         }
         Command::Check { scenes } => check::check(&scenes),
         Command::Sweep { scene, json, csv } => {

@@ -48,13 +48,16 @@ pub(super) fn load_scenes(paths: &[PathBuf], failures: &mut Vec<String>) -> Vec<
     scenes
 }
 
+/// Creates the output directory and checks that it takes files, before any scene is computed.
 pub(super) fn create_out_dir(out_dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(out_dir).with_context(|| {
-        format!(
-            "cannot create the output directory {}\nhint: choose a writable one with --out-dir",
-            out_dir.display()
-        )
-    })
+    std::fs::create_dir_all(out_dir)
+        .and_then(|()| stressfield::io::output::probe_directory(out_dir))
+        .with_context(|| {
+            format!(
+                "cannot write into the output directory {}\nhint: choose a writable one with --out-dir",
+                out_dir.display()
+            )
+        })
 }
 
 pub(super) fn render_all(paths: &[PathBuf], out_dir: &Path, options: &RenderOptions) -> Result<()> {

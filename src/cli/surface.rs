@@ -5,16 +5,17 @@ use std::path::Path;
 use anyhow::{anyhow, bail, Context, Result};
 
 use super::args::SurfaceArgs;
-use super::console::{print_out, solver_bar, spinner};
+use super::console::{print_out, StudyBars};
 use super::npy::{npy_bytes, npy_path, write_npy, Reserved};
 use stressfield::io::output::Staged;
 use stressfield::io::units::{self, Dimension};
 use stressfield::report::rough::ContactReport;
 use stressfield::report::surface::SurfaceReport;
-use stressfield::scene::ContactKind;
+use stressfield::scene::{ContactKind, Scene};
 use stressfield::study;
+use stressfield::study::commands::ContactStudy;
 use stressfield::surface::read::{self, Fill, ReadOptions};
-use stressfield::surface::stats::{self, FormRemoval, Options};
+use stressfield::surface::stats::{self, Characterisation, FormRemoval, Options};
 use stressfield::surface::MIN_SPACING_M;
 
 /// `contact SCENE [--json] [--pressure FILE.npy]`.
@@ -35,65 +36,20 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
     let pressure_file = pressure
         .map(|path| Reserved::new(&mut staged, path))
         .transpose()?;
-    let bar = solver_bar();
-    let started = std::time::Instant::now();
-    let solution = study::rough::solve(&scene, &mut |iteration, residual| {
-        bar.set_position(iteration as u64);
-        bar.set_message(format!("residual {residual:.1e}"));
-    });
-    bar.finish_and_clear();
-    let solution = solution.with_context(|| format!("scene {}", scene.name))?;
-    let maxima_bar = spinner(&format!(
-        "subsurface maxima: DC-FFT layers down to {:.1} µm",
-        study::rough::search_depth_m(&solution) * 1e6
-    ));
-    let solved = started.elapsed();
-    let findings = study::rough::findings(&scene, &solution);
-    maxima_bar.finish_and_clear();
-    // The two phases' wall-clock times, for the README's scaling table (never in the report,
-    // which stays the same from run to run).
-    if std::env::var_os("STRESSFIELD_TIMINGS").is_some() {
-        eprintln!(
-            "timings: solve {:.3} s ({} iterations), subsurface maxima {:.3} s",
-            solved.as_secs_f64(),
-            solution.iterations,
-            (started.elapsed() - solved).as_secs_f64()
-        );
-    }
-    let findings = findings?;
-    let report = ContactReport::new(&scene, &solution, &findings);
-    // Frictional heating on the solved pressure, when the scene asks for it (with the
-    // subsurface maxima just found, which are its contact alone's).
-    let known = stressfield::study::thermal::ContactMaxima {
-        maxima: &findings.maxima,
-        friction: scene.contact.friction,
-        poisson: scene.contact.poisson,
-    };
-    let thermal = match scene.thermal {
-        Some(_) => Some(
-            super::thermal::study(&scene, Some(&solution), Some(known))
-                .with_context(|| format!("scene {}", scene.name))?,
-        ),
-        None => None,
-    };
+    // The study the Python package's `Scene.contact` runs too (issue 50).
+    let mut bars = StudyBars::new(&scene);
+    let study = study::commands::contact(&scene, &mut |p| bars.show(p));
+    bars.finish(study.as_ref().ok().map(|s| s.solution.iterations));
+    let study = study?;
     if let Some(file) = &pressure_file {
-        file.fill(&npy_bytes(&solution.pressure_pa, "pressure")?)?;
+        file.fill(&npy_bytes(&study.solution.pressure_pa, "pressure")?)?;
     }
     staged.commit()?;
     if json {
-        let thermal = thermal
-            .as_ref()
-            .map(stressfield::report::thermal::ThermalReport::new);
-        let text = report.json_with(thermal.as_ref());
+        let text = stressfield::report::commands::contact_json(&scene, &study);
         print_out(&format!("{text}\n"))
     } else {
-        let mut text = report.text(&scene);
-        if thermal.as_ref().is_some_and(|s| s.coupled.is_some()) {
-            text.push_str("(the contact above is the isothermal one; the heated contact of the coupled solution follows in the heating block, whose temperatures and stresses are its own)\n");
-        }
-        if let Some(study) = &thermal {
-            text.push_str(&stressfield::report::thermal::ThermalReport::new(study).text(study));
-        }
+        let mut text = contact_text(&scene, &study);
         if let Some(path) = pressure {
             text.push_str(&format!(
                 "pressure written to {} (Pa, float64, [rows, columns], row = y)\n",
@@ -102,6 +58,33 @@ pub fn contact(scene_path: &Path, json: bool, pressure: Option<&Path>) -> Result
         }
         print_out(&text)
     }
+}
+
+/// The readable report of a rough scene's contact (`contact`, and `hertz` of a rough scene):
+/// the contact, then the heating's block.
+pub(crate) fn contact_text(scene: &Scene, study: &ContactStudy) -> String {
+    let report = ContactReport::new(scene, &study.solution, &study.findings);
+    let mut text = report.text(scene);
+    if let Some(heating) = &study.heating {
+        if heating.coupled.is_some() {
+            text.push_str("(the contact above is the isothermal one; the heated contact of the coupled solution follows in the heating block, whose temperatures and stresses are its own)\n");
+        }
+        text.push_str(&stressfield::report::thermal::ThermalReport::new(heating).text(heating));
+    }
+    text
+}
+
+/// The readable characterisation of a surface scene (`hertz` of a surface scene), as
+/// `surface SCENE` prints it.
+pub(crate) fn surface_scene_text(scene: &Scene, characterisation: &Characterisation) -> String {
+    let rough = scene.contact.rough;
+    let source = scene.surface.as_ref().map_or("", |s| s.source.as_str());
+    SurfaceReport::new(
+        characterisation,
+        rough.and_then(|r| r.e_star_pa),
+        rough.and_then(|r| r.hardness_pa),
+    )
+    .text(characterisation, source)
 }
 
 /// A length flag (`--spacing 1e-6m`, `--band 4um,100um`), read as scenes read lengths.
@@ -134,23 +117,6 @@ fn pressure_pa(flag: &str, text: &str, hardness: bool) -> Result<f64> {
         );
     }
     Ok(pa)
-}
-
-/// `hertz` of a surface scene: its characterisation as a table (or JSON).
-pub fn surface_of_scene(path: &Path, json: bool) -> Result<()> {
-    surface(&SurfaceArgs {
-        input: path.to_path_buf(),
-        spacing: None,
-        height_unit: None,
-        length_unit: None,
-        fill: "refuse".into(),
-        form: "plane".into(),
-        band: None,
-        e_star: None,
-        hardness: None,
-        json,
-        heights: None,
-    })
 }
 
 /// `surface FILE|SCENE`.

@@ -1,83 +1,28 @@
-//! `thermal`: the frictional heating of a scene reported; the study shared with `hertz` and
-//! `contact`.
+//! `thermal`: the frictional heating of a scene reported ([`stressfield::study::commands`]
+//! computes it, as for `hertz` and `contact`), and its heating sheet.
 
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 
-use super::console::{print_out, progress_bar};
+use super::console::{print_out, progress_bar, StudyBars};
 use super::npy::{has_extension, is_device, npy_bytes, npy_path, Reserved};
-use stressfield::contact::rough::RoughSolution;
 use stressfield::io::output::Staged;
-use stressfield::report::thermal::ThermalReport;
-use stressfield::scene::{ContactKind, Scene};
+use stressfield::report::commands::heating_report;
+use stressfield::scene::Scene;
 use stressfield::study;
+use stressfield::study::commands::{CommandError, Heating};
 use stressfield::study::gear_heating::GearHeating;
 use stressfield::study::thermal::ThermalStudy;
 
-/// The heating of `scene` (which has `[thermal]`), with a progress bar over the depths; `known`:
-/// `contact`'s own maxima of the rough contact, when already found.
-pub(crate) fn study(
-    scene: &Scene,
-    rough: Option<&RoughSolution>,
-    known: Option<study::thermal::ContactMaxima>,
-) -> Result<ThermalStudy> {
-    let bar = progress_bar(study::thermal::DEPTHS_OVER_A.len() as u64);
-    bar.set_message("thermal stress by depth");
-    let result = study::thermal::study_with(scene, rough, known, &mut |progress| match progress {
-        study::thermal::Progress::Coupled { iteration, change } => bar.set_message(format!(
-            "coupled iteration {iteration}: pressure change {change:.1e}"
-        )),
-        study::thermal::Progress::Depth { done, total } => {
-            bar.set_message("thermal stress by depth");
-            bar.set_length(total as u64);
-            bar.set_position(done as u64)
-        }
-        study::thermal::Progress::Path { .. } => {}
-    });
-    bar.finish_and_clear();
-    // The caller names the scene (`render` prefixes each scene's error with it).
-    result.context("frictional heating")
-}
-
-/// The heating of running spur gears along the path of contact, with a progress bar.
-fn gear_heating(scene: &Scene) -> Result<GearHeating> {
-    let total = (study::gear_heating::PATH_POINTS + study::thermal::DEPTHS_OVER_A.len()) as u64;
-    let bar = progress_bar(total);
-    bar.set_message("flash temperature along the path of contact");
-    let result = study::gear_heating::gear_heating(scene, &mut |progress| match progress {
-        study::thermal::Progress::Path { done, .. } => bar.set_position(done as u64),
-        study::thermal::Progress::Depth { done, .. } => {
-            bar.set_message("thermal stress by depth at the hottest point");
-            bar.set_position((study::gear_heating::PATH_POINTS + done) as u64)
-        }
-        study::thermal::Progress::Coupled { .. } => {}
-    });
-    bar.finish_and_clear();
-    result.context("frictional heating of the gears")
-}
-
-/// The heating of a Hertz scene with `[thermal]` (gears along their path) as reported by
-/// `hertz` and `thermal`, and the study its stresses come from.
-pub(crate) fn hertz_heating(scene: &Scene) -> Result<(ThermalReport, ThermalStudy)> {
-    let (report, study, _) = heating(scene)?;
-    Ok((report, study))
-}
-
-/// As [`hertz_heating`], with the gears' path when there is one.
-fn heating(scene: &Scene) -> Result<(ThermalReport, ThermalStudy, Option<GearHeating>)> {
-    let with_gears = scene.thermal.and_then(|t| t.gear).is_some();
-    Ok(if with_gears {
-        let gear = gear_heating(scene)?;
-        (
-            ThermalReport::for_gears(&gear),
-            gear.study.clone(),
-            Some(gear),
-        )
-    } else {
-        let study = study(scene, None, None)?;
-        (ThermalReport::new(&study), study, None)
-    })
+/// The heating of a scene with `[thermal]` as `thermal` computes it (a rough scene's on its
+/// solved contact; gears along their path), with progress bars: the study the Python
+/// package's `Scene.thermal` runs too (issue 50).
+fn heating(scene: &Scene) -> Result<Heating> {
+    let mut bars = StudyBars::new(scene);
+    let heating = study::commands::thermal(scene, &mut |p| bars.show(p));
+    bars.finish(None);
+    Ok(heating?)
 }
 
 /// The heating sheet of `study` (with the gears' path), its sections computed with a
@@ -106,8 +51,15 @@ fn heating_sheet(
 /// The heating sheet of a Hertz or gear scene with `[thermal]` as a PNG, for `render`'s
 /// batch (`NAME_heating.png` beside the scene's figure).
 pub(crate) fn heating_png(scene: &Scene) -> Result<Vec<u8>> {
-    let (_, study, gear) = heating(scene)?;
-    let sheet = heating_sheet(scene, &study, gear.as_ref())?;
+    // `render` names the scene in front of its errors: the heating's step alone here.
+    let mut bars = StudyBars::new(scene);
+    let heating = study::commands::thermal(scene, &mut |p| bars.show(p));
+    bars.finish(None);
+    let heating = heating.map_err(|e| match e {
+        CommandError::Heating { error, .. } => anyhow::Error::new(*error),
+        other => anyhow::Error::new(other),
+    })?;
+    let sheet = heating_sheet(scene, heating.study(), heating.gears())?;
     Ok(stressfield::render::encode_png(
         &stressfield::render::chart::sheet_png(&sheet)?,
     )?)
@@ -152,9 +104,8 @@ pub fn thermal(
     let figure_file = figure
         .map(|path| Reserved::new(&mut staged, path))
         .transpose()?;
-    let computed = heating_outputs(&scene, figure.is_some(), svg)
-        .with_context(|| format!("scene {}", scene.name))?;
-    let (report, study, drawing) = computed;
+    let (heating, drawing) = heating_outputs(&scene, figure.is_some(), svg)?;
+    let (report, study) = (heating_report(&heating), heating.study());
     if let Some(file) = &temperature_file {
         file.fill(&npy_bytes(&study.body1.temperature_k, "temperature")?)?;
     }
@@ -166,7 +117,7 @@ pub fn thermal(
         print_out(&format!("{}\n", report.json()))
     } else {
         let mut text = format!("scene {}\n", scene.name);
-        text.push_str(&report.text(&study));
+        text.push_str(&report.text(study));
         if let Some(path) = figure {
             text.push_str(&format!("heating sheet written to {}\n", path.display()));
         }
@@ -180,33 +131,21 @@ pub fn thermal(
     }
 }
 
-/// What `thermal` computes: the report, the study, and the heating sheet when asked for.
-fn heating_outputs(
-    scene: &Scene,
-    sheet: bool,
-    svg: bool,
-) -> Result<(ThermalReport, ThermalStudy, Option<Vec<u8>>)> {
-    let rough = if scene.contact.kind == ContactKind::Rough {
-        Some(study::rough::solve(scene, &mut |_, _| {})?)
-    } else {
-        None
-    };
-    let (report, study, gear) = match &rough {
-        Some(solution) => {
-            let study = study(scene, Some(solution), None)?;
-            (ThermalReport::new(&study), study, None)
-        }
-        None => heating(scene)?,
-    };
-    let drawing = if sheet {
-        let sheet = heating_sheet(scene, &study, gear.as_ref())?;
-        Some(if svg {
+/// What `thermal` computes: the heating, and the heating sheet when asked for (its errors
+/// named by the scene).
+fn heating_outputs(scene: &Scene, sheet: bool, svg: bool) -> Result<(Heating, Option<Vec<u8>>)> {
+    let heating = heating(scene)?;
+    let drawing = || -> Result<Vec<u8>> {
+        let sheet = heating_sheet(scene, heating.study(), heating.gears())?;
+        Ok(if svg {
             stressfield::render::chart::sheet_svg(&sheet)?.into_bytes()
         } else {
             stressfield::render::encode_png(&stressfield::render::chart::sheet_png(&sheet)?)?
         })
-    } else {
-        None
     };
-    Ok((report, study, drawing))
+    let drawing = match sheet {
+        true => Some(drawing().with_context(|| format!("scene {}", scene.name))?),
+        false => None,
+    };
+    Ok((heating, drawing))
 }

@@ -63,15 +63,24 @@ pub fn wear(scene_path: &Path, json: bool, heights_out: Option<&Path>) -> Result
                 dir.display()
             ),
         }
+        // Before anything is computed: a directory that takes no file is said at once.
+        if let Err(e) = stressfield::io::output::probe_directory(dir) {
+            bail!(
+                "--heights-out {}: cannot write into it ({e})\nhint: give a writable directory",
+                dir.display()
+            );
+        }
     }
     let study = study(&scene).with_context(|| format!("scene {}", scene.name))?;
     let report = WearReport::new(&study);
     if let Some(dir) = heights_out {
         let mut staged = Staged::new();
+        let [dx, dy] = report.spacing_m;
         let mut fragment = format!(
-            "# The worn heights of {} at each step (m, float64, [rows, columns], row = y), as a\n# measured series: paste into a rough scene with [surface] spacing = \"{} m\" and\n# level = \"none\" (the simulation's own heights have no tilt to remove).\n",
+            "# The worn heights of {} at each step (m, float64, [rows, columns], row = y), as a\n# measured series: paste below a rough scene's [contact] tables (replacing its [surface]\n# and [wear]). The simulation's heights are in its own frame, with no mounting tilt:\n# level = \"none\" solves them as the simulation did (the default, the first map's\n# least-squares plane removed from every map, would tilt a conformal scar).\n\n[surface]\nspacing = [\"{} m\", \"{} m\"]   # dx, dy\nlevel = \"none\"\n",
             scene.name,
-            stressfield::io::text::number(report.spacing_m[0])
+            stressfield::io::text::number(dx),
+            stressfield::io::text::number(dy)
         );
         for (index, step) in study.steps.iter().enumerate() {
             let name = step_file(&scene.name, index);

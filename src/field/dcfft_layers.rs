@@ -126,3 +126,71 @@ where
     }
     Ok(())
 }
+
+/// The peak memory (bytes) of computing `depths` DC-FFT layers of an `[ny, nx]` grid with
+/// `loads` traction arrays (1 to 3) on `threads` threads and keeping them all (the Python
+/// package's `stress` returns them): a cell takes `48 depths` bytes for the layers kept (six
+/// f64 components), `48 loads` for the tractions (their copy, and their zero-padded spectra
+/// of `(2 ny)(nx + 1)` complex values, `32 loads`, plus a periodic grid's spectral layers',
+/// `8 loads`), and for each worker running at once (as many as threads, at most one a
+/// depth) `96 loads + 48`: the influence coefficients (`48 loads`), a component's row
+/// spectra (at most `16 loads`), on a periodic square grid the turned coefficients of each
+/// shear that is not a load (`24` a cell and `48 nx`, at most `32 loads` in all) and the
+/// layer (`48`), which bounds [`DcFft::worker_bytes`]. Estimated before anything is
+/// allocated, so that a call that cannot fit is refused instead of aborting the process
+/// (issue 50: a 4096² grid at 50 depths asked for 40 GB).
+pub fn kept_layers_bytes(shape: [usize; 2], loads: usize, depths: usize, threads: usize) -> usize {
+    let cells = shape[0].saturating_mul(shape[1]);
+    let workers = threads.clamp(1, depths.max(1));
+    let per_cell = 48usize
+        .saturating_mul(depths)
+        .saturating_add(48 * loads)
+        .saturating_add(workers.saturating_mul(96 * loads + 48));
+    cells.saturating_mul(per_cell)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solution::dcfft::TractionGrid;
+    use ndarray::Array2;
+
+    /// The estimate bounds what a worker of the driver holds ([`DcFft::worker_bytes`]) for
+    /// every combination of loads, isolated and periodic, square and not, plus the layers
+    /// kept; and it does not overflow.
+    #[test]
+    fn the_kept_layers_estimate_bounds_the_workers() {
+        let cell = |present: bool, shape: (usize, usize)| {
+            present.then(|| Array2::from_shape_fn(shape, |(j, i)| (i + 2 * j) as f64))
+        };
+        for shape in [(16, 16), (12, 20)] {
+            for mask in 1..8u8 {
+                let (p, qx, qy) = (mask & 1 != 0, mask & 2 != 0, mask & 4 != 0);
+                let loads = [p, qx, qy].iter().filter(|&&b| b).count();
+                let grid = TractionGrid::new(
+                    [0.0, 0.0],
+                    [1.0, 1.0],
+                    cell(p, shape),
+                    cell(qx, shape),
+                    cell(qy, shape),
+                )
+                .expect("grid");
+                for fft in [
+                    DcFft::new(&grid, 0.3).expect("isolated"),
+                    DcFft::periodic(&grid, 0.3).expect("periodic"),
+                ] {
+                    let estimate = kept_layers_bytes([shape.0, shape.1], loads, 4, 2);
+                    let layers = 4 * 48 * shape.0 * shape.1;
+                    assert!(
+                        estimate >= layers + 2 * fft.worker_bytes(),
+                        "{shape:?}, loads {mask:03b}: {estimate} < {layers} + 2 x {}",
+                        fft.worker_bytes()
+                    );
+                }
+            }
+        }
+        assert_eq!(kept_layers_bytes([1 << 40, 1 << 40], 3, 50, 64), usize::MAX);
+        // The issue's call: 4096² at 50 depths, about 40 GB kept alone.
+        assert!(kept_layers_bytes([4096, 4096], 1, 50, 2) > 40_000_000_000);
+    }
+}

@@ -11,7 +11,7 @@ use crate::solution::Solution;
 use crate::stress::{Quantity, Stress};
 
 mod dcfft_layers;
-pub use dcfft_layers::for_each_dcfft_layer;
+pub use dcfft_layers::{for_each_dcfft_layer, kept_layers_bytes};
 
 /// Evenly spaced samples `min..=max` (`count >= 2`).
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -205,6 +205,17 @@ fn parent_dir(path: &Path) -> &Path {
 }
 
 /// A new temporary file in the directory of `path`, readable by all once renamed.
+/// Whether the directory `dir` takes a file: a temporary one is created in it and removed. A
+/// command checks its output directories with this before it computes anything (issue 50: an
+/// unwritable `--out-dir` was found only after the whole computation); permissions alone do
+/// not tell (root writes anywhere the file system lets it, a read-only mount refuses all).
+pub fn probe_directory(dir: &Path) -> std::io::Result<()> {
+    tempfile::Builder::new()
+        .prefix(".stressfield-probe-")
+        .tempfile_in(dir)
+        .map(drop)
+}
+
 fn temp_beside(path: &Path, suffix: &str) -> std::io::Result<tempfile::NamedTempFile> {
     let mut builder = tempfile::Builder::new();
     // A temporary file is private (0600); the output is an ordinary file, readable by all.

@@ -4,6 +4,7 @@
 //! surface, thermal), [`crate::render`]'s tables, [`crate::io`] for numbers.
 
 pub mod coated;
+pub mod commands;
 pub mod hertz;
 pub mod probe;
 pub mod rough;

@@ -8,9 +8,10 @@
 //! without a hardness), `e_star_pa`, `hardness_pa`, `friction`, `poisson`, `periodic`,
 //! `rows`, `columns`, `spacing_m`, `tolerance`, `search_depth_m`, `warnings` (an array of
 //! sentences, empty when the solution gives no cause: [`crate::study::rough::warnings`]),
-//! `levelling` (null for a generated map, else `{"removed": "plane" | "quadratic" | "none",
-//! "plane_m": [c0, c1, c2]}`: what was removed from the measured map before solving, and its
-//! least-squares plane c0 + c1 x + c2 y in m and m/m, x and y from its first sample; null
+//! `levelling` (null for a generated map, else `{"removed": "plane" | "quadratic" | "mean" |
+//! "none", "plane_m": [c0, c1, c2]}`: what was removed from the measured map before solving
+//! ("mean": only its mean height, the default of a periodic contact), and its least-squares
+//! plane c0 + c1 x + c2 y in m and m/m, x and y from its first sample, removed or kept; null
 //! `plane_m` when nothing was removed), and for a coated body 1 `coating` (absent otherwise):
 //! `{"thickness_m", "von_mises_max_pa", "interface_shear_max_pa", "interface_normal_min_pa",
 //! "substrate_von_mises_max_pa"}`, the same object as `hertz --json` of a coated point or line
@@ -69,9 +70,9 @@ pub struct ContactReport {
 /// What was removed from a measured map before its contact was solved.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct LevellingReport {
-    /// "plane", "quadratic" or "none".
+    /// "plane", "quadratic", "mean" or "none".
     pub removed: &'static str,
-    /// The map's least-squares plane `[c0, c1, c2]` (m, m/m, m/m), when something was removed.
+    /// The map's least-squares plane `[c0, c1, c2]` (m, m/m, m/m), removed or kept (null as measured).
     pub plane_m: Option<[f64; 3]>,
 }
 
@@ -79,10 +80,7 @@ impl LevellingReport {
     pub fn of(levelling: crate::scene::Levelling) -> Self {
         Self {
             removed: levelling.removed(),
-            plane_m: match levelling {
-                crate::scene::Levelling::Raw => None,
-                crate::scene::Levelling::Removed { plane, .. } => Some(plane),
-            },
+            plane_m: levelling.plane_m(),
         }
     }
 
@@ -90,6 +88,9 @@ impl LevellingReport {
     pub fn sentence(&self) -> String {
         match (self.removed, self.plane_m) {
             (_, None) => "heights solved as measured (level = \"none\": no plane removed)".into(),
+            ("mean", Some([_, sx, sy])) => format!(
+                "a periodic map: only its mean height removed before solving (a plane is not periodic; its slopes {sx:.3e} along x, {sy:.3e} along y kept; level = \"plane\" removes them and steps the seam)"
+            ),
             (form, Some([_, sx, sy])) => format!(
                 "levelled before solving: the least-squares {} removed (the measured map's slopes {:.3e} along x, {:.3e} along y; level = \"none\" keeps them)",
                 if form == "quadratic" { "second-order form" } else { "mean plane" },

@@ -13,7 +13,9 @@
 //! `max_shear_max_pa` and `max_shear_max_depth_m` (Tresca, (σ1 − σ3)/2), `scar_area_m2` (the
 //! area worn so far: wear depth above a thousandth of the deepest), `file` (a series'
 //! map); and at the top `kind` (`"archard"` or `"series"`), `distance_m`, `scheme`,
-//! `e_star_pa`, `friction`, `poisson`, `periodic`, `rows`, `columns`, `spacing_m`, `coupled`.
+//! `e_star_pa`, `friction`, `poisson`, `periodic`, `rows`, `columns`, `spacing_m`, `coupled`,
+//! `warnings` (an array of sentences, empty when there is nothing to say: a series' map that
+//! stands higher than the first, which is not wear).
 
 use std::fmt::Write as _;
 
@@ -94,6 +96,8 @@ pub struct WearReport {
     pub spacing_m: [f64; 2],
     pub coupled: bool,
     pub steps: Vec<StepReport>,
+    /// Sentences the reader should be told (a series' map standing higher than the first).
+    pub warnings: Vec<String>,
 }
 
 impl WearReport {
@@ -136,6 +140,7 @@ impl WearReport {
             spacing_m: first.map_or([0.0; 2], |s| s.solution.spacing_m),
             coupled: study.coupled,
             steps: study.steps.iter().map(StepReport::of).collect(),
+            warnings: study.warnings.clone(),
         }
     }
 
@@ -192,8 +197,9 @@ impl WearReport {
             )?,
             None => writeln!(
                 out,
-                "wear: a measured series of {} topographies, each solved as a static contact; the wear is the first map less each, less the offset of datum the unworn cells share",
-                self.steps.len()
+                "wear: a measured series of {} topographies, each solved as a static contact; the wear is the first map less each, less the offset of datum the unworn cells share; {}",
+                self.steps.len(),
+                series_levelling(scene)
             )?,
         }
         if self.coupled {
@@ -242,6 +248,40 @@ impl WearReport {
             out,
             "(area: the real contact area; scar: the area worn so far; p mean: the load over the real contact area; worn: the worn volume so far, Archard's k W s for simulated wear; depth: the deepest wear so far; maxima of DC-FFT layers under each step, as `contact` searches them)"
         )?;
+        for warning in &self.warnings {
+            writeln!(out, "warning: {warning}")?;
+        }
         Ok(())
+    }
+}
+
+/// How a series' maps were levelled, in words (issue 50: one datum for the specimen).
+fn series_levelling(scene: &Scene) -> String {
+    use crate::scene::{Levelling, SeriesDatum};
+    let Some(surface) = &scene.surface else {
+        return String::new();
+    };
+    let what = match surface.levelling {
+        None | Some(Levelling::Raw) => {
+            return "the maps solved as measured (level = \"none\")".into()
+        }
+        Some(Levelling::Mean { .. }) => "mean height",
+        Some(Levelling::Removed(datum)) => match datum.form() {
+            crate::surface::stats::FormRemoval::Plane => "least-squares plane",
+            crate::surface::stats::FormRemoval::Quadratic => "least-squares second-order form",
+        },
+    };
+    match &surface.series_datum {
+        Some(SeriesDatum::Each) => format!("each map levelled by its own {what} (datum = \"each\")"),
+        Some(SeriesDatum::Region { x_m, y_m }) => format!(
+            "each map levelled by its {what} over x {:.1} to {:.1} µm, y {:.1} to {:.1} µm (datum_region)",
+            x_m[0] * 1e6,
+            x_m[1] * 1e6,
+            y_m[0] * 1e6,
+            y_m[1] * 1e6
+        ),
+        Some(SeriesDatum::First) | None => {
+            format!("every map levelled by the first map's {what} (one datum for the specimen)")
+        }
     }
 }

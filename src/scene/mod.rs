@@ -19,6 +19,11 @@ pub mod traction_csv;
 
 mod validate;
 
+pub use validate::{
+    Bounds, APPROACH_BOUNDS, LOAD_BOUNDS, MODULUS_BOUNDS, SPACING_BOUNDS, STRESS_BOUNDS,
+    WAVELENGTH_BOUNDS,
+};
+
 use std::path::Path;
 
 use crate::solution::dcfft::TractionGrid;
@@ -26,9 +31,9 @@ use raw::RawScene;
 
 pub use spec::{
     CoatingSpec, Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit,
-    Levelling, Method, Numerical, PanelSpec, RoughSpec, Scale, SectionKind, SeriesEntry,
-    StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection, WearSpec, YieldStrength,
-    ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
+    Levelling, Method, Numerical, PanelSpec, RoughSpec, Scale, SectionKind, SeriesDatum,
+    SeriesEntry, StressUnit, SurfaceSpec, ThermalBody, ThermalSpec, TractionDirection, WearSpec,
+    YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH, ROUGH_SECTION_MIN_CELLS,
     ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };
 pub use sweep::{compact, Sweep, SweepParameter, VolumeSpec, MAX_STEPS, MIN_PECLET};
@@ -40,6 +45,10 @@ pub const FORMAT: i64 = 1;
 /// sliding gives 0.1 to 1 and clean metals in vacuum a few; beyond about 10 surfaces weld
 /// rather than slide, and `q = μ p` no longer describes the contact.
 pub const MAX_FRICTION: f64 = 10.0;
+
+/// The loosest tolerance a rough contact's solver takes (`numerical.tolerance` lies in `(0,
+/// MAX_ROUGH_TOLERANCE)`).
+pub const MAX_ROUGH_TOLERANCE: f64 = 1e-2;
 
 /// What a friction coefficient must be, for messages: the range and why.
 pub fn friction_requirement(mu: f64) -> Option<String> {

@@ -81,8 +81,15 @@ pub struct RawSurface {
     /// Form removed before the statistics: "plane" (default) or "quadratic".
     pub form: Option<String>,
     /// What is removed from a measured map before a rough contact is solved: "plane",
-    /// "quadratic" or "none" (default: as `form`).
+    /// "quadratic", "mean" or "none" (default: as `form` for an isolated contact, "mean" for a
+    /// periodic one).
     pub level: Option<String>,
+    /// A series: how its maps share one datum: "first" (the first map's fitted form removed
+    /// from every map, the default) or "each" (each map its own).
+    pub datum: Option<String>,
+    /// A series: the region each map's form is fitted on (a part that does not wear):
+    /// ["x from", "x to", "y from", "y to"], lengths from the map's first sample.
+    pub datum_region: Option<Vec<String>>,
     /// Wavelength band of the Hurst fit: ["4 um", "100 um"].
     pub band: Option<Vec<String>>,
     pub generate: Option<RawGenerate>,

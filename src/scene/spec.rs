@@ -10,7 +10,7 @@ use crate::contact::rough::Control;
 use crate::contact::{Body, LineContact, PointContact};
 use crate::render::{ColorMap, Levels, Mark};
 use crate::stress::Quantity;
-use crate::surface::stats::FormRemoval;
+use crate::surface::stats::{Datum, FormRemoval};
 use crate::surface::HeightMap;
 
 /// Contact geometry kind.
@@ -294,36 +294,69 @@ pub struct SurfaceSpec {
     /// for a generated map (nothing to level) and for a surface scene (its statistics level
     /// their own copy).
     pub levelling: Option<Levelling>,
+    /// A measured series' datum (`None` unless the scene is a levelled series).
+    pub series_datum: Option<SeriesDatum>,
 }
 
 /// How a measured height map is levelled before its contact is solved (`[surface] level`).
 /// A measured map's tilt is the instrument's mounting, not the contact's geometry: instrument
 /// software (Gwyddion's plane levelling, ISO 25178-2's F-operator) removes it before anything
-/// else, and so does a contact solve unless told otherwise.
+/// else, and so does an isolated contact solve unless told otherwise. A periodic map is
+/// different: it is one period of a surface that repeats, and a plane is not periodic (it
+/// puts a step at the seam and tilts every period), so a periodic solve removes only the
+/// mean height unless a plane is asked for (issue 50).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Levelling {
     /// `level = "none"`: the heights as measured, deliberately.
     Raw,
-    /// The least-squares form removed from body 1's map (and likewise from a measured
-    /// counter-surface's and from every map of a series, each its own); `plane` is body 1's
-    /// least-squares plane `c0 + c1 x + c2 y` (m, and m/m for the slopes, x and y from the map's
-    /// first sample).
-    Removed { form: FormRemoval, plane: [f64; 3] },
+    /// Only the mean height `mean_m` removed (the default of a periodic contact, or
+    /// `level = "mean"`); `plane` is body 1's least-squares plane, kept (as in
+    /// [`Levelling::Removed`]).
+    Mean { mean_m: f64, plane: [f64; 3] },
+    /// The least-squares form of body 1's map removed from it (and likewise a measured
+    /// counter-surface's from that, and from every map of a series by the series' datum,
+    /// [`SeriesDatum`]); its `plane_m` is body 1's least-squares plane `c0 + c1 x + c2 y` (m,
+    /// and m/m for the slopes, x and y from the map's first sample; a series: fitted where its
+    /// datum says).
+    Removed(Datum),
+}
+
+/// How the maps of a measured series share one datum (`[surface] datum`, `datum_region`): a
+/// series is one specimen measured again, so the wear between two maps is their difference,
+/// and a levelling of its own per map would tilt the worn region differently in each
+/// (issue 50).
+#[derive(Clone, Debug, PartialEq)]
+pub enum SeriesDatum {
+    /// The first map's fitted form removed from every map (the default).
+    First,
+    /// Each map its own fitted form (`datum = "each"`: each map mounted anew and its tilt
+    /// not the specimen's).
+    Each,
+    /// Each map's form fitted on the samples of a region that does not wear (`datum_region`,
+    /// x and y ranges from the map's first sample, m), then removed from the whole map.
+    Region { x_m: [f64; 2], y_m: [f64; 2] },
 }
 
 impl Levelling {
-    /// The JSON name of what was removed: "plane", "quadratic" or "none".
+    /// The map's least-squares plane `[c0, c1, c2]` (m, m/m, m/m), removed or kept; `None`
+    /// for heights solved as measured.
+    pub fn plane_m(&self) -> Option<[f64; 3]> {
+        match self {
+            Levelling::Raw => None,
+            Levelling::Mean { plane, .. } => Some(*plane),
+            Levelling::Removed(datum) => Some(datum.plane_m),
+        }
+    }
+
+    /// The JSON name of what was removed: "plane", "quadratic", "mean" or "none".
     pub fn removed(&self) -> &'static str {
         match self {
             Levelling::Raw => "none",
-            Levelling::Removed {
-                form: FormRemoval::Plane,
-                ..
-            } => "plane",
-            Levelling::Removed {
-                form: FormRemoval::Quadratic,
-                ..
-            } => "quadratic",
+            Levelling::Mean { .. } => "mean",
+            Levelling::Removed(datum) => match datum.form() {
+                FormRemoval::Plane => "plane",
+                FormRemoval::Quadratic => "quadratic",
+            },
         }
     }
 }

@@ -56,20 +56,12 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             "lower figure.resolution (600 to 1200 is plenty for a figure)",
         ));
     }
-    // A wear scene keeps every step's pressure, gap, worn heights and wear depth.
+    // A wear scene keeps every step's pressure, gap, worn heights and wear depth, besides the
+    // contact's solver and search ([`super::heating_plan::wear_cost`]).
     if let (Some(spec), Some(surface)) = (&scene.wear, &scene.surface) {
         let steps = super::wear::step_count(spec);
         let shape = surface.heights.shape();
-        let periodicity = match scene.contact.rough.is_some_and(|r| r.periodic) {
-            true => crate::operator::elastic::Periodicity::Periodic,
-            false => crate::operator::elastic::Periodicity::NonPeriodic,
-        };
-        let bytes = super::wear::bytes_per_step(shape)
-            .saturating_mul(steps)
-            .saturating_add(crate::contact::rough::RoughContactProblem::memory_bytes(
-                shape,
-                periodicity,
-            ));
+        let (bytes, _) = super::heating_plan::wear_cost(scene, shape);
         let limit = memory_limit_bytes();
         if bytes > limit {
             let key = match spec {
@@ -79,7 +71,7 @@ pub fn admit(scene: &Scene, file: &str) -> Result<(), SceneError> {
             return Err(error(
                 key,
                 format!(
-                    "{steps} steps of a {} x {} map need about {} MiB (each step's pressure, gap, worn heights and wear depth, {} bytes a cell, and the solver), more than the {} MiB this machine allows",
+                    "{steps} steps of a {} x {} map need about {} MiB (each step's pressure, gap, worn heights and wear depth, {} bytes a cell, and the solver and search), more than the {} MiB this machine allows",
                     shape[1],
                     shape[0],
                     bytes >> 20,

@@ -151,6 +151,77 @@ pub fn rough_contact_cost(scene: &crate::scene::Scene, shape: [usize; 2]) -> (us
     }
 }
 
+/// CPU time of a wear run a cell of its map and a unit of work, s: the unworn contact's solve
+/// and search is one unit, each step [`WEAR_STEP_WORK`] (a warm-started solve and the step's
+/// maxima), times [`WEAR_COUNTER_FACTOR`] with a rough counter-surface, [`WEAR_HEATING_FACTOR`]
+/// with heating and [`WEAR_COUPLED_FACTOR`] coupled; growing with the map as
+/// `(log2(cells) / 16)²` (more iterations and longer transforms on finer maps; unlike
+/// [`contact_cost`], not held at 256²'s below it). Fitted to 15 runs (`/usr/bin/time -v` on
+/// `wear --json`, 2026-12-07, two cores shared with three builds): the shipped ball's physics
+/// at 64², 128², 192², 256² and 512², 10 and 30 steps, plain, with a counter-surface, heated
+/// and coupled, and the shipped series; every run within 20 % (`docs/benchmarks.md`).
+pub const WEAR_CPU_SECONDS_PER_CELL: f64 = 2.2e-5;
+/// A step's work against the unworn contact's, and the steps it is counted over besides the
+/// run's (fewer, longer steps take more iterations each: 1.4 times a step's CPU at 10 steps
+/// against 30, at 256²).
+pub const WEAR_STEP_WORK: f64 = 0.45;
+pub const WEAR_EXTRA_STEPS: usize = 2;
+/// A step's CPU time with a rough counter-surface (a second, sliding solve a step), against a
+/// smooth one: measured 1.74 (128²) and 1.88 (256²).
+pub const WEAR_COUNTER_FACTOR: f64 = 1.85;
+/// A step's CPU time with `[thermal]` (the flash temperature of each step), against the same
+/// run without: measured 1.11 (128²) and 1.13 (256²) with a counter-surface.
+pub const WEAR_HEATING_FACTOR: f64 = 1.12;
+/// A step's CPU time of a coupled run (`coupled = true`: the thermo-mechanical contact each
+/// step), against the isothermal one: measured 1.75 (128²) and 1.63 (256²).
+pub const WEAR_COUPLED_FACTOR: f64 = 1.7;
+/// Peak memory of a wear run a cell besides the steps' fields
+/// ([`crate::study::wear::bytes_per_step`] each) and [`WEAR_BASE_BYTES`]: the solver, the
+/// evolution's own maps and the search; measured 450 to 560 bytes a cell from 128² to 512².
+pub const WEAR_BYTES_PER_CELL: usize = 560;
+pub const WEAR_BASE_BYTES: usize = 10 << 20;
+/// Memory a cell of the flash temperature's operators (measured +5.8 MiB at 256²: 92 bytes a
+/// cell), and of a coupled run's (+19 MiB at 256²: 300 bytes a cell).
+pub const WEAR_HEATING_BYTES_PER_CELL: usize = 100;
+pub const WEAR_COUPLED_BYTES_PER_CELL: usize = 300;
+
+/// What `wear` of a scene with `[wear]` or `[[series]]` takes on a map of `shape`: `(bytes, CPU
+/// seconds)` of the whole run, every step with its maxima and heating (issue 50: `check`
+/// stated one contact's estimate, which the run exceeded 1.3 to 1.6 times, and none for a
+/// heated run). A scene without wear: its contact's ([`rough_contact_cost`]).
+pub fn wear_cost(scene: &crate::scene::Scene, shape: [usize; 2]) -> (usize, f64) {
+    let Some(spec) = &scene.wear else {
+        let (bytes, seconds, _) = rough_contact_cost(scene, shape);
+        return (bytes, seconds);
+    };
+    let cells = shape[0] * shape[1];
+    let steps = crate::study::wear::step_count(spec);
+    let counter = scene.surface.as_ref().is_some_and(|s| s.counter.is_some());
+    let coupled = scene.thermal.as_ref().is_some_and(|t| t.coupled);
+    let mut step = WEAR_STEP_WORK;
+    if counter {
+        step *= WEAR_COUNTER_FACTOR;
+    }
+    let mut heating_per_cell = 0;
+    if scene.thermal.is_some() {
+        step *= WEAR_HEATING_FACTOR;
+        heating_per_cell = WEAR_HEATING_BYTES_PER_CELL;
+    }
+    if coupled {
+        step *= WEAR_COUPLED_FACTOR;
+        heating_per_cell = WEAR_COUPLED_BYTES_PER_CELL;
+    }
+    let growth = ((cells.max(2) as f64).log2() / 16.0).powi(2);
+    let seconds = WEAR_CPU_SECONDS_PER_CELL
+        * cells as f64
+        * growth
+        * (1.0 + step * (steps + WEAR_EXTRA_STEPS) as f64);
+    let bytes = WEAR_BASE_BYTES
+        .saturating_add((WEAR_BYTES_PER_CELL + heating_per_cell).saturating_mul(cells))
+        .saturating_add(crate::study::wear::bytes_per_step(shape).saturating_mul(steps));
+    (bytes, seconds)
+}
+
 /// The heating of a scene as planned.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HeatingPlan {

@@ -15,6 +15,7 @@ pub mod admit;
 pub mod assess;
 pub mod coated;
 pub mod coated_rough;
+pub mod commands;
 mod compass;
 pub mod coupled;
 pub mod drawing;

@@ -4,6 +4,7 @@
 //! The traction grid is in the rough scenes' reference units ([`REFERENCE_LENGTH_M`],
 //! [`REFERENCE_PRESSURE_PA`]: 1 um and 1 MPa), the `a` and `p0` of their `Contact::scale`.
 
+use std::ops::ControlFlow;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
 
@@ -76,6 +77,21 @@ pub fn solve(
     scene: &Scene,
     progress: &mut dyn FnMut(usize, f64),
 ) -> Result<RoughSolution, RoughStudyError> {
+    solve_interruptible(scene, &mut |iteration, residual| {
+        progress(iteration, residual);
+        ControlFlow::Continue(())
+    })
+}
+
+/// [`solve`] that can be stopped between iterations: `progress(iteration, residual)` returns
+/// whether to go on ([`rough::solve_interruptible`]; a stop is
+/// [`RoughContactError::Interrupted`]), the same solution as [`solve`] to the last bit
+/// otherwise. A coated body's solve ([`crate::contact::coated::solve`]) has no stop yet: its
+/// progress is reported and its answer to stop is not heard.
+pub fn solve_interruptible(
+    scene: &Scene,
+    progress: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
+) -> Result<RoughSolution, RoughStudyError> {
     if scene.contact.kind != ContactKind::Rough {
         return Err(RoughStudyError::NotRough);
     }
@@ -86,10 +102,17 @@ pub fn solve(
             &problem,
             &coating.layered(),
             coating.counter_per_pa,
-            progress,
+            &mut |iteration, residual| {
+                let _ = progress(iteration, residual);
+            },
         )?);
     }
-    Ok(rough::solve(&problem, progress)?)
+    Ok(rough::solve_interruptible(
+        &problem,
+        &rough::Warm::default(),
+        &mut rough::OperatorCache::default(),
+        progress,
+    )?)
 }
 
 /// The factors of the scene's mean pressure at which [`area_curve`] solves the contact again.
@@ -271,15 +294,62 @@ pub fn warnings(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
     warnings
 }
 
-/// [`seam_warning`] of a scene's measured map solved periodically (none for a generated map,
-/// which tiles by construction, or an isolated contact).
-fn scene_seam_warning(scene: &Scene, solution: &RoughSolution) -> Option<String> {
+/// The warnings of a scene's measured map solved periodically (none for a generated map,
+/// which tiles by construction, or an isolated contact): a form removed on request
+/// ([`levelled_seam_warning`]) and a seam the contact touches ([`seam_warning`]).
+fn scene_seam_warning(scene: &Scene, solution: &RoughSolution) -> Vec<String> {
     let periodic = scene.contact.rough.is_some_and(|r| r.periodic);
-    let surface = scene
-        .surface
-        .as_ref()
-        .filter(|s| periodic && !s.generated)?;
-    seam_warning(surface.heights.heights_m().view(), &solution.pressure_pa)
+    let Some(surface) = scene.surface.as_ref().filter(|s| periodic && !s.generated) else {
+        return Vec::new();
+    };
+    let mut warnings = Vec::new();
+    if let Some(crate::scene::Levelling::Removed(datum)) = surface.levelling {
+        warnings.extend(levelled_seam_warning(&surface.body1, datum));
+    }
+    warnings.extend(seam_warning(
+        surface.heights.heights_m().view(),
+        &solution.pressure_pa,
+    ));
+    warnings
+}
+
+/// The warning for a periodic map levelled by a plane (or a quadratic) on request: the form
+/// removed is not periodic, so it steps the map at the seam by its rise across the period,
+/// `|c1| Lx` along x and `|c2| Ly` along y (issue 50). Given when that step exceeds the rms
+/// step between neighbouring samples of the levelled map `levelled`, where it shows.
+pub fn levelled_seam_warning(
+    levelled: &crate::surface::HeightMap,
+    datum: crate::surface::stats::Datum,
+) -> Option<String> {
+    let [lx, ly] = levelled.size_m();
+    let [_, slope_x, slope_y] = datum.plane_m;
+    let [(_, inner_x), (_, inner_y)] = levelled.seam_steps_m();
+    let rise = [
+        (slope_x.abs() * lx, inner_x, "x"),
+        (slope_y.abs() * ly, inner_y, "y"),
+    ];
+    let shown: Vec<String> = rise
+        .iter()
+        .filter(|(rise, inner, _)| rise > inner)
+        .map(|(rise, inner, axis)| {
+            format!(
+                "{:.3} µm along {axis} (neighbouring samples: {:.3} µm rms)",
+                rise * 1e6,
+                inner * 1e6
+            )
+        })
+        .collect();
+    if shown.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "level = \"{}\" on a periodic map: the removed form is not periodic, its plane alone steps the repeated map at the seam by {}; level = \"mean\" (the default of a periodic contact) keeps the map as given",
+        match datum.form() {
+            crate::surface::stats::FormRemoval::Plane => "plane",
+            crate::surface::stats::FormRemoval::Quadratic => "quadratic",
+        },
+        shown.join(" and ")
+    ))
 }
 
 /// [`warnings`] of a contact solved with `e_star_pa` and `hardness_pa` (Pa).

@@ -135,6 +135,9 @@ pub struct WearStudy {
     pub steps: Vec<WearStudyStep>,
     /// Whether each step's contact is the coupled thermo-mechanical one.
     pub coupled: bool,
+    /// What the reader should be told, in words: a series' map that stands higher than the
+    /// first (material added, or another datum), which is not wear.
+    pub warnings: Vec<String>,
 }
 
 /// What the study reports while it works.
@@ -266,6 +269,7 @@ pub fn study(
     let coupled = scene.thermal.is_some_and(|t| t.coupled);
     let load_n = wear::nominal_load_n(&problem);
     let mut steps: Vec<WearStudyStep> = Vec::with_capacity(total);
+    let mut warnings = Vec::new();
     // The maxima and flash temperature under a solved step.
     let finish = |index: usize,
                   solution: &RoughSolution,
@@ -407,9 +411,15 @@ pub fn study(
                 } else {
                     isothermal
                 };
-                let (wear_depth_m, _) = match &first {
-                    Some(first) => wear::measured_wear(first, heights),
-                    None => (Array2::zeros(heights.raw_dim()), 0.0),
+                let wear_depth_m = match &first {
+                    Some(first) if index > 0 => {
+                        let change = wear::measured_change(first, heights);
+                        if change.stands_higher() {
+                            warnings.push(standing_higher(index, entry, &change, dx * dy));
+                        }
+                        change.depth_m
+                    }
+                    _ => Array2::zeros(heights.raw_dim()),
                 };
                 let worn_volume_m3 = wear_depth_m.sum() * dx * dy;
                 let max_wear_depth_m = wear_depth_m.iter().fold(0.0f64, |m, &w| m.max(w));
@@ -441,7 +451,24 @@ pub fn study(
         poisson,
         steps,
         coupled,
+        warnings,
     })
+}
+
+/// The warning for series map `index` (`entry`) that stands higher than the first somewhere
+/// ([`wear::MeasuredChange::stands_higher`]), cells of `cell_m2`.
+fn standing_higher(
+    index: usize,
+    entry: &crate::scene::SeriesEntry,
+    change: &wear::MeasuredChange,
+    cell_m2: f64,
+) -> String {
+    format!(
+        "series[{index}] ({}) stands up to {:.4} µm higher than the first map over {:.5} mm² (material added, such as a transfer film or pile-up, or a datum that differs between the maps): that is not wear, and the wear reported is only where the map lacks",
+        entry.source,
+        change.higher_m * 1e6,
+        change.higher_cells as f64 * cell_m2 * 1e6
+    )
 }
 
 /// The next step of a coupled evolution, not yet taken: the coupled contact of the worn

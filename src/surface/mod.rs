@@ -46,6 +46,39 @@ pub const MAX_SPACING_M: f64 = 1.0;
 /// from where the statistics' sums of squares and the contact solver's sums could overflow.
 pub const MAX_HEIGHT_M: f64 = 1.0;
 
+/// Checks what a [`HeightMap`] holds: at least 2 x 2 samples, every height finite (missing
+/// points must have been refused or filled by the reader) and at most [`MAX_HEIGHT_M`] in
+/// size, the spacing `[dx, dy]` within [`MIN_SPACING_M`] and [`MAX_SPACING_M`]. The Python
+/// package checks a height array with it before solving on it without a copy.
+pub fn check_samples(
+    heights_m: ndarray::ArrayView2<f64>,
+    spacing_m: [f64; 2],
+) -> Result<(), SurfaceError> {
+    let (rows, columns) = heights_m.dim();
+    if rows < 2 || columns < 2 {
+        return Err(SurfaceError::TooSmall { rows, columns });
+    }
+    let [dx, dy] = spacing_m;
+    let spacing_ok = |d: f64| (MIN_SPACING_M..=MAX_SPACING_M).contains(&d);
+    if !(spacing_ok(dx) && spacing_ok(dy)) {
+        return Err(SurfaceError::Spacing { dx, dy });
+    }
+    if !heights_m.into_par_iter().all(|v| v.is_finite()) {
+        if let Some(((row, column), &value)) =
+            heights_m.indexed_iter().find(|(_, v)| !v.is_finite())
+        {
+            return Err(SurfaceError::NotFinite { row, column, value });
+        }
+    }
+    if let Some(((row, column), &value)) = heights_m
+        .indexed_iter()
+        .find(|(_, v)| v.abs() > MAX_HEIGHT_M)
+    {
+        return Err(SurfaceError::TooHigh { row, column, value });
+    }
+    Ok(())
+}
+
 /// Heights of a surface sampled on a regular grid.
 #[derive(Clone, Debug, PartialEq)]
 pub struct HeightMap {
@@ -54,32 +87,9 @@ pub struct HeightMap {
 }
 
 impl HeightMap {
-    /// Checks the samples (at least 2 x 2, every height finite, missing points must have been
-    /// refused or filled by the reader, and at most [`MAX_HEIGHT_M`] in size) and the spacing
-    /// `[dx, dy]` (within [`MIN_SPACING_M`] and [`MAX_SPACING_M`]).
+    /// Checks the samples and the spacing ([`check_samples`]) and keeps them.
     pub fn new(heights_m: Array2<f64>, spacing_m: [f64; 2]) -> Result<Self, SurfaceError> {
-        let (rows, columns) = heights_m.dim();
-        if rows < 2 || columns < 2 {
-            return Err(SurfaceError::TooSmall { rows, columns });
-        }
-        let [dx, dy] = spacing_m;
-        let spacing_ok = |d: f64| (MIN_SPACING_M..=MAX_SPACING_M).contains(&d);
-        if !(spacing_ok(dx) && spacing_ok(dy)) {
-            return Err(SurfaceError::Spacing { dx, dy });
-        }
-        if !heights_m.par_iter().all(|v| v.is_finite()) {
-            if let Some(((row, column), &value)) =
-                heights_m.indexed_iter().find(|(_, v)| !v.is_finite())
-            {
-                return Err(SurfaceError::NotFinite { row, column, value });
-            }
-        }
-        if let Some(((row, column), &value)) = heights_m
-            .indexed_iter()
-            .find(|(_, v)| v.abs() > MAX_HEIGHT_M)
-        {
-            return Err(SurfaceError::TooHigh { row, column, value });
-        }
+        check_samples(heights_m.view(), spacing_m)?;
         Ok(Self {
             heights_m,
             spacing_m,

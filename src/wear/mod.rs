@@ -428,13 +428,17 @@ impl<'p> Evolution<'p> {
             return Ok(None);
         }
         let (step, distance_m, _) = self.next_step();
+        // At step 0 nothing is worn: a contact at the edge is the unworn contact's own, with its
+        // own hint (a larger map or a periodic solve), not a shorter sliding distance.
         let contact_error = |source| match source {
-            RoughContactError::PressureAtEdge { row, column } => WearError::ScarAtEdge {
-                step,
-                distance_m,
-                row,
-                column,
-            },
+            RoughContactError::PressureAtEdge { row, column } if step > 0 => {
+                WearError::ScarAtEdge {
+                    step,
+                    distance_m,
+                    row,
+                    column,
+                }
+            }
             source => WearError::Contact {
                 step,
                 distance_m,
@@ -491,19 +495,72 @@ pub fn capacity_m3(heights_m: &Array2<f64>, spacing_m: [f64; 2]) -> f64 {
 /// of the map keeps its heights, so all its cells differ by the offset alone, while the worn
 /// cells spread over the wear depths ([`datum_offset`]). Returns the depth map and the offset.
 pub fn measured_wear(first: &Array2<f64>, now: &Array2<f64>) -> (Array2<f64>, f64) {
+    let found = measured_change(first, now);
+    (found.depth_m, found.offset_m)
+}
+
+/// What a later measurement of a surface shows against the first ([`measured_change`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeasuredChange {
+    /// The wear depth, `max(first - now - offset, 0)` (m).
+    pub depth_m: Array2<f64>,
+    /// The two measurements' offset of datum (m, [`datum_offset`]).
+    pub offset_m: f64,
+    /// The most the later map stands above the first, `max(now - first + offset, 0)` (m):
+    /// material added (a transfer film, pile-up at a scar's rim) or a datum that differs,
+    /// which is not wear.
+    pub higher_m: f64,
+    /// The cells standing higher by more than a tenth of `higher_m` and than the unworn
+    /// cells' spread (the densest window's width).
+    pub higher_cells: usize,
+    /// The differences' range, `max - min` of `first - now` (m).
+    pub range_m: f64,
+}
+
+impl MeasuredChange {
+    /// Whether the later map stands notably higher than the first somewhere: by more than a
+    /// hundredth of the differences' range (ten times the window the datum offset is read in,
+    /// above the unworn cells' own scatter).
+    pub fn stands_higher(&self) -> bool {
+        self.higher_m > 1e-2 * self.range_m && self.higher_cells > 0
+    }
+}
+
+/// [`measured_wear`] with what the later map adds: where it stands higher than the first.
+pub fn measured_change(first: &Array2<f64>, now: &Array2<f64>) -> MeasuredChange {
     let difference = first - now;
-    let offset = datum_offset(difference.iter().copied().collect());
-    (difference.mapv(|d| (d - offset).max(0.0)), offset)
+    let (offset_m, window_m) = datum_offset_and_window(difference.iter().copied().collect());
+    let (low, high) = difference
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &d| {
+            (l.min(d), h.max(d))
+        });
+    let higher_m = (offset_m - low).max(0.0);
+    let floor = window_m.max(0.1 * higher_m);
+    let higher_cells = difference.iter().filter(|&&d| offset_m - d > floor).count();
+    MeasuredChange {
+        depth_m: difference.mapv(|d| (d - offset_m).max(0.0)),
+        offset_m,
+        higher_m,
+        higher_cells,
+        range_m: if high >= low { high - low } else { 0.0 },
+    }
 }
 
 /// The value the most differences share: the centre (median) of the densest window of the
 /// sorted differences, the window a thousandth of their range wide. The unworn cells may be
 /// fewer than half the map (a scar over most of it): the median of all would then lie in the
 /// scar, the densest window still on the unworn cells.
-pub fn datum_offset(mut differences: Vec<f64>) -> f64 {
+pub fn datum_offset(differences: Vec<f64>) -> f64 {
+    datum_offset_and_window(differences).0
+}
+
+/// [`datum_offset`] and the width of the window it was read in (a thousandth of the
+/// differences' range).
+fn datum_offset_and_window(mut differences: Vec<f64>) -> (f64, f64) {
     differences.retain(|d| d.is_finite());
     if differences.is_empty() {
-        return 0.0;
+        return (0.0, 0.0);
     }
     differences.sort_by(f64::total_cmp);
     let n = differences.len();
@@ -522,11 +579,12 @@ pub fn datum_offset(mut differences: Vec<f64>) -> f64 {
     }
     let window = &differences[best_start..best_start + best];
     let m = window.len();
-    if m % 2 == 1 {
+    let offset = if m % 2 == 1 {
         window[m / 2]
     } else {
         0.5 * (window[m / 2 - 1] + window[m / 2])
-    }
+    };
+    (offset, width)
 }
 
 #[cfg(test)]

@@ -11,6 +11,8 @@
 //! sum is formed in the same (row-major) order as when each had a pass of its own, so the
 //! iterates are the same to the last bit.
 
+use std::ops::ControlFlow;
+
 use ndarray::{Array2, ArrayView2, ArrayViewMut2, Zip};
 
 use super::RoughContactError;
@@ -81,7 +83,9 @@ pub(super) enum Target {
 }
 
 /// Polonsky & Keer's iteration from the given pressure until converged or the cap is
-/// reached: returns the iterations made and the residual (module doc).
+/// reached: returns the iterations made and the residual (module doc). `progress(iteration,
+/// residual)` after every iteration says whether to go on: a break before convergence ends the
+/// run with [`RoughContactError::Interrupted`].
 pub(super) fn iterate(
     operator: &mut Compliance<'_>,
     separation: &Array2<f64>,
@@ -89,7 +93,7 @@ pub(super) fn iterate(
     state: &mut State,
     target: Target,
     settings: &Settings,
-    progress: &mut dyn FnMut(usize, f64),
+    progress: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
 ) -> Result<(usize, f64), RoughContactError> {
     let State {
         gap,
@@ -270,9 +274,15 @@ pub(super) fn iterate(
             f64::INFINITY
         };
         residual = pressure_change.max(complementarity);
-        progress(iterations, residual);
+        let asked = progress(iterations, residual);
         if residual < tolerance {
             break;
+        }
+        if asked.is_break() {
+            return Err(RoughContactError::Interrupted {
+                iterations,
+                residual,
+            });
         }
         if total == 0.0 && approach_given.is_some() {
             break;

@@ -27,6 +27,8 @@
 //! chapter 4 (the zero finder `zero`); W. H. Press et al., *Numerical Recipes*, 3rd ed. (2007),
 //! §9.3 (the same algorithm, `zbrent`).
 
+use std::ops::ControlFlow;
+
 use ndarray::{Array2, Zip};
 
 use super::{
@@ -43,7 +45,7 @@ pub(super) fn capped_under_load(
     state: &mut State,
     mean: f64,
     settings: &Settings,
-    progress: &mut dyn FnMut(usize, f64),
+    progress: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
 ) -> Result<(usize, f64), RoughContactError> {
     let cells = pressure.len() as f64;
     let hardness = settings.hardness;

@@ -37,6 +37,8 @@
 //!   algorithm for FFT-based BEM resolution, *Comput. Mech.* 60 (2017) 69–81 (the same
 //!   iteration with FFT, as Tamaas implements it).
 
+use std::ops::ControlFlow;
+
 use ndarray::{Array2, ArrayView2, Zip};
 
 use crate::operator::elastic::{ElasticOperator, Periodicity};
@@ -129,6 +131,10 @@ pub enum RoughContactError {
     HardnessTooLow { hardness_pa: f64, mean_pa: f64 },
     #[error("the approach {approach_m:.4e} m does not bring the surfaces into contact: it must be positive")]
     NoContact { approach_m: f64 },
+    /// The caller's progress asked to stop before the solution converged
+    /// ([`solve_interruptible`]): there is no solution, only how far the solve got.
+    #[error("the solve was interrupted after {iterations} iterations (residual {residual:.3e}, not converged): no solution")]
+    Interrupted { iterations: usize, residual: f64 },
     #[error(transparent)]
     Transform(#[from] TransformError),
 }
@@ -272,6 +278,23 @@ pub fn solve_cached(
     warm: &Warm,
     cache: &mut OperatorCache,
     progress: &mut dyn FnMut(usize, f64),
+) -> Result<RoughSolution, RoughContactError> {
+    solve_interruptible(problem, warm, cache, &mut |iteration, residual| {
+        progress(iteration, residual);
+        ControlFlow::Continue(())
+    })
+}
+
+/// [`solve_cached`] that can be stopped: `progress(iteration, residual)` after every
+/// iteration returns whether to go on, and a [`ControlFlow::Break`] before the solution has
+/// converged ends the solve with [`RoughContactError::Interrupted`] (never a result). The
+/// Python package answers it with Python's pending signals, so that Ctrl-C stops a long solve
+/// between two iterations; a progress that always continues is [`solve_cached`], bit for bit.
+pub fn solve_interruptible(
+    problem: &RoughContactProblem,
+    warm: &Warm,
+    cache: &mut OperatorCache,
+    progress: &mut dyn FnMut(usize, f64) -> ControlFlow<()>,
 ) -> Result<RoughSolution, RoughContactError> {
     let (ny, nx) = problem.heights_m.dim();
     if nx < 2 || ny < 2 {

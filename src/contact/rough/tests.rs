@@ -83,7 +83,7 @@ fn an_approach_that_reaches_no_cell_has_zero_pressure_and_residual() {
         &mut state,
         Target::Approach(-1e-9),
         &spike_settings(&heights, 1e9),
-        &mut |_, _| {},
+        &mut |_, _| ControlFlow::Continue(()),
     )
     .expect("iterates");
     assert_eq!(residual, 0.0);
@@ -140,7 +140,7 @@ fn cells_that_penetrate_enter_when_every_loaded_cell_is_at_the_cap() {
         &mut state,
         Target::Approach(approach),
         &spike_settings(&heights, hardness),
-        &mut |_, _| {},
+        &mut |_, _| ControlFlow::Continue(()),
     )
     .expect("iterates");
     let difference = (&pressure - &reference.pressure_pa)
@@ -231,4 +231,60 @@ fn a_periodic_map_far_longer_than_wide_is_refused() {
     let error = problem(&strip(4 * 65)).expect_err("aspect 65");
     assert!(error.to_string().contains("at most 64"), "{error}");
     problem(&strip(4 * 64)).expect("aspect 64 solves");
+}
+
+/// Issue 50: a solve whose progress asks to stop (Ctrl-C in the Python package) ends at that
+/// iteration with the `Interrupted` error, never a result; a progress that always goes on is
+/// the plain solve, bit for bit. Elastic under a load and capped under a load (the search's
+/// runs), both.
+#[test]
+fn a_solve_asked_to_stop_is_an_error_not_a_result() {
+    let heights = spike_on_bump();
+    for hardness_pa in [None, Some(4e9)] {
+        let problem = RoughContactProblem {
+            heights_m: heights.view(),
+            spacing_m: [SPIKE_SPACING; 2],
+            e_star_pa: SPIKE_E_STAR,
+            periodicity: Periodicity::Periodic,
+            control: Control::MeanPressure { pa: 2e8 },
+            hardness_pa,
+            tolerance: DEFAULT_TOLERANCE,
+            max_iterations: 2000,
+            memory_limit_bytes: 1 << 30,
+        };
+        let plain = solve(&problem, &mut |_, _| {}).expect("solves");
+        assert!(plain.iterations > 3, "{} iterations", plain.iterations);
+        let going_on = solve_interruptible(
+            &problem,
+            &Warm::default(),
+            &mut OperatorCache::default(),
+            &mut |_, _| ControlFlow::Continue(()),
+        )
+        .expect("solves");
+        assert_eq!(going_on, plain);
+        let mut asked = 0;
+        let error = solve_interruptible(
+            &problem,
+            &Warm::default(),
+            &mut OperatorCache::default(),
+            &mut |iteration, _| {
+                asked += 1;
+                if iteration == 3 {
+                    ControlFlow::Break(())
+                } else {
+                    ControlFlow::Continue(())
+                }
+            },
+        )
+        .expect_err("stopped");
+        assert!(
+            matches!(error, RoughContactError::Interrupted { iterations: 3, .. }),
+            "{error}"
+        );
+        assert_eq!(asked, 3, "no iteration after the stop");
+        assert!(
+            error.to_string().contains("interrupted after 3 iterations"),
+            "{error}"
+        );
+    }
 }

@@ -43,77 +43,85 @@ use crate::stress::{Quantity, QuantityKind};
 /// The range a dimensional input may take (SI), and why: wide enough for every contact a user
 /// could mean (an AFM tip to a rolling mill), narrow enough that every derived Hertz value
 /// stays far inside double precision (so no figure or report meets an infinity or a zero).
+/// The Python package checks its arguments against the same bounds (issue 50).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Bounds {
+pub struct Bounds {
     pub lo: f64,
     pub hi: f64,
     pub why: &'static str,
 }
 
+impl Bounds {
+    /// Whether `value` lies within the bounds (a NaN does not).
+    pub fn contains(&self, value: f64) -> bool {
+        value >= self.lo && value <= self.hi
+    }
+}
+
 /// Loads, N (point contacts) or N/m (line contacts).
-pub(super) const LOAD_BOUNDS: Bounds = Bounds {
+pub const LOAD_BOUNDS: Bounds = Bounds {
     lo: 1e-12,
     hi: 1e12,
     why: "from the piconewtons of an AFM tip to far beyond the largest press",
 };
 /// Radii of curvature (in size; negative for a concave body), m.
-pub(super) const RADIUS_BOUNDS: Bounds = Bounds {
+pub const RADIUS_BOUNDS: Bounds = Bounds {
     lo: 1e-9,
     hi: 1e6,
     why: "from a nanometre (an AFM tip) to 1000 km; use \"flat\" for a plane",
 };
 /// Young's moduli, Pa.
-pub(super) const MODULUS_BOUNDS: Bounds = Bounds {
+pub const MODULUS_BOUNDS: Bounds = Bounds {
     lo: 1e3,
     hi: 1e13,
     why: "from soft gels (kPa) to ten times diamond (1.2 TPa)",
 };
 /// Yield strengths and peak pressures given directly, Pa.
-pub(super) const STRESS_BOUNDS: Bounds = Bounds {
+pub const STRESS_BOUNDS: Bounds = Bounds {
     lo: 1.0,
     hi: 1e13,
     why: "from a pascal to ten times the modulus of diamond",
 };
 /// Hardness numbers (kgf/mm²).
-pub(super) const HARDNESS_BOUNDS: Bounds = Bounds {
+pub const HARDNESS_BOUNDS: Bounds = Bounds {
     lo: 0.1,
     hi: 1e5,
     why: "from soft polymers to ten times diamond (about 10000 HV)",
 };
 /// Contact half-widths given directly, m.
-pub(super) const HALF_WIDTH_BOUNDS: Bounds = Bounds {
+pub const HALF_WIDTH_BOUNDS: Bounds = Bounds {
     lo: 1e-12,
     hi: 1e6,
     why: "from a picometre to 1000 km",
 };
 /// Gear modules, m.
-pub(super) const MODULE_BOUNDS: Bounds = Bounds {
+pub const MODULE_BOUNDS: Bounds = Bounds {
     lo: 1e-6,
     hi: 10.0,
     why: "from micro-gears to the largest mill gears",
 };
 
 /// Approaches of a rough contact, m.
-pub(super) const APPROACH_BOUNDS: Bounds = Bounds {
+pub const APPROACH_BOUNDS: Bounds = Bounds {
     lo: 1e-12,
     hi: 0.1,
     why: "from a picometre to 10 cm (a surface's heights may reach 1 m)",
 };
 /// Sample spacings of a surface, m.
-pub(super) const SPACING_BOUNDS: Bounds = Bounds {
+pub const SPACING_BOUNDS: Bounds = Bounds {
     lo: crate::surface::MIN_SPACING_M,
     hi: crate::surface::MAX_SPACING_M,
     why: "from an atomic spacing (0.1 nm, an AFM scan) to a metre",
 };
 /// Wavelengths and lengths of a surface's spectrum (roll-off, cutoff, correlation length, the
 /// band of the statistics), m.
-pub(super) const WAVELENGTH_BOUNDS: Bounds = Bounds {
+pub const WAVELENGTH_BOUNDS: Bounds = Bounds {
     lo: crate::surface::MIN_SPACING_M,
     hi: 1e4,
     why: "from an atomic spacing (0.1 nm) to 10 km (8192 samples a metre apart)",
 };
 /// The rms height of a generated surface, m.
-pub(super) const RMS_HEIGHT_BOUNDS: Bounds = Bounds {
+pub const RMS_HEIGHT_BOUNDS: Bounds = Bounds {
     lo: 1e-12,
     hi: 0.1,
     why: "from a picometre (a polished crystal) to 10 cm (a surface's heights may reach 1 m)",

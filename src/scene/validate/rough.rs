@@ -246,12 +246,20 @@ impl Validator<'_> {
         }
         let rigid = raw.material.as_deref() == Some("rigid");
         if rigid {
-            if raw.modulus.is_some() {
-                return Err(self.error(
-                    &format!("{key}.modulus"),
-                    "a rigid body has no modulus",
-                    Some("remove it"),
-                ));
+            // A rigid body has no elastic constants; body 1's Poisson ratio alone is read (the
+            // stresses drawn in it), body 2's would be silently ignored: refused, as a coated
+            // scene's rigid counter-body refuses it (issue 50).
+            for (name, given) in [
+                ("modulus", raw.modulus.is_some()),
+                ("poisson", raw.poisson.is_some() && key == "contact.body2"),
+            ] {
+                if given {
+                    return Err(self.error(
+                        &format!("{key}.{name}"),
+                        "a rigid body has no elastic constants",
+                        Some("remove it, or replace material = \"rigid\" by the body's material"),
+                    ));
+                }
             }
             let poisson = match raw.poisson {
                 Some(nu) => self.poisson(&format!("{key}.poisson"), nu)?,

@@ -15,7 +15,8 @@ impl Validator<'_> {
         name: &str,
         mut contact: Contact,
     ) -> Result<Scene, SceneError> {
-        let surface = self.surface_spec(&raw, contact.kind)?;
+        let periodic = contact.rough.is_some_and(|r| r.periodic);
+        let surface = self.surface_spec(&raw, contact.kind, periodic)?;
         if let Some(coating) = &contact.coating {
             self.coated_rough(&raw, coating, &surface.heights)?;
         }
@@ -66,10 +67,14 @@ impl Validator<'_> {
                 ));
             }
             if let Some(t) = numerical.tolerance {
-                if !(t > 0.0 && t < 1e-2) {
+                if !(t > 0.0 && t < crate::scene::MAX_ROUGH_TOLERANCE) {
                     return Err(self.error(
                         "numerical.tolerance",
-                        format!("must lie in (0, 0.01), got {}", crate::io::text::number(t)),
+                        format!(
+                            "must lie in (0, {}), got {}",
+                            crate::io::text::number(crate::scene::MAX_ROUGH_TOLERANCE),
+                            crate::io::text::number(t)
+                        ),
                         Some("the default is 1e-8"),
                     ));
                 }

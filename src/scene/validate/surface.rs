@@ -5,15 +5,26 @@ use std::sync::Arc;
 
 #[allow(clippy::wildcard_imports)]
 use super::*;
-use crate::scene::Levelling;
+use crate::scene::{Levelling, SeriesDatum};
 use crate::surface::generate::{self, Amplitude, Form, Generator, Spectrum};
 use crate::surface::read::{self, Fill, ReadOptions};
-use crate::surface::stats::FormRemoval;
+use crate::surface::stats::{Datum, FormRemoval, SampleRegion};
 use crate::surface::HeightMap;
 
 /// The range of a generated surface's rms slope (a slope of 10 rises 10 m a metre).
 const MIN_RMS_SLOPE: f64 = 1e-6;
 const MAX_RMS_SLOPE: f64 = 10.0;
+
+/// What is removed from a measured map before its contact is solved (`[surface] level`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum LevelMode {
+    /// `"none"`: the heights as measured.
+    Keep,
+    /// `"mean"`: the mean height only (the default of a periodic contact).
+    Mean,
+    /// `"plane"` or `"quadratic"`: the least-squares form.
+    Form(FormRemoval),
+}
 
 impl Validator<'_> {
     /// `[surface]` (and `[counter_surface]`) of a rough or surface scene.
@@ -21,6 +32,7 @@ impl Validator<'_> {
         &self,
         raw: &RawScene,
         kind: ContactKind,
+        periodic: bool,
     ) -> Result<SurfaceSpec, SceneError> {
         let default_table = RawSurface::default();
         let table = match (&raw.surface, raw.series.is_empty()) {
@@ -34,7 +46,29 @@ impl Validator<'_> {
             )),
         };
         let form = self.form_removal(table)?;
-        let level = self.level(table, form, kind)?;
+        let level = self.level(table, form, kind, periodic)?;
+        let series_datum = match (raw.series.is_empty(), level) {
+            (false, Some(mode)) if mode != LevelMode::Keep => Some(self.series_datum(table)?),
+            _ => {
+                for (key, given) in [
+                    ("surface.datum", table.datum.is_some()),
+                    ("surface.datum_region", table.datum_region.is_some()),
+                ] {
+                    if given {
+                        return Err(self.error(
+                            key,
+                            "the datum of a levelled series: this scene is not one",
+                            Some(if raw.series.is_empty() {
+                                "remove it (it applies to the maps of a [[series]])"
+                            } else {
+                                "remove it: level = \"none\" keeps every map as measured"
+                            }),
+                        ));
+                    }
+                }
+                None
+            }
+        };
         let (body1, source, shape) = match raw.series.first() {
             None => self.height_map("surface", table)?,
             Some(first) => {
@@ -73,11 +107,14 @@ impl Validator<'_> {
         // A measured map of a rough scene is levelled before its contact is solved.
         let (body1, levelling) = match level {
             Some(mode) if !generated => {
-                let (map, plane) = self.levelled("surface.level", body1, mode)?;
-                let levelling = match mode {
-                    None => Levelling::Raw,
-                    Some(form) => Levelling::Removed { form, plane },
+                let region = match &series_datum {
+                    Some(SeriesDatum::Region { x_m, y_m }) => {
+                        Some(self.sample_region(&body1, *x_m, *y_m)?)
+                    }
+                    _ => None,
                 };
+                let (map, levelling) =
+                    self.levelled("surface.level", body1, mode, region.as_ref())?;
                 (map, Some(levelling))
             }
             _ => (body1, None),
@@ -97,8 +134,10 @@ impl Validator<'_> {
                     // A measured counter-surface is levelled as body 1's map would be.
                     None => {
                         let form = self.form_removal(table)?;
-                        match self.level(table, form, kind)? {
-                            Some(mode) => self.levelled("counter_surface.level", map, mode)?.0,
+                        match self.level(table, form, kind, periodic)? {
+                            Some(mode) => {
+                                self.levelled("counter_surface.level", map, mode, None)?.0
+                            }
                             None => map,
                         }
                     }
@@ -190,6 +229,7 @@ impl Validator<'_> {
             form,
             band_m,
             levelling,
+            series_datum,
         })
     }
 
@@ -208,13 +248,16 @@ impl Validator<'_> {
 
     /// `level` of a `[surface]`-like table: `None` where no contact is solved (a surface
     /// scene, whose statistics level their own copy), else what is removed from a measured map
-    /// before the solve (`Some(None)`: nothing, the heights as measured).
+    /// before the solve. By default the form `form` (the least-squares plane) of an isolated
+    /// contact's map, and only the mean height of a periodic one: a plane is not periodic
+    /// ([`Levelling`]).
     pub(super) fn level(
         &self,
         table: &RawSurface,
         form: FormRemoval,
         kind: ContactKind,
-    ) -> Result<Option<Option<FormRemoval>>, SceneError> {
+        periodic: bool,
+    ) -> Result<Option<LevelMode>, SceneError> {
         if kind != ContactKind::Rough {
             if table.level.is_some() {
                 return Err(self.error(
@@ -226,33 +269,155 @@ impl Validator<'_> {
             return Ok(None);
         }
         match table.level.as_deref() {
-            None => Ok(Some(Some(form))),
-            Some("plane") => Ok(Some(Some(FormRemoval::Plane))),
-            Some("quadratic") => Ok(Some(Some(FormRemoval::Quadratic))),
-            Some("none") => Ok(Some(None)),
+            None if periodic => Ok(Some(LevelMode::Mean)),
+            None => Ok(Some(LevelMode::Form(form))),
+            Some("plane") => Ok(Some(LevelMode::Form(FormRemoval::Plane))),
+            Some("quadratic") => Ok(Some(LevelMode::Form(FormRemoval::Quadratic))),
+            Some("mean") => Ok(Some(LevelMode::Mean)),
+            Some("none") => Ok(Some(LevelMode::Keep)),
             Some(other) => Err(self.error(
                 "surface.level",
                 format!("unknown level `{other}`"),
-                Some("use \"plane\" (the least-squares mean plane, the default), \"quadratic\" (also a second-order form) or \"none\" (the heights as measured)"),
+                Some("use \"plane\" (the least-squares mean plane, the default of an isolated contact), \"mean\" (the mean height only, the default of a periodic one), \"quadratic\" (also a second-order form) or \"none\" (the heights as measured)"),
             )),
         }
     }
 
-    /// A measured map levelled as `mode` says (`None`: as it is), with its least-squares plane
-    /// `[c0, c1, c2]` ([`crate::surface::stats::level`]).
+    /// `datum` and `datum_region` of a levelled series' `[surface]`.
+    fn series_datum(&self, table: &RawSurface) -> Result<SeriesDatum, SceneError> {
+        let region = match &table.datum_region {
+            None => None,
+            Some(values) => {
+                let hint = Some("give [\"x from\", \"x to\", \"y from\", \"y to\"] from the map's first sample, over a part that does not wear, e.g. datum_region = [\"0 um\", \"150 um\", \"0 um\", \"670 um\"]");
+                let [x0, x1, y0, y1] = values.as_slice() else {
+                    return Err(self.error(
+                        "surface.datum_region",
+                        format!("needs four lengths, got {}", values.len()),
+                        hint,
+                    ));
+                };
+                let mut bounds = [0.0; 4];
+                for (bound, text) in bounds.iter_mut().zip([x0, x1, y0, y1]) {
+                    *bound = units::parse(text, Dimension::Length)
+                        .map_err(|m| self.error("surface.datum_region", m, hint))?;
+                    if !(bound.is_finite() && *bound >= 0.0) {
+                        return Err(self.error(
+                            "surface.datum_region",
+                            format!(
+                                "`{}` must be a length of at least 0 from the map's first sample",
+                                crate::io::text::cut(text, 40)
+                            ),
+                            hint,
+                        ));
+                    }
+                }
+                if bounds[0] >= bounds[1] || bounds[2] >= bounds[3] {
+                    return Err(self.error(
+                        "surface.datum_region",
+                        "each range runs from the smaller length to the larger",
+                        hint,
+                    ));
+                }
+                Some(SeriesDatum::Region {
+                    x_m: [bounds[0], bounds[1]],
+                    y_m: [bounds[2], bounds[3]],
+                })
+            }
+        };
+        match (table.datum.as_deref(), region) {
+            (None, Some(region)) => Ok(region),
+            (Some(_), Some(_)) => Err(self.error(
+                "surface.datum",
+                "give either datum or datum_region, not both",
+                Some("datum_region alone fits each map's form on that region"),
+            )),
+            (None | Some("first"), None) => Ok(SeriesDatum::First),
+            (Some("each"), None) => Ok(SeriesDatum::Each),
+            (Some(other), None) => Err(self.error(
+                "surface.datum",
+                format!("unknown datum `{}`", crate::io::text::cut(other, 40)),
+                Some("use \"first\" (the first map's form removed from every map, the default) or \"each\" (each map its own), or give datum_region"),
+            )),
+        }
+    }
+
+    /// The samples of `map` within `x_m` x `y_m` (from its first sample), for a datum fitted
+    /// there: at least three by three samples, or the key is refused.
+    pub(super) fn sample_region(
+        &self,
+        map: &HeightMap,
+        x_m: [f64; 2],
+        y_m: [f64; 2],
+    ) -> Result<SampleRegion, SceneError> {
+        let [ny, nx] = map.shape();
+        let [dx, dy] = map.spacing_m();
+        let range = |[from, to]: [f64; 2], step: f64, count: usize| {
+            // The samples at from..=to, to a thousandth of a step (rounded coordinates).
+            let first = ((from / step) - 1e-3).ceil().max(0.0) as usize;
+            let last = ((to / step) + 1e-3).floor().min((count - 1) as f64) as usize;
+            first..(last + 1).max(first)
+        };
+        let region = SampleRegion {
+            columns: range(x_m, dx, nx),
+            rows: range(y_m, dy, ny),
+        };
+        if region.columns.len() < 3 || region.rows.len() < 3 {
+            return Err(self.error(
+                "surface.datum_region",
+                format!(
+                    "holds {} x {} samples of the {} x {} map (spaced {} x {} m): a datum is fitted on at least 3 x 3",
+                    region.columns.len(),
+                    region.rows.len(),
+                    nx,
+                    ny,
+                    crate::io::text::approx(dx),
+                    crate::io::text::approx(dy)
+                ),
+                Some("widen the region, within the map's extent"),
+            ));
+        }
+        Ok(region)
+    }
+
+    /// A measured map levelled as `mode` says, the form fitted on `region`'s samples when
+    /// given ([`Datum`]), and what was done.
     pub(super) fn levelled(
         &self,
         key: &str,
         map: HeightMap,
-        mode: Option<FormRemoval>,
-    ) -> Result<(HeightMap, [f64; 3]), SceneError> {
-        let Some(form) = mode else {
-            return Ok((map, [0.0; 3]));
+        mode: LevelMode,
+        region: Option<&SampleRegion>,
+    ) -> Result<(HeightMap, Levelling), SceneError> {
+        let (heights, levelling) = match mode {
+            LevelMode::Keep => return Ok((map, Levelling::Raw)),
+            LevelMode::Mean => {
+                let plane = Datum::fitted(&map, FormRemoval::Plane, region).plane_m;
+                // The mean over the region when given (a series' datum), else the map's.
+                let mean_m = match region {
+                    Some(region) => {
+                        let heights = map.heights_m();
+                        let values: Vec<f64> = region
+                            .rows
+                            .clone()
+                            .flat_map(|j| region.columns.clone().map(move |i| heights[[j, i]]))
+                            .collect();
+                        values.iter().sum::<f64>() / values.len().max(1) as f64
+                    }
+                    None => map.heights_m().mean().unwrap_or(0.0),
+                };
+                (map.heights_m() - mean_m, Levelling::Mean { mean_m, plane })
+            }
+            LevelMode::Form(form) => {
+                let datum = Datum::fitted(&map, form, region);
+                (
+                    datum.remove_from(map.heights_m()),
+                    Levelling::Removed(datum),
+                )
+            }
         };
-        let (heights, plane) = crate::surface::stats::level(&map, form);
         let map = HeightMap::new(heights, map.spacing_m())
             .map_err(|e| self.error(key, e.to_string(), None))?;
-        Ok((map, plane))
+        Ok((map, levelling))
     }
 
     /// One `[surface]`-like table: the map, a description of its source, and for a generated

@@ -3,9 +3,11 @@
 
 use std::sync::Arc;
 
+use super::surface::LevelMode;
 #[allow(clippy::wildcard_imports)]
 use super::*;
 use crate::contact::rough::Control;
+use crate::scene::{Levelling, SeriesDatum};
 use crate::surface::HeightMap;
 
 /// Archard's dimensional wear coefficient, m²/N (= m³/(N m)).
@@ -180,10 +182,16 @@ impl Validator<'_> {
         let default_table = RawSurface::default();
         let table = raw.surface.as_ref().unwrap_or(&default_table);
         let first = &surface.body1;
-        // Every map levelled as the first (each its own plane: each was mounted anew).
-        let level = self
-            .level(table, self.form_removal(table)?, ContactKind::Rough)?
-            .flatten();
+        // Every map levelled by the series' one datum (issue 50): the first map's fitted form,
+        // or each map's fitted on the region that does not wear, or (on request) each map's
+        // own.
+        let periodic = raw.contact.periodic.unwrap_or(false);
+        let level = self.level(
+            table,
+            self.form_removal(table)?,
+            ContactKind::Rough,
+            periodic,
+        )?;
         let mut result = Vec::with_capacity(entries.len());
         let mut previous: Option<(f64, String)> = None;
         for (i, entry) in entries.iter().enumerate() {
@@ -256,7 +264,25 @@ impl Validator<'_> {
                         Some("a series is one surface measured again: give every topography on the same grid, with one spacing and height unit (crop or resample them alike)"),
                     ));
                 }
-                Arc::new(self.levelled(&format!("{key}.file"), map, level)?.0)
+                let key = format!("{key}.file");
+                let heights = match (level, &surface.levelling, &surface.series_datum) {
+                    (None | Some(LevelMode::Keep), ..) | (_, None, _) => map,
+                    // The first map's datum, removed from this one.
+                    (_, Some(Levelling::Mean { mean_m, .. }), Some(SeriesDatum::First)) => {
+                        HeightMap::new(map.heights_m() - *mean_m, map.spacing_m())
+                            .map_err(|e| self.error(&key, e.to_string(), None))?
+                    }
+                    (_, Some(Levelling::Removed(datum)), Some(SeriesDatum::First)) => {
+                        HeightMap::new(datum.remove_from(map.heights_m()), map.spacing_m())
+                            .map_err(|e| self.error(&key, e.to_string(), None))?
+                    }
+                    (Some(mode), _, Some(SeriesDatum::Region { x_m, y_m })) => {
+                        let region = self.sample_region(&map, *x_m, *y_m)?;
+                        self.levelled(&key, map, mode, Some(&region))?.0
+                    }
+                    (Some(mode), ..) => self.levelled(&key, map, mode, None)?.0,
+                };
+                Arc::new(heights)
             };
             result.push(SeriesEntry {
                 distance_m,

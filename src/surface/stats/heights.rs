@@ -9,16 +9,24 @@ pub(super) fn per_row<T: Send>(rows: usize, f: impl Fn(usize) -> T + Sync + Send
     (0..rows).into_par_iter().map(f).collect()
 }
 
-/// Least-squares fit of `z` by `K` basis functions of the sample indices `(i, j)`, by the
-/// normal equations (solved by Gaussian elimination with partial pivoting).
-pub(super) fn least_squares<const K: usize>(
+/// Least-squares fit of `z` by `K` basis functions of the sample indices `(i, j)`, over the
+/// samples of `region` (all for `None`), by the normal equations (solved by Gaussian
+/// elimination with partial pivoting).
+fn least_squares<const K: usize>(
     map: &Array2<f64>,
     basis: &(dyn Fn(usize, usize) -> [f64; K] + Sync),
+    region: Option<&SampleRegion>,
 ) -> [f64; K] {
     let ny = map.nrows();
     let rows = per_row(ny, |j| {
         let (mut a, mut r) = ([[0.0; K]; K], [0.0; K]);
+        if region.is_some_and(|region| !region.rows.contains(&j)) {
+            return (a, r);
+        }
         for (i, &z) in map.row(j).iter().enumerate() {
+            if region.is_some_and(|region| !region.columns.contains(&i)) {
+                continue;
+            }
             let b = basis(i, j);
             for p in 0..K {
                 for q in 0..K {
@@ -66,41 +74,117 @@ pub(super) fn least_squares<const K: usize>(
 
 /// The levelled heights and the removed plane's coefficients `[c0, c1, c2]`.
 pub fn level(map: &HeightMap, form: FormRemoval) -> (Array2<f64>, [f64; 3]) {
-    let heights = map.heights_m();
-    let spacing = map.spacing_m();
-    let [ny, nx] = map.shape();
-    // Centred, scaled coordinates u = (x - cx)/sx in [-1, 1] (for conditioning).
-    let (ci, cj) = (0.5 * (nx - 1) as f64, 0.5 * (ny - 1) as f64);
-    let (si, sj) = (ci.max(f64::MIN_POSITIVE), cj.max(f64::MIN_POSITIVE));
-    let uv = move |i: usize, j: usize| ((i as f64 - ci) / si, (j as f64 - cj) / sj);
-    let plane_basis = move |i: usize, j: usize| {
-        let (u, v) = uv(i, j);
-        [1.0, u, v]
-    };
-    let quadratic_basis = move |i: usize, j: usize| {
-        let (u, v) = uv(i, j);
-        [1.0, u, v, u * u, u * v, v * v]
-    };
-    let plane = least_squares(heights, &plane_basis);
-    let mut levelled = heights.clone();
-    match form {
-        FormRemoval::Plane => Zip::indexed(&mut levelled).par_for_each(|(j, i), z| {
-            let b = plane_basis(i, j);
-            *z -= b[0] * plane[0] + b[1] * plane[1] + b[2] * plane[2];
-        }),
-        FormRemoval::Quadratic => {
-            let c = least_squares(heights, &quadratic_basis);
-            Zip::indexed(&mut levelled).par_for_each(|(j, i), z| {
-                let b = quadratic_basis(i, j);
-                *z -= b.iter().zip(&c).map(|(b, c)| b * c).sum::<f64>();
-            })
+    let datum = Datum::fitted(map, form, None);
+    (datum.remove_from(map.heights_m()), datum.plane_m)
+}
+
+/// The samples `columns` x `rows` of a map (index ranges): where a datum is fitted.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SampleRegion {
+    pub columns: std::ops::Range<usize>,
+    pub rows: std::ops::Range<usize>,
+}
+
+/// A least-squares form fitted to a height map, over all its samples or a region of them, to
+/// be removed from that map or from another on the same grid: a measured series levelled by
+/// one datum (its first map's plane removed from every map, or each map's plane fitted on a
+/// region that does not wear), so that what differs between its maps is the surface's change
+/// and not a levelling of its own (issue 50).
+///
+/// The form is fitted in centred, scaled sample coordinates `u = (i - ci)/ci`,
+/// `v = (j - cj)/cj` in [-1, 1] (for conditioning); a region's fit is the same least-squares
+/// problem restricted to its samples, extrapolated over the whole map.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Datum {
+    form: FormRemoval,
+    /// The map's `[rows, columns]`, which the form's coordinates are scaled by.
+    shape: [usize; 2],
+    /// The plane's coefficients in the scaled coordinates.
+    plane: [f64; 3],
+    /// The quadratic's coefficients in the scaled coordinates (zero for a plane).
+    quadratic: [f64; 6],
+    /// The plane `c0 + c1 x + c2 y` in physical coordinates (m, m/m, m/m; x and y from the
+    /// first sample): the fitted samples' least-squares plane, whatever the form.
+    pub plane_m: [f64; 3],
+}
+
+impl Datum {
+    /// The least-squares `form` of `map`'s samples (of `region` only, when given).
+    pub fn fitted(map: &HeightMap, form: FormRemoval, region: Option<&SampleRegion>) -> Self {
+        let heights = map.heights_m();
+        let spacing = map.spacing_m();
+        let shape = map.shape();
+        let plane = least_squares(heights, &|i, j| plane_basis(shape, i, j), region);
+        let quadratic = match form {
+            FormRemoval::Plane => [0.0; 6],
+            FormRemoval::Quadratic => {
+                least_squares(heights, &|i, j| quadratic_basis(shape, i, j), region)
+            }
+        };
+        // The plane in physical coordinates: c0 + c1 x + c2 y.
+        let (ci, cj, si, sj) = centring(shape);
+        let [dx, dy] = spacing;
+        let (cx, cy) = (ci * dx, cj * dy);
+        let (p0, p1, p2) = (plane[0], plane[1] / (si * dx), plane[2] / (sj * dy));
+        Self {
+            form,
+            shape,
+            plane,
+            quadratic,
+            plane_m: [p0 - p1 * cx - p2 * cy, p1, p2],
         }
     }
-    // The plane in physical coordinates: c0 + c1 x + c2 y.
-    let [dx, dy] = spacing;
-    let (cx, cy) = (ci * dx, cj * dy);
-    let (p0, p1, p2) = (plane[0], plane[1] / (si * dx), plane[2] / (sj * dy));
-    (levelled, [p0 - p1 * cx - p2 * cy, p1, p2])
+
+    /// What is removed.
+    pub fn form(&self) -> FormRemoval {
+        self.form
+    }
+
+    /// `heights` (on the grid the datum was fitted on) less the fitted form.
+    ///
+    /// # Panics
+    /// When `heights` is not on that grid (a caller's error: a series' maps are checked to
+    /// share the first one's grid before they are levelled).
+    pub fn remove_from(&self, heights: &Array2<f64>) -> Array2<f64> {
+        assert_eq!(heights.dim(), (self.shape[0], self.shape[1]), "datum grid");
+        let shape = self.shape;
+        let mut levelled = heights.clone();
+        match self.form {
+            FormRemoval::Plane => Zip::indexed(&mut levelled).par_for_each(|(j, i), z| {
+                let b = plane_basis(shape, i, j);
+                *z -= b[0] * self.plane[0] + b[1] * self.plane[1] + b[2] * self.plane[2];
+            }),
+            FormRemoval::Quadratic => Zip::indexed(&mut levelled).par_for_each(|(j, i), z| {
+                let b = quadratic_basis(shape, i, j);
+                *z -= b
+                    .iter()
+                    .zip(&self.quadratic)
+                    .map(|(b, c)| b * c)
+                    .sum::<f64>();
+            }),
+        }
+        levelled
+    }
+}
+
+/// The centre `(ci, cj)` of a `[rows, columns]` grid in samples and the scales `(si, sj)` of
+/// its coordinates `u = (i - ci)/si`, `v = (j - cj)/sj` in [-1, 1].
+fn centring(shape: [usize; 2]) -> (f64, f64, f64, f64) {
+    let [ny, nx] = shape;
+    let (ci, cj) = (0.5 * (nx - 1) as f64, 0.5 * (ny - 1) as f64);
+    (ci, cj, ci.max(f64::MIN_POSITIVE), cj.max(f64::MIN_POSITIVE))
+}
+
+/// The plane's basis `[1, u, v]` at sample `(i, j)` ([`centring`]).
+fn plane_basis(shape: [usize; 2], i: usize, j: usize) -> [f64; 3] {
+    let (ci, cj, si, sj) = centring(shape);
+    [1.0, (i as f64 - ci) / si, (j as f64 - cj) / sj]
+}
+
+/// The quadratic's basis `[1, u, v, u², uv, v²]` at sample `(i, j)` ([`centring`]).
+fn quadratic_basis(shape: [usize; 2], i: usize, j: usize) -> [f64; 6] {
+    let [_, u, v] = plane_basis(shape, i, j);
+    [1.0, u, v, u * u, u * v, v * v]
 }
 
 /// Mean, rms, skewness and kurtosis of zero-mean-ish values (about their mean).

@@ -46,7 +46,9 @@
 //! in closed form and subtracted from the integrand, which then falls as `e^(-k(2h - z))` from
 //! the layer's far side: otherwise the integrals on the surface near the contact's edge, where
 //! `p` has a square-root edge, would converge only as `(ka)^(-1/2)` (0.02 `p0` at `ka` =
-//! 3000). The higher terms vanish at the edge as `(1 - r²/a²)^(3/2)` and converge within 1e-5.
+//! 3000). The higher terms vanish at the edge as `(1 - r²/a²)^(3/2)` or faster and are
+//! integrated there to `ka = 300` (their tail at most 2e-4 of their size, `c_n` being a tenth
+//! of `c_1` or less).
 //!
 //! ## References
 //! - S. Timoshenko, J. N. Goodier, *Theory of Elasticity*, 3rd ed., McGraw-Hill (1970), §139
@@ -180,6 +182,11 @@ pub struct AxisymmetricStress {
 /// The largest `ka` integrated.
 const X_MAX: usize = 3000;
 
+/// The largest `ka` at which the terms `n >= 2` are integrated in the coating (where the Hertz
+/// term's homogeneous part is subtracted): they fall as `(ka)^(-n-1)`, so their tail beyond is
+/// at most `300^(-3/2)` (2e-4) of their size, on the surface at the contact's edge.
+const HIGHER_TERMS_X: f64 = 300.0;
+
 impl AxisymmetricStress {
     /// The field of `contact`'s pressure on `layered`.
     pub fn new(layered: Layered, contact: &AxisymmetricContact) -> Self {
@@ -264,6 +271,18 @@ impl AxisymmetricStress {
 
     /// The stresses at the radii `r_m`, all at depth `z_m` (see [`Self::stress`]).
     pub fn stresses(&self, r_m: &[f64], z_m: f64, side: Side) -> Vec<Stress> {
+        self.stresses_with(r_m, z_m, side, &|_, _, x| bessel_pair(x))
+    }
+
+    /// [`Self::stresses`] with `bessel(node, radius, x)` giving `(J0(x), J1(x)/x)` at
+    /// `x = k_node r_radius` (computed, or from a table).
+    fn stresses_with(
+        &self,
+        r_m: &[f64],
+        z_m: f64,
+        side: Side,
+        bessel: &dyn Fn(usize, usize, f64) -> (f64, f64),
+    ) -> Vec<Stress> {
         let h = self.layered.thickness_m;
         let in_coating = z_m < h || (z_m == h && side == Side::Coating);
         let material = if in_coating {
@@ -278,11 +297,22 @@ impl AxisymmetricStress {
         let homogeneous = [-2.0 * nu1, -1.0];
         // [σz, τrz, σr + σθ, ψ'] per radius: the Bessel factors J0, J1, J0, (J0 - 2J1/kr).
         let mut sums = vec![[0.0; 4]; r_m.len()];
-        for node in &self.nodes {
-            let zeta = node.k * z_m;
-            if zeta > 40.0 {
+        let a = self.radius_m;
+        let subtracted = in_coating && self.hertz_pa != 0.0;
+        let reach = if subtracted {
+            // The Hertz term less its homogeneous part falls as e^(-k(2h - z)); the higher
+            // terms as e^(-kz) and (ka)^(-2) (module doc).
+            (40.0 / z_m)
+                .min(HIGHER_TERMS_X / a)
+                .max(40.0 / (2.0 * h - z_m))
+        } else {
+            40.0 / z_m
+        };
+        for (index, node) in self.nodes.iter().enumerate() {
+            if node.k > reach {
                 break;
             }
+            let zeta = node.k * z_m;
             let k_h = node.k * h;
             let c = &node.constants;
             let mut psi = [0.0; 4];
@@ -320,10 +350,9 @@ impl AxisymmetricStress {
                     *v -= s * node.hertz;
                 }
             }
-            for (sum, &r) in sums.iter_mut().zip(r_m) {
+            for (radius, (sum, &r)) in sums.iter_mut().zip(r_m).enumerate() {
                 let x = node.k * r;
-                let j0 = super::reference::bessel_j0(x);
-                let j1_over_x = super::line_reference::bessel_over_power(x, 1)[0];
+                let (j0, j1_over_x) = bessel(index, radius, x);
                 sum[0] += kernel[0] * j0;
                 sum[1] += kernel[1] * j1_over_x * x;
                 sum[2] += kernel[2] * j0;
@@ -364,6 +393,179 @@ impl AxisymmetricStress {
                 stress
             })
             .collect()
+    }
+}
+
+/// `(J0(x), J1(x)/x)` ([`super::reference::bessel_j0`], [`super::line_reference::bessel_over_power`]).
+fn bessel_pair(x: f64) -> (f64, f64) {
+    (
+        super::reference::bessel_j0(x),
+        super::line_reference::bessel_over_power(x, 1)[0],
+    )
+}
+
+/// A largest value of the reference field and its place in the plane `θ = 0`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Peak {
+    pub value_pa: f64,
+    pub r_m: f64,
+    pub z_m: f64,
+}
+
+/// The maxima the coated study reports ([`crate::study::coated::CoatedMaxima`]), of the
+/// reference field: von Mises in the coating and in the substrate, the interface's shear
+/// `|τrz|` and most compressive `σz`, the surface's largest `σr`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReferenceMaxima {
+    pub coating_von_mises: Peak,
+    pub substrate_von_mises: Peak,
+    pub interface_shear: Peak,
+    /// The most compressive `σz` (its value negative).
+    pub interface_normal_min: Peak,
+    pub surface_tension: Peak,
+}
+
+/// The golden-section search for the largest `f` on `[lo, hi]`: `(x, f(x))` (Kiefer 1953).
+fn golden_maximum(f: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64) -> (f64, f64) {
+    let ratio = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut x1, mut x2) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
+    let (mut f1, mut f2) = (f(x1), f(x2));
+    for _ in 0..24 {
+        if f1 >= f2 {
+            hi = x2;
+            (x2, f2) = (x1, f1);
+            x1 = hi - ratio * (hi - lo);
+            f1 = f(x1);
+        } else {
+            lo = x1;
+            (x1, f1) = (x2, f2);
+            x2 = lo + ratio * (hi - lo);
+            f2 = f(x2);
+        }
+    }
+    if f1 >= f2 {
+        (x1, f1)
+    } else {
+        (x2, f2)
+    }
+}
+
+impl AxisymmetricStress {
+    /// The maxima (see [`ReferenceMaxima`]) within `r <= reach_m` and `z <= deepest_m`: the
+    /// largest of each on a grid of 25 radii and 7 depths in the coating and 17 in the
+    /// substrate, then refined by golden sections over a grid step about it, in `r` and (for
+    /// the von Mises stresses) in `z` in turn, twice.
+    pub fn maxima(&self, reach_m: f64, deepest_m: f64) -> ReferenceMaxima {
+        let h = self.layered.thickness_m;
+        let (radii_count, coating_count, substrate_count) = (24, 6, 16);
+        let radii: Vec<f64> = (0..=radii_count)
+            .map(|i| reach_m * i as f64 / radii_count as f64)
+            .collect();
+        let dr = reach_m / radii_count as f64;
+        let coating: Vec<f64> = (0..=coating_count)
+            .map(|i| h * i as f64 / coating_count as f64)
+            .collect();
+        let substrate: Vec<f64> = (0..=substrate_count)
+            .map(|i| h + (deepest_m - h) * i as f64 / substrate_count as f64)
+            .collect();
+        // The grid's Bessel functions, once for every depth: up to the farthest node any depth
+        // reaches (the surface's).
+        let reach = (HIGHER_TERMS_X / self.radius_m).max(40.0 / h);
+        let nodes = self.nodes.iter().take_while(|n| n.k <= reach).count();
+        let table: Vec<Vec<(f64, f64)>> = self.nodes[..nodes]
+            .iter()
+            .map(|n| radii.iter().map(|r| bessel_pair(n.k * r)).collect())
+            .collect();
+        let lookup = |node: usize, radius: usize, x: f64| {
+            table
+                .get(node)
+                .map_or_else(|| bessel_pair(x), |row| row[radius])
+        };
+        let grid = |depths: &[f64], side: Side| -> Vec<(f64, Vec<Stress>)> {
+            depths
+                .iter()
+                .map(|&z| (z, self.stresses_with(&radii, z, side, &lookup)))
+                .collect()
+        };
+        let (upper, lower) = (
+            grid(&coating, Side::Coating),
+            grid(&substrate, Side::Substrate),
+        );
+        // The grid's best (value, r, z) of `quantity` over the rows `rows`.
+        let best = |rows: &[(f64, Vec<Stress>)], quantity: &dyn Fn(&Stress) -> f64| {
+            let mut out = (f64::NEG_INFINITY, 0.0, 0.0);
+            for (z, row) in rows {
+                for (r, s) in radii.iter().zip(row) {
+                    let v = quantity(s);
+                    if v > out.0 {
+                        out = (v, *r, *z);
+                    }
+                }
+            }
+            out
+        };
+        // Refine (r, z) over a step each way, z kept within `depth_range`.
+        let refine = |start: (f64, f64, f64),
+                      side: Side,
+                      depth_range: Option<(f64, f64, f64)>,
+                      quantity: &dyn Fn(&Stress) -> f64| {
+            let (mut value, mut r, mut z) = start;
+            for _ in 0..2 {
+                let (r_new, v) = golden_maximum(
+                    |x| quantity(&self.stress(x, z, side)),
+                    (r - dr).max(0.0),
+                    (r + dr).min(reach_m),
+                );
+                if v > value {
+                    (value, r) = (v, r_new);
+                }
+                if let Some((lo, hi, dz)) = depth_range {
+                    let (z_new, v) = golden_maximum(
+                        |t| quantity(&self.stress(r, t, side)),
+                        (z - dz).max(lo),
+                        (z + dz).min(hi),
+                    );
+                    if v > value {
+                        (value, z) = (v, z_new);
+                    }
+                }
+            }
+            Peak {
+                value_pa: value,
+                r_m: r,
+                z_m: z,
+            }
+        };
+        let von_mises = |s: &Stress| s.von_mises();
+        let shear = |s: &Stress| s.xz.abs();
+        let compression = |s: &Stress| -s.zz;
+        let tension = |s: &Stress| s.xx;
+        let interface = std::slice::from_ref(&upper[coating_count]);
+        let surface = std::slice::from_ref(&upper[0]);
+        let mut normal = refine(
+            best(interface, &compression),
+            Side::Coating,
+            None,
+            &compression,
+        );
+        normal.value_pa = -normal.value_pa;
+        ReferenceMaxima {
+            coating_von_mises: refine(
+                best(&upper, &von_mises),
+                Side::Coating,
+                Some((0.0, h, h / coating_count as f64)),
+                &von_mises,
+            ),
+            substrate_von_mises: refine(
+                best(&lower, &von_mises),
+                Side::Substrate,
+                Some((h, deepest_m, (deepest_m - h) / substrate_count as f64)),
+                &von_mises,
+            ),
+            interface_shear: refine(best(interface, &shear), Side::Coating, None, &shear),
+            interface_normal_min: normal,
+            surface_tension: refine(best(surface, &tension), Side::Coating, None, &tension),
+        }
     }
 }
 

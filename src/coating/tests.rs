@@ -226,6 +226,57 @@ fn equal_moduli_give_the_homogeneous_field_and_the_free_surface_holds() {
 }
 
 #[test]
+fn a_very_thick_coating_gives_the_coatings_own_field() {
+    // TiN (600 GPa, ν = 0.25) and PEEK (3.6 GPa, ν = 0.4) 10⁴ a thick on steel under Hertz
+    // tractions (μ = 0.2, 64² cells over ±2a): the centre row at z = 0.25a, 0.5a and 0.8a
+    // against Hamilton's closed form with the coating's ν, beside the same with the coating's
+    // material throughout (the grid's own error). The substrate's share is of order
+    // (a/h)², nothing at 10⁴.
+    use super::stress::LayeredStress;
+    let (n, mu) = (64, 0.2);
+    let (p, q, d) = hertz_tractions(n, mu);
+    let y = -2.0 + (n as f64 / 2.0 + 0.5) * d;
+    for (modulus, poisson) in [(600e9, 0.25), (3.6e9, 0.4)] {
+        let coating = Material {
+            modulus_pa: modulus,
+            poisson,
+        };
+        let error = |substrate: Material| {
+            let body = Layered {
+                coating,
+                substrate,
+                thickness_m: 1e4,
+            };
+            let layers =
+                LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
+            let mut worst: f64 = 0.0;
+            for z in [0.25, 0.5, 0.8] {
+                let row = layers.row(n / 2, z, Side::Coating);
+                for i in 0..n {
+                    let x = -2.0 + (i as f64 + 0.5) * d;
+                    if x.abs() > 1.5 {
+                        continue;
+                    }
+                    let s = crate::solution::sphere_hertz::stress_over_p0(x, y, z, mu, poisson);
+                    for (c, want) in [s.xx, s.yy, s.zz, s.yz, s.xz, s.xy].iter().enumerate() {
+                        assert!(row[[c, i]].is_finite());
+                        worst = worst.max((row[[c, i]] - want).abs());
+                    }
+                }
+            }
+            worst
+        };
+        let (thick, alone) = (error(STEEL), error(coating));
+        eprintln!(
+            "measured: {:.1} GPa coating 1e4 a thick on steel against Hamilton's field: {thick:.1e} p0 (the coating throughout: {alone:.1e} p0)",
+            modulus / 1e9
+        );
+        assert!((thick - alone).abs() < 1e-4, "{thick} {alone}");
+        assert!(thick < 5e-3, "{thick}");
+    }
+}
+
+#[test]
 fn the_field_is_continuous_where_it_must_be_across_the_interface() {
     use super::stress::LayeredStress;
     let (n, mu) = (64, 0.3);

@@ -448,12 +448,27 @@ mod tests {
     }
 
     /// A steel ball (R = 6.35 mm, 210 GPa, ν = 0.3) pressed with `load` on `layered`, on
-    /// `cells`² cells over ±1.5 radii of the coating's own Hertz contact: the solved
+    /// `cells`² cells over ±1.5 radii of the coating's own Hertz contact (of `material`'s in
+    /// [`ball_over_hertz`]): the solved
     /// `(approach, peak pressure, sqrt(area/π))` over the coating's Hertz values.
     fn ball_over_coatings_hertz(layered: &Layered, load: f64, cells: usize) -> [f64; 3] {
+        ball_over_hertz(layered, &layered.coating, load, cells)
+    }
+
+    /// As [`ball_over_coatings_hertz`], over the substrate's Hertz contact.
+    fn ball_over_substrates_hertz(layered: &Layered, load: f64, cells: usize) -> [f64; 3] {
+        ball_over_hertz(layered, &layered.substrate, load, cells)
+    }
+
+    fn ball_over_hertz(
+        layered: &Layered,
+        material: &Material,
+        load: f64,
+        cells: usize,
+    ) -> [f64; 3] {
         let radius = 6.35e-3;
         let counter = (1.0 - 0.09) / 210e9;
-        let e_star = 1.0 / (1.0 / plane_strain_modulus(&layered.coating) + counter);
+        let e_star = 1.0 / (1.0 / plane_strain_modulus(material) + counter);
         let a = (3.0 * load * radius / (4.0 * e_star)).cbrt();
         let p0 = 3.0 * load / (2.0 * std::f64::consts::PI * a * a);
         let approach = a * a / radius;
@@ -528,6 +543,61 @@ mod tests {
             assert!((got[0] - 1.0).abs() < 0.01, "approach {}", got[0]);
         }
         assert!(worst < 0.002, "{worst}");
+    }
+
+    #[test]
+    fn a_thinning_coating_tends_to_the_substrates_hertz_contact() {
+        // Ec/Es = 2 and 0.5 on steel (ν = 0.3 both) under a steel ball, 5 N, h = 0.3, 0.15
+        // and 0.075 of the substrate's Hertz radius on the same grid (84² cells over ±1.5
+        // radii: the thinnest coating 2.1 cells): the approach, peak pressure and radius over
+        // the substrate's Hertz values, each against the grid's own (the substrate's material
+        // throughout). The coating's share falls in proportion to h: halving h halves the
+        // largest (measured ratios 0.50 to 0.62; the radius counts whole cells), 2.4 % at
+        // h = 0.075a (Ec/Es = 0.5, the radius; the approach 1.1 %).
+        let steel = Material {
+            modulus_pa: 210e9,
+            poisson: 0.3,
+        };
+        let load = 5.0;
+        let radius = 6.35e-3;
+        let counter = (1.0 - 0.09) / 210e9;
+        let e_star = 1.0 / (1.0 / plane_strain_modulus(&steel) + counter);
+        let a = (3.0 * load * radius / (4.0 * e_star)).cbrt();
+        let cells = 84;
+        let alone = Layered {
+            coating: steel,
+            substrate: steel,
+            thickness_m: a,
+        };
+        let grid = ball_over_coatings_hertz(&alone, load, cells);
+        for ratio in [2.0, 0.5] {
+            let mut previous: Option<f64> = None;
+            for h_over_a in [0.3, 0.15, 0.075] {
+                let layered = Layered {
+                    coating: Material {
+                        modulus_pa: ratio * 210e9,
+                        poisson: 0.3,
+                    },
+                    substrate: steel,
+                    thickness_m: h_over_a * a,
+                };
+                let got = ball_over_substrates_hertz(&layered, load, cells);
+                let shares: Vec<f64> = got.iter().zip(&grid).map(|(g, h)| g / h - 1.0).collect();
+                let largest = shares.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                eprintln!(
+                    "measured: Ec/Es = {ratio}, h = {h_over_a} a: against the substrate's Hertz contact on the same grid, approach {:+.2} %, peak pressure {:+.2} %, radius {:+.2} %",
+                    100.0 * shares[0],
+                    100.0 * shares[1],
+                    100.0 * shares[2]
+                );
+                if let Some(before) = previous {
+                    let halved = largest / before;
+                    assert!((0.4..0.65).contains(&halved), "{halved}");
+                }
+                previous = Some(largest);
+            }
+            assert!(previous.is_some_and(|p| p < 0.03), "{previous:?}");
+        }
     }
 
     /// A cylinder (R = 10 mm) of compliance `counter` on the coated half-plane under `load`

@@ -16,6 +16,7 @@
 //!
 //! Uses nothing of the crate above `contact::material`, `operator` and `stress`.
 
+pub mod axisymmetric;
 pub mod kernel;
 pub mod line;
 pub mod line_reference;

@@ -77,7 +77,7 @@ pub fn bessel_j0(x: f64) -> f64 {
 
 /// `j_n(x) / x^n` for `n = 1..=count` (module doc): the power series below 10, the upward
 /// recurrence from `j0`, `j1` above (stable for `x > n`).
-fn spherical_over_power(x: f64, count: usize) -> Vec<f64> {
+pub(super) fn spherical_over_power(x: f64, count: usize) -> Vec<f64> {
     let mut out = vec![0.0; count];
     if x < 10.0 {
         for (i, slot) in out.iter_mut().enumerate() {
@@ -119,7 +119,7 @@ fn spherical_over_power(x: f64, count: usize) -> Vec<f64> {
 }
 
 /// `Γ(n + 1/2)` for integer `n >= 0`.
-fn gamma_half(n: usize) -> f64 {
+pub(super) fn gamma_half(n: usize) -> f64 {
     let mut g = PI.sqrt();
     for k in 0..n {
         g *= k as f64 + 0.5;

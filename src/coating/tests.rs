@@ -219,10 +219,61 @@ fn equal_moduli_give_the_homogeneous_field_and_the_free_surface_holds() {
             }
         }
     }
-    // The largest error lies at the window's edge (σxx at x = -1.5a, z = 0.8a): the periodic
-    // images two grid lengths apart.
+    // What is left is the sampled pressure (2.7e-4 p0 on 256² cells): the periodic images two
+    // grid lengths apart, which put 8.9e-3 p0 into σxx at x = -1.5a, z = 0.8a, are gone.
     eprintln!("measured: equal moduli, layered field against Hamilton's closed form (128² over ±2a, |x|, |y| <= 1.5a, z = 0.25a to 0.8a): {worst:.1e} p0");
-    assert!(worst < 1e-2, "{worst}");
+    assert!(worst < 2e-3, "{worst}");
+}
+
+#[test]
+fn a_very_thick_coating_gives_the_coatings_own_field() {
+    // TiN (600 GPa, ν = 0.25) and PEEK (3.6 GPa, ν = 0.4) 10⁴ a thick on steel under Hertz
+    // tractions (μ = 0.2, 64² cells over ±2a): the centre row at z = 0.25a, 0.5a and 0.8a
+    // against Hamilton's closed form with the coating's ν, beside the same with the coating's
+    // material throughout (the grid's own error). The substrate's share is of order
+    // (a/h)², nothing at 10⁴.
+    use super::stress::LayeredStress;
+    let (n, mu) = (64, 0.2);
+    let (p, q, d) = hertz_tractions(n, mu);
+    let y = -2.0 + (n as f64 / 2.0 + 0.5) * d;
+    for (modulus, poisson) in [(600e9, 0.25), (3.6e9, 0.4)] {
+        let coating = Material {
+            modulus_pa: modulus,
+            poisson,
+        };
+        let error = |substrate: Material| {
+            let body = Layered {
+                coating,
+                substrate,
+                thickness_m: 1e4,
+            };
+            let layers =
+                LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
+            let mut worst: f64 = 0.0;
+            for z in [0.25, 0.5, 0.8] {
+                let row = layers.row(n / 2, z, Side::Coating);
+                for i in 0..n {
+                    let x = -2.0 + (i as f64 + 0.5) * d;
+                    if x.abs() > 1.5 {
+                        continue;
+                    }
+                    let s = crate::solution::sphere_hertz::stress_over_p0(x, y, z, mu, poisson);
+                    for (c, want) in [s.xx, s.yy, s.zz, s.yz, s.xz, s.xy].iter().enumerate() {
+                        assert!(row[[c, i]].is_finite());
+                        worst = worst.max((row[[c, i]] - want).abs());
+                    }
+                }
+            }
+            worst
+        };
+        let (thick, alone) = (error(STEEL), error(coating));
+        eprintln!(
+            "measured: {:.1} GPa coating 1e4 a thick on steel against Hamilton's field: {thick:.1e} p0 (the coating throughout: {alone:.1e} p0)",
+            modulus / 1e9
+        );
+        assert!((thick - alone).abs() < 1e-4, "{thick} {alone}");
+        assert!(thick < 5e-3, "{thick}");
+    }
 }
 
 #[test]
@@ -261,31 +312,243 @@ fn the_field_is_continuous_where_it_must_be_across_the_interface() {
 
 #[test]
 fn a_row_alone_equals_the_layer_s_row() {
+    // A row sums the waves and the isolated contact's correction at every cell; a plane sums
+    // the correction every n/16 cells and interpolates it by cubics. Periodic: the same sums.
     use super::stress::LayeredStress;
-    let (n, mu) = (32, 0.3);
+    let (n, mu) = (64, 0.3);
     let (p, q, d) = hertz_tractions(n, mu);
     let body = Layered {
         coating: B4C,
         substrate: STEEL,
         thickness_m: 0.4,
     };
-    let layers = LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
-    let mut worst: f64 = 0.0;
-    for (z, side) in [
-        (0.0, Side::Coating),
-        (0.4, Side::Coating),
-        (0.4, Side::Substrate),
-        (0.9, Side::Substrate),
-    ] {
-        let layer = layers.layer(z, side).expect("layer");
-        for j in [0, n / 2, n - 1] {
-            let row = layers.row(j, z, side);
-            for c in 0..6 {
-                for i in 0..n {
-                    worst = worst.max((layer[[c, j, i]] - row[[c, i]]).abs());
+    for periodic in [true, false] {
+        let layers =
+            LayeredStress::new(body, p.view(), Some(q.view()), [d, d], periodic).expect("layers");
+        let mut worst: f64 = 0.0;
+        for (z, side) in [
+            (0.0, Side::Coating),
+            (0.4, Side::Coating),
+            (0.4, Side::Substrate),
+            (0.9, Side::Substrate),
+            (2.5, Side::Substrate),
+        ] {
+            let layer = layers.layer(z, side).expect("layer");
+            for j in [0, 5, n / 2, n - 1] {
+                let row = layers.row(j, z, side);
+                for c in 0..6 {
+                    for i in 0..n {
+                        worst = worst.max((layer[[c, j, i]] - row[[c, i]]).abs());
+                    }
+                }
+            }
+        }
+        eprintln!(
+            "measured: a row alone against the plane's row (periodic: {periodic}): {worst:.1e} p0"
+        );
+        let tolerance = if periodic { 1e-13 } else { 1e-6 };
+        assert!(worst < tolerance, "{worst}");
+    }
+}
+
+#[test]
+fn the_isolated_field_does_not_see_the_grids_extent() {
+    // An isolated contact's field must not change when its grid is widened by cells of zero
+    // traction: the same Hertz tractions (μ = 0.3) on 64² cells over ±2a and centred in 192²
+    // cells over ±6a, B4C on steel and a soft coating on steel (h = 0.5a), compared on the
+    // small grid's cells at depths to 2.5a. The periodic images two grid lengths apart moved
+    // the field by up to 2.2e-2 p0 here. On the surface the band-limited tractions' waves
+    // near the Nyquist wavenumber do not decay and their sharp edge in k leaves slowly
+    // decaying ripples, whose images are what remains there.
+    use super::stress::LayeredStress;
+    let (n, mu) = (64, 0.3);
+    let (p, q, d) = hertz_tractions(n, mu);
+    let wide = |a: &ndarray::Array2<f64>| {
+        ndarray::Array2::from_shape_fn((3 * n, 3 * n), |(j, i)| {
+            let inside = (n..2 * n).contains(&j) && (n..2 * n).contains(&i);
+            if inside {
+                a[[j - n, i - n]]
+            } else {
+                0.0
+            }
+        })
+    };
+    let (pw, qw) = (wide(&p), wide(&q));
+    let (mut worst, mut surface) = (0.0f64, 0.0f64);
+    for coating in [B4C, SOFT] {
+        let body = Layered {
+            coating,
+            substrate: STEEL,
+            thickness_m: 0.5,
+        };
+        let small =
+            LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("small");
+        let large =
+            LayeredStress::new(body, pw.view(), Some(qw.view()), [d, d], false).expect("large");
+        for (z, side) in [
+            (0.0, Side::Coating),
+            (0.5, Side::Coating),
+            (0.5, Side::Substrate),
+            (1.0, Side::Substrate),
+            (2.5, Side::Substrate),
+        ] {
+            for j in [0, n / 2, n - 1] {
+                let (a, b) = (small.row(j, z, side), large.row(n + j, z, side));
+                for c in 0..6 {
+                    for i in 0..n {
+                        let error = (a[[c, i]] - b[[c, n + i]]).abs();
+                        if z == 0.0 {
+                            surface = surface.max(error);
+                        } else {
+                            worst = worst.max(error);
+                        }
+                    }
                 }
             }
         }
     }
-    assert!(worst < 1e-13, "{worst}");
+    eprintln!("measured: isolated field, 64² cells over ±2a against the same in 192² over ±6a: {worst:.1e} p0 below the surface, {surface:.1e} p0 on it");
+    assert!(worst < 1e-4, "{worst}");
+    assert!(surface < 2e-4, "{surface}");
+}
+
+/// The coated maxima of the reference contact's pressure on a grid of `n`² cells (n odd, so that
+/// the centre row is y = 0) over ±2 semi-axes of the coating's Hertz contact, against the
+/// independent reference field: a rigid sphere (R = 10 mm, a = 100 µm, `terms` pressure terms,
+/// `reference`) on steel with a coating of `ratio` times its modulus (ν = 0.3 both) and
+/// thickness `h_over_a` a. The grid's field is the layered waves' (`stress`, the code the
+/// study, its figures and recordings use); the reference is Love's strain function
+/// (`axisymmetric`), which shares nothing with it. Returns the relative errors of: the largest
+/// von Mises stress in the coating and in the substrate (on the grid's row at the reference's
+/// depth), the interface's largest |τxz| and most compressive σzz, the surface's most tensile
+/// σxx against the reference's peak, and the same against the reference sampled at the grid's
+/// cell centres (the peak at the contact's edge is a kink the cells straddle).
+fn coated_maxima_errors(ratio: f64, h_over_a: f64, n: usize, terms: usize) -> [f64; 6] {
+    use super::axisymmetric::AxisymmetricStress;
+    use super::reference::rigid_sphere;
+    use super::stress::LayeredStress;
+    use crate::stress::Stress;
+    let (radius, a) = (10e-3, 100e-6);
+    let layered = Layered {
+        coating: Material {
+            modulus_pa: ratio * STEEL.modulus_pa,
+            poisson: 0.3,
+        },
+        substrate: STEEL,
+        thickness_m: h_over_a * a,
+    };
+    let h = layered.thickness_m;
+    let contact = rigid_sphere(&layered, radius, a, terms);
+    let field = AxisymmetricStress::new(layered, &contact);
+    let deepest = (2.5 * a).max(h + 1.5 * a);
+    let want = field.maxima(2.0 * a, deepest);
+    let e1 = plane_strain_modulus(&layered.coating);
+    let a_c = (3.0 * contact.load_n * radius / (4.0 * e1)).cbrt();
+    let d = 4.0 * a_c / n as f64;
+    let centre = |i: usize| -2.0 * a_c + (i as f64 + 0.5) * d;
+    let p = ndarray::Array2::from_shape_fn((n, n), |(j, i)| {
+        contact.pressure_pa(centre(i).hypot(centre(j)))
+    });
+    let layers = LayeredStress::new(layered, p.view(), None, [d, d], false).expect("layers");
+    let largest = |z: f64, side: Side, quantity: &dyn Fn(&Stress) -> f64| {
+        let row = layers.row(n / 2, z, side);
+        (0..n)
+            .map(|i| {
+                quantity(&Stress {
+                    xx: row[[0, i]],
+                    yy: row[[1, i]],
+                    zz: row[[2, i]],
+                    yz: row[[3, i]],
+                    xz: row[[4, i]],
+                    xy: row[[5, i]],
+                })
+            })
+            .fold(f64::NEG_INFINITY, f64::max)
+    };
+    let von_mises = |s: &Stress| s.von_mises();
+    let surface = largest(0.0, Side::Coating, &|s| s.xx);
+    // The reference at the cell centres of the row, near the edge (|x| within 2 cells of the
+    // reference's peak).
+    let peak = want.surface_tension.r_m;
+    let radii: Vec<f64> = (0..n)
+        .map(|i| centre(i).abs())
+        .filter(|r| (r - peak).abs() < 2.0 * d)
+        .collect();
+    let sampled = field
+        .stresses(&radii, 0.0, Side::Coating)
+        .iter()
+        .map(|s| s.xx)
+        .fold(f64::NEG_INFINITY, f64::max);
+    let got = [
+        largest(want.coating_von_mises.z_m, Side::Coating, &von_mises),
+        largest(want.substrate_von_mises.z_m, Side::Substrate, &von_mises),
+        largest(h, Side::Coating, &|s| s.xz.abs()),
+        -largest(h, Side::Coating, &|s| -s.zz),
+        surface,
+        surface,
+    ];
+    let wanted = [
+        want.coating_von_mises.value_pa,
+        want.substrate_von_mises.value_pa,
+        want.interface_shear.value_pa,
+        want.interface_normal_min.value_pa,
+        want.surface_tension.value_pa,
+        sampled,
+    ];
+    std::array::from_fn(|q| got[q] / wanted[q] - 1.0)
+}
+
+/// [`coated_maxima_errors`] for each of `ratios` (Ec/Es) and h/a = 0.1, 0.5, 1 and 2 (issue
+/// 50's table), printed; the worst of the first four errors and of the last (the sampled
+/// surface).
+fn coated_maxima_table(ratios: &[f64], n: usize, terms: usize) -> (f64, f64) {
+    use rayon::prelude::*;
+    let cases: Vec<(f64, f64)> = ratios
+        .iter()
+        .flat_map(|&ratio| [0.1, 0.5, 1.0, 2.0].map(|h| (ratio, h)))
+        .collect();
+    let results: Vec<(f64, f64, [f64; 6])> = cases
+        .par_iter()
+        .map(|&(ratio, h)| (ratio, h, coated_maxima_errors(ratio, h, n, terms)))
+        .collect();
+    let (mut depth, mut surface) = (0.0f64, 0.0f64);
+    for (ratio, h_over_a, e) in &results {
+        eprintln!(
+            "measured: {n}² cells, Ec/Es = {ratio}, h/a = {h_over_a}, against the Love reference: von Mises coating {:+.2} %, substrate {:+.2} %; interface |τxz| {:+.2} %, σzz {:+.2} %; surface σxx {:+.2} % (at the cells {:+.2} %)",
+            100.0 * e[0], 100.0 * e[1], 100.0 * e[2], 100.0 * e[3], 100.0 * e[4], 100.0 * e[5]
+        );
+        depth = e[..4].iter().fold(depth, |m, v| m.max(v.abs()));
+        surface = surface.max(e[5].abs());
+    }
+    (depth, surface)
+}
+
+#[test]
+fn the_maxima_under_a_stiff_coating_agree_with_the_independent_layered_reference() {
+    // Ec/Es = 2; tolerances as for the compliant coating (below).
+    let (depth, surface) = coated_maxima_table(&[2.0], 95, 4);
+    assert!(depth < 0.02, "{depth}");
+    assert!(surface < 0.06, "{surface}");
+}
+
+#[test]
+fn the_maxima_under_a_compliant_coating_agree_with_the_independent_layered_reference() {
+    // Issue 50's table on a coarse grid (95² cells over ±2a: the thinnest coating, h = 0.1a,
+    // 2.4 cells) and the contact's pressure from 4 terms: within 2 % at depth (measured
+    // 1.5 % at most, the coating's von Mises stress at h = 0.1a, Ec/Es = 2, whose peak is on
+    // the surface), 6 % on the surface at the cells (5.2 %, Ec/Es = 0.5, h = 0.1a: the
+    // band-limited pressure's ripples at the contact's edge, 0.8 % on the default grid).
+    let (depth, surface) = coated_maxima_table(&[0.5], 95, 4);
+    assert!(depth < 0.02, "{depth}");
+    assert!(surface < 0.06, "{surface}");
+}
+
+#[test]
+#[ignore = "the default grid (255² cells), about 8 s: the figures of docs/coatings.md"]
+fn the_coated_maxima_on_the_default_grid() {
+    // Measured: at depth 0.34 % at most (interface |τxz|, h = 0.1a, Ec/Es = 0.5), on the
+    // surface at the cells 0.77 %.
+    let (depth, surface) = coated_maxima_table(&[2.0, 0.5], 255, 8);
+    assert!(depth < 0.01, "{depth}");
+    assert!(surface < 0.01, "{surface}");
 }

@@ -111,7 +111,10 @@ pub fn ehl_sheet_in(
     );
     pressure.width_px = WIDTH_PX;
     pressure.x_range = Some((um(x0), um(x1)));
-    pressure.y_range = ranges.map(|r| (0.0, r.pressure_gpa));
+    // Headroom above the larger peak keeps the top corners free for the legend (a broad
+    // hydrodynamic hump fills every corner of a tight range).
+    let peak_gpa = s.max_pressure_pa.max(s.hertz_p0_pa) * 1e-9;
+    pressure.y_range = Some(ranges.map_or((0.0, 1.5 * peak_gpa), |r| (0.0, r.pressure_gpa)));
     pressure.series.push(Series {
         label: format!("EHL, max {:.2} GPa", s.max_pressure_pa * 1e-9),
         points: window

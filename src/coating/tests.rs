@@ -421,9 +421,11 @@ fn the_isolated_field_does_not_see_the_grids_extent() {
 /// (`axisymmetric`), which shares nothing with it. Returns the relative errors of: the largest
 /// von Mises stress in the coating and in the substrate (on the grid's row at the reference's
 /// depth), the interface's largest |τxz| and most compressive σzz, the surface's most tensile
-/// σxx against the reference's peak, and the same against the reference sampled at the grid's
-/// cell centres (the peak at the contact's edge is a kink the cells straddle).
-fn coated_maxima_errors(ratio: f64, h_over_a: f64, n: usize, terms: usize) -> [f64; 6] {
+/// σxx against the reference's peak, the same against the reference sampled at the grid's
+/// cell centres (the peak at the contact's edge is a kink the cells straddle), and the peak
+/// taken at the contact's edges between the cells as the study takes it
+/// ([`super::stress::surface_edge_values`]) against the reference's peak.
+fn coated_maxima_errors(ratio: f64, h_over_a: f64, n: usize, terms: usize) -> [f64; 7] {
     use super::axisymmetric::AxisymmetricStress;
     use super::reference::rigid_sphere;
     use super::stress::LayeredStress;
@@ -479,6 +481,16 @@ fn coated_maxima_errors(ratio: f64, h_over_a: f64, n: usize, terms: usize) -> [f
         .iter()
         .map(|s| s.xx)
         .fold(f64::NEG_INFINITY, f64::max);
+    let refined = {
+        let row = layers.row(n / 2, 0.0, Side::Coating);
+        let x: Vec<f64> = (0..n).map(centre).collect();
+        let sxx = row.row(0).to_vec();
+        let pressure = p.row(n / 2).to_vec();
+        super::stress::surface_edge_values(&x, &pressure, &sxx)
+            .into_iter()
+            .map(|(_, v)| v)
+            .fold(surface, f64::max)
+    };
     let got = [
         largest(want.coating_von_mises.z_m, Side::Coating, &von_mises),
         largest(want.substrate_von_mises.z_m, Side::Substrate, &von_mises),
@@ -486,6 +498,7 @@ fn coated_maxima_errors(ratio: f64, h_over_a: f64, n: usize, terms: usize) -> [f
         -largest(h, Side::Coating, &|s| -s.zz),
         surface,
         surface,
+        refined,
     ];
     let wanted = [
         want.coating_von_mises.value_pa,
@@ -494,6 +507,7 @@ fn coated_maxima_errors(ratio: f64, h_over_a: f64, n: usize, terms: usize) -> [f
         want.interface_normal_min.value_pa,
         want.surface_tension.value_pa,
         sampled,
+        want.surface_tension.value_pa,
     ];
     std::array::from_fn(|q| got[q] / wanted[q] - 1.0)
 }
@@ -507,18 +521,18 @@ fn coated_maxima_table(ratios: &[f64], n: usize, terms: usize) -> (f64, f64) {
         .iter()
         .flat_map(|&ratio| [0.1, 0.5, 1.0, 2.0].map(|h| (ratio, h)))
         .collect();
-    let results: Vec<(f64, f64, [f64; 6])> = cases
+    let results: Vec<(f64, f64, [f64; 7])> = cases
         .par_iter()
         .map(|&(ratio, h)| (ratio, h, coated_maxima_errors(ratio, h, n, terms)))
         .collect();
     let (mut depth, mut surface) = (0.0f64, 0.0f64);
     for (ratio, h_over_a, e) in &results {
         eprintln!(
-            "measured: {n}² cells, Ec/Es = {ratio}, h/a = {h_over_a}, against the Love reference: von Mises coating {:+.2} %, substrate {:+.2} %; interface |τxz| {:+.2} %, σzz {:+.2} %; surface σxx {:+.2} % (at the cells {:+.2} %)",
-            100.0 * e[0], 100.0 * e[1], 100.0 * e[2], 100.0 * e[3], 100.0 * e[4], 100.0 * e[5]
+            "measured: {n}² cells, Ec/Es = {ratio}, h/a = {h_over_a}, against the Love reference: von Mises coating {:+.2} %, substrate {:+.2} %; interface |τxz| {:+.2} %, σzz {:+.2} %; surface σxx {:+.2} % (at the cells {:+.2} %, refined {:+.2} %)",
+            100.0 * e[0], 100.0 * e[1], 100.0 * e[2], 100.0 * e[3], 100.0 * e[4], 100.0 * e[5], 100.0 * e[6]
         );
         depth = e[..4].iter().fold(depth, |m, v| m.max(v.abs()));
-        surface = surface.max(e[5].abs());
+        surface = surface.max(e[6].abs());
     }
     (depth, surface)
 }
@@ -536,8 +550,9 @@ fn the_maxima_under_a_compliant_coating_agree_with_the_independent_layered_refer
     // Issue 50's table on a coarse grid (95² cells over ±2a: the thinnest coating, h = 0.1a,
     // 2.4 cells) and the contact's pressure from 4 terms: within 2 % at depth (measured
     // 1.5 % at most, the coating's von Mises stress at h = 0.1a, Ec/Es = 2, whose peak is on
-    // the surface), 6 % on the surface at the cells (5.2 %, Ec/Es = 0.5, h = 0.1a: the
-    // band-limited pressure's ripples at the contact's edge, 0.8 % on the default grid).
+    // the surface), 6 % for the surface's peak σxx at the contact's edge (5.75 %, Ec/Es = 2,
+    // h = a; the samples themselves are off by up to 5.2 % next to the edge, the band-limited
+    // pressure's ripples: 1.2 % on the default grid).
     let (depth, surface) = coated_maxima_table(&[0.5], 95, 4);
     assert!(depth < 0.02, "{depth}");
     assert!(surface < 0.06, "{surface}");
@@ -546,9 +561,53 @@ fn the_maxima_under_a_compliant_coating_agree_with_the_independent_layered_refer
 #[test]
 #[ignore = "the default grid (255² cells), about 8 s: the figures of docs/coatings.md"]
 fn the_coated_maxima_on_the_default_grid() {
-    // Measured: at depth 0.34 % at most (interface |τxz|, h = 0.1a, Ec/Es = 0.5), on the
-    // surface at the cells 0.77 %.
+    // Measured: at depth 0.34 % at most (interface |τxz|, h = 0.1a, Ec/Es = 0.5); the
+    // surface's peak σxx, taken at the contact's edge between the cells, 1.20 % (Ec/Es = 2,
+    // h = a; the largest cell sample was up to 7.3 % low, Ec/Es = 0.5, h = 0.1a).
     let (depth, surface) = coated_maxima_table(&[2.0, 0.5], 255, 8);
     assert!(depth < 0.01, "{depth}");
-    assert!(surface < 0.01, "{surface}");
+    assert!(surface < 0.015, "{surface}");
+}
+
+#[test]
+fn the_surface_peak_at_a_contacts_edge_is_found_between_the_cells() {
+    // Hertz's surface radial stress along a diameter (Johnson 1985, §3.4): inside
+    // (1-2ν)/3 (a/r)² (1 - (1 - r²/a²)^(3/2)) - √(1 - r²/a²), outside (1-2ν)/3 (a/r)², in
+    // units of p0; its peak (1-2ν)/3 at the edge, a kink. Sampled at cell centres placed at
+    // ten offsets from the edge, the largest sample is up to 4.0 % low at 24 cells on the
+    // radius; the edge's value is within 0.5 % (measured 0.32 %) and its place within a tenth
+    // of a cell (0.04).
+    let nu = 0.3;
+    let peak = (1.0 - 2.0 * nu) / 3.0;
+    let radial = |r: f64| {
+        let r = r.abs();
+        if r >= 1.0 {
+            peak / (r * r)
+        } else {
+            peak / (r * r).max(1e-300) * (1.0 - (1.0 - r * r).powf(1.5)) - (1.0 - r * r).sqrt()
+        }
+    };
+    let d = 1.0 / 24.0;
+    let (mut worst_sample, mut worst_edge, mut worst_place) = (0.0f64, 0.0f64, 0.0f64);
+    for k in 0..10 {
+        let offset = k as f64 / 10.0 * d;
+        let x: Vec<f64> = (0..120).map(|i| -2.5 + offset + i as f64 * d).collect();
+        let p: Vec<f64> = x.iter().map(|x| (1.0 - x * x).max(0.0).sqrt()).collect();
+        let s: Vec<f64> = x.iter().map(|&x| radial(x)).collect();
+        let sample = s.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let edges = super::stress::surface_edge_values(&x, &p, &s);
+        assert_eq!(edges.len(), 2, "two edges");
+        for (place, value) in edges {
+            worst_edge = worst_edge.max((value / peak - 1.0).abs());
+            worst_place = worst_place.max((place.abs() - 1.0).abs() / d);
+        }
+        worst_sample = worst_sample.max(1.0 - sample / peak);
+    }
+    eprintln!("measured: Hertz's surface σr, largest sample {:.2} % low, at the edges {:.3} %, placed within {:.3} cell", 100.0 * worst_sample, 100.0 * worst_edge, worst_place);
+    assert!(
+        worst_sample > 0.02,
+        "the kink is between the cells: {worst_sample}"
+    );
+    assert!(worst_edge < 5e-3, "{worst_edge}");
+    assert!(worst_place < 0.1, "{worst_place}");
 }

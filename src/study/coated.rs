@@ -14,7 +14,9 @@
 //! Hertz radius), or the solver's "enlarge the domain" error names the edge.
 //!
 //! ## The depths
-//! In the coating `max(12, 2h/dx)` depths from the surface to the interface (its coating side),
+//! In the coating `2 min(h, 2.5a)/dx` depths (12 to 60) from the surface to `min(h, 2.5a)`;
+//! in a coating thicker than that 24 more whose steps grow geometrically to the interface (its
+//! coating side: a thick coating's maximum lies at the contact's depth, not spread over `h`);
 //! then the interface's substrate side, then 72 depths to `max(2.5 a, h + 1.5 a)`. The maxima
 //! are the largest samples (no refinement between them): their places are good to the
 //! sampling, a cell along `x` and the depth step. The surface's `σxx` peaks at the contact's
@@ -656,17 +658,33 @@ fn maxima_of(
 /// The depths sampled (module doc), with their side of the interface.
 fn depths(layered: &Layered, cell_m: f64, semi_axis_m: f64) -> Vec<(f64, Side)> {
     let h = layered.thickness_m;
-    let in_coating = ((2.0 * h / cell_m).ceil() as usize).clamp(12, 48);
-    let mut out: Vec<(f64, Side)> = (0..=in_coating)
+    // The contact's own depths: uniform down to `min(h, 2.5 a)`; below them, in a coating
+    // thicker than that, steps growing geometrically to the interface (the contact's field
+    // has decayed there; the interface's own terms are sampled on both of its sides).
+    let near = h.min(2.5 * semi_axis_m);
+    let in_near = ((2.0 * near / cell_m).ceil() as usize).clamp(12, 60);
+    let mut out: Vec<(f64, Side)> = (0..=in_near)
         .map(|i| {
-            let z = if i == in_coating {
-                h
+            let z = if i == in_near {
+                near
             } else {
-                h * i as f64 / in_coating as f64
+                near * i as f64 / in_near as f64
             };
             (z, Side::Coating)
         })
         .collect();
+    if h > near {
+        let deeper = 24;
+        let ratio = (h / near).powf(1.0 / deeper as f64);
+        for i in 1..=deeper {
+            let z = if i == deeper {
+                h
+            } else {
+                near * ratio.powi(i as i32)
+            };
+            out.push((z, Side::Coating));
+        }
+    }
     out.push((h, Side::Substrate));
     let end = (2.5 * semi_axis_m).max(h + 1.5 * semi_axis_m);
     let below = 72;

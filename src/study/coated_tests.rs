@@ -306,3 +306,36 @@ fn the_maximum_travels_from_the_substrate_into_a_thickening_hard_coating() {
     assert!((depth_over_h[1] - 1.0).abs() < 1e-12, "{depth_over_h:?}");
     assert!(depth_over_h[2] < 1.0, "{depth_over_h:?}");
 }
+
+#[test]
+fn a_coating_many_contacts_thick_is_sampled_at_the_contacts_depth() {
+    // PEEK 100 mm on steel under a steel roller: h = 180 b. The largest von Mises stress is
+    // the coating's own line contact's, McEwen's (ν = 0.38, μ = 0.1) at about 0.7 b below the
+    // surface; depths spread evenly over h (3.75 b apart) missed it and reported the
+    // surface's 0.30 p0 in place of 0.54 p0.
+    let scene = line_scene(
+        "thickness = \"100 mm\"\nmodulus = \"3.6 GPa\"\npoisson = 0.38",
+        "[numerical]\ncells = 400\n",
+    );
+    let study = solve(&scene).expect("solve");
+    let (b, p0) = (study.hertz_semi_axes_m[0], study.hertz_p0_pa);
+    let (mut mcewen, mut depth): (f64, f64) = (0.0, 0.0);
+    for i in 0..=400 {
+        for k in 0..=300 {
+            let (x, z) = (-1.0 + i as f64 / 200.0, k as f64 / 200.0);
+            let vm = crate::solution::line_hertz::stress_over_p0(x, z, 0.1, 0.38).von_mises();
+            if vm > mcewen {
+                (mcewen, depth) = (vm, z);
+            }
+        }
+    }
+    let found = study.maxima.von_mises;
+    eprintln!(
+        "measured: line, PEEK h = 180b: von Mises maximum {:.4} p0 at z = {:.3} b against McEwen's {mcewen:.4} p0 at {depth:.3} b: {:+.2} %",
+        found.value_pa / p0,
+        found.z_m / b,
+        100.0 * (found.value_pa / p0 / mcewen - 1.0)
+    );
+    assert!((found.value_pa / p0 / mcewen - 1.0).abs() < 0.01);
+    assert!((found.z_m / b - depth).abs() < 0.1);
+}

@@ -7,6 +7,7 @@
 
 pub mod coated;
 pub mod ehl;
+pub mod plastic;
 pub mod rough;
 pub mod surface;
 pub mod thermal;

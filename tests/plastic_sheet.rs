@@ -119,18 +119,18 @@ fn the_recording_has_every_load_step() {
     assert_eq!(summary.steps, 5);
     let paths = contents.paths();
     for path in [
-        "sheet",
-        "description",
-        "plastic/strain/field",
-        "plastic/von_mises/field",
-        "curves/load_approach",
-        "curves/mean_pressure",
-        "log",
+        "/sheet",
+        "/description",
+        "/plastic/strain/field",
+        "/plastic/von_mises/field",
+        "/curves/load_approach",
+        "/curves/mean_pressure",
+        "/log",
     ] {
         assert!(paths.contains(&path), "{path} missing from {paths:?}");
     }
     let y = study.spec.yield_strength_pa;
-    let logged = contents.scalars("series/max_pressure_over_y", "load step");
+    let logged = contents.scalars("/series/max_pressure_over_y", "load step");
     let expected: Vec<(i64, f64)> = study
         .history
         .points

@@ -246,7 +246,7 @@ fn render_scene(
                 written.push(field_path.display().to_string());
             }
             None => lines.push(format!(
-                "note: {} draws a sheet (a surface or rough contact scene), which has no single field: no .npz written",
+                "note: {} draws a sheet (a surface, rough, wear or plastic scene), which has no single field: no .npz written",
                 scene.name
             )),
         }

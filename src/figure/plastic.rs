@@ -208,7 +208,10 @@ pub fn load_approach_chart(study: &PlasticStudy, shown: usize) -> Chart {
             colour,
         });
         curve.series.push(Series {
-            label: format!("{label} ({} steps)", series.len() - 1),
+            label: match series.len() - 1 {
+                1 => format!("{label} (1 step)"),
+                n => format!("{label} ({n} steps)"),
+            },
             points: series[1..].to_vec(),
             style: Style::Markers,
             colour,

@@ -24,9 +24,14 @@ fn check_golden(name: &str) {
         &stressfield::study::panel_fields(&scene, &|| {}).expect("field evaluates"),
     );
     let actual = render::render_png(&built).expect("renders");
+    check_image(name, &actual);
+}
+
+/// Compares `actual` with the reference `tests/golden/<name>.png` (or rewrites it).
+fn check_image(name: &str, actual: &image::RgbImage) {
     let reference = golden_dir().join(format!("{name}.png"));
     if std::env::var_os("UPDATE_GOLDEN").is_some() {
-        let bytes = render::encode_png(&actual).expect("encodes");
+        let bytes = render::encode_png(actual).expect("encodes");
         stressfield::io::output::write_atomic(&reference, &bytes).expect("writes the reference");
         return;
     }
@@ -45,7 +50,7 @@ fn check_golden(name: &str) {
         per_channel: 24,
         max_differing_pixels: pixels / 500,
     };
-    let comparison = compare(&actual, &expected, tolerance);
+    let comparison = compare(actual, &expected, tolerance);
     if !comparison.passed() {
         let failures = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("target")
@@ -55,7 +60,7 @@ fn check_golden(name: &str) {
             .save(failures.join(format!("{name}.actual.png")))
             .expect("save actual");
         if actual.dimensions() == expected.dimensions() {
-            diff_image(&actual, &expected, tolerance.per_channel)
+            diff_image(actual, &expected, tolerance.per_channel)
                 .save(failures.join(format!("{name}.diff.png")))
                 .expect("save diff");
         }
@@ -91,4 +96,18 @@ fn golden_sphere_sections() {
 #[test]
 fn golden_cross_check() {
     check_golden("cross_check");
+}
+
+/// The elastic-plastic sheet (issue 51) of a coarse rigid ball at p0(Hertz) = 2.5 Y: the
+/// solve, its history and the sheet's sections drawn by `render`'s path.
+#[test]
+fn golden_plastic_sheet() {
+    let scene =
+        Scene::load(&golden_dir().join("plastic_sheet.toml")).expect("golden scene is valid");
+    let study = stressfield::study::plastic::study(&scene, &mut |_| {}).expect("solves");
+    let sections = stressfield::study::plastic::history::sheet_sections(&study);
+    let title = scene.title.clone().unwrap_or_default();
+    let sheet = figure::plastic::plastic_sheet(&title, &study, &sections);
+    let actual = render::chart::sheet_png(&sheet).expect("renders");
+    check_image("plastic_sheet", &actual);
 }

@@ -20,7 +20,7 @@ pub(crate) struct Contents {
 }
 
 impl Contents {
-    fn from_messages(messages: impl IntoIterator<Item = LogMsg>) -> Self {
+    pub(crate) fn from_messages(messages: impl IntoIterator<Item = LogMsg>) -> Self {
         let mut chunks: BTreeMap<String, Vec<Chunk>> = BTreeMap::new();
         let mut layout: BTreeMap<String, Vec<Chunk>> = BTreeMap::new();
         let mut application_ids = Vec::new();
@@ -58,7 +58,7 @@ impl Contents {
         }
     }
 
-    fn paths(&self) -> Vec<&str> {
+    pub(crate) fn paths(&self) -> Vec<&str> {
         self.chunks.keys().map(String::as_str).collect()
     }
 

@@ -12,6 +12,7 @@ mod lubrication;
 mod mutations;
 mod patch;
 mod plastic;
+mod plastic_sheet;
 mod point_contact;
 #[cfg(feature = "rerun")]
 mod record;

@@ -209,6 +209,14 @@ fn scene_drawing(scene: &stressfield::scene::Scene, svg: bool) -> Result<Vec<u8>
     let drawing = if scene.wear.is_some() {
         let study = study::wear::study(scene, &mut |_| {})?;
         stressfield::figure::Drawing::Sheet(stressfield::figure::wear::wear_sheet(scene, &study))
+    } else if scene.plasticity.is_some() {
+        // A [plasticity] scene draws its elastic-plastic sheet, as `render` does.
+        let study = study::plastic::study(scene, &mut |_| {})?;
+        let sections = study::plastic::history::sheet_sections(&study);
+        let title = scene.title.clone().unwrap_or_else(|| scene.name.clone());
+        stressfield::figure::Drawing::Sheet(stressfield::figure::plastic::plastic_sheet(
+            &title, &study, &sections,
+        ))
     } else {
         let rough = match scene.contact.kind {
             ContactKind::Rough => Some(study::rough::solve(scene, &mut |_, _| {})?),
@@ -242,6 +250,9 @@ fn scene_record(scene: &stressfield::scene::Scene, path: &Path) -> Result<()> {
         let study = study::wear::study(scene, &mut |_| {})?;
         let sections = study::wear::sections(&study, &mut |_| {})?;
         stressfield::record::record_wear_to(scene, &destination, &study, &sections)?;
+    } else if scene.plasticity.is_some() {
+        let study = study::plastic::study(scene, &mut |_| {})?;
+        stressfield::record::record_plastic_to(scene, &destination, &study)?;
     } else {
         stressfield::record::record_to_with(scene, &destination, &|| {}, None)?;
     }

@@ -93,3 +93,39 @@ fn fields_npz(study: &PlasticStudy) -> Result<Vec<u8>> {
     let cursor = npz.finish().map_err(error)?;
     Ok(cursor.into_inner())
 }
+
+/// The study of a `[plasticity]` scene for `render` and `record` (a progress bar over the
+/// steps), the scene named in its error.
+pub(crate) fn solve(scene: &stressfield::scene::Scene) -> Result<PlasticStudy> {
+    let Some(spec) = scene.plasticity else {
+        bail!("scene {} has no [plasticity]", scene.name);
+    };
+    let total = spec.steps + if spec.unload { spec.unload_steps } else { 0 };
+    let bar = progress_bar(total as u64);
+    let result = plastic::study(scene, &mut |progress| {
+        bar.set_position(progress.step as u64);
+        bar.set_message(format!(
+            "{}: step {}, it. {}",
+            scene.name,
+            progress.step + 1,
+            progress.iteration
+        ));
+    });
+    bar.finish_and_clear();
+    let study = result.with_context(|| format!("scene {}", scene.name))?;
+    for warning in &study.warnings {
+        print_err(&format!("warning: scene {}: {warning}", scene.name));
+    }
+    Ok(study)
+}
+
+/// The sheet of a `[plasticity]` scene (`render`'s PNG): the study's figures
+/// ([`stressfield::figure::plastic`]).
+pub(crate) fn sheet(
+    scene: &stressfield::scene::Scene,
+    study: &PlasticStudy,
+) -> stressfield::render::chart::Sheet {
+    let sections = plastic::history::sheet_sections(study);
+    let title = scene.title.clone().unwrap_or_else(|| scene.name.clone());
+    stressfield::figure::plastic::plastic_sheet(&title, study, &sections)
+}

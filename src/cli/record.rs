@@ -130,6 +130,9 @@ pub(super) fn record_scene_as(
     let summary = if scene.wear.is_some() {
         let study = super::wear::study(scene)?;
         record_wear(scene, &destination, &study)
+    } else if scene.plasticity.is_some() {
+        let study = super::plastic::solve(scene)?;
+        stressfield::record::record_plastic_to(scene, &destination, &study)
     } else {
         stressfield::record::record_to_with(scene, &destination, &|| bar.inc(1), rough)
     };
@@ -162,6 +165,40 @@ pub(super) fn record_wear_as(
         shown.display(),
         summary_text(scene, &summary)
     ))
+}
+
+/// Records a `[plasticity]` scene from its study into `file`, saying it was recorded to
+/// `shown`.
+#[cfg(feature = "rerun")]
+pub(super) fn record_plastic_as(
+    scene: &Scene,
+    file: &Path,
+    shown: &Path,
+    study: &stressfield::study::plastic::PlasticStudy,
+) -> Result<String> {
+    let destination = stressfield::record::Destination::File(file.to_path_buf());
+    let summary = anyhow::Context::with_context(
+        stressfield::record::record_plastic_to(scene, &destination, study),
+        || format!("cannot record {}", shown.display()),
+    )?;
+    Ok(format!(
+        "recorded {}{}",
+        shown.display(),
+        summary_text(scene, &summary)
+    ))
+}
+
+#[cfg(not(feature = "rerun"))]
+pub(super) fn record_plastic_as(
+    scene: &Scene,
+    _file: &Path,
+    _shown: &Path,
+    _study: &stressfield::study::plastic::PlasticStudy,
+) -> Result<String> {
+    anyhow::bail!(
+        "scene {}: this build has no Rerun support (built with --no-default-features)\nhint: rebuild with the default features: cargo build --release",
+        scene.name
+    )
 }
 
 #[cfg(not(feature = "rerun"))]
@@ -204,6 +241,9 @@ fn stream_scene(scene: &Scene, target: &Target, bar: &ProgressBar) -> Result<Str
     let summary = if scene.wear.is_some() {
         let study = super::wear::study(scene)?;
         record_wear(scene, &destination, &study)?
+    } else if scene.plasticity.is_some() {
+        let study = super::plastic::solve(scene)?;
+        stressfield::record::record_plastic_to(scene, &destination, &study)?
     } else {
         stressfield::record::record_to(scene, &destination, &|| bar.inc(1))?
     };

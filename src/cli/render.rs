@@ -8,7 +8,9 @@ use indicatif::ProgressBar;
 
 use super::compare::{self, CompareOptions, Rendered};
 use super::console::{print_err, progress_bar, say};
-use super::record::{record_reporting, record_scene_as, record_wear_as, recording_rows};
+use super::record::{
+    record_plastic_as, record_reporting, record_scene_as, record_wear_as, recording_rows,
+};
 use stressfield::figure::{self, Drawing};
 use stressfield::io::output::Staged;
 use stressfield::regression::field_file::{self, PanelField};
@@ -189,9 +191,15 @@ fn render_scene(
         (ContactKind::Rough, None) => Some(study::rough::solve(scene, &mut |_, _| {})?),
         _ => None,
     };
-    let drawing = match &wear {
-        Some(study) => Drawing::Sheet(figure::wear::wear_sheet(scene, study)),
-        None => {
+    // A [plasticity] scene's load steps are solved once, for the sheet and the recording.
+    let plastic = match (&scene.plasticity, &wear) {
+        (Some(_), None) => Some(super::plastic::solve(scene)?),
+        _ => None,
+    };
+    let drawing = match (&wear, &plastic) {
+        (Some(study), _) => Drawing::Sheet(figure::wear::wear_sheet(scene, study)),
+        (None, Some(study)) => Drawing::Sheet(super::plastic::sheet(scene, study)),
+        (None, None) => {
             let inputs = study::drawing::inputs(scene, rough.as_ref(), &on_row)?;
             figure::draw(scene, rough.as_ref(), &inputs)?
         }
@@ -238,22 +246,33 @@ fn render_scene(
                 written.push(field_path.display().to_string());
             }
             None => lines.push(format!(
-                "note: {} draws a sheet (a surface or rough contact scene), which has no single field: no .npz written",
+                "note: {} draws a sheet (a surface, rough, wear or plastic scene), which has no single field: no .npz written",
                 scene.name
             )),
         }
     }
     lines.insert(0, format!("rendered {}", written.join(", ")));
-    match (recording, &wear) {
-        (Some((file, path)), Some(study)) => lines.push(record_wear_as(scene, &file, path, study)?),
-        (Some((file, path)), None) => {
+    match (recording, &wear, &plastic) {
+        (Some((file, path)), Some(study), _) => {
+            lines.push(record_wear_as(scene, &file, path, study)?)
+        }
+        (Some((file, path)), None, Some(study)) => {
+            lines.push(record_plastic_as(scene, &file, path, study)?)
+        }
+        (Some((file, path)), None, None) => {
             lines.push(record_scene_as(scene, &file, path, bar, rough.as_ref())?)
         }
         // The main job records a wear scene beside its figure, from the same study.
-        (None, Some(study)) if !options.named && cfg!(feature = "rerun") => {
+        (None, Some(study), _) if !options.named && cfg!(feature = "rerun") => {
             let path = out_dir.join(format!("{}.rrd", scene.name));
             let file = staged.reserve(&path)?;
             lines.push(record_wear_as(scene, &file, &path, study)?);
+        }
+        // And a [plasticity] scene's load steps, from the same study.
+        (None, None, Some(study)) if !options.named && cfg!(feature = "rerun") => {
+            let path = out_dir.join(format!("{}.rrd", scene.name));
+            let file = staged.reserve(&path)?;
+            lines.push(record_plastic_as(scene, &file, &path, study)?);
         }
         _ => {}
     }

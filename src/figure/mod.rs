@@ -7,6 +7,7 @@
 
 pub mod coated;
 pub mod ehl;
+pub mod plastic;
 pub mod rough;
 pub mod surface;
 pub mod thermal;
@@ -285,7 +286,7 @@ pub(crate) struct YieldLevel {
 /// per Pa; `None` without a yield strength (or hardness) or for another quantity.
 pub(crate) fn yield_level(scene: &Scene, stress_per_pa: f64) -> Option<YieldLevel> {
     use crate::stress::Quantity;
-    let y = scene.contact.yield_strength?;
+    let y = scene.yield_strength()?;
     let (factor, name) = match scene.figure.quantity {
         Quantity::VonMises => (1.0, "Y"),
         Quantity::MaxShear => (0.5, "Y/2"),

@@ -169,10 +169,35 @@ pub fn snapshot_bytes(grid: &VolumeGrid) -> usize {
     cells * 8 * 13 + 2 * 8 * grid.layer_cells()
 }
 
+/// The state at the end of a step, lent to the observer of [`solve_observed`] (the stress is
+/// that of the step's final plastic strain and pressure, as a [`Snapshot`]'s).
+#[derive(Clone, Copy, Debug)]
+pub struct StepState<'a> {
+    pub step: usize,
+    pub result: &'a StepResult,
+    pub pressure_pa: &'a Array2<f64>,
+    /// `[nz, 6, ny, nx]`.
+    pub stress_pa: &'a Array4<f64>,
+    /// `[nz, ny, nx]`.
+    pub equivalent_plastic_strain: &'a Array3<f64>,
+    pub plastic_displacement_m: &'a Array2<f64>,
+}
+
 /// Solves the steps. `progress` is called after every iteration.
 pub fn solve(
     problem: &PlasticContactProblem,
     progress: &mut dyn FnMut(Progress),
+) -> Result<PlasticContactSolution, PlasticContactError> {
+    solve_observed(problem, progress, None)
+}
+
+/// [`solve`], lending the state at the end of every step to `observe` (a light record of each
+/// step, e.g. a recording's section, without keeping whole [`Snapshot`]s); observing costs one
+/// stress evaluation per step.
+pub fn solve_observed(
+    problem: &PlasticContactProblem,
+    progress: &mut dyn FnMut(Progress),
+    mut observe: Option<&mut dyn FnMut(&StepState)>,
 ) -> Result<PlasticContactSolution, PlasticContactError> {
     let grid = &problem.grid;
     let [nz, ny, nx] = grid.dims();
@@ -362,10 +387,23 @@ pub fn solve(
             residual,
             converged,
         });
-        if problem.snapshots.contains(&step) {
+        let snapshot = problem.snapshots.contains(&step);
+        if snapshot || observe.is_some() {
             // The stress of the final plastic strain and pressure.
             operator.stress(Some((pressure.view(), problem.friction)), stress.view_mut())?;
             kept = false;
+        }
+        if let (Some(observe), Some(result)) = (observe.as_mut(), steps.last()) {
+            observe(&StepState {
+                step,
+                result,
+                pressure_pa: &pressure,
+                stress_pa: &stress,
+                equivalent_plastic_strain: &kappa,
+                plastic_displacement_m: &displacement,
+            });
+        }
+        if snapshot {
             snapshots.push(Snapshot {
                 step,
                 load_n: load,

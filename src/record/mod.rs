@@ -42,6 +42,7 @@ mod ehl;
 mod isosurface;
 mod layout;
 mod panels;
+pub mod plastic;
 mod rough;
 mod rough_depth;
 mod section;
@@ -162,6 +163,19 @@ pub fn record_wear_to(
     Ok(summary)
 }
 
+/// Records a `[plasticity]` scene's study (solved once by the caller) to `destination`.
+pub fn record_plastic_to(
+    scene: &Scene,
+    destination: &Destination,
+    study: &crate::study::plastic::PlasticStudy,
+) -> Result<Summary, RecordError> {
+    let output = sink::Output::open(destination, &scene.name)?;
+    let live = !matches!(destination, Destination::File(_));
+    let summary = plastic::record(scene, study, &output.stream, live, &|| output.flush())?;
+    output.finish()?;
+    Ok(summary)
+}
+
 /// Records `scene` into the file `path` (see [`record_to`]).
 pub fn record_to_file(
     scene: &Scene,
@@ -175,6 +189,9 @@ pub fn record_to_file(
 pub fn timeline(scene: &Scene) -> &'static str {
     if scene.wear.is_some() {
         return wear::TIMELINE;
+    }
+    if scene.plasticity.is_some() {
+        return plastic::TIMELINE;
     }
     scene.sweep.as_ref().map_or("step", |s| s.parameter.key())
 }

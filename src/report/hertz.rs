@@ -238,7 +238,7 @@ impl HertzReport {
             report.p0_at_first_yield_over_y = Some(1.0 / vm.value_over_p0);
             report.p0_at_first_yield_over_y_tresca = Some(0.5 / tresca.value_over_p0);
         }
-        let (Some(y), true) = (contact.yield_strength, dimensional) else {
+        let (Some(y), true) = (scene.yield_strength(), dimensional) else {
             return report;
         };
         let ratio_vm = vm.value_over_p0 * p0_pa / y.pa;

@@ -488,7 +488,7 @@ fn write_maxima(out: &mut String, scene: &Scene, found: &SceneMaxima) -> std::fm
     } else {
         writeln!(out, "first yield (von Mises) starts {starts}, at z = {:.3} a, when p0 = {:.3} Y (Tresca: p0 = {:.3} Y)", maxima.von_mises.z_over_a, 1.0 / vm, 0.5 / tresca)?;
     }
-    let (Some(y), true) = (contact.yield_strength, dimensional) else {
+    let (Some(y), true) = (scene.yield_strength(), dimensional) else {
         if dimensional {
             writeln!(out, "yield strength not given: add contact.yield_strength or contact.hardness for a yield check")?;
         }
@@ -496,6 +496,7 @@ fn write_maxima(out: &mut String, scene: &Scene, found: &SceneMaxima) -> std::fm
     };
     match y.from_hardness {
         Some(h) => writeln!(out, "yield strength               Y  = {:.0} MPa (from {} {}: H = {:.0} MPa, Y = H/3, Tabor 1951)", y.pa * 1e-6, crate::io::text::number(h), y.hardness_scale, h * 9.80665)?,
+        None if contact.yield_strength.is_none() => writeln!(out, "yield strength               Y  = {:.0} MPa (plasticity.yield_strength)", y.pa * 1e-6)?,
         None => writeln!(out, "yield strength               Y  = {:.0} MPa", y.pa * 1e-6)?,
     }
     let ratio_vm = vm * p0_pa / y.pa;

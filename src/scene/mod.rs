@@ -124,6 +124,20 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// The yield strength of body 1: `contact.yield_strength` (or `hardness`), else
+    /// `plasticity.yield_strength` (a scene gives it once; validation refuses both). The
+    /// `hertz` report's yield assessment and the figure's yield line read it here, so that a
+    /// `[plasticity]` scene's own yield strength is assessed too.
+    pub fn yield_strength(&self) -> Option<YieldStrength> {
+        self.contact.yield_strength.or_else(|| {
+            self.plasticity.map(|p| YieldStrength {
+                pa: p.yield_strength_pa,
+                from_hardness: None,
+                hardness_scale: "",
+            })
+        })
+    }
+
     /// Size of one figure length unit in units of a.
     pub fn length_unit_over_a(&self) -> f64 {
         let a_m = self.contact.half_width_m();

@@ -21,6 +21,9 @@ use crate::plasticity::loading::{
 };
 use crate::scene::{Hertz, PlasticitySpec, Scene};
 
+pub mod history;
+use history::StepHistory;
+
 /// Iterations allowed in one load step.
 pub const MAX_ITERATIONS: usize = 500;
 /// Differences kept by the Anderson acceleration of each step's fixed point.
@@ -85,6 +88,9 @@ pub struct PlasticStudy {
     /// Iterations over all steps.
     pub iterations: usize,
     pub warnings: Vec<String>,
+    /// Every step's load, approach, pressures and contact radius, and its section on `y = 0`
+    /// (the sheet's curves, the recording's steps).
+    pub history: StepHistory,
 }
 
 impl PlasticStudy {
@@ -240,7 +246,12 @@ pub fn study_point(
         contact_tolerance: CONTACT_TOLERANCE,
         memory_limit_bytes: MEMORY_LIMIT_BYTES,
     };
-    let solution = loading::solve(&problem, progress)?;
+    let mut history = StepHistory::default();
+    let solution = loading::solve_observed(
+        &problem,
+        progress,
+        Some(&mut |state| history.push(state, dx * dy, ny / 2)),
+    )?;
     let loaded_state = &solution.snapshots[0];
     let kappa = &loaded_state.equivalent_plastic_strain;
     // The plastic zone must lie inside the grid: not in its deepest layer, nor on its sides.
@@ -355,6 +366,7 @@ pub fn study_point(
         converged,
         iterations,
         warnings,
+        history,
     })
 }
 

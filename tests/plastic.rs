@@ -225,10 +225,26 @@ fn rough_and_elliptical_contacts_keep_the_json_contract() {
 #[test]
 fn bad_rough_plasticity_is_refused_naming_the_key() {
     for (from, to, key) in [
-        ("depth_cells = 8", "depth_cells = 8\ngrid_cells = 32", "plasticity.grid_cells"),
-        ("depth_cells = 8", "depth_cells = 8\nextent_over_a = 2.0", "plasticity.extent_over_a"),
-        ("load = \"0.5 N\"", "approach = \"0.1 um\"", "contact.approach"),
-        ("material = \"steel\"\n[contact.body2]", "material = \"rigid\"\n[contact.body2]", "contact.body1.material"),
+        (
+            "depth_cells = 8",
+            "depth_cells = 8\ngrid_cells = 32",
+            "plasticity.grid_cells",
+        ),
+        (
+            "depth_cells = 8",
+            "depth_cells = 8\nextent_over_a = 2.0",
+            "plasticity.extent_over_a",
+        ),
+        (
+            "load = \"0.5 N\"",
+            "approach = \"0.1 um\"",
+            "contact.approach",
+        ),
+        (
+            "material = \"steel\"\n[contact.body2]",
+            "material = \"rigid\"\n[contact.body2]",
+            "contact.body1.material",
+        ),
         ("samples = 48", "samples = 600", "surface"),
     ] {
         let (_dir, path) = scene(&ROUGH.replacen(from, to, 1));

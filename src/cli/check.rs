@@ -12,9 +12,15 @@ pub(super) fn check(paths: &[PathBuf]) -> Result<()> {
     let mut failed = 0;
     for path in paths {
         match stressfield::study::load_scene(path) {
-            Ok(scene) if study::plastic::plan(&scene).is_some_and(|p| p.beyond_limits().is_some()) => {
+            Ok(scene)
+                if study::plastic::plan(&scene).is_some_and(|p| p.beyond_limits().is_some()) =>
+            {
                 let why = study::plastic::plan(&scene).and_then(|p| p.beyond_limits());
-                print_err(&format!("error: {}: {}", path.display(), why.unwrap_or_default()));
+                print_err(&format!(
+                    "error: {}: {}",
+                    path.display(),
+                    why.unwrap_or_default()
+                ));
                 failed += 1;
             }
             Ok(scene) => print_out(&format!(

@@ -117,9 +117,17 @@ impl PlasticReport {
         let steps = format!(
             "{} load and {} unload steps; {} iterations, {}",
             study.spec.steps,
-            if study.spec.unload { study.spec.unload_steps } else { 0 },
+            if study.spec.unload {
+                study.spec.unload_steps
+            } else {
+                0
+            },
             self.iterations,
-            if self.converged { "converged" } else { "NOT converged" }
+            if self.converged {
+                "converged"
+            } else {
+                "NOT converged"
+            }
         );
         match &study.kind {
             PlasticKind::Point => {
@@ -253,11 +261,7 @@ impl PlasticReport {
                 PlasticKind::Rough(_) => "largest dent",
                 _ => "dent",
             };
-            writeln!(
-                out,
-                "  {dent:<18}{:>10.4} µm",
-                um(u.residual_depth_m)
-            )?;
+            writeln!(out, "  {dent:<18}{:>10.4} µm", um(u.residual_depth_m))?;
             writeln!(
                 out,
                 "  residual von Mises{:>10.1} MPa at z = {:.3} µm, r = {:.3} µm ({:.3} {unit})",

@@ -379,8 +379,8 @@ pub(crate) fn solve_setup(
         elastic_max_pressure_pa,
         edges,
     } = setup;
-    let needed_bytes = loading::memory_bytes(&grid, friction != 0.0)
-        + 2 * loading::snapshot_bytes(&grid);
+    let needed_bytes =
+        loading::memory_bytes(&grid, friction != 0.0) + 2 * loading::snapshot_bytes(&grid);
     if needed_bytes > MEMORY_LIMIT_BYTES {
         return Err(PlasticStudyError::Memory {
             needed_bytes,

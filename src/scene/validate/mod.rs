@@ -174,7 +174,9 @@ impl Validator<'_> {
                 return Err(self.error(
                     "plasticity",
                     "a surface scene characterises the surface; it presses no contact to yield",
-                    Some("use contact.kind = \"rough\" to press the map on a flat with [plasticity]"),
+                    Some(
+                        "use contact.kind = \"rough\" to press the map on a flat with [plasticity]",
+                    ),
                 ));
             }
             if raw.lubricant.is_some() {

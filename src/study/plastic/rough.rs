@@ -5,9 +5,11 @@
 //! ## The grid
 //! Laterally the map's own cells (no coarsening: the plastic flow sits under the asperities,
 //! whose contact spots are a few cells across; a map too large for the memory limit is
-//! refused, naming its size). In depth `depth_cells` uniform layers down to `depth_over_a`
-//! times the equivalent radius `√(A/π)` of the largest contact spot of the elastic contact at
-//! the full load (no cap), solved first on the same map. Under one spot of radius `c` the
+//! refused, naming its size). In depth `depth_cells` layers down to `depth_over_a` times the
+//! equivalent radius `√(A/π)` of the largest contact spot of the elastic contact at the full
+//! load (no cap), solved first on the same map; graded ([`depth_layers`]): the asperities'
+//! plastic zones lie within a cell or two of the surface, so the top layers are as thin as
+//! the map's cells and the layers grow geometrically below. Under one spot of radius `c` the
 //! stress of its pressure decays below about `2 c` (Hertz's: the von Mises maximum at
 //! `0.48 c`, the plastic zone of a ball at 2.5 Y down to `1.16 c`, docs/plasticity.md), so
 //! the default `2 c` holds the plastic zone of the largest spot, and the study refuses a
@@ -52,7 +54,51 @@ pub fn load_n(problem: &RoughContactProblem) -> Option<f64> {
     }
 }
 
-/// The volume grid of a rough map of `shape` `[ny, nx]` and `spacing_m`, `depth_m` deep.
+/// The depth layers of a rough map of cell `cell_m` (the smaller of `dx`, `dy`): `count`
+/// layers down to `depth_m`, the top one no thicker than `cell_m · 16 / count` (cubic cells at
+/// the surface with the shipped 16 layers; doubling `count` halves it) and the others growing
+/// geometrically to the depth; uniform when `depth_m / count` is no thicker than that.
+pub fn depth_layers(
+    count: usize,
+    cell_m: f64,
+    depth_m: f64,
+) -> Result<DepthCells, PlasticStudyError> {
+    let top = cell_m * 16.0 / count as f64;
+    let error = |e: crate::plasticity::column::DepthCellsError| PlasticStudyError::Grid {
+        key: "depth_cells",
+        message: e.0,
+    };
+    if depth_m <= count as f64 * top * (1.0 + 1e-12) {
+        return DepthCells::uniform(count, depth_m / count as f64).map_err(error);
+    }
+    // The growth g of top (g^count - 1) / (g - 1) = depth, by bisection (the sum grows with g).
+    let reach = |g: f64| top * (0..count).map(|k| g.powi(k as i32)).sum::<f64>();
+    let (mut lo, mut hi) = (1.0, 2.0);
+    while reach(hi) < depth_m {
+        hi *= 2.0;
+    }
+    for _ in 0..100 {
+        let mid = 0.5 * (lo + hi);
+        if reach(mid) < depth_m {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let growth = 0.5 * (lo + hi);
+    let mut faces = Vec::with_capacity(count + 1);
+    let (mut z, mut h) = (0.0, top);
+    faces.push(0.0);
+    for _ in 0..count {
+        z += h;
+        faces.push(z);
+        h *= growth;
+    }
+    DepthCells::new(faces).map_err(error)
+}
+
+/// The volume grid of a rough map of `shape` `[ny, nx]` and `spacing_m`, `depth_m` deep in
+/// `spec.depth_cells` layers ([`depth_layers`]).
 pub fn volume_grid(
     spec: &PlasticitySpec,
     shape: [usize; 2],
@@ -60,11 +106,7 @@ pub fn volume_grid(
     depth_m: f64,
     periodicity: Periodicity,
 ) -> Result<VolumeGrid, PlasticStudyError> {
-    let depth = DepthCells::uniform(spec.depth_cells, depth_m / spec.depth_cells as f64)
-        .map_err(|e| PlasticStudyError::Grid {
-            key: "depth_cells",
-            message: e.0,
-        })?;
+    let depth = depth_layers(spec.depth_cells, spacing_m[0].min(spacing_m[1]), depth_m)?;
     Ok(VolumeGrid {
         shape,
         spacing_m,
@@ -115,7 +157,8 @@ pub fn study_map(
     let [dx, dy] = problem.spacing_m;
     let cell_area = dx * dy;
     let elastic_area = elastic.pressure_pa.iter().filter(|&&p| p > 0.0).count() as f64 * cell_area;
-    let largest_spot_radius_m = (elastic.largest_spot_cells as f64 * cell_area / std::f64::consts::PI).sqrt();
+    let largest_spot_radius_m =
+        (elastic.largest_spot_cells as f64 * cell_area / std::f64::consts::PI).sqrt();
     // The scene's own hardness-capped contact, to compare with.
     let capped = match problem.hardness_pa {
         Some(_) => Some(rough::solve(&loaded, &mut |_, _| {}).map_err(contact_error)?),
@@ -172,8 +215,7 @@ pub fn study_map(
     for j in 0..ny {
         for i in 0..nx {
             surface_cells += usize::from(kappa[[0, j, i]] > PLASTIC_ZONE_STRAIN);
-            footprint_cells +=
-                usize::from((0..nz).any(|l| kappa[[l, j, i]] > PLASTIC_ZONE_STRAIN));
+            footprint_cells += usize::from((0..nz).any(|l| kappa[[l, j, i]] > PLASTIC_ZONE_STRAIN));
         }
     }
     if let PlasticKind::Rough(rough) = &mut study.kind {

@@ -142,16 +142,28 @@ fn an_ellipse_with_equal_axes_is_the_ball() {
     let elliptical = study_elliptical(&spec, &hertz_ellipse, 0.0, &mut |_| {}).expect("solves");
     let point = study_point(&spec, &ball, 0.0, &mut |_| {}).expect("solves");
     let (e, p) = (&elliptical.loaded, &point.loaded);
-    assert!(p.max_plastic_strain > 1e-4, "plastic: {}", p.max_plastic_strain);
+    assert!(
+        p.max_plastic_strain > 1e-4,
+        "plastic: {}",
+        p.max_plastic_strain
+    );
     for (what, x, y) in [
         ("peak pressure", e.max_pressure_pa, p.max_pressure_pa),
         ("approach", e.approach_m, p.approach_m),
-        ("max plastic strain", e.max_plastic_strain, p.max_plastic_strain),
+        (
+            "max plastic strain",
+            e.max_plastic_strain,
+            p.max_plastic_strain,
+        ),
         ("plastic volume", e.plastic_volume_m3, p.plastic_volume_m3),
         ("von Mises max", e.von_mises_max_pa, p.von_mises_max_pa),
         (
             "dent",
-            elliptical.unloaded.as_ref().expect("unloaded").residual_depth_m,
+            elliptical
+                .unloaded
+                .as_ref()
+                .expect("unloaded")
+                .residual_depth_m,
             point.unloaded.as_ref().expect("unloaded").residual_depth_m,
         ),
     ] {

@@ -51,7 +51,12 @@ fn ball_map(cells: usize, dx: f64) -> Array2<f64> {
     })
 }
 
-fn problem(heights: &Array2<f64>, dx: f64, load: f64, periodicity: Periodicity) -> RoughContactProblem<'_> {
+fn problem(
+    heights: &Array2<f64>,
+    dx: f64,
+    load: f64,
+    periodicity: Periodicity,
+) -> RoughContactProblem<'_> {
     RoughContactProblem {
         heights_m: heights.view(),
         spacing_m: [dx, dx],
@@ -80,12 +85,20 @@ fn a_smooth_ball_given_as_a_map_is_the_ball() {
     map_spec.depth_over_a = point_spec.depth_over_a * ball.radius_m / spot;
     let rough = study_map(&map, &map_spec, 0.0, &mut |_| {}).expect("solves");
     let (r, p) = (&rough.loaded, &point.loaded);
-    assert!(p.max_plastic_strain > 1e-4, "plastic: {}", p.max_plastic_strain);
+    assert!(
+        p.max_plastic_strain > 1e-4,
+        "plastic: {}",
+        p.max_plastic_strain
+    );
     for (what, x, y) in [
         ("peak pressure", r.max_pressure_pa, p.max_pressure_pa),
         ("area", r.contact_area_m2, p.contact_area_m2),
         ("approach", r.approach_m, p.approach_m),
-        ("max plastic strain", r.max_plastic_strain, p.max_plastic_strain),
+        (
+            "max plastic strain",
+            r.max_plastic_strain,
+            p.max_plastic_strain,
+        ),
         ("plastic volume", r.plastic_volume_m3, p.plastic_volume_m3),
         ("von Mises max", r.von_mises_max_pa, p.von_mises_max_pa),
         (
@@ -99,7 +112,10 @@ fn a_smooth_ball_given_as_a_map_is_the_ball() {
     let PlasticKind::Rough(found) = rough.kind else {
         panic!("a rough study")
     };
-    assert!(found.surface_plastic_area_m2 == 0.0, "the zone is below the surface at 2.5 Y");
+    assert!(
+        found.surface_plastic_area_m2 == 0.0,
+        "the zone is below the surface at 2.5 Y"
+    );
     assert!(found.plastic_footprint_m2 > 0.0);
 }
 
@@ -141,7 +157,11 @@ fn a_large_period_isolates_the_contact() {
     let near = periodic_against_isolated(3);
     let far = periodic_against_isolated(6);
     assert!(far[0].abs() < 0.02, "peak pressure at 12 a: {:e}", far[0]);
-    assert!(far[2].abs() < 0.05, "largest plastic strain at 12 a: {:e}", far[2]);
+    assert!(
+        far[2].abs() < 0.05,
+        "largest plastic strain at 12 a: {:e}",
+        far[2]
+    );
     assert!(far[3].abs() < 0.05, "plastic volume at 12 a: {:e}", far[3]);
     for k in [0, 2, 3] {
         assert!(
@@ -185,7 +205,35 @@ fn below_yield_the_map_is_the_rough_contact_solver_s() {
             study.loaded.approach_m,
             elastic.approach_m
         );
-        assert!(elastic.spots > 1, "{periodicity:?}: {} spots", elastic.spots);
+        assert!(
+            elastic.spots > 1,
+            "{periodicity:?}: {} spots",
+            elastic.spots
+        );
         assert_eq!(study.unloaded.expect("unloaded").residual_depth_m, 0.0);
     }
+}
+
+#[test]
+fn the_graded_layers_reach_the_depth_from_cells_as_thin_as_the_map_s() {
+    let cell = 0.5e-6;
+    // Deep: graded, the top layer a map cell thick (16 layers), the bottom face at the depth.
+    let graded = depth_layers(16, cell, 20e-6).expect("layers");
+    assert_eq!(graded.count(), 16);
+    assert!((graded.thickness_m(0) / cell - 1.0).abs() < 1e-12);
+    assert!(
+        (graded.depth_m() / 20e-6 - 1.0).abs() < 1e-9,
+        "{}",
+        graded.depth_m()
+    );
+    let growth = graded.thickness_m(1) / graded.thickness_m(0);
+    assert!(growth > 1.0);
+    assert!((graded.thickness_m(15) / graded.thickness_m(14) / growth - 1.0).abs() < 1e-9);
+    // Doubling the layers halves the top one.
+    let finer = depth_layers(32, cell, 20e-6).expect("layers");
+    assert!((finer.thickness_m(0) / (cell / 2.0) - 1.0).abs() < 1e-12);
+    // Shallow: uniform.
+    let uniform = depth_layers(16, cell, 4e-6).expect("layers");
+    assert!((uniform.thickness_m(0) - 0.25e-6).abs() < 1e-18);
+    assert!((uniform.thickness_m(15) - 0.25e-6).abs() < 1e-18);
 }

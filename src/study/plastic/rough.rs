@@ -29,8 +29,6 @@
 //! As for a ball, with the map's centre as the axis; the "dent" `residual_depth_m` is the
 //! largest permanent surface displacement over the map (a rough map has no axis).
 
-use ndarray::Array2;
-
 use super::{
     solve_setup, Edges, PlasticKind, PlasticStudy, PlasticStudyError, RoughPlastic, Setup,
 };
@@ -198,7 +196,7 @@ pub fn study_map(
         grid,
         x_m,
         y_m,
-        heights: Array2::from(problem.heights_m.to_owned()),
+        heights: problem.heights_m.to_owned(),
         elastic_max_pressure_pa: elastic.max_pressure_pa,
         edges: match problem.periodicity {
             Periodicity::Periodic => Edges::Periodic,

@@ -5,6 +5,7 @@
 use super::*;
 use crate::contact::material::Material;
 use crate::study::plastic::{study_point, MEMORY_LIMIT_BYTES};
+use ndarray::Array2;
 
 const MODULUS: f64 = 210e9;
 const POISSON: f64 = 0.3;

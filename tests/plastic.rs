@@ -255,3 +255,23 @@ fn bad_rough_plasticity_is_refused_naming_the_key() {
         assert!(message.contains(key), "{to}: {message}");
     }
 }
+
+#[test]
+fn check_refuses_a_plastic_volume_beyond_the_memory_naming_its_size() {
+    let big = ROUGH.replacen("samples = 48", "samples = 512", 1).replacen(
+        "depth_cells = 8",
+        "depth_cells = 256",
+        1,
+    );
+    let (_dir, path) = scene(&big);
+    let output = run(&["check", path.to_str().expect("utf-8")]);
+    assert!(!output.status.success());
+    let message = stderr(&output);
+    assert!(message.contains("512 x 512 x 256 cells"), "{message}");
+    // The small map passes, with its estimate.
+    let (_dir, path) = scene(ROUGH);
+    let output = run(&["check", path.to_str().expect("utf-8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(text.contains("plastic: 48 x 48 x 8 cells"), "{text}");
+}

@@ -152,3 +152,126 @@ fn bad_plasticity_is_refused_naming_the_key() {
     assert!(!output.status.success());
     assert!(stderr(&output).contains("thermal"), "{}", stderr(&output));
 }
+
+/// A rough ball (R = 2 mm, Sq 0.05 µm) on a steel flat, 0.5 N, on a 48² map of 1.5 µm:
+/// elastic-plastic under its spots.
+const ROUGH: &str = r#"format = 1
+[contact]
+kind = "rough"
+load = "0.5 N"
+[contact.body1]
+material = "steel"
+[contact.body2]
+material = "steel"
+[surface.generate]
+samples = 48
+spacing = "1.5 um"
+hurst = 0.8
+rolloff = "24 um"
+cutoff = "4.5 um"
+rms_height = "0.05 um"
+sphere_radius = "2 mm"
+seed = 3
+[plasticity]
+yield_strength = "1 GPa"
+steps = 2
+unload_steps = 1
+depth_cells = 8
+"#;
+
+/// A rigid ellipsoid (radii 20 mm and 10 mm) on a steel flat beyond first yield, coarse.
+const ELLIPSE: &str = r#"format = 1
+[contact]
+kind = "elliptical"
+load = "150 N"
+method = "numerical"   # the elastic field `render` draws
+[contact.body1]
+radius = "flat"
+material = "steel"
+[contact.body2]
+radius_x = "20 mm"
+radius_y = "10 mm"
+material = "rigid"
+[plasticity]
+yield_strength = "1 GPa"
+steps = 2
+unload_steps = 1
+grid_cells = 24
+depth_cells = 10
+extent_over_a = 1.5
+depth_over_a = 1.5
+"#;
+
+#[test]
+fn rough_and_elliptical_contacts_keep_the_json_contract() {
+    for text in [ROUGH, ELLIPSE] {
+        let (_dir, path) = scene(text);
+        let output = run(&["plastic", path.to_str().expect("utf-8"), "--json"]);
+        assert!(output.status.success(), "{}", stderr(&output));
+        let json: serde_json::Value =
+            serde_json::from_slice(&output.stdout).expect("one JSON object");
+        assert_eq!(json["converged"], true);
+        let loaded = &json["loaded"];
+        let area = loaded["contact_area_m2"].as_f64().expect("area");
+        let radius = loaded["contact_radius_m"].as_f64().expect("radius");
+        assert!((radius / (area / std::f64::consts::PI).sqrt() - 1.0).abs() < 1e-12);
+        assert!(loaded["max_plastic_strain"].as_f64().expect("strain") > 1e-4);
+        let peak = loaded["max_pressure_pa"].as_f64().expect("peak");
+        assert!(peak < loaded["elastic_max_pressure_pa"].as_f64().expect("elastic"));
+        assert!(json["unloaded"]["residual_depth_m"].as_f64().expect("dent") > 0.0);
+    }
+}
+
+#[test]
+fn bad_rough_plasticity_is_refused_naming_the_key() {
+    for (from, to, key) in [
+        (
+            "depth_cells = 8",
+            "depth_cells = 8\ngrid_cells = 32",
+            "plasticity.grid_cells",
+        ),
+        (
+            "depth_cells = 8",
+            "depth_cells = 8\nextent_over_a = 2.0",
+            "plasticity.extent_over_a",
+        ),
+        (
+            "load = \"0.5 N\"",
+            "approach = \"0.1 um\"",
+            "contact.approach",
+        ),
+        (
+            "material = \"steel\"\n[contact.body2]",
+            "material = \"rigid\"\n[contact.body2]",
+            "contact.body1.material",
+        ),
+        ("samples = 48", "samples = 600", "surface"),
+    ] {
+        let (_dir, path) = scene(&ROUGH.replacen(from, to, 1));
+        let output = run(&["plastic", path.to_str().expect("utf-8"), "--json"]);
+        assert!(!output.status.success(), "{to} accepted");
+        assert!(output.stdout.is_empty(), "{to}: output written");
+        let message = stderr(&output);
+        assert!(message.contains(key), "{to}: {message}");
+    }
+}
+
+#[test]
+fn check_refuses_a_plastic_volume_beyond_the_memory_naming_its_size() {
+    let big = ROUGH.replacen("samples = 48", "samples = 512", 1).replacen(
+        "depth_cells = 8",
+        "depth_cells = 256",
+        1,
+    );
+    let (_dir, path) = scene(&big);
+    let output = run(&["check", path.to_str().expect("utf-8")]);
+    assert!(!output.status.success());
+    let message = stderr(&output);
+    assert!(message.contains("512 x 512 x 256 cells"), "{message}");
+    // The small map passes, with its estimate.
+    let (_dir, path) = scene(ROUGH);
+    let output = run(&["check", path.to_str().expect("utf-8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(text.contains("plastic: 48 x 48 x 8 cells"), "{text}");
+}

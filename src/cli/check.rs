@@ -12,6 +12,17 @@ pub(super) fn check(paths: &[PathBuf]) -> Result<()> {
     let mut failed = 0;
     for path in paths {
         match stressfield::study::load_scene(path) {
+            Ok(scene)
+                if study::plastic::plan(&scene).is_some_and(|p| p.beyond_limits().is_some()) =>
+            {
+                let why = study::plastic::plan(&scene).and_then(|p| p.beyond_limits());
+                print_err(&format!(
+                    "error: {}: {}",
+                    path.display(),
+                    why.unwrap_or_default()
+                ));
+                failed += 1;
+            }
             Ok(scene) => print_out(&format!(
                 "ok {} ({}{})\n",
                 path.display(),
@@ -103,21 +114,13 @@ fn check_summary(scene: &Scene) -> String {
 /// What the heating of a scene with `[thermal]` will take (`; heating: 129 x 97 cells, about
 /// 8 s of CPU ...`), or nothing.
 fn heating_summary(scene: &Scene) -> String {
-    if let (Some(spec), Some(stressfield::scene::Hertz::Point(hertz))) = (
-        &scene.plasticity,
-        scene.contact.dimensional.map(|d| d.hertz),
-    ) {
-        let bytes =
-            study::plastic::memory_bytes(spec, hertz.radius_m, scene.contact.friction != 0.0);
-        let seconds = study::plastic::cpu_seconds(spec);
+    if let Some(plan) = study::plastic::plan(scene) {
+        let [nz, ny, nx] = plan.cells;
         return format!(
-            "; plastic: {} x {} x {} cells, {} steps, about {} of CPU and {}",
-            spec.grid_cells,
-            spec.grid_cells,
-            spec.depth_cells,
-            spec.steps + if spec.unload { spec.unload_steps } else { 0 },
-            study::heating_plan::duration(seconds),
-            stressfield::io::text::bytes(bytes as u64)
+            "; plastic: {nx} x {ny} x {nz} cells, {} steps, about {} of CPU and {}",
+            plan.steps,
+            study::heating_plan::duration(plan.cpu_seconds),
+            stressfield::io::text::bytes(plan.bytes as u64)
         );
     }
     if let Some(spec) = &scene.wear {

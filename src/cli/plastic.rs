@@ -19,7 +19,7 @@ pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<(
     let scene = stressfield::study::load_scene(scene_path)?;
     let Some(spec) = scene.plasticity else {
         bail!(
-            "{} has no [plasticity]\nhint: add [plasticity] with yield_strength = \"1 GPa\" to a point contact (body 1 flat, body 2 a ball, material = \"rigid\" allowed); see docs/plasticity.md",
+            "{} has no [plasticity]\nhint: add [plasticity] with yield_strength = \"1 GPa\" to a point, elliptical or rough contact (body 1 the elastic-plastic one, body 2 material = \"rigid\" allowed); see docs/plasticity.md",
             scene_path.display()
         );
     };

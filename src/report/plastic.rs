@@ -14,7 +14,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use crate::study::plastic::{Loaded, PlasticStudy, Unloaded};
+use crate::study::plastic::{Loaded, PlasticKind, PlasticStudy, Unloaded};
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct LoadedReport {
@@ -114,30 +114,91 @@ impl PlasticReport {
         let mpa = |v: f64| v / 1e6;
         let um = |v: f64| v * 1e6;
         let [nz, ny, nx] = study.grid.dims();
-        writeln!(
-            out,
-            "elastic-plastic point contact (J2, linear hardening; SAM, docs/plasticity.md)"
-        )?;
-        writeln!(
-            out,
-            "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; Hertz: p0 = {:.0} MPa = {:.3} Y, a = {:.2} µm",
-            self.load_n,
-            mpa(y),
-            mpa(self.hardening_modulus_pa),
-            mpa(study.hertz.p0_pa),
-            study.hertz.p0_pa / y,
-            um(a)
-        )?;
-        writeln!(
-            out,
-            "  grid {nx} x {ny} x {nz} cells over ±{} a and {} a deep; {} load and {} unload steps; {} iterations, {}",
-            study.spec.extent_over_a,
-            study.spec.depth_over_a,
+        let steps = format!(
+            "{} load and {} unload steps; {} iterations, {}",
             study.spec.steps,
-            if study.spec.unload { study.spec.unload_steps } else { 0 },
+            if study.spec.unload {
+                study.spec.unload_steps
+            } else {
+                0
+            },
             self.iterations,
-            if self.converged { "converged" } else { "NOT converged" }
-        )?;
+            if self.converged {
+                "converged"
+            } else {
+                "NOT converged"
+            }
+        );
+        match &study.kind {
+            PlasticKind::Point => {
+                writeln!(
+                    out,
+                    "elastic-plastic point contact (J2, linear hardening; SAM, docs/plasticity.md)"
+                )?;
+                writeln!(
+                    out,
+                    "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; Hertz: p0 = {:.0} MPa = {:.3} Y, a = {:.2} µm",
+                    self.load_n,
+                    mpa(y),
+                    mpa(self.hardening_modulus_pa),
+                    mpa(study.hertz.p0_pa),
+                    study.hertz.p0_pa / y,
+                    um(a)
+                )?;
+                writeln!(
+                    out,
+                    "  grid {nx} x {ny} x {nz} cells over ±{} a and {} a deep; {steps}",
+                    study.spec.extent_over_a, study.spec.depth_over_a,
+                )?;
+            }
+            PlasticKind::Elliptical(ellipse) => {
+                writeln!(
+                    out,
+                    "elastic-plastic elliptical contact (J2, linear hardening; SAM, docs/plasticity.md)"
+                )?;
+                writeln!(
+                    out,
+                    "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; Hertz: p0 = {:.0} MPa = {:.3} Y, a = {:.2} µm (x), b = {:.2} µm (y), √(ab) = {:.2} µm",
+                    self.load_n,
+                    mpa(y),
+                    mpa(self.hardening_modulus_pa),
+                    mpa(ellipse.p0_pa),
+                    ellipse.p0_pa / y,
+                    um(ellipse.semi_axis_x_m),
+                    um(ellipse.semi_axis_y_m),
+                    um(a)
+                )?;
+                writeln!(
+                    out,
+                    "  grid {nx} x {ny} x {nz} cells over ±{} a and ±{} b, {} b deep; {steps}",
+                    study.spec.extent_over_a, study.spec.extent_over_a, study.spec.depth_over_a,
+                )?;
+            }
+            PlasticKind::Rough(rough) => {
+                writeln!(
+                    out,
+                    "elastic-plastic rough contact, {} (J2, linear hardening; SAM, docs/plasticity.md)",
+                    if rough.periodic { "periodic" } else { "isolated" }
+                )?;
+                writeln!(
+                    out,
+                    "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; elastic contact: p_max = {:.0} MPa = {:.3} Y, A = {:.4e} m², largest spot c = {:.3} µm",
+                    self.load_n,
+                    mpa(y),
+                    mpa(self.hardening_modulus_pa),
+                    mpa(rough.elastic_max_pressure_pa),
+                    rough.elastic_max_pressure_pa / y,
+                    rough.elastic_contact_area_m2,
+                    um(rough.largest_spot_radius_m)
+                )?;
+                writeln!(
+                    out,
+                    "  grid {nx} x {ny} x {nz} cells (the map's), {:.3} µm deep ({} c); {steps}",
+                    um(study.grid.depth.depth_m()),
+                    study.spec.depth_over_a,
+                )?;
+            }
+        }
         let l = &self.loaded;
         writeln!(out, "loaded")?;
         writeln!(
@@ -153,9 +214,14 @@ impl PlasticReport {
             mpa(l.mean_pressure_pa),
             l.mean_pressure_pa / y
         )?;
+        let unit = match study.kind {
+            PlasticKind::Point => "a",
+            PlasticKind::Elliptical(_) => "√(ab)",
+            PlasticKind::Rough(_) => "elastic",
+        };
         writeln!(
             out,
-            "  contact radius    {:>10.3} µm ({:.4} a)",
+            "  contact radius    {:>10.3} µm ({:.4} {unit}; √(A/π))",
             um(l.contact_radius_m),
             l.contact_radius_m / a
         )?;
@@ -174,16 +240,31 @@ impl PlasticReport {
             mpa(l.von_mises_max_pa),
             um(l.von_mises_max_depth_m)
         )?;
+        if let PlasticKind::Rough(rough) = &study.kind {
+            writeln!(
+                out,
+                "  plastic areas     surface layer {:.4e} m², footprint {:.4e} m² (of {:.4e} m² in contact)",
+                rough.surface_plastic_area_m2, rough.plastic_footprint_m2, l.contact_area_m2
+            )?;
+            if let (Some(p), Some(area)) = (rough.capped_max_pressure_pa, rough.capped_area_m2) {
+                writeln!(
+                    out,
+                    "  hardness cap      max pressure {:.1} MPa, {:.4e} m² at the cap (the scene's contact.hardness, same map)",
+                    mpa(p),
+                    area
+                )?;
+            }
+        }
         if let Some(u) = &self.unloaded {
             writeln!(out, "unloaded")?;
+            let dent = match study.kind {
+                PlasticKind::Rough(_) => "largest dent",
+                _ => "dent",
+            };
+            writeln!(out, "  {dent:<18}{:>10.4} µm", um(u.residual_depth_m))?;
             writeln!(
                 out,
-                "  dent              {:>10.4} µm",
-                um(u.residual_depth_m)
-            )?;
-            writeln!(
-                out,
-                "  residual von Mises{:>10.1} MPa at z = {:.3} µm, r = {:.3} µm ({:.3} a)",
+                "  residual von Mises{:>10.1} MPa at z = {:.3} µm, r = {:.3} µm ({:.3} {unit})",
                 mpa(u.residual_von_mises_max_pa),
                 um(u.residual_von_mises_max_depth_m),
                 um(u.residual_von_mises_max_r_m),

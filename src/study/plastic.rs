@@ -10,6 +10,7 @@
 
 use ndarray::{Array2, Array3};
 
+use crate::contact::elliptic::EllipticalContact;
 use crate::contact::PointContact;
 use crate::operator::elastic::Periodicity;
 use crate::plasticity::column::DepthCells;
@@ -72,8 +73,13 @@ pub struct Unloaded {
 #[derive(Clone, Debug)]
 pub struct PlasticStudy {
     pub spec: PlasticitySpec,
-    /// The elastic (Hertz) contact at the scene's load.
+    /// The elastic (Hertz) contact at the scene's load: a ball's own; for an elliptical
+    /// contact the circle of the same load, area and peak pressure (radius `√(ab)`); for a
+    /// rough map the circle of the elastic rough contact's area at the load and its peak
+    /// pressure ([`PlasticKind`] holds the contact itself).
     pub hertz: PointContact,
+    /// The contact's kind and what it adds.
+    pub kind: PlasticKind,
     pub friction: f64,
     pub grid: VolumeGrid,
     /// Cell centres (m): x, y (from the axis) and depth z.
@@ -103,6 +109,38 @@ impl PlasticStudy {
     pub fn unloaded_snapshot(&self) -> Option<&Snapshot> {
         self.unloaded.as_ref().and(self.solution.snapshots.get(1))
     }
+}
+
+/// The contact a plastic study pressed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PlasticKind {
+    /// A ball on a flat: [`PlasticStudy::hertz`] is its Hertz contact.
+    Point,
+    /// An elliptical paraboloid (Hertz's ellipse: `a` along x, `b` along y).
+    Elliptical(EllipticalContact),
+    /// A rough map.
+    Rough(RoughPlastic),
+}
+
+/// What a rough map's plastic study adds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RoughPlastic {
+    pub periodic: bool,
+    /// The elastic rough contact at the load (no hardness cap), on the same map: its
+    /// largest pressure, its contact area, and the equivalent radius `√(A/π)` of its largest
+    /// contact spot (the length the grid's depth is measured in).
+    pub elastic_max_pressure_pa: f64,
+    pub elastic_contact_area_m2: f64,
+    pub largest_spot_radius_m: f64,
+    /// The hardness-capped contact of the scene on the same map, when it has a hardness: its
+    /// largest pressure (the cap, or below it) and the area of the cells at the cap.
+    pub capped_max_pressure_pa: Option<f64>,
+    pub capped_area_m2: Option<f64>,
+    /// At the full load: the area of the columns whose top cell has `εp > 1e-5` (the plastic
+    /// surface layer), and of those with such a cell at any depth (the plastic zone's
+    /// footprint).
+    pub surface_plastic_area_m2: f64,
+    pub plastic_footprint_m2: f64,
 }
 
 /// Why a plastic study failed.
@@ -167,6 +205,77 @@ pub fn cpu_seconds(spec: &PlasticitySpec) -> f64 {
     cells * iterations * CPU_SECONDS_PER_CELL_ITERATION
 }
 
+/// The most CPU time `check` lets a plastic scene's estimate take, s (an hour).
+pub const CPU_LIMIT_SECONDS: f64 = 3600.0;
+
+/// What a plastic scene's solve will take, before it runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlasticPlan {
+    /// `[nz, ny, nx]` cells of the volume.
+    pub cells: [usize; 3],
+    pub steps: usize,
+    pub bytes: usize,
+    /// The estimate of [`cpu_seconds`] for this many cells.
+    pub cpu_seconds: f64,
+}
+
+impl PlasticPlan {
+    /// Why the plan is beyond the limits ([`MEMORY_LIMIT_BYTES`], [`CPU_LIMIT_SECONDS`]),
+    /// naming the size, or `None`.
+    pub fn beyond_limits(&self) -> Option<String> {
+        let [nz, ny, nx] = self.cells;
+        if self.bytes > MEMORY_LIMIT_BYTES {
+            return Some(format!(
+                "plasticity: the volume of {nx} x {ny} x {nz} cells needs {} MB, more than the {} MB allowed\nhint: fewer cells (plasticity.grid_cells, plasticity.depth_cells, or a smaller map)",
+                self.bytes >> 20,
+                MEMORY_LIMIT_BYTES >> 20
+            ));
+        }
+        if self.cpu_seconds > CPU_LIMIT_SECONDS {
+            return Some(format!(
+                "plasticity: the volume of {nx} x {ny} x {nz} cells over {} steps would take about {:.0} s of CPU, more than the {CPU_LIMIT_SECONDS:.0} s allowed\nhint: fewer cells or steps",
+                self.steps, self.cpu_seconds
+            ));
+        }
+        None
+    }
+}
+
+/// The plan of a `[plasticity]` scene's solve (`None` without one): its volume grid's cells
+/// (a rough map's own, with `depth_cells` layers), the memory and the CPU time estimated.
+pub fn plan(scene: &Scene) -> Option<PlasticPlan> {
+    let spec = scene.plasticity?;
+    let sliding = scene.contact.friction != 0.0;
+    let (shape, periodicity) = match (&scene.surface, scene.contact.rough) {
+        (Some(surface), Some(rough)) if scene.contact.kind == crate::scene::ContactKind::Rough => (
+            surface.heights.shape(),
+            if rough.periodic {
+                Periodicity::Periodic
+            } else {
+                Periodicity::NonPeriodic
+            },
+        ),
+        _ => ([spec.grid_cells, spec.grid_cells], Periodicity::NonPeriodic),
+    };
+    // The depth's thickness does not change the cost.
+    let grid = VolumeGrid {
+        shape,
+        spacing_m: [1.0, 1.0],
+        depth: DepthCells::uniform(spec.depth_cells, 1.0).ok()?,
+        periodicity,
+    };
+    let bytes = loading::memory_bytes(&grid, sliding) + 2 * loading::snapshot_bytes(&grid);
+    let unload = if spec.unload { spec.unload_steps } else { 0 };
+    let cells = (shape[0] * shape[1] * spec.depth_cells) as f64;
+    let iterations = ITERATIONS_PER_LOAD_STEP * spec.steps as f64 + 2.0 * unload as f64;
+    Some(PlasticPlan {
+        cells: [spec.depth_cells, shape[0], shape[1]],
+        steps: spec.steps + unload,
+        bytes,
+        cpu_seconds: cells * iterations * CPU_SECONDS_PER_CELL_ITERATION,
+    })
+}
+
 /// The loads of the steps: `steps` equal increments up to `load_n`, then `unload_steps` down
 /// to zero when unloading.
 pub fn step_loads(spec: &PlasticitySpec, load_n: f64) -> Vec<f64> {
@@ -188,10 +297,16 @@ pub fn study(
     progress: &mut dyn FnMut(Progress),
 ) -> Result<PlasticStudy, PlasticStudyError> {
     let spec = scene.plasticity.ok_or(PlasticStudyError::NotPlastic)?;
-    let Some(Hertz::Point(hertz)) = scene.contact.dimensional.map(|d| d.hertz) else {
-        return Err(PlasticStudyError::NotPlastic);
-    };
-    study_point(&spec, &hertz, scene.contact.friction, progress)
+    if scene.contact.kind == crate::scene::ContactKind::Rough {
+        return rough::study_rough(scene, &spec, progress);
+    }
+    match scene.contact.dimensional.map(|d| d.hertz) {
+        Some(Hertz::Point(hertz)) => study_point(&spec, &hertz, scene.contact.friction, progress),
+        Some(Hertz::Elliptical(ellipse)) => {
+            elliptic::study_elliptical(&spec, &ellipse, scene.contact.friction, progress)
+        }
+        _ => Err(PlasticStudyError::NotPlastic),
+    }
 }
 
 /// The study of a ball pressed on an elastic-plastic body 1 (`hertz` its elastic contact).
@@ -201,26 +316,88 @@ pub fn study_point(
     friction: f64,
     progress: &mut dyn FnMut(Progress),
 ) -> Result<PlasticStudy, PlasticStudyError> {
-    let a = hertz.radius_m;
-    let needed_bytes = memory_bytes(spec, a, friction != 0.0);
+    let grid = volume_grid(spec, hertz.radius_m)?;
+    let [_, ny, nx] = grid.dims();
+    let [dx, dy] = grid.spacing_m;
+    let x_m: Vec<f64> = (0..nx).map(|i| (i as f64 - (nx / 2) as f64) * dx).collect();
+    let y_m: Vec<f64> = (0..ny).map(|j| (j as f64 - (ny / 2) as f64) * dy).collect();
+    let radius = hertz.effective_radius_m;
+    // The gap of a ball on a flat: heights out of body 1, highest on the axis.
+    let heights = Array2::from_shape_fn((ny, nx), |(j, i)| {
+        -(x_m[i] * x_m[i] + y_m[j] * y_m[j]) / (2.0 * radius)
+    });
+    let setup = Setup {
+        hertz: *hertz,
+        kind: PlasticKind::Point,
+        grid,
+        x_m,
+        y_m,
+        heights,
+        elastic_max_pressure_pa: hertz.p0_pa,
+        edges: Edges::Bounded,
+    };
+    solve_setup(spec, setup, friction, progress)
+}
+
+/// Where the volume grid's sides are: keys to raise (a smooth contact's grid about the Hertz
+/// ellipse), the edges of an isolated map (warned about: the map is the grid), or none
+/// (periodic).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Edges {
+    /// `extent_over_a` and `depth_over_a` size the grid.
+    Bounded,
+    /// The map's edges; `depth_over_a` sizes the depth.
+    Map,
+    /// A periodic map: no sides.
+    Periodic,
+}
+
+/// A contact's undeformed gap on its volume grid, ready to be loaded.
+#[derive(Clone, Debug)]
+pub(crate) struct Setup {
+    /// The Hertz contact reported beside the result ([`PlasticStudy::hertz`]).
+    pub hertz: PointContact,
+    pub kind: PlasticKind,
+    pub grid: VolumeGrid,
+    /// Cell centres from the axis (the map's centre), m.
+    pub x_m: Vec<f64>,
+    pub y_m: Vec<f64>,
+    /// The undeformed gap as heights out of body 1 (`[ny, nx]`).
+    pub heights: Array2<f64>,
+    pub elastic_max_pressure_pa: f64,
+    pub edges: Edges,
+}
+
+/// The study of `setup` loaded to `setup.hertz.load_n` in `spec`'s steps.
+pub(crate) fn solve_setup(
+    spec: &PlasticitySpec,
+    setup: Setup,
+    friction: f64,
+    progress: &mut dyn FnMut(Progress),
+) -> Result<PlasticStudy, PlasticStudyError> {
+    let Setup {
+        hertz,
+        kind,
+        grid,
+        x_m,
+        y_m,
+        heights,
+        elastic_max_pressure_pa,
+        edges,
+    } = setup;
+    let needed_bytes =
+        loading::memory_bytes(&grid, friction != 0.0) + 2 * loading::snapshot_bytes(&grid);
     if needed_bytes > MEMORY_LIMIT_BYTES {
         return Err(PlasticStudyError::Memory {
             needed_bytes,
             limit_bytes: MEMORY_LIMIT_BYTES,
         });
     }
-    let grid = volume_grid(spec, a)?;
     let [nz, ny, nx] = grid.dims();
     let [dx, dy] = grid.spacing_m;
-    let x_m: Vec<f64> = (0..nx).map(|i| (i as f64 - (nx / 2) as f64) * dx).collect();
-    let y_m: Vec<f64> = (0..ny).map(|j| (j as f64 - (ny / 2) as f64) * dy).collect();
     let z_m = grid.depth.centres_m();
-    let radius = hertz.effective_radius_m;
-    // The gap of a ball on a flat: heights out of body 1, highest on the axis.
-    let heights = Array2::from_shape_fn((ny, nx), |(j, i)| {
-        -(x_m[i] * x_m[i] + y_m[j] * y_m[j]) / (2.0 * radius)
-    });
     let loads = step_loads(spec, hertz.load_n);
+    let axis_cell = [ny / 2, nx / 2];
     let loaded_step = spec.steps - 1;
     let mut snapshots = vec![loaded_step];
     if spec.unload {
@@ -239,7 +416,7 @@ pub fn study_point(
         friction,
         loads_n: loads,
         snapshots,
-        axis_cell: [ny / 2, nx / 2],
+        axis_cell,
         tolerance: spec.tolerance,
         max_iterations: MAX_ITERATIONS,
         acceleration: ACCELERATION,
@@ -273,7 +450,13 @@ pub fn study_point(
             ),
         });
     }
-    if at_side {
+    let mut warnings = Vec::new();
+    if at_side && edges == Edges::Map {
+        warnings.push(
+            "the plastic zone reaches the map's edge: the isolated map ends there, so the flow beyond it is not computed; crop the map about the contact, or solve it periodic (contact.periodic = true) if it tiles".to_string(),
+        );
+    }
+    if at_side && edges == Edges::Bounded {
         return Err(PlasticStudyError::Grid {
             key: "extent_over_a",
             message: format!(
@@ -313,7 +496,7 @@ pub fn study_point(
         plastic_volume_m3,
         von_mises_max_pa,
         von_mises_max_depth_m: z_m[at_von_mises[0]],
-        elastic_max_pressure_pa: hertz.p0_pa,
+        elastic_max_pressure_pa,
     };
     let unloaded = spec.unload.then(|| {
         let state = &solution.snapshots[1];
@@ -322,7 +505,14 @@ pub fn study_point(
         // No residual stress (an elastic contact): no place of its maximum either.
         let stressed = value > 0.0;
         Unloaded {
-            residual_depth_m: state.plastic_displacement_m[[ny / 2, nx / 2]],
+            // A rough map has no axis: its largest permanent surface displacement.
+            residual_depth_m: match kind {
+                PlasticKind::Rough(_) => state
+                    .plastic_displacement_m
+                    .iter()
+                    .fold(0.0f64, |m, &u| m.max(u)),
+                _ => state.plastic_displacement_m[axis_cell],
+            },
             residual_von_mises_max_pa: value,
             residual_von_mises_max_depth_m: if stressed { z_m[l] } else { 0.0 },
             residual_von_mises_max_r_m: if stressed { x_m[i].hypot(y_m[j]) } else { 0.0 },
@@ -330,7 +520,6 @@ pub fn study_point(
     });
     let converged = solution.steps.iter().all(|s| s.converged);
     let iterations = solution.steps.iter().map(|s| s.iterations).sum();
-    let mut warnings = Vec::new();
     if !converged {
         let failed: Vec<String> = solution
             .steps
@@ -354,7 +543,8 @@ pub fn study_point(
     }
     Ok(PlasticStudy {
         spec: *spec,
-        hertz: *hertz,
+        hertz,
+        kind,
         friction,
         grid,
         x_m,
@@ -382,6 +572,9 @@ pub fn components_last(stress: &ndarray::Array4<f64>) -> ndarray::Array4<f64> {
     let (nz, _, ny, nx) = stress.dim();
     ndarray::Array4::from_shape_fn((nz, ny, nx, 6), |(l, j, i, c)| stress[[l, c, j, i]])
 }
+
+pub mod elliptic;
+pub mod rough;
 
 #[cfg(test)]
 mod tests;

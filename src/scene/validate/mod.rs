@@ -170,11 +170,13 @@ impl Validator<'_> {
         self.lubricated_bodies(&raw)?;
         let contact = self.contact(&raw.contact)?;
         if matches!(contact.kind, ContactKind::Rough | ContactKind::Surface) {
-            if raw.plasticity.is_some() {
+            if raw.plasticity.is_some() && contact.kind == ContactKind::Surface {
                 return Err(self.error(
                     "plasticity",
-                    "volume plasticity is computed under point contacts so far; a rough contact keeps its hardness cap",
-                    Some("remove [plasticity] (contact.hardness caps the rough contact's pressure), or press a ball: contact.kind = \"point\""),
+                    "a surface scene characterises the surface; it presses no contact to yield",
+                    Some(
+                        "use contact.kind = \"rough\" to press the map on a flat with [plasticity]",
+                    ),
                 ));
             }
             if raw.lubricant.is_some() {

@@ -19,6 +19,56 @@ pub const DEPTH_CELLS_RANGE: (usize, usize) = (4, 256);
 pub const MIN_CELLS_PER_RADIUS: f64 = 6.0;
 
 impl Validator<'_> {
+    /// What a rough scene's `[plasticity]` may not have: the lateral grid is the map's, the
+    /// contact is pressed by a load (or a mean pressure), and the map is one surface.
+    fn rough_plasticity(
+        &self,
+        table: &RawPlasticity,
+        raw: &RawScene,
+        scene: &Scene,
+    ) -> Result<(), SceneError> {
+        for (key, given) in [
+            ("plasticity.grid_cells", table.grid_cells.is_some()),
+            ("plasticity.extent_over_a", table.extent_over_a.is_some()),
+        ] {
+            if given {
+                return Err(self.error(
+                    key,
+                    "the lateral grid of a rough contact's volume is the map's own cells",
+                    Some("remove it; depth_cells and depth_over_a (in radii of the largest contact spot) set the depth"),
+                ));
+            }
+        }
+        if !raw.series.is_empty() {
+            return Err(self.error(
+                "series",
+                "a series of measured maps is not computed with [plasticity]",
+                Some("remove one of the two: `stressfield plastic` presses one map"),
+            ));
+        }
+        if raw.contact.approach.is_some() {
+            return Err(self.error(
+                "contact.approach",
+                "[plasticity] loads the contact in load steps: an approach is not a load",
+                Some("give contact.load (or contact.mean_pressure)"),
+            ));
+        }
+        if let Some(surface) = &scene.surface {
+            let [ny, nx] = surface.heights.shape();
+            let largest = GRID_CELLS_RANGE.1;
+            if nx > largest || ny > largest {
+                return Err(self.error(
+                    "surface",
+                    format!(
+                        "the map's {nx} x {ny} samples are more than the {largest} x {largest} cells a plastic volume takes"
+                    ),
+                    Some("crop or resample the map (e.g. [surface.generate] samples = 128)"),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// `[plasticity]` of a scene validated but for this.
     pub(super) fn plasticity(
         &self,
@@ -52,15 +102,22 @@ impl Validator<'_> {
                 Some("remove the coating or [plasticity]"),
             ));
         }
-        if scene.contact.kind != ContactKind::Point {
+        let rough = scene.contact.kind == ContactKind::Rough;
+        if !matches!(
+            scene.contact.kind,
+            ContactKind::Point | ContactKind::Elliptical | ContactKind::Rough
+        ) {
             return Err(self.error(
                 "contact.kind",
                 format!(
-                    "[plasticity] is computed under point contacts so far, not `{}`",
+                    "[plasticity] is computed under point, elliptical and rough contacts so far, not `{}`",
                     raw.contact.kind.trim()
                 ),
-                Some("use contact.kind = \"point\" (a ball on a flat)"),
+                Some("use contact.kind = \"point\" (a ball on a flat), \"elliptical\" or \"rough\""),
             ));
+        }
+        if rough {
+            self.rough_plasticity(table, raw, scene)?;
         }
         if scene.contact.tangential.is_some() {
             return Err(self.error(
@@ -69,12 +126,34 @@ impl Validator<'_> {
                 Some("remove it; contact.friction slides the contact with q = mu p"),
             ));
         }
-        let Some(dimensional) = scene.contact.dimensional else {
-            return Err(self.error(
-                "contact.load",
-                "[plasticity] needs the bodies and the load, not a normalised contact",
-                Some("give [contact.body1], [contact.body2] and contact.load"),
-            ));
+        // Body 1's elastic constants, and whether body 2 is rigid.
+        let (body1, counter_rigid) = match (scene.contact.dimensional, rough) {
+            (Some(dimensional), false) => (
+                dimensional.body1.material,
+                dimensional.body2.material.modulus_pa.is_infinite(),
+            ),
+            (_, true) => {
+                let empty = RawBody::default();
+                let raw1 = raw.contact.body1.as_ref().unwrap_or(&empty);
+                let raw2 = raw.contact.body2.as_ref().unwrap_or(&empty);
+                let body1 = self.rough_body("contact.body1", raw1)?;
+                if body1.modulus_pa.is_infinite() {
+                    return Err(self.error(
+                        "contact.body1.material",
+                        "the elastic-plastic body 1 cannot be rigid",
+                        Some("give body 1 its material (e.g. material = \"steel\"); body 2 may be rigid"),
+                    ));
+                }
+                let body2 = self.rough_body("contact.body2", raw2)?;
+                (body1, body2.modulus_pa.is_infinite())
+            }
+            (None, false) => {
+                return Err(self.error(
+                    "contact.load",
+                    "[plasticity] needs the bodies and the load, not a normalised contact",
+                    Some("give [contact.body1], [contact.body2] and contact.load"),
+                ))
+            }
         };
         let yield_strength_pa = match (&table.yield_strength, scene.contact.yield_strength) {
             (Some(_), Some(_)) => {
@@ -213,7 +292,7 @@ impl Validator<'_> {
         )?;
         let tolerance = ratio("plasticity.tolerance", table.tolerance, 1e-6, 1e-12, 1e-2)?;
         let cells_per_radius = grid_cells as f64 / (2.0 * extent_over_a);
-        if cells_per_radius < MIN_CELLS_PER_RADIUS {
+        if !rough && cells_per_radius < MIN_CELLS_PER_RADIUS {
             let needed = (MIN_CELLS_PER_RADIUS * 2.0 * extent_over_a / 2.0).ceil() as usize * 2;
             return Err(self.error(
                 "plasticity.grid_cells",
@@ -243,8 +322,8 @@ impl Validator<'_> {
             extent_over_a,
             depth_over_a,
             tolerance,
-            body1: dimensional.body1.material,
-            counter_rigid: dimensional.body2.material.modulus_pa.is_infinite(),
+            body1,
+            counter_rigid,
         })
     }
 }

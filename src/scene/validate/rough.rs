@@ -229,7 +229,7 @@ impl Validator<'_> {
 
     /// A body of a rough contact: its material only (`"rigid"` allowed); its shape is the
     /// surface's.
-    fn rough_body(&self, key: &str, raw: &RawBody) -> Result<Material, SceneError> {
+    pub(super) fn rough_body(&self, key: &str, raw: &RawBody) -> Result<Material, SceneError> {
         if let Some((name, _)) = [
             ("radius", &raw.radius),
             ("radius_x", &raw.radius_x),

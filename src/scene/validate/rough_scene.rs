@@ -157,6 +157,9 @@ impl Validator<'_> {
             }
             scene.sweep = Some(sweep);
         }
+        if let Some(table) = &raw.plasticity {
+            scene.plasticity = Some(self.plasticity(table, &raw, &scene)?);
+        }
         Ok(scene)
     }
 

@@ -106,6 +106,9 @@ pub enum PlasticStudyError {
     NotPlastic,
     #[error(transparent)]
     Solve(#[from] PlasticContactError),
+    /// A line contact's solve (plane strain).
+    #[error(transparent)]
+    Line(#[from] crate::plasticity::line::LinePlasticError),
     /// The plastic zone reaches the volume grid's edge: the key to change and how.
     #[error("plasticity.{key}: {message}")]
     Grid { key: &'static str, message: String },
@@ -370,6 +373,8 @@ pub fn components_last(stress: &ndarray::Array4<f64>) -> ndarray::Array4<f64> {
     let (nz, _, ny, nx) = stress.dim();
     ndarray::Array4::from_shape_fn((nz, ny, nx, 6), |(l, j, i, c)| stress[[l, c, j, i]])
 }
+
+pub mod line;
 
 #[cfg(test)]
 mod tests;

@@ -52,14 +52,14 @@ impl Validator<'_> {
                 Some("remove the coating or [plasticity]"),
             ));
         }
-        if scene.contact.kind != ContactKind::Point {
+        if !matches!(scene.contact.kind, ContactKind::Point | ContactKind::Line) {
             return Err(self.error(
                 "contact.kind",
                 format!(
-                    "[plasticity] is computed under point contacts so far, not `{}`",
+                    "[plasticity] is computed under point and line contacts so far, not `{}`",
                     raw.contact.kind.trim()
                 ),
-                Some("use contact.kind = \"point\" (a ball on a flat)"),
+                Some("use contact.kind = \"point\" (a ball on a flat) or \"line\" (a roller, plane strain)"),
             ));
         }
         if scene.contact.tangential.is_some() {

@@ -253,3 +253,4 @@ fn the_residual_field_is_free_and_balanced() {
     );
     assert!(worst < 0.03 * scale, "planes: {worst:e} of {scale:e}");
 }
+

@@ -119,7 +119,10 @@ fn line_study(scene: &Scene, total: usize) -> Result<LinePlasticStudy> {
     let bar = progress_bar(total as u64);
     let result = plastic::line::study(scene, &mut |step, iteration, residual| {
         bar.set_position(step as u64);
-        bar.set_message(format!("step {}: it. {iteration}, {residual:.0e}", step + 1));
+        bar.set_message(format!(
+            "step {}: it. {iteration}, {residual:.0e}",
+            step + 1
+        ));
     });
     bar.finish_and_clear();
     result.with_context(|| format!("scene {}", scene.name))

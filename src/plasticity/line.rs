@@ -219,16 +219,15 @@ impl PlaneStrainSpace {
         let mut output = vec![0.0; n];
         let mut scratch = self.inverse.make_scratch_vec();
         let scale = 1.0 / n as f64;
-        let mut invert = |spectrum: &mut Vec<C64>,
-                          output: &mut Vec<f64>|
-         -> Result<(), LinePlasticError> {
-            // The mean's and the Nyquist wave's imaginary parts vanish for a real field.
-            spectrum[0].im = 0.0;
-            spectrum[bins - 1].im = 0.0;
-            self.inverse
-                .process_with_scratch(spectrum, output, &mut scratch)
-                .map_err(fft_error)
-        };
+        let mut invert =
+            |spectrum: &mut Vec<C64>, output: &mut Vec<f64>| -> Result<(), LinePlasticError> {
+                // The mean's and the Nyquist wave's imaginary parts vanish for a real field.
+                spectrum[0].im = 0.0;
+                spectrum[bins - 1].im = 0.0;
+                self.inverse
+                    .process_with_scratch(spectrum, output, &mut scratch)
+                    .map_err(fft_error)
+            };
         for (l, layer) in spectra.iter_mut().enumerate() {
             for (c, spectrum) in layer.iter_mut().enumerate() {
                 invert(spectrum, &mut output)?;
@@ -375,11 +374,17 @@ impl LineContactSolver {
                 let lowest = gap_m
                     .iter()
                     .enumerate()
-                    .fold((0, f64::INFINITY), |b, (i, &g)| if g < b.1 { (i, g) } else { b });
+                    .fold(
+                        (0, f64::INFINITY),
+                        |b, (i, &g)| if g < b.1 { (i, g) } else { b },
+                    );
                 (0..n).map(|i| i == lowest.0).collect()
             }
         };
-        let scale = gap_m.iter().fold(0.0f64, |m, &g| m.max(g.abs())).max(1e-300);
+        let scale = gap_m
+            .iter()
+            .fold(0.0f64, |m, &g| m.max(g.abs()))
+            .max(1e-300);
         for _ in 0..MAX_ACTIVE_SET_ITERATIONS {
             let cells: Vec<usize> = (0..n).filter(|&i| active[i]).collect();
             let m = cells.len();
@@ -394,9 +399,7 @@ impl LineContactSolver {
                 matrix[r][m] = -1.0;
                 rhs[r] = -gap_m[i];
             }
-            for c in 0..m {
-                matrix[m][c] = self.spacing_m;
-            }
+            matrix[m][..m].fill(self.spacing_m);
             rhs[m] = load_n_per_m;
             let solution = solve_dense(matrix, rhs)
                 .ok_or_else(|| "the contact's system is singular".to_string())?;
@@ -455,13 +458,15 @@ fn solve_dense(mut a: Vec<Vec<f64>>, mut b: Vec<f64>) -> Option<Vec<f64>> {
         }
         a.swap(k, pivot);
         b.swap(k, pivot);
-        for i in k + 1..n {
-            let factor = a[i][k] / a[k][k];
+        let (upper, lower) = a.split_at_mut(k + 1);
+        let pivot_row = &upper[k];
+        for (offset, row) in lower.iter_mut().enumerate() {
+            let factor = row[k] / pivot_row[k];
             if factor != 0.0 {
-                for j in k..n {
-                    a[i][j] -= factor * a[k][j];
+                for (value, p) in row[k..].iter_mut().zip(&pivot_row[k..]) {
+                    *value -= factor * p;
                 }
-                b[i] -= factor * b[k];
+                b[k + 1 + offset] -= factor * b[k];
             }
         }
     }

@@ -35,7 +35,9 @@ fn roller(
         depth: DepthCells::uniform(depth_cells, depth * b / depth_cells as f64).expect("depth"),
     };
     let gap_m = grid.x_m().iter().map(|x| x * x / (2.0 * RADIUS)).collect();
-    let mut loads: Vec<f64> = (1..=steps).map(|i| load * i as f64 / steps as f64).collect();
+    let mut loads: Vec<f64> = (1..=steps)
+        .map(|i| load * i as f64 / steps as f64)
+        .collect();
     let mut snapshots = vec![steps - 1];
     if unload {
         loads.push(0.0);
@@ -97,7 +99,10 @@ fn the_operator_keeps_plane_strain_and_the_planes_free() {
             worst = worst.max(s(3).abs()).max(s(5).abs());
         }
     }
-    assert!(worst < 1e-10 * largest, "plane strain: {worst:e} of {largest:e}");
+    assert!(
+        worst < 1e-10 * largest,
+        "plane strain: {worst:e} of {largest:e}"
+    );
     // Each plane z = const carries no net σzz, σxz: exactly on the padded period (the mean
     // wave), here over the grid, which holds most of the field (relative to the layer that
     // carries the most).
@@ -116,7 +121,11 @@ fn the_operator_keeps_plane_strain_and_the_planes_free() {
     let worst = sums
         .iter()
         .fold(0.0f64, |m, s| m.max(s[0].abs()).max(s[1].abs()));
-    eprintln!("plane strain {:.2e}; planes' net force {:.2e}", worst_plane(&stress, &strain), worst / scale);
+    eprintln!(
+        "plane strain {:.2e}; planes' net force {:.2e}",
+        worst_plane(&stress, &strain),
+        worst / scale
+    );
     assert!(worst < 0.02 * scale, "planes: {worst:e} of {scale:e}");
 }
 
@@ -169,7 +178,11 @@ fn below_first_yield_the_roller_is_hertz_and_unloading_leaves_nothing() {
         let z = problem.grid.depth.centre_m(l);
         let exact = line_hertz::stress_over_p0(0.0, z / b, 0.0, POISSON);
         let zz = state.stress_pa[[l, ZZ, 0, axis]] / hertz.p0_pa;
-        assert!((zz - exact.zz).abs() < 3e-3, "σzz at {l}: {zz} vs {}", exact.zz);
+        assert!(
+            (zz - exact.zz).abs() < 3e-3,
+            "σzz at {l}: {zz} vs {}",
+            exact.zz
+        );
     }
     let unloaded = &solution.snapshots[1];
     assert!(unloaded.stress_pa.iter().all(|&v| v == 0.0));
@@ -226,7 +239,10 @@ fn the_residual_field_is_free_and_balanced() {
         m.max(residual[[0, ZZ, 0, i]].abs())
             .max(residual[[0, XZ, 0, i]].abs())
     });
-    eprintln!("residual: surface tractions {:.2e} of the largest", top / largest);
+    eprintln!(
+        "residual: surface tractions {:.2e} of the largest",
+        top / largest
+    );
     assert!(top < 0.01 * largest, "surface: {top:e} of {largest:e}");
     // Each plane z = const carries no net σzz and σxz (over the grid: relative to the layer
     // that carries the most; the deep layers' field spreads past the grid's sides).
@@ -253,4 +269,3 @@ fn the_residual_field_is_free_and_balanced() {
     );
     assert!(worst < 0.03 * scale, "planes: {worst:e} of {scale:e}");
 }
-

@@ -104,6 +104,9 @@ impl PlasticStudy {
 pub enum PlasticStudyError {
     #[error("the scene has no [plasticity]")]
     NotPlastic,
+    /// A line scene given to the point contact's study.
+    #[error("a line contact (plane strain) is computed by `stressfield plastic` (study::plastic::line), not by this entry point yet\nhint: run `stressfield plastic SCENE --json` for a line contact")]
+    LineContact,
     #[error(transparent)]
     Solve(#[from] PlasticContactError),
     /// A line contact's solve (plane strain).
@@ -185,8 +188,10 @@ pub fn study(
     progress: &mut dyn FnMut(Progress),
 ) -> Result<PlasticStudy, PlasticStudyError> {
     let spec = scene.plasticity.ok_or(PlasticStudyError::NotPlastic)?;
-    let Some(Hertz::Point(hertz)) = scene.contact.dimensional.map(|d| d.hertz) else {
-        return Err(PlasticStudyError::NotPlastic);
+    let hertz = match scene.contact.dimensional.map(|d| d.hertz) {
+        Some(Hertz::Point(hertz)) => hertz,
+        Some(Hertz::Line(_)) => return Err(PlasticStudyError::LineContact),
+        _ => return Err(PlasticStudyError::NotPlastic),
     };
     study_point(&spec, &hertz, scene.contact.friction, progress)
 }

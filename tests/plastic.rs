@@ -275,3 +275,89 @@ fn check_refuses_a_plastic_volume_beyond_the_memory_naming_its_size() {
     let text = String::from_utf8_lossy(&output.stdout);
     assert!(text.contains("plastic: 48 x 48 x 8 cells"), "{text}");
 }
+
+/// A rigid roller on a steel flat at p0(Hertz) = 2.2 Y, sliding at mu = 0.3 (well under a
+/// second).
+const LINE: &str = r#"format = 1
+[contact]
+kind = "line"
+load = "660 kN/m"
+friction = 0.3
+[contact.body1]
+radius = "flat"
+material = "steel"
+[contact.body2]
+radius = "10 mm"
+material = "rigid"
+[plasticity]
+yield_strength = "1 GPa"
+steps = 4
+unload_steps = 2
+grid_cells = 64
+depth_cells = 24
+extent_over_a = 3.0
+tolerance = 1e-4
+"#;
+
+#[test]
+fn a_line_contact_reports_the_line_s_keys_and_one_row_fields() {
+    let (dir, path) = scene(LINE);
+    let fields = dir.path().join("fields.npz");
+    let output = run(&[
+        "plastic",
+        path.to_str().expect("utf-8"),
+        "--json",
+        "--fields",
+        fields.to_str().expect("utf-8"),
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).expect("one JSON object");
+    assert!(json["load_n_per_m"].as_f64().expect("load_n_per_m") == 660e3);
+    assert!(json.get("load_n").is_none());
+    let loaded = &json["loaded"];
+    for key in [
+        "max_pressure_pa",
+        "mean_pressure_pa",
+        "contact_area_m2",
+        "half_width_m",
+        "approach_m",
+        "max_plastic_strain",
+        "max_plastic_strain_depth_m",
+        "plastic_zone_depth_m",
+        "plastic_area_m2",
+        "von_mises_max_pa",
+        "von_mises_max_depth_m",
+        "elastic_max_pressure_pa",
+    ] {
+        assert!(loaded[key].is_number(), "loaded.{key}");
+    }
+    assert!(loaded.get("contact_radius_m").is_none() && loaded.get("plastic_volume_m3").is_none());
+    let peak = loaded["max_pressure_pa"].as_f64().expect("number");
+    assert!(peak < 0.95 * loaded["elastic_max_pressure_pa"].as_f64().expect("number"));
+    // Sliding at 0.3: the plastic zone reaches the surface (its largest strain in the top layer).
+    let top_layer = 2.0 * 190.83e-6 / 24.0;
+    assert!(
+        loaded["max_plastic_strain_depth_m"]
+            .as_f64()
+            .expect("number")
+            < top_layer
+    );
+    assert!(
+        json["unloaded"]["residual_depth_m"]
+            .as_f64()
+            .expect("number")
+            > 0.0
+    );
+    let bytes = std::fs::read(&fields).expect("the archive");
+    let mut npz = ndarray_npy::NpzReader::new(std::io::Cursor::new(bytes)).expect("npz");
+    let strain: ndarray::Array3<f64> = npz.by_name("plastic_strain").expect("plastic_strain");
+    assert_eq!(strain.dim(), (24, 1, 64));
+    let residual: ndarray::Array4<f64> = npz.by_name("residual_stress").expect("residual");
+    assert_eq!(residual.dim(), (24, 1, 64, 6));
+    let pressure: ndarray::Array2<f64> = npz.by_name("pressure").expect("pressure");
+    assert_eq!(pressure.dim(), (1, 64));
+    // The readable report says "line".
+    let output = run(&["plastic", path.to_str().expect("utf-8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(String::from_utf8_lossy(&output.stdout).contains("line contact"));
+}

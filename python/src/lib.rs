@@ -209,7 +209,7 @@ fn scene_drawing(scene: &stressfield::scene::Scene, svg: bool) -> Result<Vec<u8>
     let drawing = if scene.wear.is_some() {
         let study = study::wear::study(scene, &mut |_| {})?;
         stressfield::figure::Drawing::Sheet(stressfield::figure::wear::wear_sheet(scene, &study))
-    } else if scene.plasticity.is_some() {
+    } else if scene.draws_plastic_sheet() {
         // A [plasticity] scene draws its elastic-plastic sheet, as `render` does.
         let study = study::plastic::study(scene, &mut |_| {})?;
         let sections = study::plastic::history::sheet_sections(&study);
@@ -250,7 +250,7 @@ fn scene_record(scene: &stressfield::scene::Scene, path: &Path) -> Result<()> {
         let study = study::wear::study(scene, &mut |_| {})?;
         let sections = study::wear::sections(&study, &mut |_| {})?;
         stressfield::record::record_wear_to(scene, &destination, &study, &sections)?;
-    } else if scene.plasticity.is_some() {
+    } else if scene.draws_plastic_sheet() {
         let study = study::plastic::study(scene, &mut |_| {})?;
         stressfield::record::record_plastic_to(scene, &destination, &study)?;
     } else {

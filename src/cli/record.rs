@@ -130,7 +130,7 @@ pub(super) fn record_scene_as(
     let summary = if scene.wear.is_some() {
         let study = super::wear::study(scene)?;
         record_wear(scene, &destination, &study)
-    } else if scene.plasticity.is_some() {
+    } else if scene.draws_plastic_sheet() {
         let study = super::plastic::solve(scene)?;
         stressfield::record::record_plastic_to(scene, &destination, &study)
     } else {
@@ -241,7 +241,7 @@ fn stream_scene(scene: &Scene, target: &Target, bar: &ProgressBar) -> Result<Str
     let summary = if scene.wear.is_some() {
         let study = super::wear::study(scene)?;
         record_wear(scene, &destination, &study)?
-    } else if scene.plasticity.is_some() {
+    } else if scene.draws_plastic_sheet() {
         let study = super::plastic::solve(scene)?;
         stressfield::record::record_plastic_to(scene, &destination, &study)?
     } else {

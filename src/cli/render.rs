@@ -193,7 +193,7 @@ fn render_scene(
     };
     // A [plasticity] scene's load steps are solved once, for the sheet and the recording.
     let plastic = match (&scene.plasticity, &wear) {
-        (Some(_), None) => Some(super::plastic::solve(scene)?),
+        (Some(_), None) if scene.draws_plastic_sheet() => Some(super::plastic::solve(scene)?),
         _ => None,
     };
     let drawing = match (&wear, &plastic) {

@@ -421,18 +421,18 @@ pub fn solve_observed(
 
 /// The cells that flow in a step (the accelerated unknowns), with their plastic strain before
 /// and after a return mapping.
-struct Active {
+pub(crate) struct Active {
     /// Flat cell indices `l ny nx + j nx + i`.
-    cells: Vec<usize>,
+    pub(crate) cells: Vec<usize>,
     member: Vec<bool>,
-    x: Vec<f64>,
-    g: Vec<f64>,
+    pub(crate) x: Vec<f64>,
+    pub(crate) g: Vec<f64>,
     /// Cells that joined during the last return mapping.
-    joined: Vec<usize>,
+    pub(crate) joined: Vec<usize>,
 }
 
 impl Active {
-    fn new(cells: usize) -> Self {
+    pub(crate) fn new(cells: usize) -> Self {
         Self {
             cells: Vec::new(),
             member: vec![false; cells],
@@ -442,7 +442,7 @@ impl Active {
         }
     }
 
-    fn clear(&mut self) {
+    pub(crate) fn clear(&mut self) {
         for &cell in &self.cells {
             self.member[cell] = false;
         }
@@ -452,7 +452,7 @@ impl Active {
 }
 
 /// The plastic strain of `cells` (flat indices), six values each, into `out`.
-fn gather(strain: &Array4<f64>, cells: &[usize], out: &mut Vec<f64>) {
+pub(crate) fn gather(strain: &Array4<f64>, cells: &[usize], out: &mut Vec<f64>) {
     let (_, _, ny, nx) = strain.dim();
     let layer = ny * nx;
     out.clear();
@@ -468,7 +468,7 @@ fn gather(strain: &Array4<f64>, cells: &[usize], out: &mut Vec<f64>) {
 }
 
 /// The inverse of [`gather`].
-fn scatter(strain: &mut Array4<f64>, cells: &[usize], values: &[f64]) {
+pub(crate) fn scatter(strain: &mut Array4<f64>, cells: &[usize], values: &[f64]) {
     let (_, _, ny, nx) = strain.dim();
     let layer = ny * nx;
     let Some(target) = strain.as_slice_mut() else {
@@ -488,7 +488,7 @@ fn scatter(strain: &mut Array4<f64>, cells: &[usize], values: &[f64]) {
 /// first time in the step join `active` (their `x` appended: the strain of the step's
 /// start).
 #[allow(clippy::too_many_arguments)]
-fn return_mapping(
+pub(crate) fn return_mapping(
     stress: &Array4<f64>,
     strain: &mut Array4<f64>,
     strain_start: &Array4<f64>,

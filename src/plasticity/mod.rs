@@ -6,6 +6,7 @@ pub mod anderson;
 pub mod column;
 pub mod halfspace;
 pub mod j2;
+pub mod line;
 pub mod loading;
 
 #[cfg(test)]

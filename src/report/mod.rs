@@ -8,6 +8,7 @@ pub mod commands;
 pub mod hertz;
 pub mod lubrication;
 pub mod plastic;
+pub mod plastic_line;
 pub mod probe;
 pub mod rough;
 pub mod surface;

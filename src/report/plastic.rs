@@ -60,7 +60,7 @@ pub struct UnloadedReport {
 }
 
 impl UnloadedReport {
-    fn of(unloaded: &Unloaded) -> Self {
+    pub(crate) fn of(unloaded: &Unloaded) -> Self {
         Self {
             residual_depth_m: unloaded.residual_depth_m,
             residual_von_mises_max_pa: unloaded.residual_von_mises_max_pa,

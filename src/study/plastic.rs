@@ -148,8 +148,14 @@ pub struct RoughPlastic {
 pub enum PlasticStudyError {
     #[error("the scene has no [plasticity]")]
     NotPlastic,
+    /// A line scene given to the point contact's study.
+    #[error("a line contact (plane strain) is computed by `stressfield plastic` (study::plastic::line), not by this entry point yet\nhint: run `stressfield plastic SCENE --json` for a line contact")]
+    LineContact,
     #[error(transparent)]
     Solve(#[from] PlasticContactError),
+    /// A line contact's solve (plane strain).
+    #[error(transparent)]
+    Line(#[from] crate::plasticity::line::LinePlasticError),
     /// The plastic zone reaches the volume grid's edge: the key to change and how.
     #[error("plasticity.{key}: {message}")]
     Grid { key: &'static str, message: String },
@@ -305,6 +311,7 @@ pub fn study(
         Some(Hertz::Elliptical(ellipse)) => {
             elliptic::study_elliptical(&spec, &ellipse, scene.contact.friction, progress)
         }
+        Some(Hertz::Line(_)) => Err(PlasticStudyError::LineContact),
         _ => Err(PlasticStudyError::NotPlastic),
     }
 }
@@ -574,6 +581,7 @@ pub fn components_last(stress: &ndarray::Array4<f64>) -> ndarray::Array4<f64> {
 }
 
 pub mod elliptic;
+pub mod line;
 pub mod rough;
 
 #[cfg(test)]

@@ -105,15 +105,15 @@ impl Validator<'_> {
         let rough = scene.contact.kind == ContactKind::Rough;
         if !matches!(
             scene.contact.kind,
-            ContactKind::Point | ContactKind::Elliptical | ContactKind::Rough
+            ContactKind::Point | ContactKind::Elliptical | ContactKind::Rough | ContactKind::Line
         ) {
             return Err(self.error(
                 "contact.kind",
                 format!(
-                    "[plasticity] is computed under point, elliptical and rough contacts so far, not `{}`",
+                    "[plasticity] is computed under point, elliptical, line and rough contacts so far, not `{}`",
                     raw.contact.kind.trim()
                 ),
-                Some("use contact.kind = \"point\" (a ball on a flat), \"elliptical\" or \"rough\""),
+                Some("use contact.kind = \"point\" (a ball on a flat), \"elliptical\", \"line\" (a roller, plane strain) or \"rough\""),
             ));
         }
         if rough {

@@ -123,14 +123,14 @@ pub struct Scene {
     pub lubricant: Option<LubricantSpec>,
 }
 
-/// Whether `render` and `record` draw the elastic-plastic sheet and load steps of this
-/// scene: a `[plasticity]` point, elliptical or rough contact (a line contact's plastic
-/// study has no sheet yet: its elastic figure is drawn).
-pub fn draws_plastic_sheet(&self) -> bool {
-    self.plasticity.is_some() && self.contact.kind != ContactKind::Line
-}
-
 impl Scene {
+    /// Whether `render` and `record` draw the elastic-plastic sheet and load steps of this
+    /// scene: a `[plasticity]` point, elliptical or rough contact (a line contact's plastic
+    /// study has no sheet yet: its elastic figure is drawn).
+    pub fn draws_plastic_sheet(&self) -> bool {
+        self.plasticity.is_some() && self.contact.kind != ContactKind::Line
+    }
+
     /// The yield strength of body 1: `contact.yield_strength` (or `hardness`), else
     /// `plasticity.yield_strength` (a scene gives it once; validation refuses both). The
     /// `hertz` report's yield assessment and the figure's yield line read it here, so that a

@@ -680,7 +680,7 @@ fn depths(layered: &Layered, cell_m: f64, semi_axis_m: f64) -> Vec<(f64, Side)> 
             let z = if i == deeper {
                 h
             } else {
-                near * ratio.powi(i as i32)
+                near * ratio.powi(i)
             };
             out.push((z, Side::Coating));
         }

@@ -677,11 +677,7 @@ fn depths(layered: &Layered, cell_m: f64, semi_axis_m: f64) -> Vec<(f64, Side)> 
         let deeper = 24;
         let ratio = (h / near).powf(1.0 / deeper as f64);
         for i in 1..=deeper {
-            let z = if i == deeper {
-                h
-            } else {
-                near * ratio.powi(i)
-            };
+            let z = if i == deeper { h } else { near * ratio.powi(i) };
             out.push((z, Side::Coating));
         }
     }

@@ -401,10 +401,7 @@ impl Scene {
         let (json, arrays) = py
             .detach(|| -> Result<(String, Option<PlasticFields>)> {
                 if self.scene.plasticity.is_none() {
-                    bail!(
-                        "{} has no [plasticity]\nhint: add [plasticity] with yield_strength = \"1 GPa\" to a point contact (body 1 flat, body 2 a ball, material = \"rigid\" allowed); see docs/plasticity.md",
-                        self.file
-                    );
+                    bail!(study::plastic::not_plastic_message(&self.file));
                 }
                 let study = study::plastic::study(&self.scene, &mut |_| {})
                     .with_context(|| format!("scene {}", self.scene.name))?;

@@ -21,10 +21,9 @@ use stressfield::study::plastic::{self, components_last, final_plastic_strain, P
 pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<()> {
     let scene = stressfield::study::load_scene(scene_path)?;
     let Some(spec) = scene.plasticity else {
-        bail!(
-            "{} has no [plasticity]\nhint: add [plasticity] with yield_strength = \"1 GPa\" to a point, elliptical or rough contact (body 1 the elastic-plastic one, body 2 material = \"rigid\" allowed); see docs/plasticity.md",
-            scene_path.display()
-        );
+        bail!(plastic::not_plastic_message(
+            &scene_path.display().to_string()
+        ));
     };
     if let Some(path) = fields {
         if !has_extension(path, "npz") && !is_device(path) {

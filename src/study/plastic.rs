@@ -143,6 +143,14 @@ pub struct RoughPlastic {
     pub plastic_footprint_m2: f64,
 }
 
+/// What `stressfield plastic` and Python's `Scene.plastic()` say of a scene (`file`, as the
+/// user named it) without `[plasticity]`: one message for both.
+pub fn not_plastic_message(file: &str) -> String {
+    format!(
+        "{file} has no [plasticity]\nhint: add [plasticity] with yield_strength = \"1 GPa\" to a point, elliptical, line or rough contact (body 1 the elastic-plastic one, body 2 material = \"rigid\" allowed); see docs/plasticity.md"
+    )
+}
+
 /// Why a plastic study failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum PlasticStudyError {

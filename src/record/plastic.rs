@@ -184,7 +184,7 @@ pub fn record(
         )?;
     }
     let series: [(&str, &str, [u8; 3]); 5] = [
-        ("series/load_over_first_yield", "W/W_Y", PALETTE[6]),
+        ("series/load_over_first_yield", "W/W_Y", PALETTE[4]),
         ("series/max_pressure_over_y", "p_max/Y", PALETTE[0]),
         ("series/mean_pressure_over_y", "p_m/Y", PALETTE[1]),
         ("series/contact_radius_over_a", "√(A/π)/a_H", PALETTE[2]),

@@ -87,8 +87,9 @@ pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<(
 /// The fields as a NumPy archive: `plastic_strain` (nz, ny, nx, the equivalent plastic
 /// strain after the last step), `residual_stress` (nz, ny, nx, 6, Pa, after unloading;
 /// components xx, yy, zz, yz, xz, xy), `stress` (the same at full load, the total stress),
-/// `pressure` (ny, nx, Pa, at full load), `x`, `y` (cell centres from the axis), `z` (cell
-/// centres' depth), m.
+/// `pressure` (ny, nx, Pa, at full load), `surface_displacement` (ny, nx, m, positive into the
+/// body: the surface displacement of the plastic strain after the last step, the dent's
+/// profile after unloading), `x`, `y` (cell centres from the axis), `z` (cell centres' depth), m.
 fn fields_npz(study: &PlasticStudy) -> Result<Vec<u8>> {
     let error = |e: ndarray_npy::WriteNpzError| anyhow::anyhow!("encoding the fields: {e}");
     let mut npz = NpzWriter::new(Cursor::new(Vec::new()));
@@ -105,6 +106,12 @@ fn fields_npz(study: &PlasticStudy) -> Result<Vec<u8>> {
     }
     npz.add_array("pressure", &study.loaded_snapshot().pressure_pa)
         .map_err(error)?;
+    let last = study.solution.snapshots.len() - 1;
+    npz.add_array(
+        "surface_displacement",
+        &study.solution.snapshots[last].plastic_displacement_m,
+    )
+    .map_err(error)?;
     for (name, values) in [("x", &study.x_m), ("y", &study.y_m), ("z", &study.z_m)] {
         npz.add_array(name, &Array1::from(values.clone()))
             .map_err(error)?;

@@ -556,6 +556,9 @@ pub(crate) fn solve_setup(
             3.0 * spec.yield_strength_pa / 1e6
         ));
     }
+    if loaded.max_plastic_strain > LARGE_PLASTIC_STRAIN {
+        warnings.push(large_strain_message(loaded.max_plastic_strain));
+    }
     Ok(PlasticStudy {
         spec: *spec,
         hertz,
@@ -573,6 +576,19 @@ pub(crate) fn solve_setup(
         warnings,
         history,
     })
+}
+
+/// The equivalent plastic strain beyond which a warning says that small strains no longer
+/// hold: at 5 % the engineering and the logarithmic strain differ by 2.5 % of the strain, and
+/// the rotations of the material, of the same order, are no longer small against the elastic
+/// strains at yield (Y/E ≈ 0.5 % for steel) that the half-space's influence functions assume.
+pub const LARGE_PLASTIC_STRAIN: f64 = 0.05;
+
+/// The warning for a largest equivalent plastic strain beyond [`LARGE_PLASTIC_STRAIN`].
+pub fn large_strain_message(max_plastic_strain: f64) -> String {
+    format!(
+        "the largest plastic strain {max_plastic_strain:.3} exceeds {LARGE_PLASTIC_STRAIN}: small strains no longer hold there (a finite-strain model would be needed for its value; the loads and the contact stay close)"
+    )
 }
 
 /// The equivalent plastic strain after the last step (`[nz, ny, nx]`).

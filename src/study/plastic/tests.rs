@@ -274,3 +274,37 @@ fn refinement_probe() {
         );
     }
 }
+
+#[test]
+fn a_plastic_strain_beyond_small_strains_is_warned_of() {
+    // The plastic strain scales with Y/E at a given p0/Y: a yield strength of E/42 (a hard,
+    // compliant solid) at p0 = 4 Y puts about 5 times the steel's 1.1e-2 under the ball.
+    let run = |yield_pa: f64| {
+        let mut spec = spec(3, 0, 24, 12);
+        spec.yield_strength_pa = yield_pa;
+        spec.extent_over_a = 2.0;
+        spec.depth_over_a = 2.5;
+        spec.tolerance = 1e-5;
+        let e_star = MODULUS / (1.0 - POISSON * POISSON);
+        let p0 = 4.0 * yield_pa;
+        let load = (p0 * std::f64::consts::PI).powi(3) * RADIUS * RADIUS / (6.0 * e_star * e_star);
+        let hertz = PointContact::from_effective(load, e_star, RADIUS);
+        study_point(&spec, &hertz, 0.0, &mut |_| {}).expect("solves")
+    };
+    let large = |study: &PlasticStudy| {
+        study
+            .warnings
+            .iter()
+            .any(|w| w.contains("small strains no longer hold there"))
+    };
+    let steel = run(YIELD);
+    assert!(steel.loaded.max_plastic_strain < LARGE_PLASTIC_STRAIN);
+    assert!(!large(&steel), "{:?}", steel.warnings);
+    let hard = run(MODULUS / 42.0);
+    assert!(
+        hard.loaded.max_plastic_strain > LARGE_PLASTIC_STRAIN,
+        "{}",
+        hard.loaded.max_plastic_strain
+    );
+    assert!(large(&hard), "{:?}", hard.warnings);
+}

@@ -170,8 +170,12 @@ impl PlasticReport {
                 )?;
                 writeln!(
                     out,
-                    "  grid {nx} x {ny} x {nz} cells over ±{} a and ±{} b, {} b deep; {steps}",
-                    study.spec.extent_over_a, study.spec.extent_over_a, study.spec.depth_over_a,
+                    "  grid {nx} x {ny} x {nz} cells over ±{} a and ±{} b, {} {} deep ({:.2} µm); {steps}",
+                    study.spec.extent_over_a,
+                    study.spec.extent_over_a,
+                    study.spec.depth_over_a,
+                    if ellipse.semi_axis_x_m <= ellipse.semi_axis_y_m { "a" } else { "b" },
+                    um(study.spec.depth_over_a * ellipse.semi_minor_m()),
                 )?;
             }
             PlasticKind::Rough(rough) => {

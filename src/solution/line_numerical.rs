@@ -69,16 +69,33 @@ impl StripTractions {
         ])
     }
 
+    /// The strips' stresses summed by parts: strip `i` contributes
+    /// `t_i (F(x − e_i) − F(x − e_{i+1}))` ([`strip::uniform_strip`]), so each edge's
+    /// antiderivatives `F(x − e_k)` enter once, weighted by the jump of the tractions there,
+    /// `t_k − t_{k−1}` (zero beyond the strips): one evaluation of the transcendental functions
+    /// per edge instead of two.
     fn summed(&self, x: f64, z: f64, nu: f64) -> Stress {
+        let n = self.pressure.len();
         let mut sum = [0.0; 3];
-        for (i, edge) in self.edges.windows(2).enumerate() {
-            let (normal, tangential) = strip::uniform_strip(x, z, edge[0], edge[1]);
-            let (p, q) = (self.pressure[i], self.shear[i]);
-            for k in 0..3 {
-                sum[k] += p * normal[k] + q * tangential[k];
+        let (mut p_before, mut q_before) = (0.0, 0.0);
+        for (k, &edge) in self.edges.iter().enumerate() {
+            let (p, q) = if k < n {
+                (self.pressure[k], self.shear[k])
+            } else {
+                (0.0, 0.0)
+            };
+            let (dp, dq) = (p - p_before, q - q_before);
+            (p_before, q_before) = (p, q);
+            if dp == 0.0 && dq == 0.0 {
+                continue;
             }
+            let f = strip::antiderivatives(x - edge, z);
+            sum[0] += dp * f[0] + dq * f[3];
+            sum[1] += dp * f[1] + dq * f[2];
+            sum[2] += dp * f[2] + dq * f[0];
         }
-        Stress::plane_strain(sum[0], sum[1], sum[2], nu)
+        let c = strip::STRIP_FACTOR;
+        Stress::plane_strain(c * sum[0], c * sum[1], c * sum[2], nu)
     }
 
     /// The tractions `(p, q)` of the strip containing `x` (zero outside the strips).
@@ -135,9 +152,13 @@ mod tests {
             // Just below the surface the exact sum is used, and it is close to the mean.
             let below = tractions.finite_stress_over_p0(0.0, 1e-3, 0.3);
             assert_eq!(below, tractions.stress_over_p0(0.0, 1e-3, 0.3));
-            // The exact value of the discrete tractions at an edge is not finite.
+            // The exact value of the discrete tractions at an edge where the traction jumps is
+            // not finite; at the centre x = 0 the two strips carry the same tractions (the
+            // discretised Hertz pressure is symmetric), no jump, and the value is finite.
             if mu > 0.0 {
-                assert!(!tractions.stress_over_p0(0.0, 0.0, 0.3).is_finite());
+                let jump = tractions.edges[3];
+                assert!(!tractions.stress_over_p0(jump, 0.0, 0.3).is_finite());
+                assert!(tractions.stress_over_p0(0.0, 0.0, 0.3).is_finite());
             }
         }
     }

@@ -27,28 +27,36 @@ use std::f64::consts::PI;
 /// Flamant solutions; the same chapter treats distributed loads on a strip.
 #[inline]
 pub fn uniform_strip(x: f64, z: f64, s1: f64, s2: f64) -> ([f64; 3], [f64; 3]) {
-    let antiderivatives = |big_x: f64| {
-        // r, not r², so that neither a tiny depth (z = 1e-200: z² underflows to zero, and the
-        // edge's ln r would be -inf on both sides of a difference) nor a far point overflows.
-        let r = big_x.hypot(z);
-        let half_angle = 0.5 * big_x.atan2(z);
-        let (cos, sin) = if r > 0.0 {
-            (z / r, big_x / r)
-        } else {
-            (0.0, 0.0)
-        };
-        let zx = 0.5 * cos * sin;
-        let zz = 0.5 * cos * cos;
-        // (∫X²z/r⁴, ∫z³/r⁴, ∫Xz²/r⁴, ∫X³/r⁴), with ½ ln r² = ln r
-        [half_angle - zx, half_angle + zx, -zz, r.ln() + zz]
-    };
-    let upper = antiderivatives(x - s1);
-    let lower = antiderivatives(x - s2);
+    let upper = antiderivatives(x - s1, z);
+    let lower = antiderivatives(x - s2, z);
     let d: [f64; 4] = std::array::from_fn(|i| upper[i] - lower[i]);
-    let f = -2.0 / PI;
+    let f = STRIP_FACTOR;
     let normal = [f * d[0], f * d[1], f * d[2]];
     let tangential = [f * d[3], f * d[2], f * d[0]];
     (normal, tangential)
+}
+
+/// The factor `-2/π` of the Flamant solutions in [`uniform_strip`].
+pub const STRIP_FACTOR: f64 = -2.0 / PI;
+
+/// The antiderivatives of [`uniform_strip`] at `X = x - s` and depth `z`:
+/// `(∫X²z/r⁴, ∫z³/r⁴, ∫Xz²/r⁴, ∫X³/r⁴)` in X (with `½ ln r² = ln r`). A strip's stress is
+/// `STRIP_FACTOR` times their difference between its edges: for a normal load
+/// `(sxx, szz, sxz)` from components `(0, 1, 2)`, for a tangential one from `(3, 2, 0)`.
+#[inline]
+pub fn antiderivatives(big_x: f64, z: f64) -> [f64; 4] {
+    // r, not r², so that neither a tiny depth (z = 1e-200: z² underflows to zero, and the
+    // edge's ln r would be -inf on both sides of a difference) nor a far point overflows.
+    let r = big_x.hypot(z);
+    let half_angle = 0.5 * big_x.atan2(z);
+    let (cos, sin) = if r > 0.0 {
+        (z / r, big_x / r)
+    } else {
+        (0.0, 0.0)
+    };
+    let zx = 0.5 * cos * sin;
+    let zz = 0.5 * cos * cos;
+    [half_angle - zx, half_angle + zx, -zz, r.ln() + zz]
 }
 
 #[cfg(test)]

@@ -152,11 +152,13 @@ pub(crate) fn sheet(
 /// The line (plane-strain) contact of `plastic`, with its progress bar.
 fn line_study(scene: &Scene, total: usize) -> Result<LinePlasticStudy> {
     let bar = progress_bar(total as u64);
-    let result = plastic::line::study(scene, &mut |step, iteration, residual| {
-        bar.set_position(step as u64);
+    let result = plastic::line::study(scene, &mut |progress| {
+        bar.set_position(progress.step as u64);
         bar.set_message(format!(
-            "step {}: it. {iteration}, {residual:.0e}",
-            step + 1
+            "step {}: it. {}, {:.0e}",
+            progress.step + 1,
+            progress.iteration,
+            progress.residual
         ));
     });
     bar.finish_and_clear();

@@ -161,9 +161,6 @@ pub enum PlasticStudyError {
     LineContact,
     #[error(transparent)]
     Solve(#[from] PlasticContactError),
-    /// A line contact's solve (plane strain).
-    #[error(transparent)]
-    Line(#[from] crate::plasticity::line::LinePlasticError),
     /// The plastic zone reaches the volume grid's edge: the key to change and how.
     #[error("plasticity.{key}: {message}")]
     Grid { key: &'static str, message: String },

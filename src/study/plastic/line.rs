@@ -16,10 +16,10 @@ use super::{step_loads, PlasticStudyError, Unloaded, MAX_ITERATIONS};
 use crate::contact::LineContact;
 use crate::plasticity::column::DepthCells;
 use crate::plasticity::j2::Hardening;
-use crate::plasticity::line::{
-    self, LineGrid, LinePlasticProblem, LinePlasticSolution, LineSnapshot,
+use crate::plasticity::line::{self, LineGrid, LinePlasticProblem};
+use crate::plasticity::loading::{
+    largest, von_mises_field, PlasticContactSolution, Progress, Snapshot, PLASTIC_ZONE_STRAIN,
 };
-use crate::plasticity::loading::{largest, von_mises_field, PLASTIC_ZONE_STRAIN};
 use crate::scene::{Hertz, PlasticitySpec, Scene};
 
 /// Differences kept by the Anderson acceleration of each step's fixed point.
@@ -60,7 +60,7 @@ pub struct LinePlasticStudy {
     /// Cell centres (m): x (from the axis) and depth z.
     pub x_m: Vec<f64>,
     pub z_m: Vec<f64>,
-    pub solution: LinePlasticSolution,
+    pub solution: PlasticContactSolution,
     pub loaded: LineLoaded,
     /// `residual_von_mises_max_r_m` is the distance from the axis, `|x|`.
     pub unloaded: Option<Unloaded>,
@@ -70,11 +70,11 @@ pub struct LinePlasticStudy {
 }
 
 impl LinePlasticStudy {
-    pub fn loaded_snapshot(&self) -> &LineSnapshot {
+    pub fn loaded_snapshot(&self) -> &Snapshot {
         &self.solution.snapshots[0]
     }
 
-    pub fn unloaded_snapshot(&self) -> Option<&LineSnapshot> {
+    pub fn unloaded_snapshot(&self) -> Option<&Snapshot> {
         self.unloaded.as_ref().and(self.solution.snapshots.get(1))
     }
 
@@ -111,7 +111,7 @@ pub fn line_grid(spec: &PlasticitySpec, b_m: f64) -> Result<LineGrid, PlasticStu
 /// iteration.
 pub fn study(
     scene: &Scene,
-    progress: &mut dyn FnMut(usize, usize, f64),
+    progress: &mut dyn FnMut(Progress),
 ) -> Result<LinePlasticStudy, PlasticStudyError> {
     let spec = scene.plasticity.ok_or(PlasticStudyError::NotPlastic)?;
     let Some(dimensional) = scene.contact.dimensional else {
@@ -135,7 +135,7 @@ pub fn study_line(
     hertz: &LineContact,
     counter: Option<(f64, f64)>,
     friction: f64,
-    progress: &mut dyn FnMut(usize, usize, f64),
+    progress: &mut dyn FnMut(Progress),
 ) -> Result<LinePlasticStudy, PlasticStudyError> {
     let b = hertz.half_width_m;
     let grid = line_grid(spec, b)?;
@@ -169,7 +169,7 @@ pub fn study_line(
         max_iterations: MAX_ITERATIONS,
         acceleration: ACCELERATION,
     };
-    let solution = line::solve(&problem, progress)?;
+    let solution = line::solve(&problem, progress, None)?;
     let loaded_state = &solution.snapshots[0];
     let kappa = &loaded_state.equivalent_plastic_strain;
     let mut at_bottom = false;

@@ -387,7 +387,7 @@ yield_strength = "1 GPa"
 hardening_modulus = "0 GPa"
 steps = 2
 unload_steps = 1
-grid_cells = 32
+grid_cells = 48
 depth_cells = 12
 extent_over_a = 3.0
 depth_over_a = 2.0
@@ -414,9 +414,9 @@ def test_scene_plastic_of_a_line_is_plastic_json_and_its_one_row_fields(tmp_path
     for name in names:
         np.testing.assert_array_equal(got.pop(name), archive[name], err_msg=name)
     assert got == expected
-    assert archive["plastic_strain"].shape == (12, 1, 32)
-    assert archive["residual_stress"].shape == (12, 1, 32, 6)
-    assert archive["pressure"].shape == (1, 32)
+    assert archive["plastic_strain"].shape == (12, 1, 48)
+    assert archive["residual_stress"].shape == (12, 1, 48, 6)
+    assert archive["pressure"].shape == (1, 48)
     np.testing.assert_array_equal(archive["y"], [0.0])
 def test_scene_ehl_is_ehl_json_and_the_pressure_file(tmp_path):
     path = SCENES / "lubricated_roller_bearing.toml"

@@ -111,3 +111,17 @@ fn golden_plastic_sheet() {
     let actual = render::chart::sheet_png(&sheet).expect("renders");
     check_image("plastic_sheet", &actual);
 }
+
+/// The elastic-plastic sheet of a line contact (plane strain): a coarse rigid roller at
+/// p0(Hertz) = 2.2 Y sliding at μ = 0.3, drawn by `render`'s path.
+#[test]
+fn golden_plastic_line_sheet() {
+    let scene =
+        Scene::load(&golden_dir().join("plastic_line_sheet.toml")).expect("golden scene is valid");
+    let study = stressfield::study::plastic::study(&scene, &mut |_| {}).expect("solves");
+    let sections = stressfield::study::plastic::history::sheet_sections(&study);
+    let title = scene.title.clone().unwrap_or_default();
+    let sheet = figure::plastic::plastic_sheet(&title, &study, &sections);
+    let actual = render::chart::sheet_png(&sheet).expect("renders");
+    check_image("plastic_line_sheet", &actual);
+}

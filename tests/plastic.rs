@@ -360,4 +360,9 @@ fn a_line_contact_reports_the_line_s_keys_and_one_row_fields() {
     let output = run(&["plastic", path.to_str().expect("utf-8")]);
     assert!(output.status.success(), "{}", stderr(&output));
     assert!(String::from_utf8_lossy(&output.stdout).contains("line contact"));
+    // `check` plans the x–z cells of the line (it planned a 64 x 64 x 24 volume before).
+    let output = run(&["check", path.to_str().expect("utf-8")]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = String::from_utf8_lossy(&output.stdout).to_string() + &stderr(&output);
+    assert!(text.contains("plastic: 64 x 1 x 24 cells"), "{text}");
 }

@@ -416,6 +416,10 @@ impl Scene {
                         .unloaded_snapshot()
                         .map(|state| study::plastic::components_last(&state.stress_pa)),
                     pressure: study.loaded_snapshot().pressure_pa.clone(),
+                    surface_displacement: study.solution.snapshots
+                        [study.solution.snapshots.len() - 1]
+                        .plastic_displacement_m
+                        .clone(),
                     axes: [study.x_m.clone(), study.y_m.clone(), study.z_m.clone()],
                 };
                 Ok((json, Some(arrays)))
@@ -430,6 +434,7 @@ impl Scene {
                     a.stress.into_pyarray(py),
                     a.residual_stress.map(|r| r.into_pyarray(py)),
                     a.pressure.into_pyarray(py),
+                    a.surface_displacement.into_pyarray(py),
                     x.into_pyarray(py),
                     y.into_pyarray(py),
                     z.into_pyarray(py),
@@ -1098,15 +1103,17 @@ struct PlasticFields {
     stress: Array4<f64>,
     residual_stress: Option<Array4<f64>>,
     pressure: Array2<f64>,
+    surface_displacement: Array2<f64>,
     axes: [Vec<f64>; 3],
 }
 
 /// [`PlasticFields`] handed to Python: plastic strain, stress, residual stress (unloaded
-/// only), pressure, x, y, z.
+/// only), pressure, surface displacement, x, y, z.
 type PlasticArrays<'py> = (
     Bound<'py, PyArray3<f64>>,
     Bound<'py, PyArray4<f64>>,
     Option<Bound<'py, PyArray4<f64>>>,
+    Bound<'py, PyArray2<f64>>,
     Bound<'py, PyArray2<f64>>,
     Bound<'py, PyArray1<f64>>,
     Bound<'py, PyArray1<f64>>,

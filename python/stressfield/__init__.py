@@ -255,12 +255,17 @@ class Scene:
         ``plastic --fields``: ``"plastic_strain"`` (the equivalent plastic strain after the
         last step, ``(nz, ny, nx)``), ``"stress"`` (the total stress at full load) and
         ``"residual_stress"`` (after unloading, when unloaded), ``(nz, ny, nx, 6)`` Pa in the
-        order of :data:`COMPONENTS`, ``"pressure"`` (Pa at full load, ``(ny, nx)``) and the
-        cell centres ``"x"``, ``"y"`` (from the axis) and ``"z"`` (depth), m."""
+        order of :data:`COMPONENTS`, ``"pressure"`` (Pa at full load, ``(ny, nx)``),
+        ``"surface_displacement"`` (m into the body, ``(ny, nx)``: the plastic strain's surface
+        displacement after the last step, the dent's profile after unloading) and the
+        cell centres ``"x"``, ``"y"`` (from the axis) and ``"z"`` (depth), m. A line contact
+        (plane strain) gives the line's keys (``load_n_per_m``, ``half_width_m``,
+        ``plastic_area_m2``) and arrays of one row in y: ``(nz, 1, nx)``, ``y = [0]``."""
         text, arrays = self._scene.plastic(bool(fields))
         out = _json.loads(text)
         if arrays is not None:
-            names = ("plastic_strain", "stress", "residual_stress", "pressure", "x", "y", "z")
+            names = ("plastic_strain", "stress", "residual_stress", "pressure",
+                     "surface_displacement", "x", "y", "z")
             for name, value in zip(names, arrays):
                 if value is not None:
                     out[name] = value

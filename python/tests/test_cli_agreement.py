@@ -358,7 +358,8 @@ def test_scene_plastic_is_plastic_json_and_its_fields(tmp_path):
     assert scene.plastic() == expected
     got = scene.plastic(fields=True)
     archive = np.load(npz)
-    names = ["plastic_strain", "stress", "residual_stress", "pressure", "x", "y", "z"]
+    names = ["plastic_strain", "stress", "residual_stress", "pressure", "surface_displacement",
+             "x", "y", "z"]
     assert sorted(archive.files) == sorted(names)
     for name in names:
         np.testing.assert_array_equal(got.pop(name), archive[name], err_msg=name)
@@ -369,6 +370,56 @@ def test_scene_plastic_is_plastic_json_and_its_fields(tmp_path):
     with pytest.raises(sf.StressfieldError) as caught:
         sf.load_scene(line).plastic()
     assert str(caught.value) == cli_error("plastic", line)
+
+
+SMALL_PLASTIC_LINE = """format = 1
+[contact]
+kind = "line"
+load = "660 kN/m"
+friction = 0.3
+[contact.body1]
+radius = "flat"
+material = "steel"
+[contact.body2]
+radius = "10 mm"
+material = "rigid"
+[plasticity]
+yield_strength = "1 GPa"
+hardening_modulus = "0 GPa"
+steps = 2
+unload_steps = 1
+grid_cells = 48
+depth_cells = 12
+extent_over_a = 3.0
+depth_over_a = 2.0
+tolerance = 1e-4
+"""
+
+
+def test_scene_plastic_of_a_line_is_plastic_json_and_its_one_row_fields(tmp_path):
+    """Issue 51: a line contact (plane strain) through Scene.plastic() is `plastic --json` to
+    the last digit, with the line's keys; fields=True gives the arrays of `plastic --fields`
+    bit for bit, one row in y (nz, 1, nx)."""
+    path = tmp_path / "plastic_line.toml"
+    path.write_text(SMALL_PLASTIC_LINE)
+    npz = tmp_path / "fields.npz"
+    expected = cli_json("plastic", path, "--json", "--fields", npz)
+    assert "load_n_per_m" in expected and "load_n" not in expected
+    assert "half_width_m" in expected["loaded"] and "plastic_area_m2" in expected["loaded"]
+    scene = sf.load_scene(path)
+    assert scene.plastic() == expected
+    got = scene.plastic(fields=True)
+    archive = np.load(npz)
+    names = ["plastic_strain", "stress", "residual_stress", "pressure", "surface_displacement",
+             "x", "y", "z"]
+    assert sorted(archive.files) == sorted(names)
+    for name in names:
+        np.testing.assert_array_equal(got.pop(name), archive[name], err_msg=name)
+    assert got == expected
+    assert archive["plastic_strain"].shape == (12, 1, 48)
+    assert archive["residual_stress"].shape == (12, 1, 48, 6)
+    assert archive["pressure"].shape == (1, 48)
+    np.testing.assert_array_equal(archive["y"], [0.0])
 def test_scene_ehl_is_ehl_json_and_the_pressure_file(tmp_path):
     path = SCENES / "lubricated_roller_bearing.toml"
     npy = tmp_path / "ehl.npy"

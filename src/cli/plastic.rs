@@ -12,9 +12,6 @@ use super::console::{print_err, print_out, progress_bar};
 use super::npy::{has_extension, is_device, Reserved};
 use stressfield::io::output::Staged;
 use stressfield::report::plastic::PlasticReport;
-use stressfield::report::plastic_line::LinePlasticReport;
-use stressfield::scene::{ContactKind, Scene};
-use stressfield::study::plastic::line::LinePlasticStudy;
 use stressfield::study::plastic::{self, components_last, final_plastic_strain, PlasticStudy};
 
 /// `plastic SCENE [--json] [--fields FILE.npz]`.
@@ -39,23 +36,6 @@ pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<(
         .map(|path| Reserved::new(&mut staged, path))
         .transpose()?;
     let total = spec.steps + if spec.unload { spec.unload_steps } else { 0 };
-    if scene.contact.kind == ContactKind::Line {
-        let study = line_study(&scene, total)?;
-        let report = LinePlasticReport::new(&study);
-        if let Some(reserved) = &reserved {
-            reserved.fill(&line_fields_npz(&study)?)?;
-        }
-        staged.commit()?;
-        if json {
-            print_out(&report.json())?;
-            for warning in &study.warnings {
-                print_err(&format!("warning: {warning}"));
-            }
-        } else {
-            print_out(&report.text(&study))?;
-        }
-        return Ok(());
-    }
     let bar = progress_bar(total as u64);
     let result = plastic::study(&scene, &mut |progress| {
         bar.set_position(progress.step as u64);
@@ -90,6 +70,7 @@ pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<(
 /// `pressure` (ny, nx, Pa, at full load), `surface_displacement` (ny, nx, m, positive into the
 /// body: the surface displacement of the plastic strain after the last step, the dent's
 /// profile after unloading), `x`, `y` (cell centres from the axis), `z` (cell centres' depth), m.
+/// A line contact's have one row in y (`ny = 1`, `y = [0]`).
 fn fields_npz(study: &PlasticStudy) -> Result<Vec<u8>> {
     let error = |e: ndarray_npy::WriteNpzError| anyhow::anyhow!("encoding the fields: {e}");
     let mut npz = NpzWriter::new(Cursor::new(Vec::new()));
@@ -154,44 +135,4 @@ pub(crate) fn sheet(
     let sections = plastic::history::sheet_sections(study);
     let title = scene.title.clone().unwrap_or_else(|| scene.name.clone());
     stressfield::figure::plastic::plastic_sheet(&title, study, &sections)
-}
-
-/// The line (plane-strain) contact of `plastic`, with its progress bar.
-fn line_study(scene: &Scene, total: usize) -> Result<LinePlasticStudy> {
-    let bar = progress_bar(total as u64);
-    let result = plastic::line::study(scene, &mut |step, iteration, residual| {
-        bar.set_position(step as u64);
-        bar.set_message(format!(
-            "step {}: it. {iteration}, {residual:.0e}",
-            step + 1
-        ));
-    });
-    bar.finish_and_clear();
-    result.with_context(|| format!("scene {}", scene.name))
-}
-
-/// A line contact's fields: the arrays of [`fields_npz`] with one row in y (`plastic_strain`
-/// (nz, 1, nx), `stress` and `residual_stress` (nz, 1, nx, 6), `pressure` (1, nx)), `y` = [0].
-fn line_fields_npz(study: &LinePlasticStudy) -> Result<Vec<u8>> {
-    let error = |e: ndarray_npy::WriteNpzError| anyhow::anyhow!("encoding the fields: {e}");
-    let mut npz = NpzWriter::new(Cursor::new(Vec::new()));
-    npz.add_array("plastic_strain", study.final_plastic_strain())
-        .map_err(error)?;
-    npz.add_array(
-        "stress",
-        &components_last(&study.loaded_snapshot().stress_pa),
-    )
-    .map_err(error)?;
-    if let Some(state) = study.unloaded_snapshot() {
-        npz.add_array("residual_stress", &components_last(&state.stress_pa))
-            .map_err(error)?;
-    }
-    npz.add_array("pressure", &study.loaded_snapshot().pressure_pa)
-        .map_err(error)?;
-    for (name, values) in [("x", &study.x_m), ("y", &vec![0.0]), ("z", &study.z_m)] {
-        npz.add_array(name, &Array1::from(values.clone()))
-            .map_err(error)?;
-    }
-    let cursor = npz.finish().map_err(error)?;
-    Ok(cursor.into_inner())
 }

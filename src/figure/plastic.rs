@@ -18,6 +18,16 @@
 //!   residual stress, its `σxx` (on `y = 0` the radial stress) and `σyy` (the hoop stress),
 //!   each with the plastic zone outlined.
 //!
+//! A line contact (plane strain) draws the same sheet on axes over Hertz's half-width `b`:
+//! the pressure beside Hertz's line `p0 √(1 - x²/b²)`; the load per unit length against the
+//! approach (of the points at the grid's depth below each surface, as the study reports it)
+//! beside the elastic line contact's ([`crate::study::plastic::history::elastic_approach_m`])
+//! over first yield's (`p0 = Y / 0.5575` for ν = 0.3, McEwen's axis maximum); the residual
+//! `σyy` is the out-of-plane stress. It has no mean-pressure panel: Johnson's cavity model and
+//! Tabor's 3 Y are results of axisymmetric indentation, and the plane-strain limit (Prandtl's
+//! `(2 + π) k` of a flat punch) is not that of a cylinder at small strains, so the panel would
+//! have no reference to read the steps against.
+//!
 //! Draws what [`crate::study::plastic`] computed; solves nothing.
 //!
 //! ## References
@@ -32,8 +42,8 @@ use crate::render::chart::{Cell, Chart, Scale, Series, Sheet, Style, PALETTE};
 use crate::render::{
     contour_lines, ColorMap, Figure, Levels, Mark, Panel, PanelScale, TractionSample,
 };
-use crate::study::plastic::history::{first_yield_load_n, SheetSections};
-use crate::study::plastic::PlasticStudy;
+use crate::study::plastic::history::{elastic_approach_m, first_yield, SheetSections};
+use crate::study::plastic::{PlasticKind, PlasticStudy};
 
 const MAP_WIDTH: u32 = 380;
 const CHART_WIDTH: u32 = 520;
@@ -44,9 +54,18 @@ const RED: [u8; 3] = [214, 39, 40];
 /// wander through them; 0.995 follows the zone's edge from the elastic side.
 pub const YIELD_LINE_FRACTION: f64 = 0.995;
 
-/// The sections' axes over `a_H`: cell centres along x and in depth.
+/// The length the axes are measured in: Hertz's contact radius `a_H`, a line's half-width `b`.
+pub fn length_unit(study: &PlasticStudy) -> &'static str {
+    if study.kind == PlasticKind::Line {
+        "b"
+    } else {
+        "a_H"
+    }
+}
+
+/// The sections' axes over `a_H` (a line's `b`): cell centres along x and in depth.
 pub fn axes(study: &PlasticStudy) -> (Axis, Axis) {
-    let a = study.hertz.radius_m;
+    let a = study.hertz.size_m();
     let (x, z) = (&study.x_m, &study.z_m);
     (
         Axis::new(x[0] / a, x[x.len() - 1] / a, x.len()),
@@ -72,7 +91,8 @@ fn map(
     mark: Mark,
 ) -> Figure {
     let (x, z) = axes(study);
-    let half_width = study.loaded.contact_radius_m / study.hertz.radius_m;
+    let half_width = study.loaded.contact_radius_m / study.hertz.size_m();
+    let unit = length_unit(study);
     Figure {
         title: title.into(),
         panels: vec![Panel {
@@ -88,8 +108,8 @@ fn map(
             axes: None,
         }],
         value_label: scale.value_label,
-        x_label: "x/a_H".into(),
-        z_label: "z/a_H".into(),
+        x_label: format!("x/{unit}"),
+        z_label: format!("z/{unit}"),
         vertical_is_depth: true,
         traction_label: "p/Y".into(),
         colormap: scale.colormap,
@@ -111,11 +131,11 @@ fn magnitude(values: &Array2<f64>) -> f64 {
 pub fn pressure_chart(study: &PlasticStudy, pressure_pa: &[f64], title: &str) -> Chart {
     let y = study.spec.yield_strength_pa;
     let hertz = &study.hertz;
-    let a = hertz.radius_m;
+    let a = hertz.size_m();
     let (x_axis, _) = axes(study);
-    let p0_over_y = hertz.p0_pa / y;
+    let p0_over_y = hertz.p0_pa() / y;
     let largest = pressure_pa.iter().fold(0.0, |m: f64, &p| m.max(p));
-    let mut pressure = Chart::new(title, "x/a_H", "p/Y");
+    let mut pressure = Chart::new(title, &format!("x/{}", length_unit(study)), "p/Y");
     pressure.width_px = CHART_WIDTH;
     pressure.x_range = Some((x_axis.min, x_axis.max));
     let top = p0_over_y.max(study.loaded.max_pressure_pa / y);
@@ -149,11 +169,7 @@ pub fn pressure_chart(study: &PlasticStudy, pressure_pa: &[f64], title: &str) ->
 /// The load against the approach over first yield's (module doc), the first `shown` steps
 /// drawn, on the axes of all of them.
 pub fn load_approach_chart(study: &PlasticStudy, shown: usize) -> Chart {
-    let y = study.spec.yield_strength_pa;
-    let hertz = &study.hertz;
-    let nu = study.spec.body1.poisson;
-    let load_y = first_yield_load_n(hertz, nu, y);
-    let approach_y = hertz.approach_m * (load_y / hertz.load_n).powf(2.0 / 3.0);
+    let (load_y, approach_y) = first_yield(study);
     let points = &study.history.points;
     let at = |point: &crate::study::plastic::history::StepPoint| {
         // Lifted off: the indenter leaves the dent (the permanent displacement on the axis).
@@ -174,7 +190,11 @@ pub fn load_approach_chart(study: &PlasticStudy, shown: usize) -> Chart {
     }
     let mut curve = Chart::new(
         "Load against approach",
-        "δ/δ_Y (approach over first yield's)",
+        if study.kind == PlasticKind::Line {
+            "δ/δ_Y (approach to the grid's depth over first yield's)"
+        } else {
+            "δ/δ_Y (approach over first yield's)"
+        },
         "W/W_Y",
     );
     curve.width_px = CHART_WIDTH;
@@ -182,14 +202,16 @@ pub fn load_approach_chart(study: &PlasticStudy, shown: usize) -> Chart {
     let largest_approach = points.iter().map(at).fold(1.0, |m: f64, p| m.max(p.0));
     curve.x_range = Some((0.0, 1.1 * largest_approach));
     curve.y_range = Some((0.0, 1.35 * largest_load.max(1.0)));
-    let hertz_top = 1.1 * largest_approach;
+    // Hertz's elastic curve, sampled in the load up to the chart's top.
+    let load_top = 1.35 * largest_load.max(1.0) * load_y;
     curve.series.push(Series {
         label: "Hertz (elastic)".into(),
         points: (0..=120)
             .map(|k| {
-                let d = hertz_top * k as f64 / 120.0;
-                (d, d.powf(1.5))
+                let load = load_top * k as f64 / 120.0;
+                (elastic_approach_m(study, load) / approach_y, load / load_y)
             })
+            .filter(|&(d, _)| d <= 1.1 * largest_approach)
             .collect(),
         style: Style::Dashed,
         colour: GREY,
@@ -218,11 +240,19 @@ pub fn load_approach_chart(study: &PlasticStudy, shown: usize) -> Chart {
         });
     }
     curve.series.push(Series {
-        label: format!(
-            "first yield: W_Y = {:.2} N, δ_Y = {:.3} µm",
-            load_y,
-            approach_y * 1e6
-        ),
+        label: if study.kind == PlasticKind::Line {
+            format!(
+                "first yield: W_Y = {:.1} kN/m, δ_Y = {:.3} µm",
+                load_y * 1e-3,
+                approach_y * 1e6
+            )
+        } else {
+            format!(
+                "first yield: W_Y = {:.2} N, δ_Y = {:.3} µm",
+                load_y,
+                approach_y * 1e6
+            )
+        },
         points: vec![(1.0, 1.0)],
         style: Style::Markers,
         colour: RED,
@@ -235,8 +265,8 @@ pub fn load_approach_chart(study: &PlasticStudy, shown: usize) -> Chart {
 pub fn mean_pressure_chart(study: &PlasticStudy, shown: usize) -> Chart {
     let y = study.spec.yield_strength_pa;
     let hertz = &study.hertz;
-    let e_star = hertz.effective_modulus_pa;
-    let radius = hertz.effective_radius_m;
+    let e_star = hertz.effective_modulus_pa();
+    let radius = hertz.effective_radius_m();
     let parameter = |a_m: f64| e_star * a_m / (y * radius);
     let modulus_ratio = study.spec.body1.modulus_pa / e_star;
     let mut mean = Chart::new("Mean pressure over the load steps", "E* a/(Y R)", "p_m/Y");
@@ -288,8 +318,9 @@ pub fn mean_pressure_chart(study: &PlasticStudy, shown: usize) -> Chart {
 pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections) -> Sheet {
     let y = study.spec.yield_strength_pa;
     let h = study.spec.hardening_modulus_pa;
-    let hertz = &study.hertz;
-    let a = hertz.radius_m;
+    let a = study.hertz.size_m();
+    let unit = length_unit(study);
+    let line = study.kind == PlasticKind::Line;
     let (x_axis, z_axis) = axes(study);
     let over_a: Vec<f64> = study.x_m.iter().map(|x| x / a).collect();
     let mu = study.friction;
@@ -297,10 +328,13 @@ pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections
     let pressure = pressure_chart(
         study,
         &sections.loaded.pressure_pa,
-        "Pressure at full load, y = 0",
+        if line {
+            "Pressure at full load"
+        } else {
+            "Pressure at full load, y = 0"
+        },
     );
     let curve = load_approach_chart(study, study.history.points.len());
-    let mean = mean_pressure_chart(study, study.history.points.len());
 
     // The maps of the section.
     let strain_outline =
@@ -320,7 +354,7 @@ pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections
         study,
         "Equivalent plastic strain at full load",
         format!(
-            "max {:.2e} at z = {:.2} a_H; dashed: εp = 1e-5",
+            "max {:.2e} at z = {:.2} {unit}; dashed: εp = 1e-5",
             study.loaded.max_plastic_strain,
             study.loaded.max_plastic_strain_depth_m / a
         ),
@@ -359,8 +393,15 @@ pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections
         traction,
         Mark::Max,
     );
+    let mut charts = vec![Cell::Chart(pressure), Cell::Chart(curve)];
+    if !line {
+        charts.push(Cell::Chart(mean_pressure_chart(
+            study,
+            study.history.points.len(),
+        )));
+    }
     let mut rows = vec![
-        vec![Cell::Chart(pressure), Cell::Chart(curve), Cell::Chart(mean)],
+        charts,
         vec![Cell::Map(strain_map), Cell::Map(von_mises_map)],
     ];
     if let (Some(unloaded), Some(xx), Some(yy), Some(state)) = (
@@ -374,9 +415,10 @@ pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections
             study,
             "Residual von Mises after unloading",
             format!(
-                "max {:.3} Y at z = {:.2} a_H, r = {:.2} a_H; dashed: plastic zone",
+                "max {:.3} Y at z = {:.2} {unit}, {} = {:.2} {unit}; dashed: plastic zone",
                 state.residual_von_mises_max_pa / y,
                 state.residual_von_mises_max_depth_m / a,
+                if line { "|x|" } else { "r" },
                 state.residual_von_mises_max_r_m / a
             ),
             unloaded.von_mises_pa.mapv(|v| v / y),
@@ -411,13 +453,21 @@ pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections
         rows.push(vec![
             Cell::Map(residual),
             Cell::Map(signed(
-                "Residual σxx (radial on y = 0)",
+                if line {
+                    "Residual σxx"
+                } else {
+                    "Residual σxx (radial on y = 0)"
+                },
                 "tension positive; dashed: plastic zone",
                 "σxx/Y",
                 xx,
             )),
             Cell::Map(signed(
-                "Residual σyy (hoop on y = 0)",
+                if line {
+                    "Residual σyy (out of plane, ε_yy = 0)"
+                } else {
+                    "Residual σyy (hoop on y = 0)"
+                },
                 "tension positive; dashed: plastic zone",
                 "σyy/Y",
                 yy,
@@ -438,8 +488,17 @@ pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections
         notes.push("not converged: some steps did not reach plasticity.tolerance (see `stressfield plastic`)".to_string());
     }
     notes.extend(study.warnings.iter().cloned());
-    Sheet {
-        title: format!(
+    let title = if line {
+        format!(
+            "{title}: Y = {:.0} MPa, h = {:.0} MPa, b = {:.1} µm, μ = {mu}, plane strain; {steps}, {} x {} cells (x, z)",
+            y * 1e-6,
+            h * 1e-6,
+            a * 1e6,
+            study.x_m.len(),
+            study.z_m.len()
+        )
+    } else {
+        format!(
             "{title}: Y = {:.0} MPa, h = {:.0} MPa, a_H = {:.1} µm, μ = {mu}; {steps}, {} x {} x {} cells",
             y * 1e-6,
             h * 1e-6,
@@ -447,8 +506,7 @@ pub fn plastic_sheet(title: &str, study: &PlasticStudy, sections: &SheetSections
             study.x_m.len(),
             study.y_m.len(),
             study.z_m.len()
-        ),
-        notes,
-        rows,
-    }
+        )
+    };
+    Sheet { title, notes, rows }
 }

@@ -54,13 +54,14 @@
 use std::f64::consts::PI;
 use std::sync::Arc;
 
-use ndarray::{Array2, Array3, Array4};
+use ndarray::{Array2, Array4};
 use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
 
-use super::anderson::Anderson;
 use super::column::{Column, ColumnWork, DepthCells, C64, XX, XZ, YY, ZZ};
 use super::j2::Hardening;
-use super::loading::{gather, return_mapping, scatter, Active, PLASTIC_ZONE_STRAIN};
+use super::loading::{
+    run, PlasticBody, PlasticContactError, PlasticContactSolution, Progress, StepState, Steps,
+};
 use crate::solution::strip::uniform_strip;
 
 const ZERO: C64 = C64 { re: 0.0, im: 0.0 };
@@ -86,21 +87,6 @@ impl LineGrid {
             .map(|i| (i as f64 - (self.cells / 2) as f64) * self.spacing_m)
             .collect()
     }
-}
-
-/// Why a plane-strain elastic-plastic contact has no solution.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum LinePlasticError {
-    #[error("{0}")]
-    Parameter(String),
-    #[error("the FFT of the plane operator: {0}")]
-    Transform(String),
-    #[error("the line contact at step {step} ({load_n_per_m:.4e} N/m): {message}")]
-    Contact {
-        step: usize,
-        load_n_per_m: f64,
-        message: String,
-    },
 }
 
 /// The residual stress of a plane-strain eigenstrain and the contact's stress, on a
@@ -150,11 +136,11 @@ impl PlaneStrainSpace {
         strain: &Array4<f64>,
         stress: &mut Array4<f64>,
         surface: &mut [f64],
-    ) -> Result<(), LinePlasticError> {
+    ) -> Result<(), PlasticContactError> {
         let [nz, nx] = self.grid.dims();
         let n = 2 * nx;
         let bins = nx + 1;
-        let fft_error = |e: realfft::FftError| LinePlasticError::Transform(e.to_string());
+        let fft_error = |e: realfft::FftError| PlasticContactError::Transform(e.to_string());
         // spectra[l][c][bin]
         let mut spectra = vec![vec![vec![ZERO; bins]; 6]; nz];
         let mut input = vec![0.0; n];
@@ -220,7 +206,7 @@ impl PlaneStrainSpace {
         let mut scratch = self.inverse.make_scratch_vec();
         let scale = 1.0 / n as f64;
         let mut invert =
-            |spectrum: &mut Vec<C64>, output: &mut Vec<f64>| -> Result<(), LinePlasticError> {
+            |spectrum: &mut Vec<C64>, output: &mut Vec<f64>| -> Result<(), PlasticContactError> {
                 // The mean's and the Nyquist wave's imaginary parts vanish for a real field.
                 spectrum[0].im = 0.0;
                 spectrum[bins - 1].im = 0.0;
@@ -503,47 +489,6 @@ pub struct LinePlasticProblem {
     pub acceleration: usize,
 }
 
-/// What a step ended with.
-#[derive(Clone, Debug, PartialEq)]
-pub struct LineStepResult {
-    pub load_n_per_m: f64,
-    /// The approach of the points at the grid's depth below each surface on the axis (module
-    /// doc), m; `None` when lifted off.
-    pub approach_m: Option<f64>,
-    pub max_pressure_pa: f64,
-    pub contact_cells: usize,
-    /// The plastic surface displacement on the axis (m, into body 1).
-    pub axis_displacement_m: f64,
-    pub max_plastic_strain: f64,
-    pub plastic_cells: usize,
-    pub iterations: usize,
-    pub residual: f64,
-    pub converged: bool,
-}
-
-/// The whole state after a step (arrays with one row in y: `[nz, 6, 1, nx]`, `[nz, 1, nx]`,
-/// `[1, nx]`).
-#[derive(Clone, Debug)]
-pub struct LineSnapshot {
-    pub step: usize,
-    pub load_n_per_m: f64,
-    pub approach_m: Option<f64>,
-    pub pressure_pa: Array2<f64>,
-    /// The total stress (Pa): the contact's plus the residual.
-    pub stress_pa: Array4<f64>,
-    pub equivalent_plastic_strain: Array3<f64>,
-    pub plastic_strain: Array4<f64>,
-    /// The plastic strain's surface displacement (m, into body 1).
-    pub plastic_displacement_m: Array2<f64>,
-}
-
-/// The loading history.
-#[derive(Clone, Debug)]
-pub struct LinePlasticSolution {
-    pub steps: Vec<LineStepResult>,
-    pub snapshots: Vec<LineSnapshot>,
-}
-
 /// Bytes the solve of `grid` takes besides the snapshots (the strains, stresses, spectra and
 /// kernels).
 pub fn memory_bytes(grid: &LineGrid) -> usize {
@@ -551,188 +496,138 @@ pub fn memory_bytes(grid: &LineGrid) -> usize {
     nz * nx * 8 * (6 * 5 + 2) + nz * (nx + 1) * 16 * 6 + 2 * nz * 2 * nx * 24 + nx * nx * 8
 }
 
-/// Solves the steps; `progress(step, iteration, residual)` after every iteration.
+/// The plane-strain body of the load-step loop ([`super::loading::run`]): the operator, the
+/// residual stress of the last plastic strain, and the line contact on the gap.
+struct PlaneBody<'a> {
+    problem: &'a LinePlasticProblem,
+    operator: PlaneStrainSpace,
+    contact: LineContactSolver,
+    residual_stress: Array4<f64>,
+    surface: Vec<f64>,
+    gap: Vec<f64>,
+}
+
+impl PlasticBody for PlaneBody<'_> {
+    fn set_strain(
+        &mut self,
+        strain: &Array4<f64>,
+        displacement: &mut Array2<f64>,
+    ) -> Result<(), PlasticContactError> {
+        self.operator
+            .residual(strain, &mut self.residual_stress, &mut self.surface)?;
+        for (u, &value) in displacement.iter_mut().zip(&self.surface) {
+            *u = value;
+        }
+        Ok(())
+    }
+
+    fn stress(
+        &mut self,
+        pressure_pa: &Array2<f64>,
+        friction: f64,
+        stress: &mut Array4<f64>,
+    ) -> Result<(), PlasticContactError> {
+        stress.assign(&self.residual_stress);
+        let pressure: Vec<f64> = pressure_pa.iter().copied().collect();
+        self.operator.add_contact(&pressure, friction, stress);
+        Ok(())
+    }
+
+    fn contact(
+        &mut self,
+        step: usize,
+        load: f64,
+        displacement: &Array2<f64>,
+        previous: &Array2<f64>,
+    ) -> Result<(Array2<f64>, f64), PlasticContactError> {
+        for ((g, &g0), &u) in self
+            .gap
+            .iter_mut()
+            .zip(&self.problem.gap_m)
+            .zip(displacement.iter())
+        {
+            *g = g0 + u;
+        }
+        let warm: Vec<f64> = previous.iter().copied().collect();
+        let pressure = self
+            .contact
+            .solve(&self.gap, load, Some(&warm))
+            .map_err(|message| PlasticContactError::LineContact {
+                step,
+                load_n_per_m: load,
+                message,
+            })?;
+        let nx = pressure.len();
+        let pressure = Array2::from_shape_vec((1, nx), pressure)
+            .map_err(|e| PlasticContactError::Parameter(e.to_string()))?;
+        // The dense solver's approach is defined up to the plane problem's constant: the
+        // reported one is the final state's (PlasticBody::approach_m).
+        Ok((pressure, 0.0))
+    }
+
+    fn approach_needs_stress(&self) -> bool {
+        true
+    }
+
+    fn approach_m(
+        &self,
+        _contact_m: f64,
+        stress: &Array4<f64>,
+        strain: &Array4<f64>,
+        pressure_pa: &Array2<f64>,
+    ) -> f64 {
+        let pressure: Vec<f64> = pressure_pa.iter().copied().collect();
+        approach_m(
+            &self.operator,
+            stress,
+            strain,
+            &pressure,
+            [self.problem.modulus_pa, self.problem.poisson],
+            self.problem.counter,
+            self.problem.friction,
+        )
+    }
+}
+
+/// Solves the steps ([`super::loading::run`] on the plane-strain body); `progress` after every
+/// iteration. The results' loads and arrays: N/m, one row in y (`[nz, 6, 1, nx]`,
+/// `[nz, 1, nx]`, `[1, nx]`).
 pub fn solve(
     problem: &LinePlasticProblem,
-    progress: &mut dyn FnMut(usize, usize, f64),
-) -> Result<LinePlasticSolution, LinePlasticError> {
+    progress: &mut dyn FnMut(Progress),
+    observe: Option<&mut dyn FnMut(&StepState)>,
+) -> Result<PlasticContactSolution, PlasticContactError> {
     let grid = &problem.grid;
     let [nz, nx] = grid.dims();
-    let hardening = problem.hardening;
     if problem.gap_m.len() != nx {
-        return Err(LinePlasticError::Parameter(format!(
+        return Err(PlasticContactError::Parameter(format!(
             "{} gaps for {nx} columns",
             problem.gap_m.len()
         )));
     }
-    if !(hardening.yield_strength_pa > 0.0 && hardening.yield_strength_pa.is_finite()) {
-        return Err(LinePlasticError::Parameter(format!(
-            "the yield strength must be positive, got {}",
-            hardening.yield_strength_pa
-        )));
-    }
-    if !(hardening.plastic_modulus_pa >= 0.0 && hardening.plastic_modulus_pa.is_finite()) {
-        return Err(LinePlasticError::Parameter(format!(
-            "the plastic modulus must be non-negative, got {}",
-            hardening.plastic_modulus_pa
-        )));
-    }
-    if !(problem.poisson > -1.0 && problem.poisson < 0.5) {
-        return Err(LinePlasticError::Parameter(format!(
-            "Poisson's ratio must lie in (-1, 0.5) for the plastic half-plane, got {}",
-            problem.poisson
-        )));
-    }
-    if !(problem.tolerance > 0.0 && problem.tolerance < 1.0) {
-        return Err(LinePlasticError::Parameter(format!(
-            "the tolerance must lie in (0, 1), got {}",
-            problem.tolerance
-        )));
-    }
-    let (modulus, nu) = (problem.modulus_pa, problem.poisson);
-    let shear_modulus = modulus / (2.0 * (1.0 + nu));
-    let lambda = 2.0 * shear_modulus * nu / (1.0 - 2.0 * nu);
-    let yield_strain = hardening.yield_strength_pa / modulus;
-    let operator = PlaneStrainSpace::new(grid.clone(), modulus, nu);
-    let contact = LineContactSolver::new(nx, grid.spacing_m, problem.e_star_pa);
-    let axis = nx / 2;
-
-    let mut strain = Array4::<f64>::zeros((nz, 6, 1, nx));
-    let mut strain_start = strain.clone();
-    let mut kappa = Array3::<f64>::zeros((nz, 1, nx));
-    let mut kappa_start = kappa.clone();
-    let mut residual_stress = Array4::<f64>::zeros((nz, 6, 1, nx));
-    let mut stress = residual_stress.clone();
-    let mut displacement = vec![0.0; nx];
-    let mut pressure = vec![0.0; nx];
-    let mut gap = vec![0.0; nx];
-
-    let mut steps = Vec::with_capacity(problem.loads_n_per_m.len());
-    let mut snapshots = Vec::new();
-    let mut anderson = Anderson::new(problem.acceleration);
-    let mut active = Active::new(kappa.len());
-    for (step, &load) in problem.loads_n_per_m.iter().enumerate() {
-        strain_start.assign(&strain);
-        kappa_start.assign(&kappa);
-        anderson.reset();
-        active.clear();
-        let mut residual = f64::INFINITY;
-        let mut iterations = 0;
-        let mut converged = false;
-        operator.residual(&strain, &mut residual_stress, &mut displacement)?;
-        while iterations < problem.max_iterations {
-            iterations += 1;
-            // 1. The contact on the gap opened by the plastic surface displacement.
-            let previous = pressure.clone();
-            if load > 0.0 {
-                for ((g, &g0), &u) in gap.iter_mut().zip(&problem.gap_m).zip(&displacement) {
-                    *g = g0 + u;
-                }
-                pressure = contact
-                    .solve(&gap, load, Some(&previous))
-                    .map_err(|message| LinePlasticError::Contact {
-                        step,
-                        load_n_per_m: load,
-                        message,
-                    })?;
-            } else {
-                pressure.fill(0.0);
-            }
-            // 2. The stresses: the residual ones and the contact's.
-            stress.assign(&residual_stress);
-            operator.add_contact(&pressure, problem.friction, &mut stress);
-            // 3. The return mapping from the start of the step, accelerated.
-            gather(&strain, &active.cells, &mut active.x);
-            let change = return_mapping(
-                &stress,
-                &mut strain,
-                &strain_start,
-                &mut kappa,
-                &kappa_start,
-                &hardening,
-                [lambda, shear_modulus],
-                &mut active,
-            );
-            gather(&strain, &active.cells, &mut active.g);
-            let joined = 6 * active.joined.len();
-            if joined > 0 {
-                let from = active.x.len() - joined;
-                anderson.grow(&active.x[from..]);
-            }
-            anderson.next(&mut active.x, &active.g);
-            scatter(&mut strain, &active.cells, &active.x);
-            // 4. The residual stress and surface displacement of the new plastic strain.
-            operator.residual(&strain, &mut residual_stress, &mut displacement)?;
-            let largest = kappa.iter().fold(0.0f64, |m, &k| m.max(k));
-            let strain_residual = change / largest.max(yield_strain);
-            let total: f64 = pressure.iter().sum();
-            let pressure_residual = if total > 0.0 {
-                pressure
-                    .iter()
-                    .zip(&previous)
-                    .map(|(a, b)| (a - b).abs())
-                    .sum::<f64>()
-                    / total
-            } else {
-                0.0
-            };
-            residual = if iterations > 1 || load == 0.0 {
-                strain_residual.max(pressure_residual)
-            } else {
-                strain_residual.max(1.0)
-            };
-            if iterations == 1 && load == 0.0 {
-                residual = strain_residual;
-            }
-            progress(step, iterations, residual);
-            if residual < problem.tolerance {
-                converged = true;
-                break;
-            }
-        }
-        // The final state's stress.
-        stress.assign(&residual_stress);
-        operator.add_contact(&pressure, problem.friction, &mut stress);
-        let approach = (load > 0.0).then(|| {
-            approach_m(
-                &operator,
-                &stress,
-                &strain,
-                &pressure,
-                [modulus, nu],
-                problem.counter,
-                problem.friction,
-            )
-        });
-        let max_plastic_strain = kappa.iter().fold(0.0f64, |m, &k| m.max(k));
-        steps.push(LineStepResult {
-            load_n_per_m: load,
-            approach_m: approach,
-            max_pressure_pa: pressure.iter().fold(0.0f64, |m, &p| m.max(p)),
-            contact_cells: pressure.iter().filter(|&&p| p > 0.0).count(),
-            axis_displacement_m: displacement[axis],
-            max_plastic_strain,
-            plastic_cells: kappa.iter().filter(|&&k| k > PLASTIC_ZONE_STRAIN).count(),
-            iterations,
-            residual,
-            converged,
-        });
-        if problem.snapshots.contains(&step) {
-            snapshots.push(LineSnapshot {
-                step,
-                load_n_per_m: load,
-                approach_m: approach,
-                pressure_pa: Array2::from_shape_vec((1, nx), pressure.clone())
-                    .map_err(|e| LinePlasticError::Parameter(e.to_string()))?,
-                stress_pa: stress.clone(),
-                equivalent_plastic_strain: kappa.clone(),
-                plastic_strain: strain.clone(),
-                plastic_displacement_m: Array2::from_shape_vec((1, nx), displacement.clone())
-                    .map_err(|e| LinePlasticError::Parameter(e.to_string()))?,
-            });
-        }
-    }
-    Ok(LinePlasticSolution { steps, snapshots })
+    let steps = Steps {
+        dims: [nz, 1, nx],
+        modulus_pa: problem.modulus_pa,
+        poisson: problem.poisson,
+        hardening: problem.hardening,
+        friction: problem.friction,
+        loads: &problem.loads_n_per_m,
+        snapshots: &problem.snapshots,
+        axis_cell: [0, nx / 2],
+        tolerance: problem.tolerance,
+        max_iterations: problem.max_iterations,
+        acceleration: problem.acceleration,
+    };
+    steps.validate("half-plane")?;
+    let mut body = PlaneBody {
+        problem,
+        operator: PlaneStrainSpace::new(grid.clone(), problem.modulus_pa, problem.poisson),
+        contact: LineContactSolver::new(nx, grid.spacing_m, problem.e_star_pa),
+        residual_stress: Array4::zeros((nz, 6, 1, nx)),
+        surface: vec![0.0; nx],
+        gap: vec![0.0; nx],
+    };
+    run(&mut body, &steps, progress, observe)
 }
 
 /// The approach of the points at the grid's depth below each surface on the axis (module

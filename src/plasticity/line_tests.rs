@@ -147,7 +147,7 @@ fn worst_plane(stress: &Array4<f64>, strain: &Array4<f64>) -> f64 {
 #[test]
 fn below_first_yield_the_roller_is_hertz_and_unloading_leaves_nothing() {
     let (hertz, problem) = roller(1.2, 128, 2.0, 32, 4.0, 2, true);
-    let solution = solve(&problem, &mut |_, _, _| {}).expect("solve");
+    let solution = solve(&problem, &mut |_| {}, None).expect("solve");
     let loaded = &solution.steps[1];
     assert!(loaded.converged && loaded.max_plastic_strain == 0.0);
     let p_error = loaded.max_pressure_pa / hertz.p0_pa - 1.0;
@@ -207,7 +207,7 @@ fn first_yield_of_the_line_contact_is_johnsons() {
     let first_yield = 1.0 / peak;
     for (factor, yields) in [(0.995, false), (1.005, true)] {
         let (_, problem) = roller(first_yield * factor, 192, 1.5, 40, 1.25, 1, false);
-        let solution = solve(&problem, &mut |_, _, _| {}).expect("solve");
+        let solution = solve(&problem, &mut |_| {}, None).expect("solve");
         let step = &solution.steps[0];
         assert!(step.converged);
         assert_eq!(
@@ -227,7 +227,7 @@ fn the_residual_field_is_free_and_balanced() {
     let mut faces = vec![0.0, dz / 100.0];
     faces.extend((1..=24).map(|j| j as f64 * dz));
     problem.grid.depth = DepthCells::new(faces).expect("faces");
-    let solution = solve(&problem, &mut |_, _, _| {}).expect("solve");
+    let solution = solve(&problem, &mut |_| {}, None).expect("solve");
     assert!(solution.steps.iter().all(|s| s.converged));
     let residual = &solution.snapshots[1].stress_pa;
     let kappa = &solution.snapshots[1].equivalent_plastic_strain;

@@ -88,6 +88,7 @@ pub struct PlasticContactProblem<'a> {
 /// What a step ended with.
 #[derive(Clone, Debug, PartialEq)]
 pub struct StepResult {
+    /// N (N/m for a plane volume).
     pub load_n: f64,
     /// The approach of the bodies from the first contact of the undeformed ones (m), with the
     /// far surface as reference; `None` when lifted off.
@@ -108,6 +109,7 @@ pub struct StepResult {
 #[derive(Clone, Debug)]
 pub struct Snapshot {
     pub step: usize,
+    /// N (N/m for a plane volume).
     pub load_n: f64,
     pub approach_m: Option<f64>,
     pub pressure_pa: Array2<f64>,
@@ -151,6 +153,16 @@ pub enum PlasticContactError {
     },
     #[error(transparent)]
     HalfSpace(#[from] HalfSpaceError),
+    /// The line contact's solve (plane strain) at a step.
+    #[error("the line contact at step {step} ({load_n_per_m:.4e} N/m): {message}")]
+    LineContact {
+        step: usize,
+        load_n_per_m: f64,
+        message: String,
+    },
+    /// The plane operator's transforms.
+    #[error("the FFT of the plane operator: {0}")]
+    Transform(String),
 }
 
 /// Bytes the solve of `grid` takes besides the snapshots: the operator, the strains and
@@ -191,16 +203,206 @@ pub fn solve(
     solve_observed(problem, progress, None)
 }
 
+/// What the load-step loop ([`run`]) asks of a body: its eigenstrain operator (the residual
+/// stress and the surface displacement of a plastic strain, plus the contact's stress) and its
+/// contact solve. The 3-D half-space ([`VolumeBody`]) and the plane-strain x–z volume
+/// ([`super::line`]) differ only here; arrays are `[nz, 6, ny, nx]`, `[nz, ny, nx]` and
+/// `[ny, nx]` (one row for the plane volume).
+pub trait PlasticBody {
+    /// Takes the plastic strain `strain`, writes its normal surface displacement (m, into
+    /// body 1) and keeps what [`PlasticBody::stress`] needs of it.
+    fn set_strain(
+        &mut self,
+        strain: &Array4<f64>,
+        displacement: &mut Array2<f64>,
+    ) -> Result<(), PlasticContactError>;
+
+    /// The total stress at the cell centres: the residual stress of the strain last given to
+    /// [`PlasticBody::set_strain`] plus the contact's stress of `pressure_pa` and of the shear
+    /// `friction` times it along +x. It may consume what `set_strain` kept: the loop calls
+    /// `set_strain` again before the next use.
+    fn stress(
+        &mut self,
+        pressure_pa: &Array2<f64>,
+        friction: f64,
+        stress: &mut Array4<f64>,
+    ) -> Result<(), PlasticContactError>;
+
+    /// The pressure carrying `load` on the undeformed gap opened by the plastic surface
+    /// displacement `displacement`, starting from `previous` (the last iterate), and the
+    /// approach the contact solve measures.
+    fn contact(
+        &mut self,
+        step: usize,
+        load: f64,
+        displacement: &Array2<f64>,
+        previous: &Array2<f64>,
+    ) -> Result<(Array2<f64>, f64), PlasticContactError>;
+
+    /// Whether [`PlasticBody::approach_m`] needs the stress of the step's final state.
+    fn approach_needs_stress(&self) -> bool {
+        false
+    }
+
+    /// The approach reported at the end of a loaded step: the contact solve's (`contact_m`)
+    /// unless the body defines it from its final state (the total `stress` when
+    /// [`PlasticBody::approach_needs_stress`], the plastic `strain` and the pressure).
+    fn approach_m(
+        &self,
+        contact_m: f64,
+        _stress: &Array4<f64>,
+        _strain: &Array4<f64>,
+        _pressure_pa: &Array2<f64>,
+    ) -> f64 {
+        contact_m
+    }
+}
+
+/// What the load-step loop needs besides the body: the material, the loads and the control of
+/// the fixed point.
+#[derive(Clone, Debug)]
+pub struct Steps<'a> {
+    /// `[nz, ny, nx]` cells.
+    pub dims: [usize; 3],
+    /// Body 1's Young's modulus and Poisson's ratio.
+    pub modulus_pa: f64,
+    pub poisson: f64,
+    pub hardening: Hardening,
+    /// `q = μ p` on body 1 along +x.
+    pub friction: f64,
+    /// The load of each step (N, or N/m for a plane volume).
+    pub loads: &'a [f64],
+    pub snapshots: &'a [usize],
+    /// The cell `[row, column]` on the contact's axis.
+    pub axis_cell: [usize; 2],
+    pub tolerance: f64,
+    pub max_iterations: usize,
+    pub acceleration: usize,
+}
+
+impl Steps<'_> {
+    /// The checks common to every body (`what`: its name in the messages): the material and
+    /// the tolerance. Callers check before they build the body's operator.
+    pub fn validate(&self, what: &str) -> Result<(), PlasticContactError> {
+        let hardening = self.hardening;
+        if !(hardening.yield_strength_pa > 0.0 && hardening.yield_strength_pa.is_finite()) {
+            return Err(PlasticContactError::Parameter(format!(
+                "the yield strength must be positive, got {}",
+                hardening.yield_strength_pa
+            )));
+        }
+        if !(hardening.plastic_modulus_pa >= 0.0 && hardening.plastic_modulus_pa.is_finite()) {
+            return Err(PlasticContactError::Parameter(format!(
+                "the plastic modulus must be non-negative, got {}",
+                hardening.plastic_modulus_pa
+            )));
+        }
+        if !(self.poisson > -1.0 && self.poisson < 0.5) {
+            return Err(PlasticContactError::Parameter(format!(
+                "Poisson's ratio must lie in (-1, 0.5) for the plastic {what}, got {}",
+                self.poisson
+            )));
+        }
+        if !(self.tolerance > 0.0 && self.tolerance < 1.0) {
+            return Err(PlasticContactError::Parameter(format!(
+                "the tolerance must lie in (0, 1), got {}",
+                self.tolerance
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// The 3-D half-space of [`PlasticContactProblem`]: the DC-FFT eigenstrain operator
+/// ([`HalfSpace`]) and the rough contact solver on the heights less the plastic displacement.
+pub struct VolumeBody<'a, 'h> {
+    problem: &'a PlasticContactProblem<'h>,
+    operator: HalfSpace,
+    heights: Array2<f64>,
+    /// The highest undeformed height (the approach's reference, module doc).
+    top: f64,
+    cache: OperatorCache,
+}
+
+impl PlasticBody for VolumeBody<'_, '_> {
+    fn set_strain(
+        &mut self,
+        strain: &Array4<f64>,
+        displacement: &mut Array2<f64>,
+    ) -> Result<(), PlasticContactError> {
+        Ok(self
+            .operator
+            .set_strain(strain.view(), displacement.view_mut())?)
+    }
+
+    fn stress(
+        &mut self,
+        pressure_pa: &Array2<f64>,
+        friction: f64,
+        stress: &mut Array4<f64>,
+    ) -> Result<(), PlasticContactError> {
+        Ok(self
+            .operator
+            .stress(Some((pressure_pa.view(), friction)), stress.view_mut())?)
+    }
+
+    fn contact(
+        &mut self,
+        step: usize,
+        load: f64,
+        displacement: &Array2<f64>,
+        previous: &Array2<f64>,
+    ) -> Result<(Array2<f64>, f64), PlasticContactError> {
+        let problem = self.problem;
+        let grid = &problem.grid;
+        Zip::from(&mut self.heights)
+            .and(&problem.heights_m)
+            .and(displacement)
+            .for_each(|h, &h0, &u| *h = h0 - u);
+        let contact = RoughContactProblem {
+            heights_m: self.heights.view(),
+            spacing_m: grid.spacing_m,
+            e_star_pa: problem.e_star_pa,
+            periodicity: grid.periodicity,
+            control: Control::Load { newtons: load },
+            hardness_pa: None,
+            tolerance: problem.contact_tolerance,
+            max_iterations: crate::contact::rough::DEFAULT_MAX_ITERATIONS,
+            memory_limit_bytes: problem.memory_limit_bytes,
+        };
+        let warm = Warm {
+            pressure_pa: (previous.sum() > 0.0).then(|| previous.view()),
+            local_compliance_m_per_pa: 0.0,
+        };
+        let solution =
+            solve_cached(&contact, &warm, &mut self.cache, &mut |_, _| {}).map_err(|source| {
+                PlasticContactError::Contact {
+                    step,
+                    load_n: load,
+                    source,
+                }
+            })?;
+        let shifted = self
+            .heights
+            .iter()
+            .fold(f64::NEG_INFINITY, |m, &h| m.max(h));
+        Ok((
+            solution.pressure_pa,
+            solution.approach_m + self.top - shifted,
+        ))
+    }
+}
+
 /// [`solve`], lending the state at the end of every step to `observe` (a light record of each
 /// step, e.g. a recording's section, without keeping whole [`Snapshot`]s); observing costs one
 /// stress evaluation per step.
 pub fn solve_observed(
     problem: &PlasticContactProblem,
     progress: &mut dyn FnMut(Progress),
-    mut observe: Option<&mut dyn FnMut(&StepState)>,
+    observe: Option<&mut dyn FnMut(&StepState)>,
 ) -> Result<PlasticContactSolution, PlasticContactError> {
     let grid = &problem.grid;
-    let [nz, ny, nx] = grid.dims();
+    let [_, ny, nx] = grid.dims();
     if problem.heights_m.dim() != (ny, nx) {
         return Err(PlasticContactError::Parameter(format!(
             "the heights ({} x {}) and the volume grid ({ny} x {nx}) differ",
@@ -208,37 +410,50 @@ pub fn solve_observed(
             problem.heights_m.ncols()
         )));
     }
-    let hardening = problem.hardening;
-    if !(hardening.yield_strength_pa > 0.0 && hardening.yield_strength_pa.is_finite()) {
-        return Err(PlasticContactError::Parameter(format!(
-            "the yield strength must be positive, got {}",
-            hardening.yield_strength_pa
-        )));
-    }
-    if !(hardening.plastic_modulus_pa >= 0.0 && hardening.plastic_modulus_pa.is_finite()) {
-        return Err(PlasticContactError::Parameter(format!(
-            "the plastic modulus must be non-negative, got {}",
-            hardening.plastic_modulus_pa
-        )));
-    }
-    if !(problem.poisson > -1.0 && problem.poisson < 0.5) {
-        return Err(PlasticContactError::Parameter(format!(
-            "Poisson's ratio must lie in (-1, 0.5) for the plastic half-space, got {}",
-            problem.poisson
-        )));
-    }
-    if !(problem.tolerance > 0.0 && problem.tolerance < 1.0) {
-        return Err(PlasticContactError::Parameter(format!(
-            "the tolerance must lie in (0, 1), got {}",
-            problem.tolerance
-        )));
-    }
+    let steps = Steps {
+        dims: grid.dims(),
+        modulus_pa: problem.modulus_pa,
+        poisson: problem.poisson,
+        hardening: problem.hardening,
+        friction: problem.friction,
+        loads: &problem.loads_n,
+        snapshots: &problem.snapshots,
+        axis_cell: problem.axis_cell,
+        tolerance: problem.tolerance,
+        max_iterations: problem.max_iterations,
+        acceleration: problem.acceleration,
+    };
+    steps.validate("half-space")?;
     let shear_modulus = problem.modulus_pa / (2.0 * (1.0 + problem.poisson));
-    let lambda = 2.0 * shear_modulus * problem.poisson / (1.0 - 2.0 * problem.poisson);
-    let yield_strain = hardening.yield_strength_pa / problem.modulus_pa;
-    let sliding = problem.friction != 0.0;
-    let mut operator = HalfSpace::new(grid.clone(), shear_modulus, problem.poisson)
-        .with_contact(problem.poisson, sliding)?;
+    let operator = HalfSpace::new(grid.clone(), shear_modulus, problem.poisson)
+        .with_contact(problem.poisson, problem.friction != 0.0)?;
+    let mut body = VolumeBody {
+        problem,
+        operator,
+        heights: problem.heights_m.to_owned(),
+        top: problem
+            .heights_m
+            .iter()
+            .fold(f64::NEG_INFINITY, |m, &h| m.max(h)),
+        cache: OperatorCache::default(),
+    };
+    run(&mut body, &steps, progress, observe)
+}
+
+/// The load steps of the semi-analytical method (module doc) on any [`PlasticBody`]: the one
+/// loop of the point, elliptical, rough and line (plane-strain) contacts. `control` is
+/// checked by the caller ([`Steps::validate`]).
+pub fn run(
+    body: &mut dyn PlasticBody,
+    control: &Steps,
+    progress: &mut dyn FnMut(Progress),
+    mut observe: Option<&mut dyn FnMut(&StepState)>,
+) -> Result<PlasticContactSolution, PlasticContactError> {
+    let [nz, ny, nx] = control.dims;
+    let hardening = control.hardening;
+    let shear_modulus = control.modulus_pa / (2.0 * (1.0 + control.poisson));
+    let lambda = 2.0 * shear_modulus * control.poisson / (1.0 - 2.0 * control.poisson);
+    let yield_strain = hardening.yield_strength_pa / control.modulus_pa;
 
     let mut strain = Array4::<f64>::zeros((nz, 6, ny, nx));
     let mut strain_start = strain.clone();
@@ -246,23 +461,17 @@ pub fn solve_observed(
     let mut kappa_start = kappa.clone();
     let mut stress = Array4::<f64>::zeros((nz, 6, ny, nx));
     let mut displacement = Array2::<f64>::zeros((ny, nx));
-    operator.set_strain(strain.view(), displacement.view_mut())?;
+    body.set_strain(&strain, &mut displacement)?;
     let mut kept = true;
     let mut pressure = Array2::<f64>::zeros((ny, nx));
     let mut previous = Array2::<f64>::zeros((ny, nx));
-    let mut heights = problem.heights_m.to_owned();
-    let top = problem
-        .heights_m
-        .iter()
-        .fold(f64::NEG_INFINITY, |m, &h| m.max(h));
-    let mut cache = OperatorCache::default();
 
-    let mut steps = Vec::with_capacity(problem.loads_n.len());
+    let mut steps = Vec::with_capacity(control.loads.len());
     let mut snapshots = Vec::new();
-    let count = problem.loads_n.len();
-    let mut anderson = Anderson::new(problem.acceleration);
+    let count = control.loads.len();
+    let mut anderson = Anderson::new(control.acceleration);
     let mut active = Active::new(kappa.len());
-    for (step, &load) in problem.loads_n.iter().enumerate() {
+    for (step, &load) in control.loads.iter().enumerate() {
         strain_start.assign(&strain);
         kappa_start.assign(&kappa);
         anderson.reset();
@@ -272,51 +481,26 @@ pub fn solve_observed(
         let mut residual = f64::INFINITY;
         let mut iterations = 0;
         let mut converged = false;
-        while iterations < problem.max_iterations {
+        while iterations < control.max_iterations {
             iterations += 1;
             if !kept {
-                operator.set_strain(strain.view(), displacement.view_mut())?;
+                body.set_strain(&strain, &mut displacement)?;
             }
             // 1. The contact on the gap opened by the plastic surface displacement.
             previous.assign(&pressure);
             if load > 0.0 {
-                Zip::from(&mut heights)
-                    .and(&problem.heights_m)
-                    .and(&displacement)
-                    .for_each(|h, &h0, &u| *h = h0 - u);
-                let contact = RoughContactProblem {
-                    heights_m: heights.view(),
-                    spacing_m: grid.spacing_m,
-                    e_star_pa: problem.e_star_pa,
-                    periodicity: grid.periodicity,
-                    control: Control::Load { newtons: load },
-                    hardness_pa: None,
-                    tolerance: problem.contact_tolerance,
-                    max_iterations: crate::contact::rough::DEFAULT_MAX_ITERATIONS,
-                    memory_limit_bytes: problem.memory_limit_bytes,
-                };
-                let warm = Warm {
-                    pressure_pa: (previous.sum() > 0.0).then(|| previous.view()),
-                    local_compliance_m_per_pa: 0.0,
-                };
-                let solution = solve_cached(&contact, &warm, &mut cache, &mut |_, _| {}).map_err(
-                    |source| PlasticContactError::Contact {
-                        step,
-                        load_n: load,
-                        source,
-                    },
-                )?;
-                let shifted = heights.iter().fold(f64::NEG_INFINITY, |m, &h| m.max(h));
-                approach = Some(solution.approach_m + top - shifted);
-                contact_cells = solution.pressure_pa.iter().filter(|&&p| p > 0.0).count();
-                pressure = solution.pressure_pa;
+                let (solved, solved_approach) =
+                    body.contact(step, load, &displacement, &previous)?;
+                approach = Some(solved_approach);
+                contact_cells = solved.iter().filter(|&&p| p > 0.0).count();
+                pressure = solved;
             } else {
                 pressure.fill(0.0);
                 approach = None;
                 contact_cells = 0;
             }
             // 2. The stresses: the contact's and the residual ones.
-            operator.stress(Some((pressure.view(), problem.friction)), stress.view_mut())?;
+            body.stress(&pressure, control.friction, &mut stress)?;
             // 3. The return mapping from the start of the step.
             // The active cells' plastic strain before the mapping (x), then after (G(x)).
             gather(&strain, &active.cells, &mut active.x);
@@ -341,7 +525,7 @@ pub fn solve_observed(
             anderson.next(&mut active.x, &active.g);
             scatter(&mut strain, &active.cells, &active.x);
             // 4. The surface displacement of the new plastic strain.
-            operator.set_strain(strain.view(), displacement.view_mut())?;
+            body.set_strain(&strain, &mut displacement)?;
             kept = true;
             let largest = kappa.iter().fold(0.0f64, |m, &k| m.max(k));
             let strain_residual = change / largest.max(yield_strain);
@@ -369,30 +553,34 @@ pub fn solve_observed(
                 iteration: iterations,
                 residual,
             });
-            if residual < problem.tolerance {
+            if residual < control.tolerance {
                 converged = true;
                 break;
             }
         }
+        let snapshot = control.snapshots.contains(&step);
+        let final_stress =
+            snapshot || observe.is_some() || (approach.is_some() && body.approach_needs_stress());
+        if final_stress {
+            // The stress of the final plastic strain and pressure.
+            body.stress(&pressure, control.friction, &mut stress)?;
+            kept = false;
+        }
+        let approach =
+            approach.map(|contact| body.approach_m(contact, &stress, &strain, &pressure));
         let max_plastic_strain = kappa.iter().fold(0.0f64, |m, &k| m.max(k));
         steps.push(StepResult {
             load_n: load,
             approach_m: approach,
             max_pressure_pa: pressure.iter().fold(0.0f64, |m, &p| m.max(p)),
             contact_cells,
-            axis_displacement_m: displacement[problem.axis_cell],
+            axis_displacement_m: displacement[control.axis_cell],
             max_plastic_strain,
             plastic_cells: kappa.iter().filter(|&&k| k > PLASTIC_ZONE_STRAIN).count(),
             iterations,
             residual,
             converged,
         });
-        let snapshot = problem.snapshots.contains(&step);
-        if snapshot || observe.is_some() {
-            // The stress of the final plastic strain and pressure.
-            operator.stress(Some((pressure.view(), problem.friction)), stress.view_mut())?;
-            kept = false;
-        }
         if let (Some(observe), Some(result)) = (observe.as_mut(), steps.last()) {
             observe(&StepState {
                 step,

@@ -16,6 +16,9 @@
 //!   - `series/...`: the load over first yield's, the largest and mean pressure over `Y`, the
 //!     contact radius over `a_H` and the largest plastic strain, against the step;
 //!   - `log`: one line per step.
+//!
+//! A line contact (plane strain) records the same over its half-width `b`, without the mean
+//! pressure (the sheet has none: [`crate::figure::plastic`]), its load per unit length.
 
 use rerun::RecordingStream;
 
@@ -31,20 +34,26 @@ use crate::render::chart::{chart_png, PALETTE};
 use crate::render::{ColorMap, Figure, Levels, Mark, Panel, TractionSample};
 use crate::report::plastic::PlasticReport;
 use crate::scene::Scene;
-use crate::study::plastic::history::first_yield_load_n;
+use crate::study::plastic::history::first_yield;
 use crate::study::plastic::PlasticStudy;
 
 /// The timeline of the steps.
 pub const TIMELINE: &str = "load step";
 
-/// A section map over `a_H` with the pressure in the strip above.
-fn section_figure(title: &str, value_label: &str, colormap: ColorMap, panel: Panel) -> Figure {
+/// A section map over `unit` (`a_H`, or a line's `b`) with the pressure in the strip above.
+fn section_figure(
+    title: &str,
+    value_label: &str,
+    colormap: ColorMap,
+    panel: Panel,
+    unit: &str,
+) -> Figure {
     Figure {
         title: title.into(),
         panels: vec![panel],
         value_label: value_label.into(),
-        x_label: "x/a_H".into(),
-        z_label: "z/a_H".into(),
+        x_label: format!("x/{unit}"),
+        z_label: format!("z/{unit}"),
         vertical_is_depth: true,
         traction_label: "p/Y".into(),
         colormap,
@@ -81,14 +90,16 @@ pub fn record(
     stream.log_static(
         "description",
         &rerun::TextDocument::from_markdown(format!(
-            "# {}\n\n```text\n{report}```\n\nThe time panel steps through the load steps: loading, then unloading. The maps are the section y = 0 through the contact's axis, in units of Hertz's contact radius a_H, depth downwards; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m: ignore that line).\n\n**Reading the views.** `plastic strain`: the equivalent plastic strain, the plastic zone (εp > 1e-5) outlined, the step's pressure p/Y above the surface. `von Mises`: the total stress over Y, the yield line (σvM at the current yield stress Y + h εp) outlined; after unloading it is the residual stress. `load–approach` and `mean pressure`: the sheet's charts with the steps so far.",
+            "# {}\n\n```text\n{report}```\n\nThe time panel steps through the load steps: loading, then unloading. The maps are the section y = 0 through the contact's axis (a line's x–z plane), in units of Hertz's contact radius a_H (a line's half-width b), depth downwards; hovering a map shows `Val`, its value in the unit of its title (the viewer also prints it as a \"Depth\" in m: ignore that line).\n\n**Reading the views.** `plastic strain`: the equivalent plastic strain, the plastic zone (εp > 1e-5) outlined, the step's pressure p/Y above the surface. `von Mises`: the total stress over Y, the yield line (σvM at the current yield stress Y + h εp) outlined; after unloading it is the residual stress. `load–approach` and `mean pressure`: the sheet's charts with the steps so far.",
             sheet.title
         )),
     )?;
 
     let y = study.spec.yield_strength_pa;
     let h = study.spec.hardening_modulus_pa;
-    let a = study.hertz.radius_m;
+    let a = study.hertz.size_m();
+    let line = study.kind == crate::study::plastic::PlasticKind::Line;
+    let unit = crate::figure::plastic::length_unit(study);
     let (x_axis, z_axis) = axes(study);
     let history = &study.history;
     let steps = history.points.len();
@@ -138,12 +149,14 @@ pub fn record(
         "εp × 10³",
         ColorMap::Viridis,
         panel(blank.clone(), strip.clone(), Vec::new()),
+        unit,
     );
     let von_mises_map = section_figure(
         "von Mises",
         "σvM/Y",
         ColorMap::Magma,
         panel(blank, strip, Vec::new()),
+        unit,
     );
     let frame_of = |map: &Figure, range: (f64, f64)| {
         let shown = section::displayed(map, &map.panels[0]);
@@ -187,16 +200,24 @@ pub fn record(
         ("series/load_over_first_yield", "W/W_Y", PALETTE[4]),
         ("series/max_pressure_over_y", "p_max/Y", PALETTE[0]),
         ("series/mean_pressure_over_y", "p_m/Y", PALETTE[1]),
-        ("series/contact_radius_over_a", "√(A/π)/a_H", PALETTE[2]),
+        (
+            "series/contact_radius_over_a",
+            if line {
+                "half-width/b"
+            } else {
+                "√(A/π)/a_H"
+            },
+            PALETTE[2],
+        ),
         ("series/max_plastic_strain", "largest εp", PALETTE[3]),
     ];
     for (path, name, colour) in &series {
         stream.log_static(*path, &super::series_line(*name, *colour))?;
     }
-    super::layout::send(stream, &plan_layout(), live)?;
+    super::layout::send(stream, &plan_layout(line), live)?;
     flush()?;
 
-    let load_y = first_yield_load_n(&study.hertz, study.spec.body1.poisson, y);
+    let (load_y, _) = first_yield(study);
     for (k, (point, cut)) in history.points.iter().zip(&history.sections).enumerate() {
         stream.set_time_sequence(TIMELINE, super::step_time(k));
         let phase = if point.unloading {
@@ -205,8 +226,9 @@ pub fn record(
             "loading"
         };
         let text = format!(
-            "{phase}, W = {} N = {} W_Y: p_max {} Y, εp max {}",
+            "{phase}, W = {} {} = {} W_Y: p_max {} Y, εp max {}",
             section::short(point.load_n),
+            if line { "N/m" } else { "N" },
             section::short(point.load_n / load_y),
             section::short(point.max_pressure_pa / y),
             section::short(point.max_plastic_strain)
@@ -271,10 +293,12 @@ pub fn record(
             "curves/load_approach",
             &chart_image(&load_approach_chart(study, k + 1))?,
         )?;
-        stream.log(
-            "curves/mean_pressure",
-            &chart_image(&mean_pressure_chart(study, k + 1))?,
-        )?;
+        if !line {
+            stream.log(
+                "curves/mean_pressure",
+                &chart_image(&mean_pressure_chart(study, k + 1))?,
+            )?;
+        }
         let scalars = [
             ("series/load_over_first_yield", point.load_n / load_y),
             ("series/max_pressure_over_y", point.max_pressure_pa / y),
@@ -295,9 +319,10 @@ pub fn record(
     })
 }
 
-/// The layout: the two sections and the sheet in tabs; beside them the growing charts, the
-/// series against the step, and the report over the steps' log.
-fn plan_layout() -> Layout {
+/// The layout: the two sections and the sheet in tabs; beside them the growing charts (a
+/// line's without the mean pressure), the series against the step, and the report over the
+/// steps' log.
+fn plan_layout(line: bool) -> Layout {
     let view2d =
         |name: &str, origin: &str| Node::View(View::new(ViewKind::Spatial2D(None), name, origin));
     let main = vec![
@@ -311,10 +336,14 @@ fn plan_layout() -> Layout {
     let side = Node::Vertical(
         vec![
             Node::Tabs(
-                vec![
-                    view2d("load–approach", "curves/load_approach"),
-                    view2d("mean pressure", "curves/mean_pressure"),
-                ],
+                if line {
+                    vec![view2d("load–approach", "curves/load_approach")]
+                } else {
+                    vec![
+                        view2d("load–approach", "curves/load_approach"),
+                        view2d("mean pressure", "curves/mean_pressure"),
+                    ]
+                },
                 0,
             ),
             Node::Tabs(
@@ -327,7 +356,14 @@ fn plan_layout() -> Layout {
                             "$origin/load_over_first_yield",
                         ],
                     ),
-                    plot("contact radius / a_H", &["$origin/contact_radius_over_a"]),
+                    plot(
+                        if line {
+                            "half-width / b"
+                        } else {
+                            "contact radius / a_H"
+                        },
+                        &["$origin/contact_radius_over_a"],
+                    ),
                     plot("largest εp", &["$origin/max_plastic_strain"]),
                 ],
                 0,

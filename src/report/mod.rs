@@ -8,7 +8,6 @@ pub mod commands;
 pub mod hertz;
 pub mod lubrication;
 pub mod plastic;
-pub mod plastic_line;
 pub mod probe;
 pub mod rough;
 pub mod surface;

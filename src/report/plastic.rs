@@ -8,7 +8,12 @@
 //! (the deepest cell with εp > 1e-5), `plastic_volume_m3`, `von_mises_max_pa`,
 //! `von_mises_max_depth_m`, `elastic_max_pressure_pa`} and, when unloaded, `unloaded`:
 //! {`residual_depth_m`, `residual_von_mises_max_pa`, `residual_von_mises_max_depth_m`,
-//! `residual_von_mises_max_r_m`}. Definitions in docs/plasticity.md.
+//! `residual_von_mises_max_r_m`}. A line contact (plane strain) says `load_n_per_m` for
+//! `load_n`, `half_width_m` (half the width of the cells in contact) for `contact_radius_m`
+//! and `plastic_area_m2` (the plastic zone's area in the x–z section) for `plastic_volume_m3`;
+//! its `contact_area_m2` is per metre of length (the width times 1 m), its `approach_m` that of
+//! the points at the grid's depth below each surface on the axis, its
+//! `residual_von_mises_max_r_m` the distance `|x|`. Definitions in docs/plasticity.md.
 
 use std::fmt::Write as _;
 
@@ -21,29 +26,44 @@ pub struct LoadedReport {
     pub max_pressure_pa: f64,
     pub mean_pressure_pa: f64,
     pub contact_area_m2: f64,
-    pub contact_radius_m: f64,
+    /// A point contact's (and elliptical, rough); a line's is `half_width_m`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub contact_radius_m: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub half_width_m: Option<f64>,
     pub approach_m: f64,
     pub max_plastic_strain: f64,
     pub max_plastic_strain_depth_m: f64,
     pub plastic_zone_depth_m: f64,
-    pub plastic_volume_m3: f64,
+    /// A volume's; a line's is `plastic_area_m2`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_volume_m3: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plastic_area_m2: Option<f64>,
     pub von_mises_max_pa: f64,
     pub von_mises_max_depth_m: f64,
     pub elastic_max_pressure_pa: f64,
 }
 
 impl LoadedReport {
-    fn of(loaded: &Loaded) -> Self {
+    fn of(loaded: &Loaded, line: bool) -> Self {
+        let (volume, line) = if line {
+            (None, Some(()))
+        } else {
+            (Some(()), None)
+        };
         Self {
             max_pressure_pa: loaded.max_pressure_pa,
             mean_pressure_pa: loaded.mean_pressure_pa,
             contact_area_m2: loaded.contact_area_m2,
-            contact_radius_m: loaded.contact_radius_m,
+            contact_radius_m: volume.map(|_| loaded.contact_radius_m),
+            half_width_m: line.map(|_| loaded.contact_radius_m),
             approach_m: loaded.approach_m,
             max_plastic_strain: loaded.max_plastic_strain,
             max_plastic_strain_depth_m: loaded.max_plastic_strain_depth_m,
             plastic_zone_depth_m: loaded.plastic_zone_depth_m,
-            plastic_volume_m3: loaded.plastic_volume_m3,
+            plastic_volume_m3: volume.map(|_| loaded.plastic_volume_m3),
+            plastic_area_m2: line.map(|_| loaded.plastic_volume_m3),
             von_mises_max_pa: loaded.von_mises_max_pa,
             von_mises_max_depth_m: loaded.von_mises_max_depth_m,
             elastic_max_pressure_pa: loaded.elastic_max_pressure_pa,
@@ -73,7 +93,11 @@ impl UnloadedReport {
 /// The report of a plastic study.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PlasticReport {
-    pub load_n: f64,
+    /// N; a line's is `load_n_per_m`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_n: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_n_per_m: Option<f64>,
     pub yield_strength_pa: f64,
     pub hardening_modulus_pa: f64,
     pub converged: bool,
@@ -85,13 +109,16 @@ pub struct PlasticReport {
 
 impl PlasticReport {
     pub fn new(study: &PlasticStudy) -> Self {
+        let line = study.kind == PlasticKind::Line;
+        let load = study.hertz.load();
         Self {
-            load_n: study.hertz.load_n,
+            load_n: (!line).then_some(load),
+            load_n_per_m: line.then_some(load),
             yield_strength_pa: study.spec.yield_strength_pa,
             hardening_modulus_pa: study.spec.hardening_modulus_pa,
             converged: study.converged,
             iterations: study.iterations,
-            loaded: LoadedReport::of(&study.loaded),
+            loaded: LoadedReport::of(&study.loaded, line),
             unloaded: study.unloaded.as_ref().map(UnloadedReport::of),
         }
     }
@@ -110,7 +137,8 @@ impl PlasticReport {
 
     fn write_text(&self, out: &mut String, study: &PlasticStudy) -> std::fmt::Result {
         let y = self.yield_strength_pa;
-        let a = study.hertz.radius_m;
+        let a = study.hertz.size_m();
+        let load = study.hertz.load();
         let mpa = |v: f64| v / 1e6;
         let um = |v: f64| v * 1e6;
         let [nz, ny, nx] = study.grid.dims();
@@ -138,11 +166,11 @@ impl PlasticReport {
                 writeln!(
                     out,
                     "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; Hertz: p0 = {:.0} MPa = {:.3} Y, a = {:.2} µm",
-                    self.load_n,
+                    load,
                     mpa(y),
                     mpa(self.hardening_modulus_pa),
-                    mpa(study.hertz.p0_pa),
-                    study.hertz.p0_pa / y,
+                    mpa(study.hertz.p0_pa()),
+                    study.hertz.p0_pa() / y,
                     um(a)
                 )?;
                 writeln!(
@@ -159,7 +187,7 @@ impl PlasticReport {
                 writeln!(
                     out,
                     "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; Hertz: p0 = {:.0} MPa = {:.3} Y, a = {:.2} µm (x), b = {:.2} µm (y), √(ab) = {:.2} µm",
-                    self.load_n,
+                    load,
                     mpa(y),
                     mpa(self.hardening_modulus_pa),
                     mpa(ellipse.p0_pa),
@@ -187,7 +215,7 @@ impl PlasticReport {
                 writeln!(
                     out,
                     "  load {:.4} N, Y = {:.0} MPa, h = {:.0} MPa; elastic contact: p_max = {:.0} MPa = {:.3} Y, A = {:.4e} m², largest spot c = {:.3} µm",
-                    self.load_n,
+                    load,
                     mpa(y),
                     mpa(self.hardening_modulus_pa),
                     mpa(rough.elastic_max_pressure_pa),
@@ -200,6 +228,28 @@ impl PlasticReport {
                     "  grid {nx} x {ny} x {nz} cells (the map's), {:.3} µm deep ({} c); {steps}",
                     um(study.grid.depth.depth_m()),
                     study.spec.depth_over_a,
+                )?;
+            }
+            PlasticKind::Line => {
+                writeln!(
+                    out,
+                    "elastic-plastic line contact, plane strain (J2, linear hardening; SAM, docs/plasticity.md)"
+                )?;
+                writeln!(
+                    out,
+                    "  load {:.4} kN/m, Y = {:.0} MPa, h = {:.0} MPa, mu = {}; Hertz: p0 = {:.0} MPa = {:.3} Y, b = {:.2} µm",
+                    load / 1e3,
+                    mpa(y),
+                    mpa(self.hardening_modulus_pa),
+                    study.friction,
+                    mpa(study.hertz.p0_pa()),
+                    study.hertz.p0_pa() / y,
+                    um(a)
+                )?;
+                writeln!(
+                    out,
+                    "  grid {nx} x {nz} cells (x, z) over ±{} b and {} b deep; {steps}",
+                    study.spec.extent_over_a, study.spec.depth_over_a,
                 )?;
             }
         }
@@ -222,21 +272,47 @@ impl PlasticReport {
             PlasticKind::Point => "a",
             PlasticKind::Elliptical(_) => "√(ab)",
             PlasticKind::Rough(_) => "elastic",
+            PlasticKind::Line => "b",
+        };
+        let line = study.kind == PlasticKind::Line;
+        if let Some(half_width) = l.half_width_m {
+            writeln!(
+                out,
+                "  half-width        {:>10.3} µm ({:.4} b)",
+                um(half_width),
+                half_width / a
+            )?;
+        }
+        if let Some(radius) = l.contact_radius_m {
+            writeln!(
+                out,
+                "  contact radius    {:>10.3} µm ({:.4} {unit}; √(A/π))",
+                um(radius),
+                radius / a
+            )?;
+        }
+        if line {
+            writeln!(
+                out,
+                "  approach          {:>10.4} µm (of the points {:.3} µm below the surfaces)",
+                um(l.approach_m),
+                um(study.grid.depth.depth_m())
+            )?;
+        } else {
+            writeln!(out, "  approach          {:>10.4} µm", um(l.approach_m))?;
+        }
+        let (zone, zone_unit) = match (l.plastic_volume_m3, l.plastic_area_m2) {
+            (Some(volume), _) => (volume, "m³"),
+            (None, Some(area)) => (area, "m² in the section"),
+            (None, None) => (0.0, "m³"),
         };
         writeln!(
             out,
-            "  contact radius    {:>10.3} µm ({:.4} {unit}; √(A/π))",
-            um(l.contact_radius_m),
-            l.contact_radius_m / a
-        )?;
-        writeln!(out, "  approach          {:>10.4} µm", um(l.approach_m))?;
-        writeln!(
-            out,
-            "  max plastic strain{:>10.3e} at z = {:.3} µm; plastic zone to z = {:.3} µm, {:.4e} m³",
+            "  max plastic strain{:>10.3e} at z = {:.3} µm; plastic zone to z = {:.3} µm, {:.4e} {zone_unit}",
             l.max_plastic_strain,
             um(l.max_plastic_strain_depth_m),
             um(l.plastic_zone_depth_m),
-            l.plastic_volume_m3
+            zone
         )?;
         writeln!(
             out,
@@ -266,9 +342,10 @@ impl PlasticReport {
                 _ => "dent",
             };
             writeln!(out, "  {dent:<18}{:>10.4} µm", um(u.residual_depth_m))?;
+            let r = if line { "|x|" } else { "r" };
             writeln!(
                 out,
-                "  residual von Mises{:>10.1} MPa at z = {:.3} µm, r = {:.3} µm ({:.3} {unit})",
+                "  residual von Mises{:>10.1} MPa at z = {:.3} µm, {r} = {:.3} µm ({:.3} {unit})",
                 mpa(u.residual_von_mises_max_pa),
                 um(u.residual_von_mises_max_depth_m),
                 um(u.residual_von_mises_max_r_m),

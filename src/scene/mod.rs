@@ -125,14 +125,14 @@ pub struct Scene {
 
 impl Scene {
     /// Whether `render` and `record` draw the elastic-plastic sheet and load steps of this
-    /// scene: a `[plasticity]` point or elliptical contact. A line contact's plastic study has
-    /// no sheet yet, and a rough map's is not this one (its sections are a few cells deep
-    /// under a map many contacts wide, its curves Hertz's): their elastic figure is drawn.
+    /// scene: a `[plasticity]` point, elliptical or line contact. A rough map's is not this
+    /// one (its sections are a few cells deep under a map many contacts wide, its curves
+    /// Hertz's): its elastic figure is drawn.
     pub fn draws_plastic_sheet(&self) -> bool {
         self.plasticity.is_some()
             && matches!(
                 self.contact.kind,
-                ContactKind::Point | ContactKind::Elliptical
+                ContactKind::Point | ContactKind::Elliptical | ContactKind::Line
             )
     }
 

@@ -11,7 +11,7 @@
 use ndarray::{Array2, Array3};
 
 use crate::contact::elliptic::EllipticalContact;
-use crate::contact::PointContact;
+use crate::contact::{LineContact, PointContact};
 use crate::operator::elastic::Periodicity;
 use crate::plasticity::column::DepthCells;
 use crate::plasticity::halfspace::VolumeGrid;
@@ -40,9 +40,9 @@ pub struct Loaded {
     pub max_pressure_pa: f64,
     /// The load over the contact area.
     pub mean_pressure_pa: f64,
-    /// The area of the cells in contact.
+    /// The area of the cells in contact (a line's per metre of length: its width times 1 m).
     pub contact_area_m2: f64,
-    /// `√(A/π)`.
+    /// `√(A/π)`; a line's half the width of the cells in contact.
     pub contact_radius_m: f64,
     /// The indenter's displacement relative to the far surface from first contact.
     pub approach_m: f64,
@@ -50,6 +50,7 @@ pub struct Loaded {
     pub max_plastic_strain_depth_m: f64,
     /// The centre depth of the deepest cell with `εp > 1e-5` (0 without one).
     pub plastic_zone_depth_m: f64,
+    /// A line's per metre of length: the plastic zone's area in the x–z section.
     pub plastic_volume_m3: f64,
     /// The largest von Mises stress of the total stress over the volume's cells.
     pub von_mises_max_pa: f64,
@@ -76,11 +77,16 @@ pub struct PlasticStudy {
     /// The elastic (Hertz) contact at the scene's load: a ball's own; for an elliptical
     /// contact the circle of the same load, area and peak pressure (radius `√(ab)`); for a
     /// rough map the circle of the elastic rough contact's area at the load and its peak
-    /// pressure ([`PlasticKind`] holds the contact itself).
-    pub hertz: PointContact,
+    /// pressure ([`PlasticKind`] holds the contact itself); a line's own.
+    pub hertz: ElasticHertz,
     /// The contact's kind and what it adds.
     pub kind: PlasticKind,
     pub friction: f64,
+    /// A line's body 2 modulus and Poisson's ratio (its approach, [`history::elastic_approach_m`]);
+    /// `None` when body 2 is rigid, and for the other kinds (their approach is the contact
+    /// solver's).
+    pub counter: Option<(f64, f64)>,
+    /// The volume grid (a line's: one row 1 m wide in y, [`line::row_grid`]).
     pub grid: VolumeGrid,
     /// Cell centres (m): x, y (from the axis) and depth z.
     pub x_m: Vec<f64>,
@@ -111,6 +117,62 @@ impl PlasticStudy {
     }
 }
 
+/// The elastic contact of Hertz a plastic study is compared with: a circle (point, elliptical
+/// and rough contacts) or a line (plane strain, per metre of length).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ElasticHertz {
+    Point(PointContact),
+    Line(LineContact),
+}
+
+impl ElasticHertz {
+    /// The load: N, or N/m for a line.
+    pub fn load(&self) -> f64 {
+        match self {
+            Self::Point(c) => c.load_n,
+            Self::Line(c) => c.load_n_per_m,
+        }
+    }
+
+    /// The contact radius `a` or a line's half-width `b` (m): the length the grid is measured
+    /// in.
+    pub fn size_m(&self) -> f64 {
+        match self {
+            Self::Point(c) => c.radius_m,
+            Self::Line(c) => c.half_width_m,
+        }
+    }
+
+    pub fn p0_pa(&self) -> f64 {
+        match self {
+            Self::Point(c) => c.p0_pa,
+            Self::Line(c) => c.p0_pa,
+        }
+    }
+
+    pub fn effective_modulus_pa(&self) -> f64 {
+        match self {
+            Self::Point(c) => c.effective_modulus_pa,
+            Self::Line(c) => c.effective_modulus_pa,
+        }
+    }
+
+    pub fn effective_radius_m(&self) -> f64 {
+        match self {
+            Self::Point(c) => c.effective_radius_m,
+            Self::Line(c) => c.effective_radius_m,
+        }
+    }
+
+    /// The circle's contact, `None` for a line.
+    pub fn point(&self) -> Option<&PointContact> {
+        match self {
+            Self::Point(c) => Some(c),
+            Self::Line(_) => None,
+        }
+    }
+}
+
 /// The contact a plastic study pressed.
 #[derive(Clone, Debug, PartialEq)]
 pub enum PlasticKind {
@@ -120,6 +182,9 @@ pub enum PlasticKind {
     Elliptical(EllipticalContact),
     /// A rough map.
     Rough(RoughPlastic),
+    /// A cylinder or a roller in plane strain ([`line`]): the grid one row 1 m wide in y, so
+    /// the areas and volumes are per metre of length.
+    Line,
 }
 
 /// What a rough map's plastic study adds.
@@ -156,14 +221,8 @@ pub fn not_plastic_message(file: &str) -> String {
 pub enum PlasticStudyError {
     #[error("the scene has no [plasticity]")]
     NotPlastic,
-    /// A line scene given to the point contact's study.
-    #[error("a line contact (plane strain) is computed by `stressfield plastic` (study::plastic::line), not by this entry point yet\nhint: run `stressfield plastic SCENE --json` for a line contact")]
-    LineContact,
     #[error(transparent)]
     Solve(#[from] PlasticContactError),
-    /// A line contact's solve (plane strain).
-    #[error(transparent)]
-    Line(#[from] crate::plasticity::line::LinePlasticError),
     /// The plastic zone reaches the volume grid's edge: the key to change and how.
     #[error("plasticity.{key}: {message}")]
     Grid { key: &'static str, message: String },
@@ -219,6 +278,11 @@ pub fn cpu_seconds(spec: &PlasticitySpec) -> f64 {
     cells * iterations * CPU_SECONDS_PER_CELL_ITERATION
 }
 
+/// CPU seconds per cell and iteration of a line contact's load loop (plane strain, its x–z
+/// cells): 3.1e-7 to 6.1e-7 measured on the roller scene at 64 x 24, 128 x 48, 256 x 96 and
+/// 512 x 48 cells (docs/plasticity.md), 4.5e-7 their middle.
+pub const LINE_CPU_SECONDS_PER_CELL_ITERATION: f64 = 4.5e-7;
+
 /// The most CPU time `check` lets a plastic scene's estimate take, s (an hour).
 pub const CPU_LIMIT_SECONDS: f64 = 3600.0;
 
@@ -256,10 +320,29 @@ impl PlasticPlan {
 }
 
 /// The plan of a `[plasticity]` scene's solve (`None` without one): its volume grid's cells
-/// (a rough map's own, with `depth_cells` layers), the memory and the CPU time estimated.
+/// (a rough map's own, with `depth_cells` layers; a line's x–z cells, one row), the memory and
+/// the CPU time estimated.
 pub fn plan(scene: &Scene) -> Option<PlasticPlan> {
     let spec = scene.plasticity?;
     let sliding = scene.contact.friction != 0.0;
+    let unload = if spec.unload { spec.unload_steps } else { 0 };
+    let iterations = ITERATIONS_PER_LOAD_STEP * spec.steps as f64 + 2.0 * unload as f64;
+    if scene.contact.kind == crate::scene::ContactKind::Line {
+        // The depth's thickness and the cells' width do not change the cost.
+        let line_grid = crate::plasticity::line::LineGrid {
+            cells: spec.grid_cells,
+            spacing_m: 1.0,
+            depth: DepthCells::uniform(spec.depth_cells, 1.0).ok()?,
+        };
+        let grid = line::row_grid(&line_grid);
+        let cells = (spec.grid_cells * spec.depth_cells) as f64;
+        return Some(PlasticPlan {
+            cells: [spec.depth_cells, 1, spec.grid_cells],
+            steps: spec.steps + unload,
+            bytes: solve_bytes(&grid, Some(&line_grid), sliding),
+            cpu_seconds: cells * iterations * LINE_CPU_SECONDS_PER_CELL_ITERATION,
+        });
+    }
     let (shape, periodicity) = match (&scene.surface, scene.contact.rough) {
         (Some(surface), Some(rough)) if scene.contact.kind == crate::scene::ContactKind::Rough => (
             surface.heights.shape(),
@@ -279,9 +362,7 @@ pub fn plan(scene: &Scene) -> Option<PlasticPlan> {
         periodicity,
     };
     let bytes = loading::memory_bytes(&grid, sliding) + 2 * loading::snapshot_bytes(&grid);
-    let unload = if spec.unload { spec.unload_steps } else { 0 };
     let cells = (shape[0] * shape[1] * spec.depth_cells) as f64;
-    let iterations = ITERATIONS_PER_LOAD_STEP * spec.steps as f64 + 2.0 * unload as f64;
     Some(PlasticPlan {
         cells: [spec.depth_cells, shape[0], shape[1]],
         steps: spec.steps + unload,
@@ -319,7 +400,15 @@ pub fn study(
         Some(Hertz::Elliptical(ellipse)) => {
             elliptic::study_elliptical(&spec, &ellipse, scene.contact.friction, progress)
         }
-        Some(Hertz::Line(_)) => Err(PlasticStudyError::LineContact),
+        Some(Hertz::Line(hertz)) => {
+            let body2 = scene
+                .contact
+                .dimensional
+                .map(|d| d.body2.material)
+                .filter(|m| m.modulus_pa.is_finite())
+                .map(|m| (m.modulus_pa, m.poisson));
+            line::study_line(&spec, &hertz, body2, scene.contact.friction, progress)
+        }
         _ => Err(PlasticStudyError::NotPlastic),
     }
 }
@@ -342,12 +431,12 @@ pub fn study_point(
         -(x_m[i] * x_m[i] + y_m[j] * y_m[j]) / (2.0 * radius)
     });
     let setup = Setup {
-        hertz: *hertz,
+        hertz: ElasticHertz::Point(*hertz),
         kind: PlasticKind::Point,
         grid,
         x_m,
         y_m,
-        heights,
+        body: SetupBody::Volume { heights },
         elastic_max_pressure_pa: hertz.p0_pa,
         edges: Edges::Bounded,
     };
@@ -371,19 +460,46 @@ pub(crate) enum Edges {
 #[derive(Clone, Debug)]
 pub(crate) struct Setup {
     /// The Hertz contact reported beside the result ([`PlasticStudy::hertz`]).
-    pub hertz: PointContact,
+    pub hertz: ElasticHertz,
     pub kind: PlasticKind,
+    /// The volume grid (a line's: one row 1 m wide, [`line::row_grid`]).
     pub grid: VolumeGrid,
     /// Cell centres from the axis (the map's centre), m.
     pub x_m: Vec<f64>,
     pub y_m: Vec<f64>,
-    /// The undeformed gap as heights out of body 1 (`[ny, nx]`).
-    pub heights: Array2<f64>,
+    pub body: SetupBody,
     pub elastic_max_pressure_pa: f64,
     pub edges: Edges,
 }
 
-/// The study of `setup` loaded to `setup.hertz.load_n` in `spec`'s steps.
+/// What is pressed: a 3-D half-space under a gap, or a plane-strain x–z volume.
+#[derive(Clone, Debug)]
+pub(crate) enum SetupBody {
+    /// The undeformed gap as heights out of body 1 (`[ny, nx]`).
+    Volume { heights: Array2<f64> },
+    /// The x–z grid, the undeformed gap (m, one per column) and body 2's modulus and
+    /// Poisson's ratio (`None`: rigid).
+    Line {
+        grid: crate::plasticity::line::LineGrid,
+        gap_m: Vec<f64>,
+        counter: Option<(f64, f64)>,
+    },
+}
+
+/// The bytes of a solve on `grid` (a line's one-row grid with `body`), two states kept.
+fn solve_bytes(
+    grid: &VolumeGrid,
+    line: Option<&crate::plasticity::line::LineGrid>,
+    sliding: bool,
+) -> usize {
+    let solver = match line {
+        Some(line) => crate::plasticity::line::memory_bytes(line),
+        None => loading::memory_bytes(grid, sliding),
+    };
+    solver + 2 * loading::snapshot_bytes(grid)
+}
+
+/// The study of `setup` loaded to `setup.hertz.load()` in `spec`'s steps.
 pub(crate) fn solve_setup(
     spec: &PlasticitySpec,
     setup: Setup,
@@ -396,12 +512,15 @@ pub(crate) fn solve_setup(
         grid,
         x_m,
         y_m,
-        heights,
+        body,
         elastic_max_pressure_pa,
         edges,
     } = setup;
-    let needed_bytes =
-        loading::memory_bytes(&grid, friction != 0.0) + 2 * loading::snapshot_bytes(&grid);
+    let line_grid = match &body {
+        SetupBody::Line { grid, .. } => Some(grid),
+        SetupBody::Volume { .. } => None,
+    };
+    let needed_bytes = solve_bytes(&grid, line_grid, friction != 0.0);
     if needed_bytes > MEMORY_LIMIT_BYTES {
         return Err(PlasticStudyError::Memory {
             needed_bytes,
@@ -411,39 +530,68 @@ pub(crate) fn solve_setup(
     let [nz, ny, nx] = grid.dims();
     let [dx, dy] = grid.spacing_m;
     let z_m = grid.depth.centres_m();
-    let loads = step_loads(spec, hertz.load_n);
+    let loads = step_loads(spec, hertz.load());
     let axis_cell = [ny / 2, nx / 2];
     let loaded_step = spec.steps - 1;
     let mut snapshots = vec![loaded_step];
     if spec.unload {
         snapshots.push(loads.len() - 1);
     }
-    let problem = PlasticContactProblem {
-        heights_m: heights.view(),
-        grid: grid.clone(),
-        modulus_pa: spec.body1.modulus_pa,
-        poisson: spec.body1.poisson,
-        e_star_pa: hertz.effective_modulus_pa,
-        hardening: Hardening {
-            yield_strength_pa: spec.yield_strength_pa,
-            plastic_modulus_pa: spec.hardening_modulus_pa,
-        },
-        friction,
-        loads_n: loads,
-        snapshots,
-        axis_cell,
-        tolerance: spec.tolerance,
-        max_iterations: MAX_ITERATIONS,
-        acceleration: ACCELERATION,
-        contact_tolerance: CONTACT_TOLERANCE,
-        memory_limit_bytes: MEMORY_LIMIT_BYTES,
+    let hardening = Hardening {
+        yield_strength_pa: spec.yield_strength_pa,
+        plastic_modulus_pa: spec.hardening_modulus_pa,
+    };
+    let is_line = line_grid.is_some();
+    let counter = match &body {
+        SetupBody::Line { counter, .. } => *counter,
+        SetupBody::Volume { .. } => None,
     };
     let mut history = StepHistory::default();
-    let solution = loading::solve_observed(
-        &problem,
-        progress,
-        Some(&mut |state| history.push(state, dx * dy, ny / 2)),
-    )?;
+    let mut observe = |state: &loading::StepState| history.push(state, dx * dy, ny / 2, is_line);
+    let solution = match body {
+        SetupBody::Volume { heights } => {
+            let problem = PlasticContactProblem {
+                heights_m: heights.view(),
+                grid: grid.clone(),
+                modulus_pa: spec.body1.modulus_pa,
+                poisson: spec.body1.poisson,
+                e_star_pa: hertz.effective_modulus_pa(),
+                hardening,
+                friction,
+                loads_n: loads,
+                snapshots,
+                axis_cell,
+                tolerance: spec.tolerance,
+                max_iterations: MAX_ITERATIONS,
+                acceleration: ACCELERATION,
+                contact_tolerance: CONTACT_TOLERANCE,
+                memory_limit_bytes: MEMORY_LIMIT_BYTES,
+            };
+            loading::solve_observed(&problem, progress, Some(&mut observe))?
+        }
+        SetupBody::Line {
+            grid: line_grid,
+            gap_m,
+            counter,
+        } => {
+            let problem = crate::plasticity::line::LinePlasticProblem {
+                gap_m,
+                grid: line_grid,
+                modulus_pa: spec.body1.modulus_pa,
+                poisson: spec.body1.poisson,
+                counter,
+                e_star_pa: hertz.effective_modulus_pa(),
+                hardening,
+                friction,
+                loads_n_per_m: loads,
+                snapshots,
+                tolerance: spec.tolerance,
+                max_iterations: MAX_ITERATIONS,
+                acceleration: ACCELERATION,
+            };
+            crate::plasticity::line::solve(&problem, progress, Some(&mut observe))?
+        }
+    };
     let loaded_state = &solution.snapshots[0];
     let kappa = &loaded_state.equivalent_plastic_strain;
     // The plastic zone must lie inside the grid: not in its deepest layer, nor on its sides.
@@ -452,14 +600,17 @@ pub(crate) fn solve_setup(
     for ((l, j, i), &k) in kappa.indexed_iter() {
         if k > PLASTIC_ZONE_STRAIN {
             at_bottom |= l + 1 == nz;
-            at_side |= i == 0 || j == 0 || i + 1 == nx || j + 1 == ny;
+            // A line's one row has no sides in y.
+            at_side |= i == 0 || i + 1 == nx || (ny > 1 && (j == 0 || j + 1 == ny));
         }
     }
+    // The length the grid is measured in: a line's half-width b, else a.
+    let unit = if is_line { "b" } else { "a" };
     if at_bottom {
         return Err(PlasticStudyError::Grid {
             key: "depth_over_a",
             message: format!(
-                "the plastic zone reaches the volume grid's bottom ({:.3} a): the grid is too shallow for it\nhint: raise depth_over_a (e.g. to {:.1}) and depth_cells with it",
+                "the plastic zone reaches the volume grid's bottom ({:.3} {unit}): the grid is too shallow for it\nhint: raise depth_over_a (e.g. to {:.1}) and depth_cells with it",
                 spec.depth_over_a,
                 spec.depth_over_a * 2.0
             ),
@@ -475,7 +626,7 @@ pub(crate) fn solve_setup(
         return Err(PlasticStudyError::Grid {
             key: "extent_over_a",
             message: format!(
-                "the plastic zone reaches the volume grid's sides (±{:.3} a): the grid is too narrow for it\nhint: raise extent_over_a (e.g. to {:.1}) and grid_cells with it",
+                "the plastic zone reaches the volume grid's sides (±{:.3} {unit}): the grid is too narrow for it\nhint: raise extent_over_a (e.g. to {:.1}) and grid_cells with it",
                 spec.extent_over_a,
                 spec.extent_over_a * 2.0
             ),
@@ -498,12 +649,16 @@ pub(crate) fn solve_setup(
     let loaded = Loaded {
         max_pressure_pa: loaded_step_result.max_pressure_pa,
         mean_pressure_pa: if contact_area_m2 > 0.0 {
-            hertz.load_n / contact_area_m2
+            hertz.load() / contact_area_m2
         } else {
             0.0
         },
         contact_area_m2,
-        contact_radius_m: (contact_area_m2 / std::f64::consts::PI).sqrt(),
+        contact_radius_m: if is_line {
+            contact_area_m2 / (2.0 * line::ROW_WIDTH_M)
+        } else {
+            (contact_area_m2 / std::f64::consts::PI).sqrt()
+        },
         approach_m: loaded_step_result.approach_m.unwrap_or(0.0),
         max_plastic_strain: if plastic { max_plastic_strain } else { 0.0 },
         max_plastic_strain_depth_m: if plastic { z_m[at_strain[0]] } else { 0.0 },
@@ -564,6 +719,7 @@ pub(crate) fn solve_setup(
         hertz,
         kind,
         friction,
+        counter,
         grid,
         x_m,
         y_m,

@@ -78,12 +78,12 @@ pub fn study_elliptical(
             + curvature.half_curvature_y_per_m * y_m[j] * y_m[j])
     });
     let setup = Setup {
-        hertz: equivalent_circle(ellipse),
+        hertz: super::ElasticHertz::Point(equivalent_circle(ellipse)),
         kind: PlasticKind::Elliptical(*ellipse),
         grid,
         x_m,
         y_m,
-        heights,
+        body: super::SetupBody::Volume { heights },
         elastic_max_pressure_pa: ellipse.p0_pa,
         edges: Edges::Bounded,
     };

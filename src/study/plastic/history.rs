@@ -18,7 +18,8 @@ pub struct StepPoint {
     pub max_pressure_pa: f64,
     /// The load over the contact area (0 without contact).
     pub mean_pressure_pa: f64,
-    /// `√(A/π)`, `A` the area of the cells in contact.
+    /// `√(A/π)`, `A` the area of the cells in contact; a line's half-width (`A` its width
+    /// times 1 m).
     pub contact_radius_m: f64,
     pub max_plastic_strain: f64,
     /// The plastic surface displacement on the axis (m, into body 1).
@@ -47,8 +48,9 @@ pub struct StepHistory {
 
 impl StepHistory {
     /// Records the state at the end of a step; `cell_area_m2` the area of a surface cell,
-    /// `row` the volume's row on the axis (`y = 0`).
-    pub fn push(&mut self, state: &StepState, cell_area_m2: f64, row: usize) {
+    /// `row` the volume's row on the axis (`y = 0`), `line` whether the contact is a line
+    /// (one row 1 m wide).
+    pub fn push(&mut self, state: &StepState, cell_area_m2: f64, row: usize, line: bool) {
         let result = state.result;
         let area = result.contact_cells as f64 * cell_area_m2;
         let unloading = self
@@ -64,7 +66,11 @@ impl StepHistory {
             } else {
                 0.0
             },
-            contact_radius_m: (area / std::f64::consts::PI).sqrt(),
+            contact_radius_m: if line {
+                area / (2.0 * super::line::ROW_WIDTH_M)
+            } else {
+                (area / std::f64::consts::PI).sqrt()
+            },
             max_plastic_strain: result.max_plastic_strain,
             axis_displacement_m: result.axis_displacement_m,
             unloading,
@@ -174,9 +180,83 @@ pub fn first_yield_load_n(hertz: &PointContact, nu: f64, yield_pa: f64) -> f64 {
     hertz.load_for_peak_pressure(yield_pa / axis_von_mises_max_over_p0(nu))
 }
 
+/// The largest von Mises stress over `p0` on the axis of Hertz's line contact in plane strain
+/// for Poisson's ratio `nu`: on the axis `σxx = -p0 ((1 + 2ζ²)/√(1 + ζ²) - 2ζ)`,
+/// `σzz = -p0/√(1 + ζ²)`, `σyy = ν (σxx + σzz)`, no shear (`ζ = z/b`; McEwen's field, Johnson
+/// 1985 eq. 4.50 with §7.2's plane strain), sampled every 1e-4 b from 0.3 b to 1.2 b: 0.5575
+/// at 0.70 b for ν = 0.3 (Johnson 1985 §6.2).
+pub fn line_axis_von_mises_max_over_p0(nu: f64) -> f64 {
+    (3000..=12000)
+        .map(|k| {
+            let zeta = k as f64 * 1e-4;
+            let root = (1.0 + zeta * zeta).sqrt();
+            let xx = -((1.0 + 2.0 * zeta * zeta) / root - 2.0 * zeta);
+            let zz = -1.0 / root;
+            let yy = nu * (xx + zz);
+            von_mises(&[xx, yy, zz, 0.0, 0.0, 0.0])
+        })
+        .fold(0.0, f64::max)
+}
+
+/// The load and approach of the elastic contact of a plastic study at first yield of body 1
+/// (`W_Y`, `δ_Y`): a point contact's `p0 = Y / 0.620` (ν = 0.3; [`first_yield_load_n`]),
+/// a line's `p0 = Y / 0.5575` ([`line_axis_von_mises_max_over_p0`]; the load scales as
+/// `p0²`), the approach from [`elastic_approach_m`].
+pub fn first_yield(study: &super::PlasticStudy) -> (f64, f64) {
+    let nu = study.spec.body1.poisson;
+    let y = study.spec.yield_strength_pa;
+    let load = match &study.hertz {
+        super::ElasticHertz::Point(hertz) => first_yield_load_n(hertz, nu, y),
+        super::ElasticHertz::Line(hertz) => {
+            let p0 = y / line_axis_von_mises_max_over_p0(nu);
+            hertz.load_n_per_m * (p0 / hertz.p0_pa).powi(2)
+        }
+    };
+    (load, elastic_approach_m(study, load))
+}
+
+/// The approach of the elastic (Hertz) contact of a plastic study at the load `load` (N, or
+/// N/m for a line): a circle's `δ_H (W/W_H)^(2/3)` (Johnson 1985 §4.2); a line's the approach
+/// the line study reports, that of the points at the grid's depth `D` below each surface on
+/// the axis, `(p0/E) [(1 - ν²) b asinh(D/b) - ν(1 + ν)(D √(b² + D²) - D²)/b]` for each elastic
+/// body (the axis stresses of McEwen's field integrated, [`crate::plasticity::line`]), with
+/// `b` and `p0` growing as `√W`.
+pub fn elastic_approach_m(study: &super::PlasticStudy, load: f64) -> f64 {
+    match &study.hertz {
+        super::ElasticHertz::Point(hertz) => {
+            hertz.approach_m * (load / hertz.load_n).powf(2.0 / 3.0)
+        }
+        super::ElasticHertz::Line(hertz) => {
+            let scale = (load / hertz.load_n_per_m).max(0.0).sqrt();
+            let (b, p0) = (hertz.half_width_m * scale, hertz.p0_pa * scale);
+            if b <= 0.0 {
+                return 0.0;
+            }
+            let d = study.grid.depth.depth_m();
+            let body = |modulus: f64, nu: f64| {
+                p0 / modulus
+                    * ((1.0 - nu * nu) * b * (d / b).asinh()
+                        - nu * (1.0 + nu) * (d * (b * b + d * d).sqrt() - d * d) / b)
+            };
+            let body1 = study.spec.body1;
+            let mut approach = body(body1.modulus_pa, body1.poisson);
+            if let Some((modulus, nu)) = study.counter {
+                approach += body(modulus, nu);
+            }
+            approach
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_line_axis_maximum_is_johnson_s_0_5575_for_nu_0_3() {
+        let ratio = line_axis_von_mises_max_over_p0(0.3);
+        assert!((ratio - 0.5575).abs() < 1e-4, "{ratio}");
+    }
 
     #[test]
     fn the_axis_maximum_is_johnson_s_0_62_for_nu_0_3() {

@@ -191,12 +191,14 @@ pub fn study_map(
         plastic_footprint_m2: 0.0,
     });
     let setup = Setup {
-        hertz,
+        hertz: super::ElasticHertz::Point(hertz),
         kind,
         grid,
         x_m,
         y_m,
-        heights: problem.heights_m.to_owned(),
+        body: super::SetupBody::Volume {
+            heights: problem.heights_m.to_owned(),
+        },
         elastic_max_pressure_pa: elastic.max_pressure_pa,
         edges: match problem.periodicity {
             Periodicity::Periodic => Edges::Periodic,

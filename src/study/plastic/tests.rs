@@ -308,3 +308,43 @@ fn a_plastic_strain_beyond_small_strains_is_warned_of() {
     );
     assert!(large(&hard), "{:?}", hard.warnings);
 }
+
+/// A line contact through the one study (issue 51): below first yield (a rigid roller at
+/// p0 = 1.2 Y) it is elastic, its report has the line's keys, and its approach is the closed
+/// form the sheet's Hertz curve draws ([`history::elastic_approach_m`]).
+#[test]
+fn a_line_contact_goes_through_the_study_with_the_line_s_keys() {
+    let e_star = MODULUS / (1.0 - POISSON * POISSON);
+    let p0 = 1.2 * YIELD;
+    let load = std::f64::consts::PI * RADIUS * p0 * p0 / e_star;
+    let hertz = crate::contact::LineContact::from_effective(load, e_star, RADIUS);
+    let mut spec = spec(2, 1, 128, 32);
+    spec.extent_over_a = 3.0;
+    spec.depth_over_a = 2.0;
+    let study = line::study_line(&spec, &hertz, None, 0.0, &mut |_| {}).expect("solves");
+    assert_eq!(study.kind, PlasticKind::Line);
+    assert_eq!(study.grid.dims(), [32, 1, 128]);
+    assert_eq!(study.loaded.max_plastic_strain, 0.0);
+    assert!(study.converged);
+    let error = (study.loaded.max_pressure_pa / p0 - 1.0).abs();
+    assert!(error < 2e-3, "p0 {error:e}");
+    let expected = history::elastic_approach_m(&study, load);
+    let error = (study.loaded.approach_m / expected - 1.0).abs();
+    eprintln!("line approach against the closed form: {error:.2e}");
+    assert!(error < 3e-3, "approach {error:e}");
+    let json: serde_json::Value =
+        serde_json::from_str(&crate::report::plastic::PlasticReport::new(&study).json())
+            .expect("JSON");
+    assert_eq!(json["load_n_per_m"].as_f64(), Some(load));
+    assert!(json.get("load_n").is_none());
+    let loaded = &json["loaded"];
+    assert!(loaded["half_width_m"].is_number() && loaded["plastic_area_m2"].is_number());
+    assert!(loaded.get("contact_radius_m").is_none() && loaded.get("plastic_volume_m3").is_none());
+    // First yield of the line at p0 = Y / 0.5575: W_Y = W (p0_Y / p0)².
+    let (load_y, _) = history::first_yield(&study);
+    let expected_y = load * (1.0f64 / (0.5575 * 1.2)).powi(2);
+    assert!(
+        (load_y / expected_y - 1.0).abs() < 5e-4,
+        "{load_y} vs {expected_y}"
+    );
+}

@@ -94,8 +94,8 @@ fn below_first_yield_the_ellipse_is_hertz_s() {
         (loaded.contact_area_m2 / std::f64::consts::PI).sqrt(),
         1e-12,
     );
-    assert_relative_eq_ratio(study.hertz.radius_m, (a * b).sqrt(), 1e-12);
-    assert_relative_eq_ratio(study.hertz.p0_pa, hertz.p0_pa, 1e-12);
+    assert_relative_eq_ratio(study.hertz.size_m(), (a * b).sqrt(), 1e-12);
+    assert_relative_eq_ratio(study.hertz.p0_pa(), hertz.p0_pa, 1e-12);
 }
 
 fn assert_relative_eq_ratio(value: f64, reference: f64, tolerance: f64) {

@@ -462,13 +462,15 @@ fn distinct_peaks(mut peaks: Vec<f64>, dz: f64) -> Vec<f64> {
 /// The maxima of [`grid_maxima_to_depth`] searched near a known answer: the depths `peaks` at
 /// which a nearby traction field (the step before, in an evolution) had its peaks in depth
 /// ([`grid_maxima_and_peaks`], or the warm search before). Returns the maxima and the peaks'
-/// new depths, or `None` where a peak moved out of its bracket (the full search is needed).
+/// new depths, or `None` where a peak ran past the search's depth or a quantity lost all its
+/// peaks (the full search is needed).
 ///
-/// Each peak at depth `z` is bracketed by layers at `z` and `z ± s`, with `s` a quarter of a
-/// cell within [`UNIFORM_LAYERS`] cells of the surface (where the full search samples the
-/// first cell by quarters) and `max(dz, WARM_BRACKET z)` below (the field at depth `z` varies
+/// Each peak at depth `z` is bracketed by layers at `z` and `z ± s`, with `s` an eighth of a
+/// cell within [`UNIFORM_LAYERS`] cells of the surface (the peak under a spot of a cell or two
+/// is sharp: the full search samples the first cell by quarters and bisects to `dz/16`) and `max(dz, WARM_BRACKET z)` below (the field at depth `z` varies
 /// on the scale of `z`); where an end of the bracket is the best, for either quantity, the
-/// bracket moves by `s` that way, at most [`WARM_MOVES`] times. The best layer's parabola
+/// bracket moves by `s` that way, at most [`WARM_MOVES`] times (a bracket still climbing
+/// then has merged into another peak, and is dropped). The best layer's parabola
 /// vertex through its neighbours is then evaluated too, and the surface layer `z = 0` always
 /// is. As in the full search, the maximum reported is the largest of every layer evaluated, on
 /// the same cell centres; the depth is refined to a parabola's accuracy instead of a bisection
@@ -515,7 +517,7 @@ pub fn grid_maxima_warm(
         .iter()
         .map(|&z| {
             if z < UNIFORM_LAYERS as f64 * dz {
-                0.25 * dz
+                0.125 * dz
             } else {
                 dz.max(WARM_BRACKET * z)
             }
@@ -544,7 +546,7 @@ pub fn grid_maxima_warm(
             if fb >= fa && fb >= fc {
                 settled[b] = true;
             } else if round == WARM_MOVES {
-                return Ok(None);
+                // Still climbing: the peak has merged into another or left; dropped below.
             } else if fa > fc {
                 if *above <= 0.0 {
                     // The surface is this peak's best.
@@ -557,7 +559,7 @@ pub fn grid_maxima_warm(
                 wanted.push(next);
             } else {
                 if *below >= depth {
-                    // The peak runs past the search's depth.
+                    // The peak runs past the search's depth: only the full search will do.
                     return Ok(None);
                 }
                 let next = (*below + s).min(depth);
@@ -570,6 +572,21 @@ pub fn grid_maxima_warm(
         }
         evaluate(&wanted, &mut depths, &mut found)?;
     }
+    // A quantity none of whose brackets settled has lost its peaks: the full search is needed.
+    for k in 0..2 {
+        if !brackets
+            .iter()
+            .zip(&settled)
+            .any(|(&(_, quantity, _), &done)| quantity == k && done)
+        {
+            return Ok(None);
+        }
+    }
+    let brackets: Vec<(usize, usize, [f64; 3])> = brackets
+        .into_iter()
+        .zip(&settled)
+        .filter_map(|(bracket, &done)| done.then_some(bracket))
+        .collect();
     let mut vertices = Vec::new();
     for &(_, k, [za, zb, zc]) in &brackets {
         if za >= zb || zc <= zb {
@@ -583,8 +600,8 @@ pub fn grid_maxima_warm(
         if vertex.is_finite()
             && za < vertex
             && vertex < zc
-            && (vertex - zb).abs() > dz / 16.0
-            && !vertices.iter().any(|&v: &f64| (v - vertex).abs() <= dz / 16.0)
+            && (vertex - zb).abs() > (zc - za) / 32.0
+            && !vertices.iter().any(|&v: &f64| (v - vertex).abs() <= (zc - za) / 32.0)
         {
             vertices.push(vertex);
         }

@@ -272,7 +272,7 @@ pub const WARM_STEPS: usize = 9;
 
 /// How far a warm maximum may lie from the full search's (relative), as tested on the
 /// evolutions of `tests/wear.rs`.
-pub const WARM_TOLERANCE: f64 = 5e-3;
+pub const WARM_TOLERANCE: f64 = 2e-3;
 
 /// The subsurface maxima of an evolution's steps, each searched near the peaks of the one
 /// before ([`crate::study::assess::grid_maxima_warm`]) while the pressure stays within

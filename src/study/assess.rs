@@ -434,7 +434,9 @@ pub fn grid_maxima_and_peaks(
     };
     let mut peaks = vec![maxima.von_mises.z_over_a, maxima.max_shear.z_over_a];
     for k in 0..2 {
-        let best = (0..coarse).map(|i| value(&found, i, k)).fold(f64::NEG_INFINITY, f64::max);
+        let best = (0..coarse)
+            .map(|i| value(&found, i, k))
+            .fold(f64::NEG_INFINITY, f64::max);
         for i in 0..coarse {
             let v = value(&found, i, k);
             let peak = (i == 0 || value(&found, i - 1, k) <= v)
@@ -601,7 +603,9 @@ pub fn grid_maxima_warm(
             && za < vertex
             && vertex < zc
             && (vertex - zb).abs() > (zc - za) / 32.0
-            && !vertices.iter().any(|&v: &f64| (v - vertex).abs() <= (zc - za) / 32.0)
+            && !vertices
+                .iter()
+                .any(|&v: &f64| (v - vertex).abs() <= (zc - za) / 32.0)
         {
             vertices.push(vertex);
         }

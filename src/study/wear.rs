@@ -304,14 +304,13 @@ impl Searcher {
                 && before.dim() == pressure.dim()
                 && relative_change(before, pressure) <= WARM_CHANGE_LIMIT
             {
-                if let Some((maxima, depth_m, moved)) =
-                    crate::study::rough::subsurface_maxima_warm(
-                        solution,
-                        self.friction,
-                        self.poisson,
-                        peaks,
-                    )
-                    .map_err(error)?
+                if let Some((maxima, depth_m, moved)) = crate::study::rough::subsurface_maxima_warm(
+                    solution,
+                    self.friction,
+                    self.poisson,
+                    peaks,
+                )
+                .map_err(error)?
                 {
                     *peaks = moved;
                     before.assign(pressure);

@@ -437,12 +437,12 @@ pub fn grid_maxima_and_peaks(
         let best = (0..coarse)
             .map(|i| value(&found, i, k))
             .fold(f64::NEG_INFINITY, f64::max);
-        for i in 0..coarse {
+        for (i, &z) in depths.iter().enumerate().take(coarse) {
             let v = value(&found, i, k);
             let peak = (i == 0 || value(&found, i - 1, k) <= v)
                 && (i + 1 == coarse || value(&found, i + 1, k) <= v);
             if peak && v >= best * (1.0 - WARM_RIVAL_MARGIN) {
-                peaks.push(depths[i]);
+                peaks.push(z);
             }
         }
     }
@@ -488,7 +488,7 @@ pub fn grid_maxima_warm(
     let cell = grid.cell();
     let dz = cell[0].min(cell[1]);
     let depth = (0.5 * (nx as f64 * cell[0]).min(ny as f64 * cell[1])).min(max_depth.max(dz));
-    if peaks.is_empty() || peaks.iter().any(|&z| !(z >= 0.0) || z > depth) {
+    if peaks.is_empty() || peaks.iter().any(|&z| z.is_nan() || z < 0.0 || z > depth) {
         return Ok(None);
     }
     let mut depths: Vec<f64> = Vec::new();

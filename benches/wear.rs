@@ -5,7 +5,10 @@
 //! steps in under ten cold solves at 256², under a minute at 512²). Also the same evolution
 //! under a rough counter-surface sliding over the ball (two solves a step: the wear against its
 //! mean plane, the instantaneous contact through its asperities), and what `stressfield wear`
-//! adds per step: the subsurface maxima of every step (10 steps at 256²).
+//! adds per step: the subsurface maxima of every step (10 steps at 256²). Last, whole studies
+//! side by side as the command runs them (issue 54): one `contact` of a smooth ball at 256²
+//! (the solve and its subsurface maxima) against the wear study of 50 steps, with the maxima
+//! warm-started (the default) and searched in full at every step.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
 use stressfield::contact::rough::{solve, Control, RoughContactProblem, DEFAULT_TOLERANCE};
@@ -126,5 +129,55 @@ fn wear(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, wear);
+/// The smooth ball of `docs/wear.md`'s timings: 256² cells of 2.6 µm, 20 N, 20 m in 50 steps.
+const SMOOTH_BALL: &str = "format = 1
+[contact]
+kind = \"rough\"
+load = \"20 N\"
+friction = 0.2
+hardness = \"700 HV\"
+[contact.body1]
+material = \"steel\"
+[contact.body2]
+material = \"boron_carbide\"
+[surface.generate]
+samples = 256
+spacing = \"2.6 um\"
+hurst = 0.8
+rolloff = \"40 um\"
+cutoff = \"10.4 um\"
+rms_height = \"0.001 nm\"
+sphere_radius = \"6.35 mm\"
+seed = 5
+[wear]
+coefficient = \"2e-6 mm^3/(N m)\"
+distance = \"20 m\"
+steps = 50
+";
+
+fn wear_study(c: &mut Criterion) {
+    use stressfield::study::wear::{study_with, MaximaSearch};
+    let scene = stressfield::scene::Scene::parse(SMOOTH_BALL, "smooth_ball", "smooth_ball.toml")
+        .expect("scene");
+    let problem = stressfield::study::rough::problem(&scene).expect("a rough scene");
+    let mut group = c.benchmark_group("wear_study_256");
+    group.sample_size(10);
+    group.bench_function("one_contact_with_maxima", |b| {
+        b.iter(|| {
+            let solution = solve(&problem, &mut |_, _| {}).expect("solves");
+            subsurface_maxima(&solution, 0.2, 0.3).expect("maxima")
+        })
+    });
+    for (name, search) in [
+        ("wear_50_steps_warm_maxima", MaximaSearch::Warm),
+        ("wear_50_steps_full_maxima", MaximaSearch::Full),
+    ] {
+        group.bench_function(name, |b| {
+            b.iter(|| study_with(&scene, search, &mut |_| {}).expect("study"))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, wear, wear_study);
 criterion_main!(benches);

@@ -673,3 +673,70 @@ fn check_estimates_the_whole_wear_run() {
         "{s30} {heated} {sliding} {coupled}"
     );
 }
+
+/// A smooth steel ball (R = 6.35 mm) worn on a B4C flat under 20 N, 64² cells of 7.5 µm (the
+/// Hertz radius 85 µm is 11 cells, its von Mises peak 5.5 cells deep), `steps` steps over 5 m.
+fn smooth_ball_scene(steps: usize) -> Scene {
+    let text = format!(
+        "format = 1\n[contact]\nkind = \"rough\"\nload = \"20 N\"\nfriction = 0.2\n[contact.body1]\nmaterial = \"steel\"\n[contact.body2]\nmaterial = \"boron_carbide\"\n[surface.generate]\nsamples = 64\nspacing = \"7.5 um\"\nhurst = 0.8\nrolloff = \"60 um\"\ncutoff = \"24 um\"\nrms_height = \"0.001 nm\"\nsphere_radius = \"6.35 mm\"\nseed = 5\n[wear]\ncoefficient = \"2e-6 mm^3/(N m)\"\ndistance = \"5 m\"\nsteps = {steps}\n"
+    );
+    Scene::parse(&text, "smooth_ball", "smooth_ball.toml").unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn warm_started_maxima_stay_within_their_tolerance_of_the_full_search() {
+    // The warm-started search (the default) against the full search of `contact` at every
+    // step: never lower than WARM_TOLERANCE below it, nor higher by more (both search the same
+    // cell centres; only the depth's refinement differs), and the steps whose pressure barely
+    // changed searched warm (fewer full searches than half the steps), on a smooth ball (whose
+    // maximum moves from the axis, 0.5a deep, to the scar's edge a quarter of a cell deep) and
+    // on a small rough ball capped at its hardness.
+    use stressfield::study::wear::{study_with, MaximaSearch, WARM_TOLERANCE};
+    let small = Scene::parse(
+        &format!("{}{SMALL_WEAR}", small_scene("hardness = \"200 HV\"")),
+        "small",
+        "small.toml",
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let cases = [
+        ("smooth ball", smooth_ball_scene(16), true),
+        ("small rough ball, 200 HV", small, false),
+    ];
+    for (name, scene, warm_expected) in cases {
+        let full = study_with(&scene, MaximaSearch::Full, &mut |_| {}).expect("full");
+        let warm = study_with(&scene, MaximaSearch::Warm, &mut |_| {}).expect("warm");
+        assert_eq!(full.full_maxima_searches, full.steps.len());
+        let mut worst: f64 = 0.0;
+        for (k, (f, w)) in full.steps.iter().zip(&warm.steps).enumerate() {
+            assert_eq!(f.solution, w.solution, "{name}: step {k}'s contact");
+            for (label, a, b) in [
+                ("von Mises", &f.maxima.von_mises, &w.maxima.von_mises),
+                ("Tresca", &f.maxima.max_shear, &w.maxima.max_shear),
+            ] {
+                let change = b.value_over_p0 / a.value_over_p0 - 1.0;
+                worst = worst.max(change.abs());
+                assert!(
+                    change.abs() <= WARM_TOLERANCE,
+                    "{name}: step {k}'s {label} maximum {} warm against {} full ({change:+.2e}), at depths {} and {}",
+                    b.value_over_p0,
+                    a.value_over_p0,
+                    b.z_over_a,
+                    a.z_over_a
+                );
+            }
+        }
+        if warm_expected {
+            assert!(
+                warm.full_maxima_searches < warm.steps.len() / 2,
+                "{name}: {} of {} steps searched in full",
+                warm.full_maxima_searches,
+                warm.steps.len()
+            );
+        }
+        eprintln!(
+            "{name}: {} of {} steps searched in full; the warm maxima within {worst:.2e} of the full ones",
+            warm.full_maxima_searches,
+            warm.steps.len()
+        );
+    }
+}

@@ -278,6 +278,16 @@ pub fn grid_maxima_to_depth(
     tractions: &PointTractions,
     max_depth: f64,
 ) -> Result<StressMaxima, DcFftError> {
+    Ok(grid_maxima_and_peaks(tractions, max_depth)?.0)
+}
+
+/// [`grid_maxima_to_depth`] and the depths of its peaks, for a warm search of a nearby field
+/// ([`grid_maxima_warm`]): each quantity's maximum, and every coarse layer that is a local
+/// maximum in depth within [`WARM_RIVAL_MARGIN`] of its quantity's best.
+pub fn grid_maxima_and_peaks(
+    tractions: &PointTractions,
+    max_depth: f64,
+) -> Result<(StressMaxima, Vec<f64>), DcFftError> {
     let grid = tractions.grid();
     let [ny, nx] = grid.shape();
     let cell = grid.cell();
@@ -417,12 +427,234 @@ pub fn grid_maxima_to_depth(
         }
     };
     let all = 0..depths.len();
-    Ok(StressMaxima {
+    let maxima = StressMaxima {
         von_mises: extreme(0, all.clone()),
         max_shear: extreme(1, all),
         von_mises_surface: extreme(0, 0..1),
-    })
+    };
+    let mut peaks = vec![maxima.von_mises.z_over_a, maxima.max_shear.z_over_a];
+    for k in 0..2 {
+        let best = (0..coarse)
+            .map(|i| value(&found, i, k))
+            .fold(f64::NEG_INFINITY, f64::max);
+        for (i, &z) in depths.iter().enumerate().take(coarse) {
+            let v = value(&found, i, k);
+            let peak = (i == 0 || value(&found, i - 1, k) <= v)
+                && (i + 1 == coarse || value(&found, i + 1, k) <= v);
+            if peak && v >= best * (1.0 - WARM_RIVAL_MARGIN) {
+                peaks.push(z);
+            }
+        }
+    }
+    Ok((maxima, distinct_peaks(peaks, dz)))
 }
+
+/// `peaks` sorted, those within a quarter of `dz` of a shallower one dropped.
+fn distinct_peaks(mut peaks: Vec<f64>, dz: f64) -> Vec<f64> {
+    peaks.sort_by(f64::total_cmp);
+    let mut kept: Vec<f64> = Vec::with_capacity(peaks.len());
+    for z in peaks {
+        if kept.last().is_none_or(|&last| z - last > 0.25 * dz) {
+            kept.push(z);
+        }
+    }
+    kept
+}
+
+/// The maxima of [`grid_maxima_to_depth`] searched near a known answer: the depths `peaks` at
+/// which a nearby traction field (the step before, in an evolution) had its peaks in depth
+/// ([`grid_maxima_and_peaks`], or the warm search before). Returns the maxima and the peaks'
+/// new depths, or `None` where a peak ran past the search's depth or a quantity lost all its
+/// peaks (the full search is needed).
+///
+/// Each peak at depth `z` is bracketed by layers at `z` and `z ± s`, with `s` an eighth of a
+/// cell within [`UNIFORM_LAYERS`] cells of the surface (the peak under a spot of a cell or two
+/// is sharp: the full search samples the first cell by quarters and bisects to `dz/16`) and `max(dz, WARM_BRACKET z)` below (the field at depth `z` varies
+/// on the scale of `z`); where an end of the bracket is the best, for either quantity, the
+/// bracket moves by `s` that way, at most [`WARM_MOVES`] times (a bracket still climbing
+/// then has merged into another peak, and is dropped). The best layer's parabola
+/// vertex through its neighbours is then evaluated too, and the surface layer `z = 0` always
+/// is. As in the full search, the maximum reported is the largest of every layer evaluated, on
+/// the same cell centres; the depth is refined to a parabola's accuracy instead of a bisection
+/// to `dz/16`. A warm search never finds a peak that `peaks` does not lead to: the caller
+/// searches in full often enough for a new peak to be found ([`crate::study::wear`]).
+pub fn grid_maxima_warm(
+    tractions: &PointTractions,
+    max_depth: f64,
+    peaks: &[f64],
+) -> Result<Option<(StressMaxima, Vec<f64>)>, DcFftError> {
+    let grid = tractions.grid();
+    let [ny, nx] = grid.shape();
+    let cell = grid.cell();
+    let dz = cell[0].min(cell[1]);
+    let depth = (0.5 * (nx as f64 * cell[0]).min(ny as f64 * cell[1])).min(max_depth.max(dz));
+    if peaks.is_empty() || peaks.iter().any(|&z| z.is_nan() || z < 0.0 || z > depth) {
+        return Ok(None);
+    }
+    let mut depths: Vec<f64> = Vec::new();
+    let mut found: Vec<LayerMaxima> = Vec::new();
+    // Evaluates the depths not yet evaluated (clamped to [0, depth]), in one parallel batch.
+    let evaluate = |wanted: &[f64],
+                    depths: &mut Vec<f64>,
+                    found: &mut Vec<LayerMaxima>|
+     -> Result<(), DcFftError> {
+        let mut round: Vec<f64> = Vec::new();
+        for &z in wanted {
+            let z = z.clamp(0.0, depth);
+            if !depths.contains(&z) && !round.contains(&z) {
+                round.push(z);
+            }
+        }
+        found.extend(layer_maxima(tractions, &round)?);
+        depths.extend(round);
+        Ok(())
+    };
+    let score = |depths: &[f64], found: &[LayerMaxima], z: f64, k: usize| {
+        depths
+            .iter()
+            .position(|&d| d == z.clamp(0.0, depth))
+            .map_or(f64::NEG_INFINITY, |i| found[i].0[k].0)
+    };
+    let steps: Vec<f64> = peaks
+        .iter()
+        .map(|&z| {
+            if z < UNIFORM_LAYERS as f64 * dz {
+                0.125 * dz
+            } else {
+                dz.max(WARM_BRACKET * z)
+            }
+        })
+        .collect();
+    // Each (peak, quantity)'s bracket (above, best, below), moved until its middle is the
+    // best; a bracket at the surface is settled when its best is the surface.
+    let mut brackets: Vec<(usize, usize, [f64; 3])> = Vec::new();
+    let mut first = vec![0.0];
+    for (p, (&z, &s)) in peaks.iter().zip(&steps).enumerate() {
+        let bracket = [(z - s).max(0.0), z, (z + s).min(depth)];
+        first.extend(bracket);
+        brackets.extend([(p, 0, bracket), (p, 1, bracket)]);
+    }
+    evaluate(&first, &mut depths, &mut found)?;
+    let mut settled = vec![false; brackets.len()];
+    for round in 0..=WARM_MOVES {
+        let mut wanted = Vec::new();
+        for (b, (p, k, [above, best, below])) in brackets.iter_mut().enumerate() {
+            if settled[b] {
+                continue;
+            }
+            let s = steps[*p];
+            let f = |z: f64| score(&depths, &found, z, *k);
+            let (fa, fb, fc) = (f(*above), f(*best), f(*below));
+            if fb >= fa && fb >= fc {
+                settled[b] = true;
+            } else if round == WARM_MOVES {
+                // Still climbing: the peak has merged into another or left; dropped below.
+            } else if fa > fc {
+                if *above <= 0.0 {
+                    // The surface is this peak's best.
+                    settled[b] = true;
+                    (*above, *best, *below) = (0.0, 0.0, *best);
+                    continue;
+                }
+                let next = (*above - s).max(0.0);
+                (*above, *best, *below) = (next, *above, *best);
+                wanted.push(next);
+            } else {
+                if *below >= depth {
+                    // The peak runs past the search's depth: only the full search will do.
+                    return Ok(None);
+                }
+                let next = (*below + s).min(depth);
+                (*above, *best, *below) = (*best, *below, next);
+                wanted.push(next);
+            }
+        }
+        if wanted.is_empty() {
+            break;
+        }
+        evaluate(&wanted, &mut depths, &mut found)?;
+    }
+    // A quantity none of whose brackets settled has lost its peaks: the full search is needed.
+    for k in 0..2 {
+        if !brackets
+            .iter()
+            .zip(&settled)
+            .any(|(&(_, quantity, _), &done)| quantity == k && done)
+        {
+            return Ok(None);
+        }
+    }
+    let brackets: Vec<(usize, usize, [f64; 3])> = brackets
+        .into_iter()
+        .zip(&settled)
+        .filter_map(|(bracket, &done)| done.then_some(bracket))
+        .collect();
+    let mut vertices = Vec::new();
+    for &(_, k, [za, zb, zc]) in &brackets {
+        if za >= zb || zc <= zb {
+            continue;
+        }
+        let f = |z: f64| score(&depths, &found, z, k);
+        let (fa, fb, fc) = (f(za), f(zb), f(zc));
+        let numerator = (zb - za).powi(2) * (fb - fc) - (zb - zc).powi(2) * (fb - fa);
+        let denominator = (zb - za) * (fb - fc) - (zb - zc) * (fb - fa);
+        let vertex = zb - 0.5 * numerator / denominator;
+        if vertex.is_finite()
+            && za < vertex
+            && vertex < zc
+            && (vertex - zb).abs() > (zc - za) / 32.0
+            && !vertices
+                .iter()
+                .any(|&v: &f64| (v - vertex).abs() <= (zc - za) / 32.0)
+        {
+            vertices.push(vertex);
+        }
+    }
+    evaluate(&vertices, &mut depths, &mut found)?;
+    let value = |i: usize, k: usize| found[i].0[k].0;
+    let extreme = |k: usize, range: std::ops::Range<usize>| {
+        let index = range
+            .max_by(|&i, &j| value(i, k).total_cmp(&value(j, k)))
+            .unwrap_or(0);
+        let ((value, row, column), mirrored) = (found[index].0[k], found[index].1[k]);
+        let (x, y) = grid.cell_centre(row, column);
+        Extreme {
+            value_over_p0: value,
+            x_over_a: x,
+            y_over_a: y,
+            z_over_a: depths[index],
+            mirrored_in_y: mirrored,
+        }
+    };
+    // Each bracket's best layer, with the vertices evaluated: the peaks' new depths.
+    let mut moved: Vec<f64> = Vec::new();
+    for &(_, k, [za, _, zc]) in &brackets {
+        let best = (0..depths.len())
+            .filter(|&i| depths[i] >= za && depths[i] <= zc)
+            .max_by(|&i, &j| value(i, k).total_cmp(&value(j, k)));
+        moved.extend(best.map(|i| depths[i]));
+    }
+    let all = 0..depths.len();
+    Ok(Some((
+        StressMaxima {
+            von_mises: extreme(0, all.clone()),
+            max_shear: extreme(1, all),
+            von_mises_surface: extreme(0, 0..1),
+        },
+        distinct_peaks(moved, dz),
+    )))
+}
+
+/// The half-width of a warm search's bracket around a deep peak, as a fraction of its depth
+/// ([`grid_maxima_warm`]).
+const WARM_BRACKET: f64 = 0.1;
+/// How many times a warm search's bracket may move before the full search is needed.
+const WARM_MOVES: usize = 3;
+/// A peak in depth within this fraction of its quantity's maximum is followed by the warm
+/// searches after a full one ([`grid_maxima_and_peaks`]): a peak that may overtake the
+/// maximum as the field evolves (the shallow peak at a worn scar's edge overtakes the deep one
+/// on the axis).
+pub const WARM_RIVAL_MARGIN: f64 = 0.4;
 
 /// The maxima a scene's `hertz` report states, computed once here: from the closed form of
 /// the contact where there is one (with the line contact's principal shear τ1), otherwise by

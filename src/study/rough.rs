@@ -16,7 +16,9 @@ use crate::scene::{ContactKind, Scene};
 use crate::solution::dcfft::TractionGrid;
 use crate::solution::point_numerical::{NumericalError, PointTractions};
 use crate::solution::Solution;
-use crate::study::assess::{grid_maxima_to_depth, StressMaxima};
+use crate::study::assess::{
+    grid_maxima_and_peaks, grid_maxima_to_depth, grid_maxima_warm, StressMaxima,
+};
 use crate::surface::stats::{self, FormRemoval, Options};
 
 /// The length unit of a rough scene's tractions and sections (its `a`), m.
@@ -246,6 +248,35 @@ pub fn subsurface_maxima(
     let depth_m = search_depth_m(solution);
     let maxima = grid_maxima_to_depth(&tractions, depth_m / REFERENCE_LENGTH_M)?;
     Ok((maxima, depth_m))
+}
+
+/// [`subsurface_maxima`] and the depths of its peaks in depth (reference units), for a warm
+/// search of a nearby solution ([`subsurface_maxima_warm`]).
+pub fn subsurface_maxima_and_peaks(
+    solution: &RoughSolution,
+    friction: f64,
+    poisson: f64,
+) -> Result<(StressMaxima, f64, Vec<f64>), NumericalError> {
+    let tractions = tractions(solution, friction, poisson)?;
+    let depth_m = search_depth_m(solution);
+    let (maxima, peaks) = grid_maxima_and_peaks(&tractions, depth_m / REFERENCE_LENGTH_M)?;
+    Ok((maxima, depth_m, peaks))
+}
+
+/// [`subsurface_maxima`] searched near `peaks`, the depths of a nearby solution's peaks (the
+/// step before, in an evolution), to the same [`search_depth_m`] ([`grid_maxima_warm`]):
+/// the maxima, the search depth and the peaks' new depths, or `None` where only the full
+/// search will do.
+pub fn subsurface_maxima_warm(
+    solution: &RoughSolution,
+    friction: f64,
+    poisson: f64,
+    peaks: &[f64],
+) -> Result<Option<(StressMaxima, f64, Vec<f64>)>, NumericalError> {
+    let tractions = tractions(solution, friction, poisson)?;
+    let depth_m = search_depth_m(solution);
+    let found = grid_maxima_warm(&tractions, depth_m / REFERENCE_LENGTH_M, peaks)?;
+    Ok(found.map(|(maxima, peaks)| (maxima, depth_m, peaks)))
 }
 
 /// What the contact report states beyond the solution itself: the subsurface maxima with the

@@ -135,6 +135,8 @@ pub struct WearStudy {
     pub steps: Vec<WearStudyStep>,
     /// Whether each step's contact is the coupled thermo-mechanical one.
     pub coupled: bool,
+    /// How many steps' maxima were searched in full (the others warm: [`MaximaSearch`]).
+    pub full_maxima_searches: usize,
     /// What the reader should be told, in words: a series' map that stands higher than the
     /// first (material added, or another datum), which is not wear.
     pub warnings: Vec<String>,
@@ -246,10 +248,113 @@ impl Heating {
     }
 }
 
+/// How each step's subsurface maxima are searched.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MaximaSearch {
+    /// The full search of `contact` at every step ([`crate::study::rough::subsurface_maxima`]).
+    Full,
+    /// Near the previous step's maxima where the pressure changed little since the last full
+    /// search ([`Searcher`]); the full search elsewhere. The default.
+    Warm,
+}
+
+/// The relative change of the pressure from the step before, `‖p − p_before‖₂ / ‖p‖₂`, beyond
+/// which a step's maxima are searched in full: a field that changed that much may have peaks
+/// the step before did not have (the von Mises stress is a seminorm of the stress, which is
+/// linear in the tractions: the stress of the change bounds how far any maximum can have
+/// risen where the warm search does not look). A smooth ball's wear changes its pressure by
+/// 0.1 to 0.4 a step (the scar's edge moving); the instantaneous contact under a sliding rough
+/// counter-surface by more than 1 (its asperities moved).
+pub const WARM_CHANGE_LIMIT: f64 = 0.5;
+
+/// At most this many steps in a row are searched warm; the next is searched in full.
+pub const WARM_STEPS: usize = 9;
+
+/// How far a warm maximum may lie from the full search's (relative), as tested on the
+/// evolutions of `tests/wear.rs`.
+pub const WARM_TOLERANCE: f64 = 2e-3;
+
+/// The subsurface maxima of an evolution's steps, each searched near the peaks of the one
+/// before ([`crate::study::assess::grid_maxima_warm`]) while the pressure stays within
+/// [`WARM_CHANGE_LIMIT`] of the last pressure searched in full, for at most [`WARM_STEPS`]
+/// steps in a row; in full otherwise.
+struct Searcher {
+    search: MaximaSearch,
+    friction: f64,
+    poisson: f64,
+    /// The peaks in depth of the step before, its pressure, and the steps searched warm since
+    /// the last full search.
+    previous: Option<(Vec<f64>, Array2<f64>, usize)>,
+    /// How many steps were searched in full.
+    full_searches: usize,
+}
+
+impl Searcher {
+    fn maxima(
+        &mut self,
+        index: usize,
+        solution: &RoughSolution,
+    ) -> Result<(StressMaxima, f64), WearStudyError> {
+        let error = |error| WearStudyError::Maxima { step: index, error };
+        let pressure = &solution.pressure_pa;
+        if let (MaximaSearch::Warm, Some((peaks, before, warm_steps))) =
+            (self.search, self.previous.as_mut())
+        {
+            if *warm_steps < WARM_STEPS
+                && before.dim() == pressure.dim()
+                && relative_change(before, pressure) <= WARM_CHANGE_LIMIT
+            {
+                if let Some((maxima, depth_m, moved)) = crate::study::rough::subsurface_maxima_warm(
+                    solution,
+                    self.friction,
+                    self.poisson,
+                    peaks,
+                )
+                .map_err(error)?
+                {
+                    *peaks = moved;
+                    before.assign(pressure);
+                    *warm_steps += 1;
+                    return Ok((maxima, depth_m));
+                }
+            }
+        }
+        let (maxima, depth_m, peaks) =
+            crate::study::rough::subsurface_maxima_and_peaks(solution, self.friction, self.poisson)
+                .map_err(error)?;
+        self.full_searches += 1;
+        self.previous = Some((peaks, pressure.clone(), 0));
+        Ok((maxima, depth_m))
+    }
+}
+
+/// `‖now − before‖₂ / ‖now‖₂` (infinite for a zero `now`).
+fn relative_change(before: &Array2<f64>, now: &Array2<f64>) -> f64 {
+    let (mut change, mut norm) = (0.0, 0.0);
+    for (&b, &n) in before.iter().zip(now.iter()) {
+        change += (n - b) * (n - b);
+        norm += n * n;
+    }
+    if norm > 0.0 {
+        (change / norm).sqrt()
+    } else {
+        f64::INFINITY
+    }
+}
+
 /// Solves every step of `scene`'s evolution ([`WearSpec`]), with the subsurface maxima and
-/// flash temperature of each.
+/// flash temperature of each (the maxima warm-started: [`MaximaSearch::Warm`]).
 pub fn study(
     scene: &Scene,
+    progress: &mut dyn FnMut(WearProgress),
+) -> Result<WearStudy, WearStudyError> {
+    study_with(scene, MaximaSearch::Warm, progress)
+}
+
+/// [`study`] with the maxima searched as `search` says.
+pub fn study_with(
+    scene: &Scene,
+    search: MaximaSearch,
     progress: &mut dyn FnMut(WearProgress),
 ) -> Result<WearStudy, WearStudyError> {
     let spec = scene.wear.as_ref().ok_or(WearStudyError::NoWear)?;
@@ -270,16 +375,21 @@ pub fn study(
     let load_n = wear::nominal_load_n(&problem);
     let mut steps: Vec<WearStudyStep> = Vec::with_capacity(total);
     let mut warnings = Vec::new();
+    let mut searcher = Searcher {
+        search,
+        friction,
+        poisson,
+        previous: None,
+        full_searches: 0,
+    };
     // The maxima and flash temperature under a solved step.
-    let finish = |index: usize,
-                  solution: &RoughSolution,
-                  heating: &mut Option<Heating>,
-                  progress: &mut dyn FnMut(WearProgress)|
+    let mut finish = |index: usize,
+                      solution: &RoughSolution,
+                      heating: &mut Option<Heating>,
+                      progress: &mut dyn FnMut(WearProgress)|
      -> Result<_, WearStudyError> {
         progress(WearProgress::Maxima { step: index, total });
-        let (maxima, search_depth_m) =
-            crate::study::rough::subsurface_maxima(solution, friction, poisson)
-                .map_err(|error| WearStudyError::Maxima { step: index, error })?;
+        let (maxima, search_depth_m) = searcher.maxima(index, solution)?;
         let temperature = match heating.as_mut() {
             Some(h) => Some(h.max_rise(&solution.pressure_pa)?),
             None => None,
@@ -451,6 +561,7 @@ pub fn study(
         poisson,
         steps,
         coupled,
+        full_maxima_searches: searcher.full_searches,
         warnings,
     })
 }

@@ -471,6 +471,7 @@ mod tests {
                     poisson: substrate.1,
                 },
                 thickness_m: 7e-6,
+                under: crate::coating::Interlayers::NONE,
             };
             let table = RemainderTable::new(&layered);
             let h = layered.thickness_m;
@@ -523,6 +524,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 3e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let (shape, spacing) = ([12, 16], [1e-6, 1.3e-6]);
         let counter = (1.0 - 0.09) / 210e9;
@@ -575,6 +577,7 @@ mod tests {
                     coating,
                     substrate: steel,
                     thickness_m: cells * spacing[0],
+                    under: crate::coating::Interlayers::NONE,
                 };
                 let h = layered.thickness_m;
                 let grid = kernel_grid(&layered, 0.0, shape, spacing, Periodicity::NonPeriodic)
@@ -637,6 +640,7 @@ mod tests {
                     },
                     substrate: steel,
                     thickness_m: cells * d,
+                    under: crate::coating::Interlayers::NONE,
                 };
                 let table = RemainderTable::new(&layered);
                 let k_w = SPLIT / (4.0 * n as f64 * d);

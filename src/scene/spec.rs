@@ -263,6 +263,7 @@ impl CoatingSpec {
             coating: self.material,
             substrate: self.substrate,
             thickness_m: self.thickness_m,
+            under: crate::coating::Interlayers::NONE,
         }
     }
 }

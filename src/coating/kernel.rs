@@ -153,7 +153,10 @@ pub(super) fn remainder(layered: &Layered, k: f64) -> f64 {
 /// (Lagrange interpolation and its remainder).
 pub(crate) struct RemainderTable {
     thickness_m: f64,
-    /// `R(K_j / h) / h` at `K_j = (j + 1/2) STEP`, Pa⁻¹.
+    /// The node spacing in `K`: [`Self::STEP`], or for a stack thicker than its top layer
+    /// `STEP` times `h / H` (`H` the stack's thickness, over which `R` bends at small `K`).
+    step: f64,
+    /// `R(K_j / h) / h` at `K_j = (j + 1/2) step`, Pa⁻¹.
     values: Vec<f64>,
 }
 
@@ -165,11 +168,13 @@ impl RemainderTable {
 
     pub(crate) fn new(layered: &Layered) -> Self {
         let h = layered.thickness_m;
-        let nodes = (Self::K_MAX / Self::STEP).round() as usize + 1;
+        let step = Self::STEP * (h / layered.total_thickness_m()).min(1.0);
+        let nodes = (Self::K_MAX / step).round() as usize + 1;
         Self {
             thickness_m: h,
+            step,
             values: (0..nodes)
-                .map(|j| remainder(layered, (j as f64 + 0.5) * Self::STEP / h) / h)
+                .map(|j| remainder(layered, (j as f64 + 0.5) * step / h) / h)
                 .collect(),
         }
     }
@@ -181,7 +186,7 @@ impl RemainderTable {
             return 0.0;
         }
         // Position in nodes; below the first node (K < STEP/2) the first four extrapolate.
-        let t = big_k / Self::STEP - 0.5;
+        let t = big_k / self.step - 0.5;
         let n = self.values.len();
         let first = if t < 1.0 {
             0

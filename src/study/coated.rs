@@ -188,6 +188,10 @@ pub struct CoatedStudy {
     /// Per layer, top first: its maxima and those of the interface under it
     /// ([`super::coated_layers`]; with one coating, the coating's).
     pub layers: Vec<super::coated_layers::LayerMaxima>,
+    /// The load at which the first given strength is reached (filled by
+    /// [`crate::study::commands::hertz`] when strengths are given: it solves the contact again
+    /// at other loads).
+    pub first_failure: Option<super::coated_layers::FirstFailure>,
     pub section: CoatedSection,
     /// Wall-clock seconds of the contact solve and of the stresses.
     pub solve_seconds: f64,
@@ -550,6 +554,7 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
         semi_axes_m: solved.semi_axes_m,
         maxima,
         layers,
+        first_failure: None,
         section: CoatedSection {
             x_m: solved.x_m,
             z_m: depths.iter().map(|d| d.0).collect(),

@@ -19,7 +19,8 @@
 //! utilisation. It is found by solving the coated contact at each candidate load: the secant
 //! on `ln U(W)` against `ln W` (U the largest utilisation), started at the homogeneous Hertz
 //! scaling (`U ∝ W^(1/3)` for a point, `W^(1/2)` for a line), until the solve at the load
-//! found gives `|U - 1| < 1e-3`.
+//! found gives `|U - 1| < 1e-3`. Each solve keeps the scene's cell size (its grid spans the
+//! same number of semi-axes of that load's Hertz contact, with more cells for a larger load).
 //!
 //! ## The depths of a stack
 //! In each layer `2 t / dx` depths (12 to 60) from its top (on the lower side of the interface
@@ -254,6 +255,17 @@ pub fn first_failure(
                 step: 0,
                 message: e.to_string(),
             })?;
+        // The grid spans ±extent semi-axes of the load's own Hertz contact: keep the scene's
+        // cell size (a larger load needs more cells for the same layer).
+        let grown = stepped.contact.half_width_m() / scene.contact.half_width_m();
+        let limit = if study.kind == ContactKind::Line {
+            super::coated::MAX_LINE_CELLS
+        } else {
+            super::coated::MAX_CELLS
+        };
+        stepped.numerical.cells = ((scene.numerical.cells as f64 * grown).ceil() as usize)
+            .max(scene.numerical.cells)
+            .min(limit);
         let solved = super::coated::solve(&stepped)?;
         let list = utilisation(&solved);
         let value = governing(&list).map_or(0.0, |u| u.value);

@@ -384,12 +384,12 @@ impl Layered {
                 g1 / shear_modulus(&layers[i].material),
             );
             let top = layer_basis(big_k[i], big_k[i]);
-            for j in 0..4 {
+            for (j, basis) in top.iter().enumerate() {
                 let column = 4 * i + j;
-                matrix[row][column] = top[j][0];
-                matrix[row + 1][column] = top[j][1];
-                matrix[row + 2][column] = ratio * u_s(&top[j], nu);
-                matrix[row + 3][column] = ratio * u_z(&top[j], nu);
+                matrix[row][column] = basis[0];
+                matrix[row + 1][column] = basis[1];
+                matrix[row + 2][column] = ratio * u_s(basis, nu);
+                matrix[row + 3][column] = ratio * u_z(basis, nu);
             }
             let below: Vec<Derivatives> = if i + 1 < n {
                 layer_basis(0.0, big_k[i + 1]).to_vec()

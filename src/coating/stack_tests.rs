@@ -181,13 +181,13 @@ fn a_stack_is_continuous_at_every_interface_and_free_on_its_surface() {
         // loads [p, qx, qy], (re, im)).
         let expected = [(2, 0, -1.0), (4, 1, -1.0), (3, 2, -1.0)];
         for component in [2, 3, 4] {
-            for load in 0..3 {
+            for (load, factor) in surface[component].iter().enumerate() {
                 let want = expected
                     .iter()
                     .find(|e| e.0 == component && e.1 == load)
                     .map_or(0.0, |e| e.2);
-                worst_surface = worst_surface.max((surface[component][load][0] - want).abs());
-                worst_surface = worst_surface.max(surface[component][load][1].abs());
+                worst_surface = worst_surface.max((factor[0] - want).abs());
+                worst_surface = worst_surface.max(factor[1].abs());
             }
         }
         for &depth in &interfaces {

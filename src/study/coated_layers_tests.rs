@@ -127,6 +127,51 @@ fn the_first_failure_of_a_stack_is_its_load_to_one_percent() {
         utilisation(&study).iter().map(|u| (u.place.clone(), u.value)).collect::<Vec<_>>()
     );
     assert!((top - 1.0).abs() < 1e-2, "{top}");
+    // The JSON contract of issue 53.
+    let mut reported = study.clone();
+    reported.first_failure = Some(failure.clone());
+    let json = crate::report::coated::CoatedReport::new(&reported).json_fields();
+    assert!(json.get("coating").is_none());
+    let layers = json["layers"].as_array().expect("layers");
+    assert_eq!(layers.len(), 2);
+    for key in [
+        "thickness_m",
+        "von_mises_max_pa",
+        "max_tension_pa",
+        "interface_shear_max_pa",
+        "interface_normal_min_pa",
+    ] {
+        assert!(layers[1][key].is_f64(), "{key}");
+    }
+    assert!((layers[1]["thickness_m"].as_f64().unwrap_or(0.0) - 10e-6).abs() < 1e-18);
+    assert!(json["substrate_von_mises_max_pa"].is_f64());
+    let entries = json["utilisation"].as_array().expect("utilisation");
+    let places: Vec<(&str, &str)> = entries
+        .iter()
+        .map(|e| {
+            (
+                e["where"].as_str().unwrap_or(""),
+                e["mode"].as_str().unwrap_or(""),
+            )
+        })
+        .collect();
+    assert_eq!(
+        places,
+        [
+            ("layer 1", "fracture"),
+            ("layer 2", "yield"),
+            ("interface 2", "delamination"),
+            ("substrate", "yield")
+        ]
+    );
+    assert!(entries
+        .iter()
+        .all(|e| e["value"].is_f64() && e["x_m"].is_f64() && e["z_m"].is_f64()));
+    let first = &json["first_failure"];
+    assert_eq!(first["where"], failure.place.as_str());
+    assert_eq!(first["mode"], failure.mode.key());
+    assert_eq!(first["load_n_per_m"].as_f64(), Some(failure.load_n));
+    assert!(first.get("load_n").is_none());
 }
 
 #[test]

@@ -583,6 +583,7 @@ mod tests {
             coating,
             substrate,
             thickness_m,
+            under: crate::coating::Interlayers::NONE,
         }
     }
 

@@ -153,7 +153,10 @@ pub(super) fn remainder(layered: &Layered, k: f64) -> f64 {
 /// (Lagrange interpolation and its remainder).
 pub(crate) struct RemainderTable {
     thickness_m: f64,
-    /// `R(K_j / h) / h` at `K_j = (j + 1/2) STEP`, Pa⁻¹.
+    /// The node spacing in `K`: [`Self::STEP`], or for a stack thicker than its top layer
+    /// `STEP` times `h / H` (`H` the stack's thickness, over which `R` bends at small `K`).
+    step: f64,
+    /// `R(K_j / h) / h` at `K_j = (j + 1/2) step`, Pa⁻¹.
     values: Vec<f64>,
 }
 
@@ -165,11 +168,13 @@ impl RemainderTable {
 
     pub(crate) fn new(layered: &Layered) -> Self {
         let h = layered.thickness_m;
-        let nodes = (Self::K_MAX / Self::STEP).round() as usize + 1;
+        let step = Self::STEP * (h / layered.total_thickness_m()).min(1.0);
+        let nodes = (Self::K_MAX / step).round() as usize + 1;
         Self {
             thickness_m: h,
+            step,
             values: (0..nodes)
-                .map(|j| remainder(layered, (j as f64 + 0.5) * Self::STEP / h) / h)
+                .map(|j| remainder(layered, (j as f64 + 0.5) * step / h) / h)
                 .collect(),
         }
     }
@@ -181,7 +186,7 @@ impl RemainderTable {
             return 0.0;
         }
         // Position in nodes; below the first node (K < STEP/2) the first four extrapolate.
-        let t = big_k / Self::STEP - 0.5;
+        let t = big_k / self.step - 0.5;
         let n = self.values.len();
         let first = if t < 1.0 {
             0
@@ -471,6 +476,7 @@ mod tests {
                     poisson: substrate.1,
                 },
                 thickness_m: 7e-6,
+                under: crate::coating::Interlayers::NONE,
             };
             let table = RemainderTable::new(&layered);
             let h = layered.thickness_m;
@@ -523,6 +529,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 3e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let (shape, spacing) = ([12, 16], [1e-6, 1.3e-6]);
         let counter = (1.0 - 0.09) / 210e9;
@@ -575,6 +582,7 @@ mod tests {
                     coating,
                     substrate: steel,
                     thickness_m: cells * spacing[0],
+                    under: crate::coating::Interlayers::NONE,
                 };
                 let h = layered.thickness_m;
                 let grid = kernel_grid(&layered, 0.0, shape, spacing, Periodicity::NonPeriodic)
@@ -637,6 +645,7 @@ mod tests {
                     },
                     substrate: steel,
                     thickness_m: cells * d,
+                    under: crate::coating::Interlayers::NONE,
                 };
                 let table = RemainderTable::new(&layered);
                 let k_w = SPLIT / (4.0 * n as f64 * d);

@@ -296,6 +296,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 5e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let d = 1e-6;
         let counter = 0.91 / 210e9;
@@ -334,6 +335,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 0.3,
+            under: crate::coating::Interlayers::NONE,
         };
         let (x, p, q, d) = hertz_tractions(400, 2.0, 0.2);
         let field = LineStress::new(layered, &p, Some(&q), d).expect("stress");
@@ -399,6 +401,7 @@ mod tests {
                 coating,
                 substrate: steel,
                 thickness_m: 0.2,
+                under: crate::coating::Interlayers::NONE,
             };
             let (_, p, q, d) = hertz_tractions(200, 2.0, 0.3);
             let field = LineStress::new(layered, &p, Some(&q), d).expect("stress");

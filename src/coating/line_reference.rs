@@ -314,6 +314,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 30e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let (radius, b) = (10e-3, 100e-6);
         let counter = 0.91 / 210e9;

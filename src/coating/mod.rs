@@ -24,7 +24,10 @@ pub mod reference;
 pub mod response;
 pub mod stress;
 
-pub use response::{Layered, Side};
+pub use response::{Interlayers, Layer, Layered, Side, MAX_LAYERS};
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod stack_tests;

@@ -359,6 +359,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 5e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let (radius, a) = (5e-3, 50e-6);
         let contact = rigid_sphere(&layered, radius, a, 4);

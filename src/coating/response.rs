@@ -46,7 +46,7 @@
 use crate::contact::material::Material;
 
 /// The constants of one wave's plane and anti-plane problems (module doc), for `K = kh`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct WaveResponse {
     /// `kh`.
     pub k_h: f64,
@@ -56,6 +56,11 @@ pub struct WaveResponse {
     pub shear: [f64; 6],
     /// `[a, c, b]` of the anti-plane `U`.
     pub antiplane: [f64; 3],
+    /// A stack's interlayers (empty for one coating), top first: `[A, B, C, D]` of `F_p`, the
+    /// same of `F_q`, and `[a, c]` of `U`, each in the layer's own coordinates
+    /// ([`Layered::stack_wave`]); `pressure`, `shear` and `antiplane` then hold the top
+    /// layer's and the substrate's.
+    pub interlayers: Vec<[f64; 10]>,
 }
 
 /// Which side of the interface a point at `z = h` belongs to (the in-plane stresses jump
@@ -144,12 +149,103 @@ fn solve_linear<const N: usize, const M: usize>(
     x
 }
 
-/// A layer bonded to a substrate: the materials and the layer's thickness.
+/// Solves `matrix x = rhs` (two right-hand sides) by Gaussian elimination with partial
+/// pivoting, for the stack's system of any size.
+fn solve_dense(mut matrix: Vec<Vec<f64>>, mut rhs: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
+    let n = matrix.len();
+    for column in 0..n {
+        let pivot = (column..n)
+            .max_by(|&a, &b| matrix[a][column].abs().total_cmp(&matrix[b][column].abs()))
+            .unwrap_or(column);
+        matrix.swap(column, pivot);
+        rhs.swap(column, pivot);
+        let (pivot_row, pivot_rhs) = (matrix[column].clone(), rhs[column]);
+        for row in column + 1..n {
+            let factor = matrix[row][column] / pivot_row[column];
+            if factor != 0.0 {
+                for (target, source) in matrix[row][column..].iter_mut().zip(&pivot_row[column..]) {
+                    *target -= factor * source;
+                }
+                for (target, source) in rhs[row].iter_mut().zip(&pivot_rhs) {
+                    *target -= factor * source;
+                }
+            }
+        }
+    }
+    let mut x = vec![[0.0; 2]; n];
+    for row in (0..n).rev() {
+        for k in 0..2 {
+            let mut sum = rhs[row][k];
+            for j in row + 1..n {
+                sum -= matrix[row][j] * x[j][k];
+            }
+            x[row][k] = sum / matrix[row][row];
+        }
+    }
+    x
+}
+
+/// A layer bonded to a substrate: the materials and the layer's thickness; `under`, the
+/// layers between it and the substrate (top first; none for a single coating).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layered {
+    /// The top layer's material.
     pub coating: Material,
     pub substrate: Material,
+    /// The top layer's thickness (the scale of `K = kh`).
     pub thickness_m: f64,
+    /// The layers under the top one, top first.
+    pub under: Interlayers,
+}
+
+/// One layer of a stack: its material and thickness.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Layer {
+    pub material: Material,
+    pub thickness_m: f64,
+}
+
+/// The most layers a stack holds (the top one and its interlayers).
+pub const MAX_LAYERS: usize = 6;
+
+/// The layers between the top one and the substrate, top first (at most
+/// [`MAX_LAYERS`]` - 1`), held inline so that [`Layered`] stays `Copy`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Interlayers {
+    layers: [Layer; MAX_LAYERS - 1],
+    count: usize,
+}
+
+impl Interlayers {
+    /// No interlayer: a single coating.
+    pub const NONE: Interlayers = Interlayers {
+        layers: [Layer {
+            material: Material {
+                modulus_pa: 0.0,
+                poisson: 0.0,
+            },
+            thickness_m: 0.0,
+        }; MAX_LAYERS - 1],
+        count: 0,
+    };
+
+    /// The given layers, top first; `None` when there are more than [`MAX_LAYERS`]` - 1`.
+    pub fn of(layers: &[Layer]) -> Option<Interlayers> {
+        (layers.len() < MAX_LAYERS).then(|| {
+            let mut out = Self::NONE;
+            out.layers[..layers.len()].copy_from_slice(layers);
+            out.count = layers.len();
+            out
+        })
+    }
+
+    pub fn as_slice(&self) -> &[Layer] {
+        &self.layers[..self.count]
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.count == 0
+    }
 }
 
 fn shear_modulus(material: &Material) -> f64 {
@@ -162,8 +258,11 @@ pub fn plane_strain_modulus(material: &Material) -> f64 {
 }
 
 impl Layered {
-    /// The constants of the wave `K = kh` (module doc).
+    /// The constants of the wave `K = kh` (module doc); a stack's by [`Self::stack_wave`].
     pub fn wave(&self, k_h: f64) -> WaveResponse {
+        if !self.under.is_empty() {
+            return self.stack_wave(k_h);
+        }
         let (nu1, nu2) = (self.coating.poisson, self.substrate.poisson);
         // Interface displacement rows multiplied by G1: the substrate's terms by G1 / G2.
         let ratio = shear_modulus(&self.coating) / shear_modulus(&self.substrate);
@@ -207,6 +306,170 @@ impl Layered {
             pressure: std::array::from_fn(|i| x[i][0]),
             shear: std::array::from_fn(|i| x[i][1]),
             antiplane: [anti[0][0], anti[1][0], anti[2][0]],
+            interlayers: Vec::new(),
+        }
+    }
+
+    /// Every layer, top first: the top one and the interlayers.
+    pub fn layers(&self) -> Vec<Layer> {
+        let mut out = vec![Layer {
+            material: self.coating,
+            thickness_m: self.thickness_m,
+        }];
+        out.extend_from_slice(self.under.as_slice());
+        out
+    }
+
+    /// The depths of the interfaces under each layer, m (the last: the stack's, over the
+    /// substrate).
+    pub fn interface_depths_m(&self) -> Vec<f64> {
+        self.layers()
+            .iter()
+            .scan(0.0, |depth, layer| {
+                *depth += layer.thickness_m;
+                Some(*depth)
+            })
+            .collect()
+    }
+
+    /// The stack's thickness, m.
+    pub fn total_thickness_m(&self) -> f64 {
+        self.thickness_m
+            + self
+                .under
+                .as_slice()
+                .iter()
+                .map(|l| l.thickness_m)
+                .sum::<f64>()
+    }
+
+    /// The constants of the wave `K = kh` of a stack of `n` layers on the substrate, by the
+    /// global matrix of the layers' constants: in each layer `f = (A + B ζ') e^(-ζ')
+    /// + (C + D η') e^(η')`, `ζ'` measured from the layer's top and `η'` from its bottom
+    /// (`ζ' - K_i`), so that every exponential is at most 1 however thick the layers; the two
+    /// surface conditions and four continuity conditions (`f`, `f'`, `u_s`, `u_z`) at each of
+    /// the `n` interfaces fix the `4n + 2` constants. This is the stable form of the transfer
+    /// (propagator) matrix method of the layered half-space (Burmister 1945; Chen & Engel 1972
+    /// for the multilayer, with the same per-layer Airy functions): the product of
+    /// the layers' transfer matrices overflows as `e^(kh)`, the global matrix with the growing
+    /// terms referred to each layer's bottom does not. The anti-plane `U = a e^(-ζ') + c e^(η')`
+    /// takes `2n + 1` constants the same way. With one layer it is [`Self::wave`]'s system.
+    ///
+    /// ## References
+    /// - D. M. Burmister, The general theory of stresses and displacements in layered systems
+    ///   I, *J. Appl. Phys.* 16 (1945) 89–94.
+    /// - W. T. Chen, P. A. Engel, Impact and contact stress analysis in multilayer media,
+    ///   *Int. J. Solids Struct.* 8 (1972) 1257–1281.
+    pub fn stack_wave(&self, k_h: f64) -> WaveResponse {
+        let layers = self.layers();
+        let n = layers.len();
+        let g1 = shear_modulus(&self.coating);
+        let big_k: Vec<f64> = layers
+            .iter()
+            .map(|l| k_h * (l.thickness_m / self.thickness_m))
+            .collect();
+        let u_s = |d: &Derivatives, nu: f64| (1.0 - nu) * d[2] + nu * d[0];
+        let u_z = |d: &Derivatives, nu: f64| (1.0 - nu) * d[3] + (nu - 2.0) * d[1];
+        let size = 4 * n + 2;
+        let mut matrix = vec![vec![0.0; size]; size];
+        let surface = layer_basis(0.0, big_k[0]);
+        for j in 0..4 {
+            matrix[0][j] = surface[j][0];
+            matrix[1][j] = surface[j][1];
+        }
+        for i in 0..n {
+            let row = 2 + 4 * i;
+            let (nu, ratio) = (
+                layers[i].material.poisson,
+                g1 / shear_modulus(&layers[i].material),
+            );
+            let top = layer_basis(big_k[i], big_k[i]);
+            for (j, basis) in top.iter().enumerate() {
+                let column = 4 * i + j;
+                matrix[row][column] = basis[0];
+                matrix[row + 1][column] = basis[1];
+                matrix[row + 2][column] = ratio * u_s(basis, nu);
+                matrix[row + 3][column] = ratio * u_z(basis, nu);
+            }
+            let below: Vec<Derivatives> = if i + 1 < n {
+                layer_basis(0.0, big_k[i + 1]).to_vec()
+            } else {
+                substrate_basis(0.0).to_vec()
+            };
+            let below_material = if i + 1 < n {
+                &layers[i + 1].material
+            } else {
+                &self.substrate
+            };
+            let (nu_b, ratio_b) = (below_material.poisson, g1 / shear_modulus(below_material));
+            for (j, basis) in below.iter().enumerate() {
+                let column = 4 * (i + 1) + j;
+                matrix[row][column] = -basis[0];
+                matrix[row + 1][column] = -basis[1];
+                matrix[row + 2][column] = -ratio_b * u_s(basis, nu_b);
+                matrix[row + 3][column] = -ratio_b * u_z(basis, nu_b);
+            }
+        }
+        let mut rhs = vec![[0.0; 2]; size];
+        rhs[0][0] = 1.0;
+        rhs[1][1] = 1.0;
+        let x = solve_dense(matrix, rhs);
+        // Anti-plane: surface -a0 + c0 e^(-K0) = -1; at interface i, U and (G/G1) U'
+        // continuous.
+        let anti_size = 2 * n + 1;
+        let mut anti = vec![vec![0.0; anti_size]; anti_size];
+        let mut anti_rhs = vec![[0.0; 2]; anti_size];
+        anti[0][0] = -1.0;
+        anti[0][1] = (-big_k[0]).exp();
+        anti_rhs[0][0] = -1.0;
+        for i in 0..n {
+            let (row, decay) = (1 + 2 * i, (-big_k[i]).exp());
+            let ratio = shear_modulus(&layers[i].material) / g1;
+            anti[row][2 * i] = decay;
+            anti[row][2 * i + 1] = 1.0;
+            anti[row + 1][2 * i] = -ratio * decay;
+            anti[row + 1][2 * i + 1] = ratio;
+            if i + 1 < n {
+                let below_decay = (-big_k[i + 1]).exp();
+                let ratio_b = shear_modulus(&layers[i + 1].material) / g1;
+                anti[row][2 * i + 2] = -1.0;
+                anti[row][2 * i + 3] = -below_decay;
+                anti[row + 1][2 * i + 2] = ratio_b;
+                anti[row + 1][2 * i + 3] = -ratio_b * below_decay;
+            } else {
+                let ratio_b = shear_modulus(&self.substrate) / g1;
+                anti[row][2 * n] = -1.0;
+                anti[row + 1][2 * n] = ratio_b;
+            }
+        }
+        let a = solve_dense(anti, anti_rhs);
+        let plane = |load: usize| -> [f64; 6] {
+            [
+                x[0][load],
+                x[1][load],
+                x[2][load],
+                x[3][load],
+                x[4 * n][load],
+                x[4 * n + 1][load],
+            ]
+        };
+        WaveResponse {
+            k_h,
+            pressure: plane(0),
+            shear: plane(1),
+            antiplane: [a[0][0], a[1][0], a[2 * n][0]],
+            interlayers: (1..n)
+                .map(|i| {
+                    let mut c = [0.0; 10];
+                    for j in 0..4 {
+                        c[j] = x[4 * i + j][0];
+                        c[4 + j] = x[4 * i + j][1];
+                    }
+                    c[8] = a[2 * i][0];
+                    c[9] = a[2 * i + 1][0];
+                    c
+                })
+                .collect(),
         }
     }
 
@@ -221,14 +484,37 @@ impl Layered {
         ((1.0 - nu) * f3 + (nu - 2.0) * f1) / (2.0 * shear_modulus(&self.coating))
     }
 
-    /// The material at depth `z` on `side` of the interface.
-    pub fn material_at(&self, z_m: f64, side: Side) -> &Material {
-        if z_m < self.thickness_m || (z_m == self.thickness_m && side == Side::Coating) {
-            &self.coating
-        } else {
-            &self.substrate
+    /// The material at depth `z` on `side` of an interface.
+    pub fn material_at(&self, z_m: f64, side: Side) -> Material {
+        if self.under.is_empty() {
+            return if z_m < self.thickness_m || (z_m == self.thickness_m && side == Side::Coating) {
+                self.coating
+            } else {
+                self.substrate
+            };
+        }
+        let layers = self.layers();
+        match layer_index(&self.interface_depths_m(), z_m, side) {
+            Some(i) => layers[i].material,
+            None => self.substrate,
         }
     }
+
+    /// The layer (0 the top) a depth on `side` of an interface lies in; `None` in the
+    /// substrate.
+    pub fn layer_at(&self, z_m: f64, side: Side) -> Option<usize> {
+        layer_index(&self.interface_depths_m(), z_m, side)
+    }
+}
+
+/// Which layer of the stack whose interfaces lie at `interfaces` (increasing) holds the depth
+/// `z` on `side`: a depth within 1e-12 (relative) of an interface is on it, and `side` says
+/// which of its neighbours it belongs to (`Coating`: the one above). `None` in the substrate.
+fn layer_index(interfaces: &[f64], z: f64, side: Side) -> Option<usize> {
+    interfaces.iter().position(|&depth| {
+        let on = (z - depth).abs() <= 1e-12 * depth;
+        z < depth && !on || on && side == Side::Coating
+    })
 }
 
 /// One wave's fields at one depth, per unit traction: the plane problem's `f` and its
@@ -250,6 +536,9 @@ pub struct WaveAtDepth {
 impl WaveResponse {
     /// The fields at `ζ = kz` on `side` (module doc).
     pub fn at(&self, zeta: f64, side: Side, layered: &Layered) -> WaveAtDepth {
+        if !self.interlayers.is_empty() {
+            return self.stack_at(zeta, side, layered);
+        }
         let in_coating = zeta < self.k_h || (zeta == self.k_h && side == Side::Coating);
         let combine = |coefficients: &[f64; 6]| -> Derivatives {
             let mut out = [0.0; 4];
@@ -283,6 +572,75 @@ impl WaveResponse {
             antiplane,
             poisson: material.poisson,
             shear_ratio: shear_modulus(material) / g1,
+        }
+    }
+}
+
+impl WaveResponse {
+    /// [`Self::at`] in a stack of several layers.
+    fn stack_at(&self, zeta: f64, side: Side, layered: &Layered) -> WaveAtDepth {
+        let scale = self.k_h / layered.thickness_m;
+        let interfaces: Vec<f64> = layered
+            .interface_depths_m()
+            .iter()
+            .map(|d| d * scale)
+            .collect();
+        let layers = layered.layers();
+        let g1 = shear_modulus(&layered.coating);
+        let index = layer_index(&interfaces, zeta, side);
+        let mut pressure = [0.0; 4];
+        let mut shear = [0.0; 4];
+        let (antiplane, material) = match index {
+            Some(i) => {
+                let top = if i == 0 { 0.0 } else { interfaces[i - 1] };
+                let thickness = interfaces[i] - top;
+                let local = (zeta - top).clamp(0.0, thickness);
+                let (cp, cq, a, c) = if i == 0 {
+                    let p = &self.pressure;
+                    let q = &self.shear;
+                    (
+                        [p[0], p[1], p[2], p[3]],
+                        [q[0], q[1], q[2], q[3]],
+                        self.antiplane[0],
+                        self.antiplane[1],
+                    )
+                } else {
+                    let k = &self.interlayers[i - 1];
+                    (
+                        [k[0], k[1], k[2], k[3]],
+                        [k[4], k[5], k[6], k[7]],
+                        k[8],
+                        k[9],
+                    )
+                };
+                for (j, basis) in layer_basis(local, thickness).iter().enumerate() {
+                    for d in 0..4 {
+                        pressure[d] += cp[j] * basis[d];
+                        shear[d] += cq[j] * basis[d];
+                    }
+                }
+                let (d, g) = ((-local).exp(), (local - thickness).exp());
+                ([a * d + c * g, -a * d + c * g], layers[i].material)
+            }
+            None => {
+                let eta = (zeta - interfaces[interfaces.len() - 1]).max(0.0);
+                for (j, basis) in substrate_basis(eta).iter().enumerate() {
+                    for d in 0..4 {
+                        pressure[d] += self.pressure[4 + j] * basis[d];
+                        shear[d] += self.shear[4 + j] * basis[d];
+                    }
+                }
+                let d = (-eta).exp();
+                let b = self.antiplane[2];
+                ([b * d, -b * d], layered.substrate)
+            }
+        };
+        WaveAtDepth {
+            pressure,
+            shear,
+            antiplane,
+            poisson: material.poisson,
+            shear_ratio: shear_modulus(&material) / g1,
         }
     }
 }

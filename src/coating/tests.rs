@@ -22,6 +22,7 @@ fn layered(coating: Material, substrate: Material) -> Layered {
         coating,
         substrate,
         thickness_m: 1e-6,
+        under: crate::coating::Interlayers::NONE,
     }
 }
 
@@ -135,6 +136,7 @@ fn the_waves_are_in_equilibrium_at_every_depth() {
         coating: B4C,
         substrate: SOFT,
         thickness_m: 1.0,
+        under: crate::coating::Interlayers::NONE,
     };
     let mut worst: f64 = 0.0;
     for (k_h, n) in [(0.3, [0.6, 0.8]), (1.7, [-0.28, 0.96]), (6.0, [1.0, 0.0])] {
@@ -189,6 +191,7 @@ fn equal_moduli_give_the_homogeneous_field_and_the_free_surface_holds() {
         coating: STEEL,
         substrate: STEEL,
         thickness_m: 0.4,
+        under: crate::coating::Interlayers::NONE,
     };
     let layers = LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
     // The free surface: σzz = -p, σxz = -q, σyz = 0 at every centre.
@@ -246,6 +249,7 @@ fn a_very_thick_coating_gives_the_coatings_own_field() {
                 coating,
                 substrate,
                 thickness_m: 1e4,
+                under: crate::coating::Interlayers::NONE,
             };
             let layers =
                 LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
@@ -286,6 +290,7 @@ fn the_field_is_continuous_where_it_must_be_across_the_interface() {
             coating,
             substrate,
             thickness_m: 0.3,
+            under: crate::coating::Interlayers::NONE,
         };
         let layers =
             LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("layers");
@@ -321,6 +326,7 @@ fn a_row_alone_equals_the_layer_s_row() {
         coating: B4C,
         substrate: STEEL,
         thickness_m: 0.4,
+        under: crate::coating::Interlayers::NONE,
     };
     for periodic in [true, false] {
         let layers =
@@ -380,6 +386,7 @@ fn the_isolated_field_does_not_see_the_grids_extent() {
             coating,
             substrate: STEEL,
             thickness_m: 0.5,
+            under: crate::coating::Interlayers::NONE,
         };
         let small =
             LayeredStress::new(body, p.view(), Some(q.view()), [d, d], false).expect("small");
@@ -438,6 +445,7 @@ fn coated_maxima_errors(ratio: f64, h_over_a: f64, n: usize, terms: usize) -> [f
         },
         substrate: STEEL,
         thickness_m: h_over_a * a,
+        under: crate::coating::Interlayers::NONE,
     };
     let h = layered.thickness_m;
     let contact = rigid_sphere(&layered, radius, a, terms);

@@ -328,6 +328,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 20e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let a: f64 = 100e-6;
         let e = plane_strain_modulus(&steel);
@@ -382,6 +383,7 @@ mod tests {
                     coating,
                     substrate: steel,
                     thickness_m: h_over_a * a,
+                    under: crate::coating::Interlayers::NONE,
                 };
                 let reference = rigid_sphere(&layered, radius, a, 8);
                 let e1 = plane_strain_modulus(&coating);
@@ -432,6 +434,7 @@ mod tests {
                 },
                 substrate: steel,
                 thickness_m: 0.002 * a,
+                under: crate::coating::Interlayers::NONE,
             };
             let reference = rigid_sphere(&layered, radius, a, 6);
             let e2 = plane_strain_modulus(&steel);
@@ -519,6 +522,7 @@ mod tests {
                 coating,
                 substrate: steel,
                 thickness_m: thickness,
+                under: crate::coating::Interlayers::NONE,
             };
             let alone = Layered {
                 substrate: coating,
@@ -568,6 +572,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: a,
+            under: crate::coating::Interlayers::NONE,
         };
         let grid = ball_over_coatings_hertz(&alone, load, cells);
         for ratio in [2.0, 0.5] {
@@ -580,6 +585,7 @@ mod tests {
                     },
                     substrate: steel,
                     thickness_m: h_over_a * a,
+                    under: crate::coating::Interlayers::NONE,
                 };
                 let got = ball_over_substrates_hertz(&layered, load, cells);
                 let shares: Vec<f64> = got.iter().zip(&grid).map(|(g, h)| g / h - 1.0).collect();
@@ -629,6 +635,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 20e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let counter = 0.91 / 210e9;
         let e_star = 210e9 / (2.0 * 0.91);
@@ -675,6 +682,7 @@ mod tests {
                     coating,
                     substrate: steel,
                     thickness_m: h_over_b * b,
+                    under: crate::coating::Interlayers::NONE,
                 };
                 let reference = cylinder(&layered, 0.0, radius, b, 8);
                 let e1 = plane_strain_modulus(&coating);
@@ -734,6 +742,7 @@ mod tests {
                 coating,
                 substrate: steel,
                 thickness_m: 20.0 * b,
+                under: crate::coating::Interlayers::NONE,
             };
             let (solved, _) = line_gridded(&thick, 0.0, load, b / 50.0, 1.5 * b);
             let p0 = 2.0 * load / (std::f64::consts::PI * b);
@@ -745,6 +754,7 @@ mod tests {
                 coating,
                 substrate: steel,
                 thickness_m: 0.002 * b,
+                under: crate::coating::Interlayers::NONE,
             };
             let reference = cylinder(&thin, 0.0, radius, b, 6);
             let e2 = plane_strain_modulus(&steel);
@@ -768,6 +778,7 @@ mod tests {
             coating: steel,
             substrate: steel,
             thickness_m: 1e-6,
+            under: crate::coating::Interlayers::NONE,
         };
         let heights = paraboloid([16, 16], [1e-6, 1e-6], [-7.5e-6; 2], [50.0; 2]);
         let problem = RoughContactProblem {

@@ -50,6 +50,7 @@ fn at_depth(study: &CoatedStudy, z: f64, column: usize) -> f64 {
 pub(super) fn material_name(material: &crate::contact::material::Material) -> String {
     let preset = crate::contact::material::PRESETS
         .iter()
+        .chain(crate::contact::material::COATING_PRESETS.iter())
         .find(|p| p.material == *material)
         .map(|p| p.name.replace('_', " "));
     match preset {

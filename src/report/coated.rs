@@ -15,6 +15,7 @@ use serde::Serialize;
 
 use crate::scene::{ContactKind, Scene};
 use crate::study::coated::{CoatedStudy, Located};
+use crate::study::coated_layers::utilisation;
 
 /// The `"coating"` object of `hertz --json` for a coated scene.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -46,7 +47,54 @@ pub struct CoatedJson {
     pub approach_m: Option<f64>,
     pub von_mises_max_pa: f64,
     pub von_mises_max_depth_m: f64,
-    pub coating: CoatingJson,
+    /// `[contact.body1.coating]` scenes.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub coating: Option<CoatingJson>,
+    /// `[[contact.body1.layers]]` scenes: one object per layer, top first.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub layers: Option<Vec<LayerJson>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub substrate_von_mises_max_pa: Option<f64>,
+    /// With strengths given: each governing stress over its strength.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub utilisation: Option<Vec<UtilisationJson>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub first_failure: Option<FirstFailureJson>,
+}
+
+/// One layer of `"layers"` (the interface under it).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct LayerJson {
+    pub thickness_m: f64,
+    pub von_mises_max_pa: f64,
+    /// The largest principal stress (tension positive).
+    pub max_tension_pa: f64,
+    pub interface_shear_max_pa: f64,
+    pub interface_normal_min_pa: f64,
+}
+
+/// One entry of `"utilisation"`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct UtilisationJson {
+    #[serde(rename = "where")]
+    pub place: String,
+    pub mode: &'static str,
+    pub value: f64,
+    pub x_m: f64,
+    pub z_m: f64,
+}
+
+/// `"first_failure"`: `"load_n"` for point and elliptical contacts, `"load_n_per_m"` for
+/// lines.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FirstFailureJson {
+    #[serde(rename = "where")]
+    pub place: String,
+    pub mode: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_n: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub load_n_per_m: Option<f64>,
 }
 
 /// What the report says.
@@ -68,18 +116,57 @@ impl CoatedReport {
                 approach_m: study.solution.approach_m(),
                 von_mises_max_pa: m.von_mises.value_pa,
                 von_mises_max_depth_m: m.von_mises.z_m,
-                coating: CoatingJson {
+                coating: (!study.spec.stacked).then_some(CoatingJson {
                     thickness_m: study.spec.thickness_m,
                     von_mises_max_pa: m.coating_von_mises.value_pa,
                     interface_shear_max_pa: m.interface_shear.value_pa,
                     interface_normal_min_pa: m.interface_normal_min.value_pa,
                     substrate_von_mises_max_pa: m.substrate_von_mises.value_pa,
-                },
+                }),
+                layers: study.spec.stacked.then(|| {
+                    study
+                        .layers
+                        .iter()
+                        .map(|l| LayerJson {
+                            thickness_m: l.thickness_m,
+                            von_mises_max_pa: l.von_mises.value_pa,
+                            max_tension_pa: l.max_tension.value_pa,
+                            interface_shear_max_pa: l.interface_shear.value_pa,
+                            interface_normal_min_pa: l.interface_normal_min.value_pa,
+                        })
+                        .collect()
+                }),
+                substrate_von_mises_max_pa: study
+                    .spec
+                    .stacked
+                    .then_some(m.substrate_von_mises.value_pa),
+                utilisation: study.spec.strengths.any().then(|| {
+                    utilisation(study)
+                        .into_iter()
+                        .map(|u| UtilisationJson {
+                            place: u.place,
+                            mode: u.mode.key(),
+                            value: u.value,
+                            x_m: u.x_m,
+                            z_m: u.z_m,
+                        })
+                        .collect()
+                }),
+                first_failure: study.first_failure.as_ref().map(|f| {
+                    let line = study.kind == ContactKind::Line;
+                    FirstFailureJson {
+                        place: f.place.clone(),
+                        mode: f.mode.key(),
+                        load_n: (!line).then_some(f.load_n),
+                        load_n_per_m: line.then_some(f.load_n),
+                    }
+                }),
             },
         }
     }
 
-    /// The `"coating"` object, to be nested in `hertz --json`.
+    /// The `"coating"` object, to be nested in `hertz --json` (`null` for a stack, which
+    /// gives `"layers"`).
     pub fn json(&self) -> serde_json::Value {
         serde_json::to_value(self.fields.coating).unwrap_or(serde_json::Value::Null)
     }
@@ -220,6 +307,71 @@ impl CoatedReport {
                 located.value_pa / p0,
                 place(located)
             );
+        }
+        if spec.stacked {
+            let _ = writeln!(out, "per layer, top first (the interface under each):");
+            let depths = spec.layered().interface_depths_m();
+            for (i, l) in study.layers.iter().enumerate() {
+                let _ = writeln!(
+                    out,
+                    "  layer {} ({:.3} µm, to z = {:.3} µm): von Mises {:.1} MPa {}; largest principal {:.1} MPa {}",
+                    i + 1,
+                    l.thickness_m * 1e6,
+                    depths[i] * 1e6,
+                    mpa(l.von_mises.value_pa),
+                    place(&l.von_mises),
+                    mpa(l.max_tension.value_pa),
+                    place(&l.max_tension)
+                );
+                let _ = writeln!(
+                    out,
+                    "  interface {}: shear {:.1} MPa {}; σzz most compressive {:.1} MPa",
+                    i + 1,
+                    mpa(l.interface_shear.value_pa),
+                    place(&l.interface_shear),
+                    mpa(l.interface_normal_min.value_pa)
+                );
+            }
+            let _ = writeln!(
+                out,
+                "  substrate: von Mises {:.1} MPa {}",
+                mpa(m.substrate_von_mises.value_pa),
+                place(&m.substrate_von_mises)
+            );
+        }
+        if spec.strengths.any() {
+            let _ = writeln!(out, "strength check (stress over strength at this load):");
+            for u in utilisation(study) {
+                let _ = writeln!(
+                    out,
+                    "  {:<12} {:<13} {:.3} at x = {:.4} mm, z = {:.4} mm",
+                    u.place,
+                    u.mode.key(),
+                    u.value,
+                    u.x_m * 1e3,
+                    u.z_m * 1e3
+                );
+            }
+            match &study.first_failure {
+                Some(f) => {
+                    let _ = writeln!(
+                        out,
+                        "first failure: {} ({}) at W = {} {} ({} coated solves; the solve there gives {:.4}; a coated contact is not linear in the load)",
+                        f.place,
+                        f.mode.key(),
+                        crate::io::text::approx(f.load_n),
+                        if line { "N/m" } else { "N" },
+                        f.solves,
+                        f.check
+                    );
+                }
+                None => {
+                    let _ = writeln!(
+                        out,
+                        "first failure: none found (no governing stress is positive)"
+                    );
+                }
+            }
         }
         let layer = if m.von_mises.z_m < spec.thickness_m || (m.von_mises == m.coating_von_mises) {
             "in the coating"

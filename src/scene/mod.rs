@@ -32,7 +32,7 @@ use raw::RawScene;
 pub use spec::{
     CoatingSpec, Contact, ContactKind, Dimensional, FigureSpec, GearMesh, Hertz, LengthUnit,
     Levelling, LubricantSpec, Method, Numerical, OilSpec, PanelSpec, PlasticitySpec, RoughSpec,
-    Scale, SectionKind, SeriesDatum, SeriesEntry, StressUnit, SurfaceSpec, ThermalBody,
+    Scale, SectionKind, SeriesDatum, SeriesEntry, Strengths, StressUnit, SurfaceSpec, ThermalBody,
     ThermalSpec, TractionDirection, WearSpec, YieldStrength, ROUGH_SECTION_MAX_DEPTH_OVER_WIDTH,
     ROUGH_SECTION_MIN_CELLS, ROUGH_SECTION_MIN_DEPTH_OVER_WIDTH,
 };

@@ -260,8 +260,24 @@ pub struct RawBody {
     pub expansion: Option<String>,
     /// A layer bonded to the body (`[contact.body1.coating]`).
     pub coating: Option<RawCoating>,
-    /// Several layers (`[[contact.body1.layers]]`): refused with a message (one layer only).
-    pub layers: Option<toml::Value>,
+    /// Several layers (`[[contact.body1.layers]]`, top first).
+    pub layers: Option<Vec<RawLayer>>,
+    /// The substrate's yield strength under `[[contact.body1.layers]]`.
+    pub yield_strength: Option<String>,
+}
+
+/// `[[contact.body1.layers]]`: one layer of a stack, top first, with its optional strengths
+/// (`adhesion_strength`: of the interface under the layer).
+#[derive(Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RawLayer {
+    pub thickness: Option<String>,
+    pub material: Option<String>,
+    pub modulus: Option<String>,
+    pub poisson: Option<f64>,
+    pub tensile_strength: Option<String>,
+    pub yield_strength: Option<String>,
+    pub adhesion_strength: Option<String>,
 }
 
 /// `[contact.body1.coating]`: the layer's thickness and elastic constants.

@@ -254,6 +254,29 @@ pub struct CoatingSpec {
     pub counter_per_pa: f64,
     /// Whether the counter-body is rigid (`material = "rigid"`).
     pub counter_rigid: bool,
+    /// The layers under the top one (`[[contact.body1.layers]]` after the first).
+    pub under: crate::coating::Interlayers,
+    /// Whether the scene gave its layers as `[[contact.body1.layers]]` (its report lists
+    /// them) rather than `[contact.body1.coating]`.
+    pub stacked: bool,
+    /// The strengths given with the layers.
+    pub strengths: Strengths,
+}
+
+/// The strengths of a stack's materials (`[[contact.body1.layers]]` and
+/// `contact.body1.yield_strength`), Pa; `None` where not given.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Strengths {
+    /// Per layer, top first: `[yield, tensile, adhesion of the interface under it]`.
+    pub layers: [[Option<f64>; 3]; crate::coating::MAX_LAYERS],
+    pub substrate_yield_pa: Option<f64>,
+}
+
+impl Strengths {
+    /// Whether any strength is given.
+    pub fn any(&self) -> bool {
+        self.substrate_yield_pa.is_some() || self.layers.iter().flatten().any(Option::is_some)
+    }
 }
 
 impl CoatingSpec {
@@ -263,6 +286,7 @@ impl CoatingSpec {
             coating: self.material,
             substrate: self.substrate,
             thickness_m: self.thickness_m,
+            under: self.under,
         }
     }
 }

@@ -76,13 +76,13 @@ pub struct Located {
 }
 
 impl Located {
-    const NONE: Located = Located {
+    pub(super) const NONE: Located = Located {
         value_pa: f64::NEG_INFINITY,
         x_m: 0.0,
         z_m: 0.0,
     };
 
-    fn keep_larger(&mut self, value: f64, x: f64, z: f64) {
+    pub(super) fn keep_larger(&mut self, value: f64, x: f64, z: f64) {
         if value > self.value_pa {
             *self = Located {
                 value_pa: value,
@@ -185,6 +185,13 @@ pub struct CoatedStudy {
     /// its half-width, from the refined edges of [`LineSolution::edges_m`], twice).
     pub semi_axes_m: [f64; 2],
     pub maxima: CoatedMaxima,
+    /// Per layer, top first: its maxima and those of the interface under it
+    /// ([`super::coated_layers`]; with one coating, the coating's).
+    pub layers: Vec<super::coated_layers::LayerMaxima>,
+    /// The load at which the first given strength is reached (filled by
+    /// [`crate::study::commands::hertz`] when strengths are given: it solves the contact again
+    /// at other loads).
+    pub first_failure: Option<super::coated_layers::FirstFailure>,
     pub section: CoatedSection,
     /// Wall-clock seconds of the contact solve and of the stresses.
     pub solve_seconds: f64,
@@ -526,12 +533,13 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
     let solve_seconds = solve_started.elapsed().as_secs_f64() - stress_seconds;
     let started = std::time::Instant::now();
     let (maxima, von_mises) = maxima_of(
+        &layered,
         &depths,
         &solved.rows,
         &solved.x_m,
         &solved.pressure_pa,
-        spec.thickness_m,
     );
+    let layers = super::coated_layers::layer_maxima(&layered, &depths, &solved.rows, &solved.x_m);
     stress_seconds += started.elapsed().as_secs_f64();
     Ok(CoatedStudy {
         spec,
@@ -545,6 +553,8 @@ pub fn solve(scene: &Scene) -> Result<CoatedStudy, CoatedStudyError> {
         contact_radius_m: (solved.contact_area_m2 / std::f64::consts::PI).sqrt(),
         semi_axes_m: solved.semi_axes_m,
         maxima,
+        layers,
+        first_failure: None,
         section: CoatedSection {
             x_m: solved.x_m,
             z_m: depths.iter().map(|d| d.0).collect(),
@@ -585,12 +595,14 @@ pub fn sweep(
 /// the surface's `σxx` also at the contact's edges along the row (`pressure_pa`), between the
 /// cells ([`crate::coating::stress::surface_edge_values`]).
 fn maxima_of(
+    layered: &Layered,
     depths: &[(f64, Side)],
     rows: &[Array2<f64>],
     x_m: &[f64],
     pressure_pa: &[f64],
-    h: f64,
 ) -> (CoatedMaxima, Array2<f64>) {
+    // The interface over the substrate (a stack's deepest).
+    let h = layered.total_thickness_m();
     let mut maxima = CoatedMaxima {
         von_mises: Located::NONE,
         coating_von_mises: Located::NONE,
@@ -617,12 +629,12 @@ fn maxima_of(
             let tresca = s.max_shear();
             von_mises[[r, i]] = vm;
             maxima.von_mises.keep_larger(vm, x, *z);
-            match side {
-                Side::Coating => {
+            match layered.layer_at(*z, *side) {
+                Some(_) => {
                     maxima.coating_von_mises.keep_larger(vm, x, *z);
                     maxima.coating_tresca.keep_larger(tresca, x, *z);
                 }
-                Side::Substrate => {
+                None => {
                     maxima.substrate_von_mises.keep_larger(vm, x, *z);
                     maxima.substrate_tresca.keep_larger(tresca, x, *z);
                 }
@@ -657,6 +669,9 @@ fn maxima_of(
 
 /// The depths sampled (module doc), with their side of the interface.
 fn depths(layered: &Layered, cell_m: f64, semi_axis_m: f64) -> Vec<(f64, Side)> {
+    if !layered.under.is_empty() {
+        return super::coated_layers::stack_depths(layered, cell_m, semi_axis_m);
+    }
     let h = layered.thickness_m;
     // The contact's own depths: uniform down to `min(h, 2.5 a)`; below them, in a coating
     // thicker than that, steps growing geometrically to the interface (the contact's field

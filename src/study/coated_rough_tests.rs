@@ -30,6 +30,9 @@ fn spec(material: Material, thickness_m: f64) -> CoatingSpec {
         substrate: STEEL,
         counter_per_pa: (1.0 - 0.09) / 210e9,
         counter_rigid: false,
+        under: crate::coating::Interlayers::NONE,
+        stacked: false,
+        strengths: crate::scene::Strengths::default(),
     }
 }
 

@@ -157,10 +157,15 @@ pub fn hertz(
     progress: &mut dyn FnMut(Progress) -> ControlFlow<()>,
 ) -> Result<HertzStudy, CommandError> {
     if scene.contact.coating.is_some() && scene.contact.kind != ContactKind::Rough {
-        let study = crate::study::coated::solve(scene).map_err(|error| CommandError::Coated {
+        let coated_error = |error| CommandError::Coated {
             scene: scene.name.clone(),
             error: Box::new(error),
-        })?;
+        };
+        let mut study = crate::study::coated::solve(scene).map_err(coated_error)?;
+        if study.spec.strengths.any() {
+            study.first_failure =
+                crate::study::coated_layers::first_failure(scene, &study).map_err(coated_error)?;
+        }
         return Ok(HertzStudy::Coated(Box::new(study)));
     }
     match scene.contact.kind {

@@ -14,6 +14,7 @@
 pub mod admit;
 pub mod assess;
 pub mod coated;
+pub mod coated_layers;
 pub mod coated_rough;
 pub mod commands;
 mod compass;

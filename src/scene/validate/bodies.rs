@@ -97,7 +97,11 @@ impl Validator<'_> {
                 ))
             }
             Some(name) => Some(material::preset(name).ok_or_else(|| {
-                let names: Vec<_> = material::PRESETS.iter().map(|p| p.name).collect();
+                let names: Vec<_> = material::PRESETS
+                    .iter()
+                    .chain(material::COATING_PRESETS.iter())
+                    .map(|p| p.name)
+                    .collect();
                 self.error(
                     &format!("{key}.material"),
                     format!("unknown material `{name}`"),

@@ -228,7 +228,7 @@ impl Validator<'_> {
         let raw1 = raw.body1.as_ref().unwrap_or(&empty);
         let raw2 = raw.body2.as_ref().unwrap_or(&empty);
         self.coating_placement(raw1, raw2)?;
-        let coated = raw1.coating.is_some();
+        let coated = raw1.coating.is_some() || raw1.layers.is_some();
         let rigid2 = coated && raw2.material.as_deref().map(str::trim) == Some("rigid");
         let mut body1 = self.body("contact.body1", raw1, gears.is_some(), elliptical)?;
         let mut body2 = if rigid2 {
@@ -236,8 +236,9 @@ impl Validator<'_> {
         } else {
             self.body("contact.body2", raw2, gears.is_some(), elliptical)?
         };
-        let coating = match &raw1.coating {
-            Some(raw_coating) => {
+        let coating = match (&raw1.coating, &raw1.layers) {
+            (None, None) => None,
+            (raw_coating, raw_layers) => {
                 // One yield strength cannot assess two materials: the coated study gives the
                 // coating's and the substrate's maxima apart (issue 50: it was ignored).
                 for (key, given) in [
@@ -252,17 +253,23 @@ impl Validator<'_> {
                         ));
                     }
                 }
-                let spec = self.coating(
-                    kind,
-                    raw_coating,
-                    body1.material,
-                    (!rigid2).then_some(body2.material),
-                )?;
-                // The scene's scale (a, p0) is the coating's Hertz contact.
+                let counter = (!rigid2).then_some(body2.material);
+                let spec = match raw_coating {
+                    Some(raw_coating) => {
+                        self.coating(kind, raw_coating, body1.material, counter)?
+                    }
+                    None => self.layers(
+                        kind,
+                        raw_layers.as_deref().unwrap_or_default(),
+                        raw1.yield_strength.as_deref(),
+                        body1.material,
+                        counter,
+                    )?,
+                };
+                // The scene's scale (a, p0) is the (top) coating's Hertz contact.
                 body1.material = spec.material;
                 Some(spec)
             }
-            None => None,
         };
         if let Some(pair) = gears {
             body1.radius_m = pair.curvature_radius_at_pitch_point_m(0);

@@ -125,15 +125,14 @@ pub struct Scene {
 
 impl Scene {
     /// Whether `render` and `record` draw the elastic-plastic sheet and load steps of this
-    /// scene: a `[plasticity]` point, elliptical or line contact. A rough map's is not this
-    /// one (its sections are a few cells deep under a map many contacts wide, its curves
-    /// Hertz's): its elastic figure is drawn.
+    /// scene: a `[plasticity]` point or line contact. A rough map's is not this one (its
+    /// sections are a few cells deep under a map many contacts wide, its curves Hertz's), nor
+    /// an ellipse's (the sheet's Hertz pressure, approach and mean-pressure curves are the
+    /// circle's of radius √(ab), and its x axis is in √(ab), not in the ellipse's own a): their
+    /// elastic figure is drawn.
     pub fn draws_plastic_sheet(&self) -> bool {
         self.plasticity.is_some()
-            && matches!(
-                self.contact.kind,
-                ContactKind::Point | ContactKind::Elliptical | ContactKind::Line
-            )
+            && matches!(self.contact.kind, ContactKind::Point | ContactKind::Line)
     }
 
     /// The yield strength of body 1: `contact.yield_strength` (or `hardness`), else

@@ -416,9 +416,7 @@ impl Scene {
                         .unloaded_snapshot()
                         .map(|state| study::plastic::components_last(&state.stress_pa)),
                     pressure: study.loaded_snapshot().pressure_pa.clone(),
-                    surface_displacement: study.solution.snapshots
-                        [study.solution.snapshots.len() - 1]
-                        .plastic_displacement_m
+                    surface_displacement: study::plastic::final_surface_displacement(&study)
                         .clone(),
                     axes: [study.x_m.clone(), study.y_m.clone(), study.z_m.clone()],
                 };

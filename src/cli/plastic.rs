@@ -12,7 +12,9 @@ use super::console::{print_err, print_out, progress_bar};
 use super::npy::{has_extension, is_device, Reserved};
 use stressfield::io::output::Staged;
 use stressfield::report::plastic::PlasticReport;
-use stressfield::study::plastic::{self, components_last, final_plastic_strain, PlasticStudy};
+use stressfield::study::plastic::{
+    self, components_last, final_plastic_strain, final_surface_displacement, PlasticStudy,
+};
 
 /// `plastic SCENE [--json] [--fields FILE.npz]`.
 pub fn plastic(scene_path: &Path, json: bool, fields: Option<&Path>) -> Result<()> {
@@ -87,12 +89,8 @@ fn fields_npz(study: &PlasticStudy) -> Result<Vec<u8>> {
     }
     npz.add_array("pressure", &study.loaded_snapshot().pressure_pa)
         .map_err(error)?;
-    let last = study.solution.snapshots.len() - 1;
-    npz.add_array(
-        "surface_displacement",
-        &study.solution.snapshots[last].plastic_displacement_m,
-    )
-    .map_err(error)?;
+    npz.add_array("surface_displacement", final_surface_displacement(study))
+        .map_err(error)?;
     for (name, values) in [("x", &study.x_m), ("y", &study.y_m), ("z", &study.z_m)] {
         npz.add_array(name, &Array1::from(values.clone()))
             .map_err(error)?;

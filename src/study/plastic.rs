@@ -753,6 +753,13 @@ pub fn final_plastic_strain(study: &PlasticStudy) -> &Array3<f64> {
     &study.solution.snapshots[last].equivalent_plastic_strain
 }
 
+/// The surface displacement of the plastic strain after the last step (m, into body 1,
+/// `[ny, nx]`): after unloading, the dent's profile.
+pub fn final_surface_displacement(study: &PlasticStudy) -> &Array2<f64> {
+    let last = study.solution.snapshots.len() - 1;
+    &study.solution.snapshots[last].plastic_displacement_m
+}
+
 /// A state's stress `[nz, 6, ny, nx]` with its components last, `[nz, ny, nx, 6]` (xx, yy, zz,
 /// yz, xz, xy): the order of the `--fields` archive and of the Python package.
 pub fn components_last(stress: &ndarray::Array4<f64>) -> ndarray::Array4<f64> {
